@@ -1,0 +1,11 @@
+#include "friction_models.h"
+
+#include "vision/paper_model.h"
+
+namespace icacam::host {
+std::unique_ptr<vision::FrictionModel> makeFrictionModel(const std::string &name)
+{
+    if (name == "paper") return std::make_unique<vision::PaperModel>();
+    return nullptr;
+}
+} // namespace icacam::host

@@ -1,0 +1,34 @@
+// icacam: the PC side of the instrument. One binary, subcommands (like git).
+#include <exception>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "measure_command.h"
+#include "synth_command.h"
+
+namespace {
+const char *kHelp =
+    "usage: icacam <command> [options]\n"
+    "commands:\n"
+    "  measure   measure μ from saved end-face images listed in a manifest\n"
+    "  synth     render synthetic end-face images with ground truth\n"
+    "Run 'icacam <command> --help' for the options of one command.\n";
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) { std::cerr << kHelp; return 2; }
+    const std::string cmd = argv[1];
+    const std::vector<std::string> args(argv + 2, argv + argc);
+    try {
+        if (cmd == "measure") return icacam::host::measureCommand(args);
+        if (cmd == "synth") return icacam::host::synthCommand(args);
+        if (cmd == "-h" || cmd == "--help" || cmd == "help") { std::cout << kHelp; return 0; }
+        std::cerr << "icacam: unknown command '" << cmd << "'\n" << kHelp;
+        return 2;
+    } catch (const std::exception &e) {
+        std::cerr << "icacam " << cmd << ": error: " << e.what() << "\n";
+        return 1;
+    }
+}

@@ -1,0 +1,158 @@
+// `icacam measure`: re-measure saved images in batch (PRODUCT.md §6).
+#include "measure_command.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <stdexcept>
+
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "friction_models.h"
+#include "image_file.h"
+#include "manifest.h"
+#include "result_writer.h"
+#include "vision/end_face_analyzer.h"
+
+namespace icacam::host {
+
+namespace fs = std::filesystem;
+using namespace icacam::vision;
+
+namespace {
+
+const char *kUsage =
+    "usage: icacam measure --manifest FILE [--out FILE] [--format csv|jsonl]\n"
+    "                      [--overlay DIR] [--repeat N] [--model paper]\n"
+    "Measures every record of a manifest (columns id,image,n,mm_per_px; optional k_mpa,\n"
+    "d0_mm, h0_mm). One bad record never stops the batch: it gets status=error.\n";
+
+void drawOverlay(const cv::Mat &luma, const Measurement &m, const std::string &path)
+{
+    cv::Mat bgr;
+    cv::cvtColor(luma, bgr, cv::COLOR_GRAY2BGR);
+    auto curve = [&](const BoundaryFit &f, cv::Scalar colour) {
+        std::vector<cv::Point> pts;
+        for (int i = 0; i < 720; ++i) {
+            const double t = 2 * M_PI * i / 720;
+            const double r = f.radiusAt(t);
+            pts.emplace_back(int(std::lround((m.centreX + r * std::cos(t)) * 16)),
+                             int(std::lround((m.centreY + r * std::sin(t)) * 16)));
+        }
+        cv::polylines(bgr, pts, true, colour, 1, cv::LINE_AA, 4);
+    };
+    auto points = [&](const EdgeSample *p, cv::Scalar colour) {
+        for (int i = 0; p && i < m.rayCount; ++i)
+            if (p[i].valid) cv::circle(bgr, {int(p[i].x.toDouble()), int(p[i].y.toDouble())}, 1, colour, -1);
+    };
+    points(m.innerPoints, {255, 200, 0});
+    points(m.outerPoints, {0, 200, 255});
+    curve(m.inner, {255, 0, 0});
+    curve(m.outer, {0, 0, 255});
+    if (m.rMaxPx > 0)
+        cv::circle(bgr, {int(m.centreX), int(m.centreY)}, int(m.rMaxPx), {0, 255, 0}, 1, cv::LINE_AA);
+    char text[160];
+    std::snprintf(text, sizeof text, "mu=%.4f +- %.4f  u=%.4f mm  %s", m.mu, m.muSigma, m.uMm,
+                  statusName(m.status));
+    cv::putText(bgr, text, {20, 40}, cv::FONT_HERSHEY_SIMPLEX, 1.0, {0, 255, 255}, 2);
+    cv::imwrite(path, bgr);
+}
+
+} // namespace
+
+int measureCommand(const std::vector<std::string> &args)
+{
+    std::string manifestPath, outPath, format = "csv", overlayDir, modelName = "paper";
+    long repeat = 1;
+    for (size_t i = 0; i < args.size(); ++i) {
+        auto value = [&]() -> std::string {
+            if (i + 1 >= args.size()) throw std::runtime_error(args[i] + " needs a value");
+            return args[++i];
+        };
+        if (args[i] == "--manifest") manifestPath = value();
+        else if (args[i] == "--out") outPath = value();
+        else if (args[i] == "--format") format = value();
+        else if (args[i] == "--overlay") overlayDir = value();
+        else if (args[i] == "--model") modelName = value();
+        else if (args[i] == "--repeat") {
+            double r;
+            if (!parseNumber(value(), &r) || r < 1 || r > 100000 || r != std::floor(r))
+                throw std::runtime_error("--repeat needs a whole number from 1 to 100000");
+            repeat = long(r);
+        } else if (args[i] == "-h" || args[i] == "--help") { std::cout << kUsage; return 0; }
+        else throw std::runtime_error("unknown option '" + args[i] + "'\n" + kUsage);
+    }
+    if (manifestPath.empty()) throw std::runtime_error(std::string("--manifest is required\n") + kUsage);
+    if (format != "csv" && format != "jsonl") throw std::runtime_error("--format must be csv or jsonl");
+    auto model = makeFrictionModel(modelName);
+    if (!model) throw std::runtime_error("unknown model '" + modelName + "' (known: paper)");
+
+    Manifest manifest;
+    std::string err;
+    if (!readManifest(manifestPath, &manifest, &err)) throw std::runtime_error(err);
+    if (!overlayDir.empty()) fs::create_directories(overlayDir);
+
+    std::ofstream file;
+    if (!outPath.empty()) {
+        file.open(outPath);
+        if (!file) throw std::runtime_error("cannot write '" + outPath + "'");
+    }
+    std::ostream &out = outPath.empty() ? std::cout : file;
+    ResultWriter writer(out, format == "jsonl");
+    writer.header();
+
+    EndFaceAnalyzer analyzer;
+    analyzer.configure(16384, 16384); // working memory does not grow with the frame
+    int nOk = 0, nWarn = 0, nErr = 0;
+    for (const ManifestRow &row : manifest.rows) {
+        ResultRow r;
+        r.id = row.get("id", "line" + std::to_string(row.line));
+        r.model = model->name();
+        Measurement m;
+        LumaImage img;
+        SpecimenSpec spec;
+        auto number = [&](const char *key, double fallback, bool required, double *outV) {
+            if (!row.has(key)) {
+                if (required) { r.message = std::string("missing ") + key; return false; }
+                *outV = fallback;
+                return true;
+            }
+            if (!parseNumber(row.get(key), outV)) {
+                r.message = std::string("bad number in ") + key + ": '" + row.get(key) + "'";
+                return false;
+            }
+            return true;
+        };
+        bool ok = row.error.empty();
+        if (!ok) r.message = "manifest line " + std::to_string(row.line) + ": " + row.error;
+        ok = ok && number("n", 0, true, &spec.n) && number("mm_per_px", 0, true, &spec.mmPerPx) &&
+             number("k_mpa", 0, false, &spec.kMpa) && number("d0_mm", 10, false, &spec.d0Mm) &&
+             number("h0_mm", 15, false, &spec.h0Mm);
+        if (ok && !row.has("image")) { r.message = "missing image"; ok = false; }
+        if (ok && !(spec.mmPerPx > 0)) { r.message = "mm_per_px must be positive"; ok = false; }
+        if (ok) {
+            fs::path p = row.get("image");
+            if (p.is_relative()) p = fs::path(manifest.baseDir) / p;
+            if (std::string e = loadLuma(p.string(), &img); !e.empty()) { r.message = e; ok = false; }
+        }
+        if (ok) {
+            const LumaView view{img.luma.data, img.luma.cols, img.luma.rows, int(img.luma.step[0]), 1};
+            for (long k = 0; k < repeat; ++k) m = analyzer.measure(view, spec, *model);
+            r.m = &m;
+            r.status = statusName(m.status);
+            if (m.status == Status::Error) r.message = errorMessage(m.error);
+            else if (m.flags) r.message = "check flags: " + ResultWriter::flagList(m.flags);
+            if (!overlayDir.empty() && m.hasValue())
+                drawOverlay(img.luma, m, (fs::path(overlayDir) / (r.id + ".png")).string());
+        }
+        (r.status == "ok" ? nOk : r.status == "warn" ? nWarn : nErr)++;
+        writer.write(r);
+    }
+    std::cerr << "icacam measure: " << manifest.rows.size() << " records: " << nOk << " ok, "
+              << nWarn << " warn, " << nErr << " error\n";
+    return 0;
+}
+
+} // namespace icacam::host

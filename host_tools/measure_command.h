@@ -1,0 +1,7 @@
+#pragma once
+#include <string>
+#include <vector>
+
+namespace icacam::host {
+int measureCommand(const std::vector<std::string> &args);
+} // namespace icacam::host

@@ -1,0 +1,19 @@
+#pragma once
+// The closed curve through a boundary's edge points: a robust least-squares Fourier series
+// r(θ) about the pipeline's centre, and its enclosed area (the paper's equivalent radius).
+#include "measurement.h"
+
+namespace icacam::vision {
+
+struct FitOptions {
+    int maxHarmonics = 6;
+    double rejectSigma = 3.0;     // residuals beyond this many robust σ are dropped
+    double minRejectPx = 0.75;    // never reject closer than this (sub-pixel noise)
+};
+
+// Fits the valid samples of `points` (n rays, evenly spaced from angle 0). Returns false
+// when fewer than 8 points survive. Per boundary, not per pixel: double is fine here.
+bool fitBoundary(const EdgeSample *points, const double *radiusPx, const bool *valid, int n,
+                 double centreX, double centreY, const FitOptions &opt, BoundaryFit *out);
+
+} // namespace icacam::vision

@@ -1,0 +1,178 @@
+#include "end_face_analyzer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <new>
+#include <numbers>
+
+#include "boundary_fit.h"
+#include "radial_profile.h"
+#include "ring_search.h"
+
+namespace icacam::vision {
+
+namespace {
+constexpr double kPi = std::numbers::pi;
+template <typename T> T *carve(uint8_t *&p, size_t count)
+{
+    T *out = reinterpret_cast<T *>(p);
+    p += (count * sizeof(T) + 15) & ~size_t(15);
+    return out;
+}
+} // namespace
+
+ErrorCode EndFaceAnalyzer::configure(int maxWidth, int maxHeight)
+{
+    if (maxWidth <= 0 || maxHeight <= 0) return ErrorCode::BadFrame;
+    maxWidth_ = maxWidth;
+    maxHeight_ = maxHeight;
+    const size_t bytes = SpecimenLocator::kWorkBytes + 16 +
+                         (size_t(kCoarseRays) * kMaxCoarseSamples * 2 + 16) +
+                         2 * (size_t(kFineRays) * kMaxFineSamples * 2 + 16) +
+                         2 * (size_t(kMaxCoarseSamples) * 4 + 16) +
+                         2 * (size_t(kFineRays) * sizeof(EdgeSample) + 16);
+    arena_.reset(new (std::nothrow) uint8_t[bytes]);
+    if (!arena_) return ErrorCode::FrameTooLarge;
+    workBytes_ = bytes;
+    uint8_t *p = arena_.get();
+    locatorWork_ = carve<uint8_t>(p, SpecimenLocator::kWorkBytes);
+    coarse_ = carve<uint16_t>(p, size_t(kCoarseRays) * kMaxCoarseSamples);
+    fine_ = carve<uint16_t>(p, size_t(kFineRays) * kMaxFineSamples);
+    deriv_ = carve<int16_t>(p, size_t(kFineRays) * kMaxFineSamples);
+    meanProfile_ = carve<int32_t>(p, kMaxCoarseSamples);
+    meanDeriv_ = carve<int32_t>(p, kMaxCoarseSamples);
+    innerPts_ = carve<EdgeSample>(p, kFineRays);
+    outerPts_ = carve<EdgeSample>(p, kFineRays);
+    return ErrorCode::None;
+}
+
+// Two passes of rays at the coarse Hough centre: the strongest edge on each ray (usually
+// the contact edge or the silhouette, both circles about the specimen's axis), a robust
+// first-harmonic fit, and the centre moved by the fitted offset.
+bool EndFaceAnalyzer::refineCentre(const LumaView &v, double r0Px, double *cx, double *cy)
+{
+    int32_t d[kMaxCoarseSamples];
+    double radius[kCoarseRays];
+    bool valid[kCoarseRays];
+    for (int pass = 0; pass < 2; ++pass) {
+        const int rays = pass == 0 ? kCoarseRays / 2 : kCoarseRays;
+        const double rA = 0.85 * r0Px, rB = 1.85 * r0Px;
+        const double step = std::max(pass == 0 ? 2.0 : 1.0, (rB - rA) / kMaxCoarseSamples);
+        const int count = std::min(kMaxCoarseSamples, int((rB - rA) / step));
+        for (int i = 0; i < rays; ++i) {
+            RaySpec ray{Q16_16::fromDouble(*cx), Q16_16::fromDouble(*cy), {}, {},
+                        Q16_16::fromDouble(rA), Q16_16::fromDouble(step)};
+            rayDirection(i, rays, &ray.cosT, &ray.sinT);
+            uint16_t *row = coarse_ + size_t(i) * kMaxCoarseSamples;
+            sampleRay(v, ray, count, row);
+            profileDerivative(row, count, d);
+            const EdgePeak up = strongestEdge(d, count, 2, count - 3, +1);
+            const EdgePeak down = strongestEdge(d, count, 2, count - 3, -1);
+            const EdgePeak &e = up.value > down.value ? up : down;
+            valid[i] = e.found;
+            radius[i] = rA + e.position.toDouble() * step;
+        }
+        BoundaryFit fit;
+        FitOptions opt;
+        opt.maxHarmonics = 1;
+        opt.minRejectPx = 2.0;
+        if (!fitBoundary(nullptr, radius, valid, rays, *cx, *cy, opt, &fit)) return false;
+        if (fit.coverage < 0.25) return false;
+        *cx = fit.centreX;
+        *cy = fit.centreY;
+    }
+    return true;
+}
+
+Measurement EndFaceAnalyzer::measure(const LumaView &v, const SpecimenSpec &spec,
+                                     const FrictionModel &model)
+{
+    Measurement m;
+    auto fail = [&m](ErrorCode c) {
+        m.status = Status::Error;
+        m.error = c;
+        return m;
+    };
+    if (!arena_) return fail(ErrorCode::NotConfigured);
+    if (!v.valid()) return fail(ErrorCode::BadFrame);
+    if (v.width > maxWidth_ || v.height > maxHeight_) return fail(ErrorCode::FrameTooLarge);
+    if (!(spec.mmPerPx > 1e-5 && spec.mmPerPx < 10) || !(spec.d0Mm > 0.5 && spec.d0Mm < 500) ||
+        !std::isfinite(spec.n))
+        return fail(ErrorCode::BadSpecimen);
+    const double r0 = 0.5 * spec.d0Mm / spec.mmPerPx; // initial radius in pixels
+    if (r0 < 15 || r0 > 4 * std::max(v.width, v.height)) return fail(ErrorCode::BadSpecimen);
+
+    SpecimenLocator locator(locatorWork_);
+    const CentreEstimate coarse = locator.locate(v, 0.8 * r0, 1.8 * r0);
+    // A specimen's concentric edges stack hundreds of votes on one cell; a textured
+    // background spreads them evenly.
+    if (!coarse.found || coarse.votes * 100 < 12 * coarse.background || coarse.votes < 40)
+        return fail(ErrorCode::NoSpecimen);
+    double cx = coarse.x, cy = coarse.y;
+    if (!refineCentre(v, r0, &cx, &cy)) return fail(ErrorCode::NoSpecimen);
+    m.centreX = cx;
+    m.centreY = cy;
+
+    RingSearch search{&v, r0, cx, cy, coarse_, fine_, deriv_, meanProfile_, meanDeriv_,
+                      innerPts_, outerPts_};
+    const ErrorCode e = search.run(&m);
+    if (e != ErrorCode::None) return fail(e);
+    finishResult(spec, model, &m);
+    return m;
+}
+
+void EndFaceAnalyzer::finishResult(const SpecimenSpec &spec, const FrictionModel &model,
+                                   Measurement *m) const
+{
+    const double s = spec.mmPerPx;
+    m->rInnerMm = m->inner.rEqPx * s;
+    m->rOuterMm = m->outer.rEqPx * s;
+    m->rMaxMm = m->rMaxPx * s;
+    m->uPx = m->outer.rEqPx - m->inner.rEqPx;
+    m->uMm = m->uPx * s;
+    // Edge location has a floor of about 0.1 px of bias per boundary besides its scatter.
+    const double sigPx = std::sqrt(m->inner.rEqSigmaPx * m->inner.rEqSigmaPx +
+                                   m->outer.rEqSigmaPx * m->outer.rEqSigmaPx + 2 * 0.1 * 0.1);
+    m->uSigmaMm = sigPx * s;
+
+    const ModelEstimate est = model.estimate({m->uMm, spec.n, spec.kMpa, spec.d0Mm, spec.h0Mm});
+    m->mu = est.mu;
+    m->muSigma = std::sqrt(est.dMuDu * est.dMuDu * m->uSigmaMm * m->uSigmaMm +
+                           est.modelSigma * est.modelSigma);
+    uint32_t f = m->flags;
+    if (est.range & (kModelNBelow | kModelNAbove)) f |= kFlagNOutOfRange;
+    if (est.range & kModelKOutside) f |= kFlagKOutOfRange;
+    if (est.range & kModelMuBelow) f |= kFlagMuBelowRange;
+    if (est.range & kModelMuAbove) f |= kFlagMuAboveRange;
+    if (est.range & kModelUOutside) f |= kFlagUOutsideModel;
+
+    const double r0 = 0.5 * spec.d0Mm / s;
+    if (std::min(m->inner.coverage, m->outer.coverage) < 0.6) f |= kFlagLowCoverage;
+    if (std::max(m->inner.scatterPx, m->outer.scatterPx) > std::max(1.5, 0.006 * r0))
+        f |= kFlagHighScatter;
+    if (std::fabs(m->inner.contrast) < 5.0) f |= kFlagLowContrast;
+    m->centreOffsetPx = std::hypot(m->inner.centreX - m->outer.centreX,
+                                   m->inner.centreY - m->outer.centreY);
+    if (m->centreOffsetPx > std::max(3.0, 0.012 * r0)) f |= kFlagCentreOffset;
+    const double axisDiff = std::fabs(std::remainder(m->inner.axisDeg - m->outer.axisDeg, 180.0));
+    if (m->inner.ellipticity > 0.012 && m->outer.ellipticity > 0.012 && axisDiff < 20)
+        f |= kFlagElliptical;
+    if (m->uPx < 3.0) f |= kFlagNarrowRing;
+    if (m->edgeWidthPx > 2.6) f |= kFlagBlurred;
+    if (m->saturatedFraction > 0.02) f |= kFlagSaturated;
+    // Scale check against volume constancy at the paper's 50 % reduction: the silhouette's
+    // equivalent radius is R0·√2 times a barrelling factor that grows with u (about
+    // 1.008 + 0.034·u at D0 = 10 mm; provisional, to be replaced by the FE model's R_max).
+    if (m->rMaxPx > 0) {
+        const double uNorm = m->uMm * 10.0 / spec.d0Mm;
+        const double expected = 0.5 * spec.d0Mm * std::sqrt(2.0) * (1.008 + 0.034 * uNorm);
+        if (std::fabs(m->rMaxMm / expected - 1.0) > 0.02) f |= kFlagScaleSuspect;
+    } else {
+        f |= kFlagNoSilhouette;
+    }
+    m->flags = f;
+    m->status = f ? Status::Warn : Status::Ok;
+    m->error = ErrorCode::None;
+}
+
+} // namespace icacam::vision

@@ -1,0 +1,64 @@
+#pragma once
+// The measurement pipeline: frame → specimen centre → contact edge R_o → original face
+// edge R_i → equivalent radii → u → μ ± σ with flags. All working memory is taken once in
+// configure(); measure() allocates nothing and makes no OS call.
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+
+#include "edge_profile.h"
+#include "friction_model.h"
+#include "luma_view.h"
+#include "measurement.h"
+#include "specimen_locator.h"
+
+namespace icacam::vision {
+
+// What the instrument is told about the specimen (manifest or device config).
+struct SpecimenSpec {
+    double n = 0;          // strain-hardening exponent
+    double kMpa = 0;       // strength coefficient, 0 if unknown
+    double d0Mm = 10;      // initial diameter
+    double h0Mm = 15;      // initial height
+    double mmPerPx = 0;    // scale in the plane of the end face
+};
+
+class EndFaceAnalyzer {
+public:
+    static constexpr int kCoarseRays = 64;
+    static constexpr int kFineRays = 256;
+    static constexpr int kMaxCoarseSamples = 1024;
+    static constexpr int kMaxFineSamples = 640;
+
+    EndFaceAnalyzer() = default;
+    EndFaceAnalyzer(const EndFaceAnalyzer &) = delete;
+    EndFaceAnalyzer &operator=(const EndFaceAnalyzer &) = delete;
+
+    // Sizes the working memory for frames up to maxWidth × maxHeight. Returns
+    // ErrorCode::None, or BadFrame for a non-positive size. May be called again.
+    ErrorCode configure(int maxWidth, int maxHeight);
+    size_t workingBytes() const { return workBytes_; }
+
+    // Measures one frame. The result's point arrays stay valid until the next call.
+    Measurement measure(const LumaView &frame, const SpecimenSpec &spec, const FrictionModel &model);
+
+private:
+    struct Ring; // transient per-measurement state (on the stack, fixed size)
+
+    bool refineCentre(const LumaView &v, double r0Px, double *cx, double *cy);
+    void finishResult(const SpecimenSpec &spec, const FrictionModel &model, Measurement *m) const;
+
+    int maxWidth_ = 0, maxHeight_ = 0;
+    size_t workBytes_ = 0;
+    std::unique_ptr<uint8_t[]> arena_;
+    uint8_t *locatorWork_ = nullptr;
+    uint16_t *coarse_ = nullptr;     // kCoarseRays × kMaxCoarseSamples
+    uint16_t *fine_ = nullptr;       // kFineRays × kMaxFineSamples
+    int16_t *deriv_ = nullptr;       // kFineRays × kMaxFineSamples derivatives
+    int32_t *meanProfile_ = nullptr; // kMaxCoarseSamples
+    int32_t *meanDeriv_ = nullptr;   // kMaxCoarseSamples
+    EdgeSample *innerPts_ = nullptr; // kFineRays
+    EdgeSample *outerPts_ = nullptr; // kFineRays
+};
+
+} // namespace icacam::vision

@@ -1,0 +1,41 @@
+#pragma once
+// μ(u, n): the map from ICA width to the Coulomb friction coefficient. The paper's fit is
+// one implementation; models generated from our own finite-element runs sit beside it.
+#include <cstdint>
+
+namespace icacam::vision {
+
+// Where an evaluation lies relative to what the model was built from.
+enum ModelRangeFlag : uint32_t {
+    kModelInRange = 0,
+    kModelNBelow = 1u << 0,  // n below the calibrated range
+    kModelNAbove = 1u << 1,
+    kModelKOutside = 1u << 2, // strength coefficient outside the simulated range
+    kModelMuBelow = 1u << 3,  // the result lies below the simulated μ range
+    kModelMuAbove = 1u << 4,
+    kModelUOutside = 1u << 5, // u outside the span the model's data covered at this n
+};
+
+struct ModelEstimate {
+    double mu = 0;
+    double dMuDu = 0;       // slope at u (per mm): carries u's uncertainty into μ
+    double modelSigma = 0;  // the model's own error at this point (1 σ, absolute μ)
+    uint32_t range = kModelInRange;
+};
+
+struct ModelInputs {
+    double uMm = 0;
+    double n = 0;
+    double kMpa = 0;   // 0 when not given
+    double d0Mm = 10;  // initial diameter; u scales with it by geometric similarity
+    double h0Mm = 15;
+};
+
+class FrictionModel {
+public:
+    virtual ~FrictionModel() = default;
+    virtual const char *name() const = 0;
+    virtual ModelEstimate estimate(const ModelInputs &in) const = 0;
+};
+
+} // namespace icacam::vision

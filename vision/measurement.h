@@ -1,0 +1,88 @@
+#pragma once
+// What one measurement of an end face returns: boundaries, radii, u, μ ± σ, diagnostics,
+// and a status with named flags (PRODUCT.md §6).
+#include <cstdint>
+
+#include "error.h"
+#include "fixed_point.h"
+
+namespace icacam::vision {
+
+enum class Status : uint8_t { Ok, Warn, Error };
+const char *statusName(Status s);
+
+// Conditions a value was produced under that lie outside the model or the checks.
+enum MeasureFlag : uint32_t {
+    kFlagNOutOfRange = 1u << 0,
+    kFlagKOutOfRange = 1u << 1,
+    kFlagMuBelowRange = 1u << 2,
+    kFlagMuAboveRange = 1u << 3,
+    kFlagUOutsideModel = 1u << 4,
+    kFlagLowContrast = 1u << 5,     // an edge has little contrast: scatter may hide a bias
+    kFlagLowCoverage = 1u << 6,     // an edge was found on too few rays
+    kFlagHighScatter = 1u << 7,     // boundary points scatter more than a clean edge does
+    kFlagBlurred = 1u << 8,         // edges wider than the ring resolves reliably
+    kFlagSaturated = 1u << 9,       // part of the ring is clipped at full scale
+    kFlagSpecimenClipped = 1u << 10, // the specimen runs off the frame
+    kFlagElliptical = 1u << 11,     // both boundaries share an ellipticity: tilt or lens
+    kFlagCentreOffset = 1u << 12,   // the boundaries are not concentric
+    kFlagScaleSuspect = 1u << 13,   // R_max contradicts the declared scale and 50 % reduction
+    kFlagNarrowRing = 1u << 14,     // the ICA is only a few pixels wide
+    kFlagNoSilhouette = 1u << 15,   // the barrel silhouette was not found: scale unchecked
+};
+constexpr int kFlagCount = 16;
+const char *flagName(int bit);
+
+// One located edge point on a ray, in pixel coordinates (Q16.16).
+struct EdgeSample {
+    Q16_16 x, y;
+    Q16_16 radius;     // from the pipeline's centre
+    int32_t strength;  // |derivative| in 1/256 grey levels per px (scaled)
+    bool valid;
+};
+
+// A fitted closed boundary: r(θ) about the centre, a truncated Fourier series.
+struct BoundaryFit {
+    static constexpr int kMaxHarmonics = 8;
+    int harmonics = 0;
+    double a0 = 0;
+    double a[kMaxHarmonics + 1] = {};
+    double b[kMaxHarmonics + 1] = {};
+    double rEqPx = 0;       // sqrt(area / π) of the closed curve
+    double rEqSigmaPx = 0;  // standard error of rEq from the residual scatter
+    double scatterPx = 0;   // robust RMS of the edge points about the curve
+    double coverage = 0;    // fraction of rays with an accepted edge point
+    double contrast = 0;    // median step height across the edge, grey levels (signed)
+    double ellipticity = 0; // 1 - b/a of the curve's second harmonic
+    double axisDeg = 0;     // direction of the long axis
+    double centreX = 0, centreY = 0; // centre of the curve (first harmonic), pixels
+    int used = 0;           // edge points kept by the robust fit
+
+    double radiusAt(double theta) const;
+};
+
+struct Measurement {
+    Status status = Status::Error;
+    ErrorCode error = ErrorCode::NotConfigured;
+    uint32_t flags = 0;
+
+    double centreX = 0, centreY = 0; // pipeline centre (pixels)
+    BoundaryFit inner, outer;
+    double rMaxPx = 0;      // barrel silhouette radius (equivalent circle); 0 if not found
+    double edgeWidthPx = 0; // blur of the contact edge (Gaussian σ estimate)
+    double saturatedFraction = 0;
+
+    double rInnerMm = 0, rOuterMm = 0, rMaxMm = 0;
+    double uPx = 0, uMm = 0, uSigmaMm = 0;
+    double mu = 0, muSigma = 0;
+    double centreOffsetPx = 0;
+
+    // Edge points of each boundary (one per ray, valid or not) for overlays and tests.
+    const EdgeSample *innerPoints = nullptr;
+    const EdgeSample *outerPoints = nullptr;
+    int rayCount = 0;
+
+    bool hasValue() const { return status != Status::Error; }
+};
+
+} // namespace icacam::vision

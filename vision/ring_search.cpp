@@ -1,0 +1,320 @@
+#include "ring_search.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "boundary_fit.h"
+#include "edge_profile.h"
+#include "end_face_analyzer.h"
+#include "radial_profile.h"
+
+namespace icacam::vision {
+
+namespace {
+constexpr double kPi = std::numbers::pi;
+constexpr int kRays = EndFaceAnalyzer::kFineRays;
+constexpr int kMaxFine = EndFaceAnalyzer::kMaxFineSamples;
+constexpr int kMaxCoarse = EndFaceAnalyzer::kMaxCoarseSamples;
+// A 3-grey-level step blurred to σ = 2 px gives a coarse derivative of about 1200.
+constexpr int32_t kMinCoarseStrength = 1000;
+
+double robustSigma(const int32_t *d, int lo, int hi)
+{
+    int32_t tmp[kMaxCoarse + kMaxFine];
+    int n = 0;
+    for (int i = lo; i <= hi; ++i) tmp[n++] = std::abs(d[i]);
+    if (n == 0) return 0;
+    std::nth_element(tmp, tmp + n / 2, tmp + n);
+    return 1.4826 * tmp[n / 2];
+}
+
+bool isExtremum(const int32_t *d, int i)
+{
+    const int32_t a = std::abs(d[i]);
+    return a > 0 && a >= std::abs(d[i - 1]) && a > std::abs(d[i + 1]) &&
+           (d[i] > 0) == (d[i - 1] >= 0) && (d[i] > 0) == (d[i + 1] >= 0);
+}
+} // namespace
+
+RingSearch::MeanEdges RingSearch::meanProfileEdges()
+{
+    // The coarse rows hold the centre refinement's last pass (see refineCentre).
+    const double rA = 0.85 * r0, rB = 1.85 * r0;
+    const double step = std::max(1.0, (rB - rA) / kMaxCoarse);
+    const int count = std::min(kMaxCoarse, int((rB - rA) / step));
+    uint16_t mean[kMaxCoarse];
+    for (int j = 0; j < count; ++j) {
+        uint32_t sum = 0, n = 0;
+        for (int i = 0; i < EndFaceAnalyzer::kCoarseRays; ++i) {
+            const uint16_t s = coarse[size_t(i) * kMaxCoarse + j];
+            if (s == kOutsideFrame) continue;
+            sum += s;
+            ++n;
+        }
+        mean[j] = n * 4 >= EndFaceAnalyzer::kCoarseRays ? uint16_t(sum / n) : kOutsideFrame;
+        meanProfile[j] = mean[j];
+    }
+    profileDerivative(mean, count, meanDeriv);
+    const double noise = robustSigma(meanDeriv, 2, count - 3);
+    const double minStrength = std::max<double>(kMinCoarseStrength, 6 * noise);
+    auto radiusOf = [&](int i) {
+        const Q16_16 off = parabolaVertex(std::abs(meanDeriv[i - 1]), std::abs(meanDeriv[i]),
+                                          std::abs(meanDeriv[i + 1]));
+        return rA + (i + off.toDouble()) * step;
+    };
+    auto levelAfter = [&](int i) { // mean level just outside an edge
+        const int a = i + 3, b = std::min(count - 1, i + 3 + std::max(4, int(0.04 * r0 / step)));
+        int64_t s = 0;
+        int n = 0;
+        for (int j = a; j <= b; ++j)
+            if (mean[j] != kOutsideFrame) { s += mean[j]; ++n; }
+        return n ? double(s) / n : 0.0;
+    };
+
+    MeanEdges e;
+    const int lo = std::max(2, int((0.9 * r0 - rA) / step));
+    const int hi = std::min(count - 3, int((1.75 * r0 - rA) / step));
+    // The contact edge enters the barrel, the darkest band under a ring light: among the
+    // strong falling edges, the one with the darkest band outside it. If nothing falls
+    // (an unusual light), the strongest rising edge into the brightest band.
+    for (int sign = -1; sign <= 1 && !e.found; sign += 2) {
+        int32_t strongest = 0;
+        for (int i = lo; i <= hi; ++i)
+            if (isExtremum(meanDeriv, i) && sign * meanDeriv[i] > strongest) strongest = sign * meanDeriv[i];
+        if (strongest < minStrength) continue;
+        double bestLevel = 0;
+        for (int i = lo; i <= hi; ++i) {
+            if (!isExtremum(meanDeriv, i) || sign * meanDeriv[i] < 0.3 * strongest) continue;
+            const double level = sign * levelAfter(i);
+            if (!e.found || level < bestLevel) {
+                bestLevel = level;
+                e.found = true;
+                e.rOuter = radiusOf(i);
+                e.signOuter = sign;
+                e.strengthOuter = std::abs(meanDeriv[i]) / 16; // coarse → fine units
+            }
+        }
+    }
+    if (!e.found) return e;
+    // Silhouette: the outermost clear edge within a barrel's width outside the contact edge.
+    const int so = int((e.rOuter + std::max(4.0, 0.03 * r0) - rA) / step);
+    const int eo = std::min(count - 3, int((e.rOuter + 0.5 * r0 - rA) / step));
+    const double silhouetteMin = std::max({minStrength, 0.06 * e.strengthOuter * 16.0});
+    for (int i = eo; i >= so; --i)
+        if (isExtremum(meanDeriv, i) && std::abs(meanDeriv[i]) >= silhouetteMin) {
+            e.rMax = radiusOf(i);
+            break;
+        }
+    return e;
+}
+
+void RingSearch::sampleFine(double rStart, double step, int count, Measurement *m)
+{
+    fineStart_ = rStart;
+    fineStep_ = step;
+    fineCount_ = count;
+    uint32_t saturated = 0, inside = 0;
+    for (int i = 0; i < kRays; ++i) {
+        RaySpec ray{Q16_16::fromDouble(cx), Q16_16::fromDouble(cy), {}, {},
+                    Q16_16::fromDouble(rStart), Q16_16::fromDouble(step)};
+        rayDirection(i, kRays, &ray.cosT, &ray.sinT);
+        uint16_t *row = fine + size_t(i) * kMaxFine;
+        inside += uint32_t(sampleRay(*frame, ray, count, row));
+        for (int j = 0; j < count; ++j) saturated += row[j] == kFullScaleQ8;
+    }
+    m->saturatedFraction = inside ? double(saturated) / inside : 0;
+    if (inside < uint32_t(count) * kRays) m->flags |= kFlagSpecimenClipped;
+
+    // Derivative across a [1 2 1] angular smoothing of neighbouring rays (the boundaries
+    // vary slowly with angle; the noise does not). Stored as slope in 1/128 grey per px.
+    int32_t t[kMaxFine];
+    for (int i = 0; i < kRays; ++i) {
+        const uint16_t *a = fine + size_t((i + kRays - 1) % kRays) * kMaxFine;
+        const uint16_t *b = fine + size_t(i) * kMaxFine;
+        const uint16_t *c = fine + size_t((i + 1) % kRays) * kMaxFine;
+        for (int j = 0; j < count; ++j)
+            t[j] = (a[j] == kOutsideFrame || b[j] == kOutsideFrame || c[j] == kOutsideFrame)
+                       ? -1
+                       : int32_t(a[j]) + 2 * int32_t(b[j]) + int32_t(c[j]);
+        int16_t *d = deriv + size_t(i) * kMaxFine;
+        for (int j = 0; j < count; ++j) {
+            if (j < 2 || j + 2 >= count || t[j - 2] < 0 || t[j - 1] < 0 || t[j + 1] < 0 || t[j + 2] < 0) {
+                d[j] = 0;
+                continue;
+            }
+            const int32_t g = t[j + 2] + 2 * t[j + 1] - 2 * t[j - 1] - t[j - 2];
+            d[j] = int16_t(std::clamp(g >> 6, -32767, 32767));
+        }
+    }
+}
+
+bool RingSearch::locateOnRays(int sign, const double *loPx, const double *hiPx, int32_t minStrength,
+                              EdgeSample *pts, bool interior, double reachPx, BoundaryFit *fit,
+                              double *contrastOut)
+{
+    double radius[kRays], steps[kRays];
+    bool valid[kRays];
+    int nSteps = 0;
+    const int reach = std::max(1, int(reachPx / fineStep_ + 0.5));
+    for (int i = 0; i < kRays; ++i) {
+        const int lo = int(std::floor((loPx[i] - fineStart_) / fineStep_));
+        const int hi = int(std::ceil((hiPx[i] - fineStart_) / fineStep_));
+        const int16_t *d = deriv + size_t(i) * kMaxFine;
+        const EdgePeak p = strongestEdge(d, fineCount_, lo, hi, sign, interior);
+        valid[i] = p.found && p.value >= minStrength;
+        radius[i] = fineStart_ + p.position.toDouble() * fineStep_;
+        const double t = 2 * kPi * i / kRays;
+        pts[i] = {Q16_16::fromDouble(cx + radius[i] * std::cos(t)),
+                  Q16_16::fromDouble(cy + radius[i] * std::sin(t)), Q16_16::fromDouble(radius[i]),
+                  p.value, valid[i]};
+        if (!valid[i]) continue;
+        const uint16_t *row = fine + size_t(i) * kMaxFine;
+        const int j = int(p.position.toDouble() + 0.5);
+        if (j - reach >= 0 && j + reach < fineCount_ && row[j - reach] != kOutsideFrame &&
+            row[j + reach] != kOutsideFrame)
+            steps[nSteps++] = (double(row[j + reach]) - double(row[j - reach])) / 256.0;
+    }
+    if (!fitBoundary(pts, radius, valid, kRays, cx, cy, FitOptions{}, fit)) return false;
+    for (int i = 0; i < kRays; ++i) pts[i].valid = pts[i].valid && std::fabs(radius[i] - fit->radiusAt(2 * kPi * i / kRays)) <= std::max(0.75, 3 * fit->scatterPx / 1.0);
+    if (nSteps) {
+        std::nth_element(steps, steps + nSteps / 2, steps + nSteps);
+        *contrastOut = steps[nSteps / 2];
+    }
+    return true;
+}
+
+ErrorCode RingSearch::run(Measurement *m)
+{
+    const MeanEdges me = meanProfileEdges();
+    if (!me.found) return ErrorCode::OuterEdgeNotFound;
+
+    // Fine window: from the widest ICA the model knows (u up to 0.45·R0 inwards) to a
+    // margin outside the contact edge that covers its departure from a circle.
+    const double margin = std::max(10.0, 0.06 * r0);
+    const double rStart = std::max(0.3 * r0, me.rOuter - 0.45 * r0 - margin);
+    const double rEnd = me.rOuter + margin;
+    const double step = std::max(1.0, (rEnd - rStart) / kMaxFine);
+    const int count = std::min(kMaxFine, int((rEnd - rStart) / step));
+    sampleFine(rStart, step, count, m);
+    if (m->saturatedFraction > 0.5) return ErrorCode::Saturated;
+
+    double lo[kRays], hi[kRays];
+    BoundaryFit outer, inner;
+    double contrastOuter = 0, contrastInner = 0;
+    // Contact edge, pass 1: around the mean radius, short of the silhouette.
+    const double outerHi = me.rMax > 0 ? std::min(margin, 0.5 * (me.rMax - me.rOuter)) : margin;
+    for (int i = 0; i < kRays; ++i) {
+        lo[i] = me.rOuter - margin;
+        hi[i] = me.rOuter + outerHi;
+    }
+    const int32_t outerMin = std::max<int32_t>(8, int32_t(0.3 * me.strengthOuter));
+    if (!locateOnRays(me.signOuter, lo, hi, outerMin, outerPts, false, 3.0, &outer, &contrastOuter) ||
+        outer.coverage < 0.3)
+        return ErrorCode::OuterEdgeNotFound;
+    // Pass 2: close to the fitted curve, so a stain edge nearby cannot win.
+    auto around = [&](const BoundaryFit &f, double half, double offset) {
+        for (int i = 0; i < kRays; ++i) {
+            const double r = f.radiusAt(2 * kPi * i / kRays) + offset;
+            lo[i] = r - half;
+            hi[i] = r + half;
+        }
+    };
+    around(outer, 3.0, 0);
+    if (!locateOnRays(me.signOuter, lo, hi, outerMin, outerPts, false, 3.0, &outer, &contrastOuter) ||
+        outer.coverage < 0.3)
+        return ErrorCode::OuterEdgeNotFound;
+
+    // The original face edge, named on the mean of the rays aligned on the contact edge:
+    // alignment keeps a narrow ring sharp even where the contact edge is not a circle.
+    const int K = std::min(count - 3, int((0.45 * r0 + 2) / step));
+    const int M = std::min(int(8 / step) + 1, 12);
+    constexpr int kSpan = kMaxFine + 16;
+    int32_t aD[kSpan] = {}, aP[kSpan] = {};
+    int32_t nD[kSpan] = {};
+    for (int i = 0; i < kRays; ++i) {
+        if (!outerPts[i].valid) continue;
+        const int base = int(std::lround((outer.radiusAt(2 * kPi * i / kRays) - rStart) / step));
+        const int16_t *d = deriv + size_t(i) * kMaxFine;
+        const uint16_t *row = fine + size_t(i) * kMaxFine;
+        for (int k = -K; k <= M; ++k) {
+            const int j = base + k;
+            if (j < 2 || j + 2 >= count || row[j] == kOutsideFrame) continue;
+            aD[k + K] += d[j];
+            aP[k + K] += row[j];
+            nD[k + K]++;
+        }
+    }
+    const int spanN = K + M + 1;
+    for (int k = 0; k < spanN; ++k)
+        if (nD[k]) { aD[k] /= nD[k]; aP[k] /= nD[k]; }
+    // Blur of the contact edge: second moment of its derivative peak (the kernel adds 0.75
+    // px² and bilinear sampling about 0.17 px²).
+    {
+        double s0 = 0, s1 = 0, s2 = 0;
+        const int w = std::min(K, int(6 / step) + 1);
+        for (int k = -w; k <= std::min(w, M); ++k) {
+            const double val = std::max(0, me.signOuter * aD[k + K]);
+            s0 += val; s1 += val * k * step; s2 += val * k * k * step * step;
+        }
+        if (s0 > 0) {
+            const double var = s2 / s0 - (s1 / s0) * (s1 / s0) - 0.92;
+            m->edgeWidthPx = std::sqrt(std::max(0.0, var));
+        }
+    }
+    const double noise = robustSigma(aD, 0, K - 2);
+    const double innerMin = std::max(5.0 * noise, 40.0);
+    int bestK = 0, innerSign = 0;
+    int32_t bestV = 0;
+    for (int k = -K + 2; k <= -2; ++k) {
+        const int idx = k + K;
+        if (!isExtremum(aD, idx) || std::abs(aD[idx]) < innerMin || std::abs(aD[idx]) <= bestV) continue;
+        // A real edge separates two levels; a turning mark or a scratch line is a ridge with
+        // the same level on both sides. Compare the levels a few pixels either side.
+        const int sign = aD[idx] > 0 ? 1 : -1;
+        const int g = std::max(2, int(2.5 / step + 0.5));
+        const int fa = std::max(0, idx - g - int(8 / step)), fb = std::max(0, idx - g);
+        const int ia = std::min(idx + g, K - 2), ib = std::min(idx + g + int(8 / step), K - 2);
+        double lf = 0, li = 0;
+        int nf = 0, ni = 0;
+        for (int j = fa; j <= fb; ++j) { lf += aP[j]; ++nf; }
+        for (int j = ia; j <= ib; ++j) { li += aP[j]; ++ni; }
+        if (nf && ni && sign * (li / ni - lf / nf) < 0.5 * 256) continue;
+        bestK = k;
+        bestV = std::abs(aD[idx]);
+        innerSign = sign;
+    }
+    if (!innerSign) return m->saturatedFraction > 0.1 ? ErrorCode::Saturated : ErrorCode::InnerEdgeNotFound;
+
+    const double uGuess = -bestK * step;
+    const double half = std::max(3.0, std::min(0.04 * r0, 0.5 * uGuess));
+    const int32_t innerStrength = std::max<int32_t>(6, int32_t(0.3 * bestV));
+    const double reach = std::max(1.0, std::min(3.0, 0.5 * uGuess));
+    for (int pass = 0; pass < 2; ++pass) {
+        for (int i = 0; i < kRays; ++i) {
+            const double t = 2 * kPi * i / kRays;
+            const double ro = outer.radiusAt(t);
+            const double c = pass == 0 ? ro - uGuess : inner.radiusAt(t);
+            const double h = pass == 0 ? half : 2.5;
+            lo[i] = c - h;
+            hi[i] = std::min(c + h, ro - 2.0);
+        }
+        if (!locateOnRays(innerSign, lo, hi, innerStrength, innerPts, true, reach, &inner,
+                          &contrastInner) ||
+            inner.coverage < 0.25)
+            return ErrorCode::InnerEdgeNotFound;
+    }
+    if (!(inner.rEqPx < outer.rEqPx) || (me.rMax > 0 && !(outer.rEqPx < me.rMax + 2)))
+        return ErrorCode::InconsistentRing;
+    inner.contrast = contrastInner;
+    outer.contrast = contrastOuter;
+    m->inner = inner;
+    m->outer = outer;
+    m->rMaxPx = me.rMax;
+    m->innerPoints = innerPts;
+    m->outerPoints = outerPts;
+    m->rayCount = kRays;
+    return ErrorCode::None;
+}
+
+} // namespace icacam::vision

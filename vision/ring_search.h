@@ -1,0 +1,46 @@
+#pragma once
+// Finding the two boundaries of the immigrated contact area about a known centre:
+// the mean radial profile names the edges (contact edge, silhouette, original face), the
+// fine rays locate them per angle, and a robust closed curve is fitted to each.
+#include <cstdint>
+
+#include "luma_view.h"
+#include "measurement.h"
+
+namespace icacam::vision {
+
+struct RingSearch {
+    const LumaView *frame;
+    double r0;       // initial specimen radius, pixels
+    double cx, cy;   // refined centre
+    uint16_t *coarse;
+    uint16_t *fine;
+    int16_t *deriv;
+    int32_t *meanProfile;
+    int32_t *meanDeriv;
+    EdgeSample *innerPts;
+    EdgeSample *outerPts;
+
+    ErrorCode run(Measurement *m);
+
+    // Internal steps (public only so that RingSearch stays an aggregate).
+
+    struct MeanEdges {
+        double rOuter = 0;  // contact edge radius (pixels)
+        int signOuter = -1;
+        int32_t strengthOuter = 0; // in fine derivative units
+        double rMax = 0;    // silhouette, 0 if not found
+        bool found = false;
+    };
+    MeanEdges meanProfileEdges();
+    // Per ray, the strongest edge of `sign` between loPx[i] and hiPx[i]; then the fit.
+    bool locateOnRays(int sign, const double *loPx, const double *hiPx, int32_t minStrength,
+                      EdgeSample *pts, bool interior, double reachPx, BoundaryFit *fit,
+                      double *contrastOut);
+    void sampleFine(double rStart, double step, int count, Measurement *m);
+
+    double fineStart_ = 0, fineStep_ = 1;
+    int fineCount_ = 0;
+};
+
+} // namespace icacam::vision

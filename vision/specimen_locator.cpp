@@ -1,0 +1,115 @@
+#include "specimen_locator.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace icacam::vision {
+
+namespace {
+
+// Integer square root (floor) for the gradient norm.
+uint32_t isqrt(uint32_t v)
+{
+    uint32_t r = 0, bit = 1u << 30;
+    while (bit > v) bit >>= 2;
+    while (bit) {
+        if (v >= r + bit) { v -= r + bit; r = (r >> 1) + bit; }
+        else r >>= 1;
+        bit >>= 2;
+    }
+    return r;
+}
+
+} // namespace
+
+CentreEstimate SpecimenLocator::locate(const LumaView &v, double rMinPx, double rMaxPx)
+{
+    CentreEstimate est;
+    const int maxDim = std::max(v.width, v.height);
+    const int D = std::max(1, (maxDim + kMaxCells - 1) / kMaxCells);
+    const int W = v.width / D, H = v.height / D;
+    if (W < 8 || H < 8) return est;
+
+    uint8_t *dec = work_;                                          // W × H luma
+    uint16_t *acc = reinterpret_cast<uint16_t *>(work_ + kMaxCells * kMaxCells); // votes
+    std::fill(acc, acc + size_t(W) * H, uint16_t(0));
+
+    // Decimate: mean of a 2×2 block at the centre of each D×D cell.
+    const int off = D >= 2 ? D / 2 - 1 : 0;
+    const int step2 = D >= 2 ? 1 : 0;
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) {
+            const int px = x * D + off, py = y * D + off;
+            const int px2 = std::min(px + step2, v.width - 1), py2 = std::min(py + step2, v.height - 1);
+            dec[y * W + x] = uint8_t((v.at(px, py) + v.at(px2, py) + v.at(px, py2) + v.at(px2, py2) + 2) >> 2);
+        }
+
+    // Sobel gradients; threshold at the 96th percentile of the L1 magnitude so that the
+    // voters are the strongest edges whatever the exposure (and at least 4 grey levels).
+    uint32_t hist[1024] = {};
+    auto sobel = [&](int x, int y, int *gx, int *gy) {
+        const uint8_t *p = dec + y * W + x;
+        *gx = (p[-W + 1] + 2 * p[1] + p[W + 1]) - (p[-W - 1] + 2 * p[-1] + p[W - 1]);
+        *gy = (p[W - 1] + 2 * p[W] + p[W + 1]) - (p[-W - 1] + 2 * p[-W] + p[-W + 1]);
+    };
+    for (int y = 1; y < H - 1; ++y)
+        for (int x = 1; x < W - 1; ++x) {
+            int gx, gy;
+            sobel(x, y, &gx, &gy);
+            hist[std::min(1023, (std::abs(gx) + std::abs(gy)) >> 1)]++;
+        }
+    const uint32_t total = uint32_t(W - 2) * uint32_t(H - 2);
+    uint32_t above = 0;
+    int thr = 1023;
+    while (thr > 0 && above + hist[thr] < total / 25) above += hist[thr--];
+    thr = std::max(thr, 16);
+
+    const int rLo = std::max(2, int(rMinPx / D));
+    const int rHi = std::max(rLo + 1, int(rMaxPx / D + 1));
+    for (int y = 1; y < H - 1; ++y)
+        for (int x = 1; x < W - 1; ++x) {
+            int gx, gy;
+            sobel(x, y, &gx, &gy);
+            if (((std::abs(gx) + std::abs(gy)) >> 1) < thr) continue;
+            const int norm = int(isqrt(uint32_t(gx * gx + gy * gy)));
+            if (norm == 0) continue;
+            // Unit vector in Q2.14; vote along both directions (either edge polarity).
+            const int ux = gx * 16384 / norm, uy = gy * 16384 / norm;
+            for (int r = rLo; r <= rHi; ++r) {
+                const int dx = (r * ux + 8192) >> 14, dy = (r * uy + 8192) >> 14;
+                int cx = x + dx, cy = y + dy;
+                if (cx >= 0 && cy >= 0 && cx < W && cy < H && acc[cy * W + cx] < 65535) acc[cy * W + cx]++;
+                cx = x - dx;
+                cy = y - dy;
+                if (cx >= 0 && cy >= 0 && cx < W && cy < H && acc[cy * W + cx] < 65535) acc[cy * W + cx]++;
+            }
+        }
+
+    // Peak of the 3×3 sums, then the vote-weighted centroid around it.
+    uint64_t sum = 0;
+    int best = -1, bx = 0, by = 0;
+    for (int y = 1; y < H - 1; ++y)
+        for (int x = 1; x < W - 1; ++x) {
+            const uint16_t *a = acc + y * W + x;
+            sum += a[0];
+            const int s = a[-W - 1] + a[-W] + a[-W + 1] + a[-1] + a[0] + a[1] + a[W - 1] + a[W] + a[W + 1];
+            if (s > best) { best = s; bx = x; by = y; }
+        }
+    if (best <= 0) return est;
+    double sx = 0, sy = 0, sw = 0;
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+            const double w = acc[(by + dy) * W + bx + dx];
+            sx += w * dx;
+            sy += w * dy;
+            sw += w;
+        }
+    est.x = (bx + sx / sw) * D + off + 0.5 * step2;
+    est.y = (by + sy / sw) * D + off + 0.5 * step2;
+    est.votes = best;
+    est.background = int(sum * 900 / std::max<uint64_t>(1, uint64_t(W - 2) * (H - 2)));
+    est.found = true;
+    return est;
+}
+
+} // namespace icacam::vision
