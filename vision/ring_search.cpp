@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#ifdef ICACAM_DEBUG
+#include <cstdio>
+#endif
 
 #include "boundary_fit.h"
 #include "edge_profile.h"
@@ -63,32 +66,35 @@ RingSearch::MeanEdges RingSearch::meanProfileEdges()
                                           std::abs(meanDeriv[i + 1]));
         return rA + (i + off.toDouble()) * step;
     };
-    auto levelAfter = [&](int i) { // mean level just outside an edge
-        const int a = i + 3, b = std::min(count - 1, i + 3 + std::max(4, int(0.04 * r0 / step)));
-        int64_t s = 0;
+    // Mean level over a band of w samples starting `gap` samples from i (negative: inside).
+    const int w = std::max(4, int(0.03 * r0 / step));
+    auto level = [&](int i, int dir) {
+        int64_t sum = 0;
         int n = 0;
-        for (int j = a; j <= b; ++j)
-            if (mean[j] != kOutsideFrame) { s += mean[j]; ++n; }
-        return n ? double(s) / n : 0.0;
+        for (int k = 3; k < 3 + w; ++k) {
+            const int j = i + dir * k;
+            if (j >= 0 && j < count && mean[j] != kOutsideFrame) { sum += mean[j]; ++n; }
+        }
+        return n ? double(sum) / n : 0.0;
     };
-
     MeanEdges e;
     const int lo = std::max(2, int((0.9 * r0 - rA) / step));
     const int hi = std::min(count - 3, int((1.75 * r0 - rA) / step));
-    // The contact edge enters the barrel, the darkest band under a ring light: among the
-    // strong falling edges, the one with the darkest band outside it. If nothing falls
-    // (an unusual light), the strongest rising edge into the brightest band.
+    // The contact edge is where the flat, bright end face gives way to the steep barrel,
+    // dark under a ring light: the falling edge with the largest drop between the bands on
+    // either side (a highlight's flank or the face/ICA edge drops less). If nothing falls
+    // (an unusual light), the rising edge with the largest rise.
     for (int sign = -1; sign <= 1 && !e.found; sign += 2) {
         int32_t strongest = 0;
         for (int i = lo; i <= hi; ++i)
             if (isExtremum(meanDeriv, i) && sign * meanDeriv[i] > strongest) strongest = sign * meanDeriv[i];
         if (strongest < minStrength) continue;
-        double bestLevel = 0;
+        double bestDrop = 0;
         for (int i = lo; i <= hi; ++i) {
             if (!isExtremum(meanDeriv, i) || sign * meanDeriv[i] < 0.3 * strongest) continue;
-            const double level = sign * levelAfter(i);
-            if (!e.found || level < bestLevel) {
-                bestLevel = level;
+            const double drop = sign * (level(i, +1) - level(i, -1));
+            if (!e.found || drop > bestDrop) {
+                bestDrop = drop;
                 e.found = true;
                 e.rOuter = radiusOf(i);
                 e.signOuter = sign;
@@ -100,7 +106,7 @@ RingSearch::MeanEdges RingSearch::meanProfileEdges()
     // Silhouette: the outermost clear edge within a barrel's width outside the contact edge.
     const int so = int((e.rOuter + std::max(4.0, 0.03 * r0) - rA) / step);
     const int eo = std::min(count - 3, int((e.rOuter + 0.5 * r0 - rA) / step));
-    const double silhouetteMin = std::max({minStrength, 0.06 * e.strengthOuter * 16.0});
+    const double silhouetteMin = std::max({minStrength, 0.035 * e.strengthOuter * 16.0});
     for (int i = eo; i >= so; --i)
         if (isExtremum(meanDeriv, i) && std::abs(meanDeriv[i]) >= silhouetteMin) {
             e.rMax = radiusOf(i);
@@ -262,7 +268,14 @@ ErrorCode RingSearch::run(Measurement *m)
             m->edgeWidthPx = std::sqrt(std::max(0.0, var));
         }
     }
-    const double noise = robustSigma(aD, 0, K - 2);
+    // Noise of the aligned derivative on the inner part of the window (mostly original
+    // face: the ICA's turning marks would inflate it).
+    const double noise = robustSigma(aD, 0, K / 2);
+#ifdef ICACAM_DEBUG
+    std::fprintf(stderr, "ro=%.1f rmax=%.1f K=%d noise=%.1f step=%.2f\n", me.rOuter, me.rMax, K, noise, step);
+    for (int k = -K; k <= M; ++k) std::fprintf(stderr, "%d:%d/%d ", k, aD[k + K], aP[k + K] / 256);
+    std::fprintf(stderr, "\n");
+#endif
     const double innerMin = std::max(5.0 * noise, 40.0);
     int bestK = 0, innerSign = 0;
     int32_t bestV = 0;
