@@ -1,0 +1,104 @@
+// Every kind of bad input gets status=error with a message, and the batch goes on.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "end_face_renderer.h"
+#include "measure_command.h"
+#include "test_support.h"
+
+using namespace icacam;
+namespace fs = std::filesystem;
+
+namespace {
+void writeBytes(const fs::path &p, const std::vector<uint8_t> &b)
+{
+    std::ofstream(p, std::ios::binary).write(reinterpret_cast<const char *>(b.data()), std::streamsize(b.size()));
+}
+} // namespace
+
+TEST(BadInput, EachGetsAnErrorAndTheBatchGoesOn)
+{
+    const fs::path dir = test::tempDir("bad");
+    // One good image, rendered by our own renderer.
+    host::EndFaceScene s;
+    s.width = 1456;
+    s.height = 1088;
+    s.mmPerPx = 0.0135;
+    s.rInnerMm = 5.6;
+    s.rOuterMm = 6.2;
+    s.rMaxMm = 7.22;
+    s.cxPx = 700;
+    s.cyPx = 540;
+    s.blurSigmaPx = 1.0;
+    s.noiseSigma = 2;
+    const cv::Mat good = host::renderEndFace(s);
+    std::vector<uint8_t> png;
+    cv::imencode(".png", good, png);
+    writeBytes(dir / "good.png", png);
+    writeBytes(dir / "empty.png", {});
+    writeBytes(dir / "truncated.png", std::vector<uint8_t>(png.begin(), png.begin() + long(png.size() / 2)));
+    std::vector<uint8_t> jpg;
+    cv::imencode(".jpg", good, jpg);
+    writeBytes(dir / "truncated.jpg", std::vector<uint8_t>(jpg.begin(), jpg.begin() + long(jpg.size() * 2 / 3)));
+    std::vector<uint8_t> junk(5000);
+    std::mt19937 rng(1);
+    for (auto &b : junk) b = uint8_t(rng());
+    writeBytes(dir / "corrupt.png", junk);
+    std::vector<uint8_t> corruptPng = png;
+    for (size_t i = 100; i < corruptPng.size() - 100; i += 7) corruptPng[i] ^= 0x5a;
+    writeBytes(dir / "corrupt-body.png", corruptPng);
+    writeBytes(dir / "text.png", std::vector<uint8_t>{'h', 'e', 'l', 'l', 'o'});
+    auto save = [&](const char *name, const cv::Mat &m) { cv::imwrite((dir / name).string(), m); };
+    save("tiny.png", cv::Mat(8, 8, CV_8UC1, cv::Scalar(100)));
+    save("black.png", cv::Mat(1088, 1456, CV_8UC1, cv::Scalar(0)));
+    save("white.png", cv::Mat(1088, 1456, CV_8UC1, cv::Scalar(255)));
+    cv::Mat noise(1088, 1456, CV_8UC1);
+    cv::randu(noise, 0, 255);
+    save("noise.png", noise);
+    cv::Mat saturated = good.clone();
+    saturated.convertTo(saturated, CV_8U, 4.0, 0);
+    save("saturated.png", saturated);
+
+    std::ofstream man(dir / "manifest.csv");
+    man << "id,image,n,mm_per_px\n"
+           "good,good.png,0.25,0.0135\n"
+           "missing,nope.png,0.25,0.0135\n"
+           "empty,empty.png,0.25,0.0135\n"
+           "truncated,truncated.png,0.25,0.0135\n"
+           "truncated-jpg,truncated.jpg,0.25,0.0135\n"
+           "corrupt,corrupt.png,0.25,0.0135\n"
+           "corrupt-body,corrupt-body.png,0.25,0.0135\n"
+           "text,text.png,0.25,0.0135\n"
+           "tiny,tiny.png,0.25,0.0135\n"
+           "black,black.png,0.25,0.0135\n"
+           "white,white.png,0.25,0.0135\n"
+           "noise,noise.png,0.25,0.0135\n"
+           "saturated,saturated.png,0.25,0.0135\n"
+           "bad-n,good.png,abc,0.0135\n"
+           "bad-scale,good.png,0.25,-1\n"
+           "short-row,good.png\n"
+           "good-again,good.png,0.25,0.0135\n";
+    man.close();
+    const std::string out = (dir / "out.csv").string();
+    ASSERT_EQ(host::measureCommand({"--manifest", (dir / "manifest.csv").string(), "--out", out}), 0);
+    auto rows = test::readCsvById(out);
+    ASSERT_EQ(rows.size(), 17u);
+    for (const char *id : {"good", "good-again"}) {
+        EXPECT_NE(rows[id]["status"], "error") << id << ": " << rows[id]["message"];
+        EXPECT_FALSE(rows[id]["mu"].empty());
+    }
+    for (auto &[id, r] : rows) {
+        if (id == "good" || id == "good-again") continue;
+        EXPECT_EQ(r["status"], "error") << id;
+        EXPECT_FALSE(r["message"].empty()) << id;
+        EXPECT_TRUE(r["mu"].empty()) << id << " must not carry a value";
+    }
+    EXPECT_NE(rows["truncated"]["message"].find("truncated"), std::string::npos);
+    EXPECT_NE(rows["missing"]["message"].find("not found"), std::string::npos);
+    EXPECT_NE(rows["empty"]["message"].find("empty"), std::string::npos);
+    EXPECT_NE(rows["bad-n"]["message"].find("n"), std::string::npos);
+    fs::remove_all(dir);
+}

@@ -1,0 +1,38 @@
+// The product's accuracy bar on the reference set (../shared/data/devset): every image
+// measured, median |μ − μ_true| ≤ 0.002, max ≤ 0.008 (PRODUCT.md §7), with the paper model.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "measure_command.h"
+#include "test_support.h"
+
+using namespace icacam;
+namespace fs = std::filesystem;
+
+TEST(Devset, AccuracyBar)
+{
+    const fs::path dev = fs::path(test::sharedData()) / "devset";
+    if (!fs::exists(dev / "manifest.csv")) GTEST_SKIP() << "no devset at " << dev;
+    const fs::path dir = test::tempDir("devset");
+    const std::string out = (dir / "out.csv").string();
+    ASSERT_EQ(host::measureCommand({"--manifest", (dev / "manifest.csv").string(), "--out", out,
+                                    "--model", "paper"}),
+              0);
+    auto got = test::readCsvById(out);
+    auto truth = test::readCsvById((dev / "truth.csv").string());
+    ASSERT_FALSE(truth.empty());
+    std::vector<double> errs;
+    for (auto &[id, t] : truth) {
+        auto &r = got[id];
+        ASSERT_NE(r["status"], "error") << id << ": " << r["message"];
+        const double e = std::fabs(std::stod(r["mu"]) - std::stod(t["mu"]));
+        errs.push_back(e);
+        EXPECT_LE(e, 0.008) << id;
+    }
+    std::sort(errs.begin(), errs.end());
+    std::printf("devset: %zu images, median |dmu| %.4f, max %.4f\n", errs.size(), errs[errs.size() / 2], errs.back());
+    EXPECT_LE(errs[errs.size() / 2], 0.002);
+    fs::remove_all(dir);
+}
