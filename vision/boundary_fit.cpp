@@ -6,59 +6,24 @@
 
 namespace icacam::vision {
 
-double BoundaryFit::radiusAt(double theta) const
+double BoundaryFit::radiusAt(double theta) const { return radiusAt(std::cos(theta), std::sin(theta)); }
+
+double BoundaryFit::radiusAt(double c1, double s1) const
 {
-    double r = a0;
-    for (int k = 1; k <= harmonics; ++k) r += a[k] * std::cos(k * theta) + b[k] * std::sin(k * theta);
+    // cos kθ and sin kθ by the angle-addition recurrence from cos θ, sin θ.
+    double r = a0, ck = 1, sk = 0;
+    for (int k = 1; k <= harmonics; ++k) {
+        const double c = ck * c1 - sk * s1;
+        sk = sk * c1 + ck * s1;
+        ck = c;
+        r += a[k] * ck + b[k] * sk;
+    }
     return r;
 }
 
 namespace {
 
-constexpr int kMaxTerms = 2 * BoundaryFit::kMaxHarmonics + 1;
 constexpr int kMaxRays = 1024;
-
-// Solves the (2K+1)-term least-squares problem on the kept points by normal equations
-// (well conditioned: the basis is near-orthogonal on evenly spaced rays).
-bool solve(const double *theta, const double *r, const bool *keep, int n, int K, BoundaryFit *f)
-{
-    const int m = 2 * K + 1;
-    double A[kMaxTerms][kMaxTerms + 1] = {};
-    double basis[kMaxTerms];
-    for (int i = 0; i < n; ++i) {
-        if (!keep[i]) continue;
-        basis[0] = 1;
-        for (int k = 1; k <= K; ++k) {
-            basis[2 * k - 1] = std::cos(k * theta[i]);
-            basis[2 * k] = std::sin(k * theta[i]);
-        }
-        for (int p = 0; p < m; ++p) {
-            for (int q = 0; q < m; ++q) A[p][q] += basis[p] * basis[q];
-            A[p][m] += basis[p] * r[i];
-        }
-    }
-    for (int c = 0; c < m; ++c) { // Gaussian elimination with partial pivoting
-        int piv = c;
-        for (int rr = c + 1; rr < m; ++rr)
-            if (std::fabs(A[rr][c]) > std::fabs(A[piv][c])) piv = rr;
-        if (std::fabs(A[piv][c]) < 1e-9) return false;
-        if (piv != c)
-            for (int q = 0; q <= m; ++q) std::swap(A[c][q], A[piv][q]);
-        for (int rr = 0; rr < m; ++rr) {
-            if (rr == c) continue;
-            const double g = A[rr][c] / A[c][c];
-            for (int q = c; q <= m; ++q) A[rr][q] -= g * A[c][q];
-        }
-    }
-    f->harmonics = K;
-    f->a0 = A[0][m] / A[0][0];
-    for (int k = 1; k <= BoundaryFit::kMaxHarmonics; ++k) f->a[k] = f->b[k] = 0;
-    for (int k = 1; k <= K; ++k) {
-        f->a[k] = A[2 * k - 1][m] / A[2 * k - 1][2 * k - 1];
-        f->b[k] = A[2 * k][m] / A[2 * k][2 * k];
-    }
-    return true;
-}
 
 double medianOf(double *v, int n)
 {
@@ -73,11 +38,16 @@ bool fitBoundary(const EdgeSample *points, const double *radiusPx, const bool *v
 {
     (void)points;
     if (n > kMaxRays || n < 8) return false;
-    double theta[kMaxRays], work[kMaxRays];
+    // The rays are evenly spaced, so the least-squares Fourier fit with some rays missing is
+    // found by imputation: fill the missing rays with the current curve and take the DFT
+    // (an EM iteration that converges to the least-squares solution). O(n·K) per pass.
+    double work[kMaxRays], filled[kMaxRays], c1[kMaxRays], s1[kMaxRays];
     bool keep[kMaxRays];
     int nValid = 0;
     for (int i = 0; i < n; ++i) {
-        theta[i] = 2.0 * std::numbers::pi * i / n;
+        const double t = 2.0 * std::numbers::pi * i / n;
+        c1[i] = std::cos(t);
+        s1[i] = std::sin(t);
         if (valid[i]) work[nValid++] = radiusPx[i];
     }
     if (nValid < 8) return false;
@@ -86,30 +56,53 @@ bool fitBoundary(const EdgeSample *points, const double *radiusPx, const bool *v
     for (int i = 0; i < n; ++i) keep[i] = valid[i] && std::fabs(radiusPx[i] - med) < 0.08 * med;
 
     BoundaryFit f;
-    double sigma = 0;
+    f.a0 = med;
+    auto curveAt = [&](int i) { return f.radiusAt(c1[i], s1[i]); };
     int used = 0;
     for (int pass = 0; pass < 4; ++pass) {
         used = 0;
         for (int i = 0; i < n; ++i) used += keep[i];
         const int K = std::min({opt.maxHarmonics, BoundaryFit::kMaxHarmonics, pass == 0 ? 2 : 99,
-                                std::max(1, used / 8)});
-        if (used < 8 || !solve(theta, radiusPx, keep, n, K, &f)) return false;
+                                std::max(1, used / 8), (n - 1) / 2});
+        if (used < 8) return false;
+        // A few imputation sweeps per pass; more where many rays are missing.
+        const int sweeps = used == n ? 1 : (pass == 3 ? 3 : 1);
+        for (int sweep = 0; sweep < sweeps; ++sweep) {
+            for (int i = 0; i < n; ++i) filled[i] = keep[i] ? radiusPx[i] : curveAt(i);
+            BoundaryFit g;
+            g.harmonics = K;
+            double sum = 0;
+            for (int i = 0; i < n; ++i) sum += filled[i];
+            g.a0 = sum / n;
+            for (int i = 0; i < n; ++i) {
+                double ck = 1, sk = 0;
+                for (int k = 1; k <= K; ++k) {
+                    const double c = ck * c1[i] - sk * s1[i];
+                    sk = sk * c1[i] + ck * s1[i];
+                    ck = c;
+                    g.a[k] += filled[i] * ck;
+                    g.b[k] += filled[i] * sk;
+                }
+            }
+            for (int k = 1; k <= K; ++k) { g.a[k] *= 2.0 / n; g.b[k] *= 2.0 / n; }
+            f = g;
+        }
         int m = 0;
         for (int i = 0; i < n; ++i)
-            if (keep[i]) work[m++] = std::fabs(radiusPx[i] - f.radiusAt(theta[i]));
-        sigma = 1.4826 * medianOf(work, m);
+            if (keep[i]) work[m++] = std::fabs(radiusPx[i] - curveAt(i));
+        const double sigma = 1.4826 * medianOf(work, m);
         const double limit = std::max(opt.minRejectPx, opt.rejectSigma * sigma);
-        for (int i = 0; i < n; ++i)
-            keep[i] = valid[i] && std::fabs(radiusPx[i] - f.radiusAt(theta[i])) <= limit;
+        for (int i = 0; i < n; ++i) keep[i] = valid[i] && std::fabs(radiusPx[i] - curveAt(i)) <= limit;
     }
     used = 0;
     double ss = 0;
     for (int i = 0; i < n; ++i) {
         if (!keep[i]) continue;
-        const double e = radiusPx[i] - f.radiusAt(theta[i]);
+        const double e = radiusPx[i] - curveAt(i);
         ss += e * e;
         ++used;
     }
+    if (used < 8) return false;
     f.used = used;
     f.scatterPx = std::sqrt(ss / std::max(1, used - (2 * f.harmonics + 1)));
     f.coverage = double(used) / n;

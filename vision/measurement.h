@@ -59,6 +59,7 @@ struct BoundaryFit {
     int used = 0;           // edge points kept by the robust fit
 
     double radiusAt(double theta) const;
+    double radiusAt(double cosTheta, double sinTheta) const; // same, trig precomputed
 };
 
 struct Measurement {

@@ -25,17 +25,40 @@ int sampleRay(const LumaView &v, const RaySpec &ray, int count, uint16_t *out)
     // Positions advance by a constant Q16.16 increment; the accumulated rounding over
     // 1024 steps stays below 1024 × 2^-16 px ≈ 0.016 px.
     const Q16_16 dx = ray.step.mul(ray.cosT), dy = ray.step.mul(ray.sinT);
-    Q16_16 x = ray.cx + ray.r0.mul(ray.cosT);
-    Q16_16 y = ray.cy + ray.r0.mul(ray.sinT);
-    int inside = 0;
-    for (int i = 0; i < count; ++i) {
-        const uint16_t s = sampleBilinear(v, x, y);
-        inside += s != kOutsideFrame;
-        out[i] = s;
-        x = x + dx;
-        y = y + dy;
+    const Q16_16 x0 = ray.cx + ray.r0.mul(ray.cosT), y0 = ray.cy + ray.r0.mul(ray.sinT);
+    if (count <= 0) return 0;
+    const int64_t xEnd = int64_t(x0.raw()) + int64_t(dx.raw()) * (count - 1);
+    const int64_t yEnd = int64_t(y0.raw()) + int64_t(dy.raw()) * (count - 1);
+    const int64_t limX = int64_t(v.width - 2) << 16, limY = int64_t(v.height - 2) << 16;
+    const bool allInside = x0.raw() >= 0 && y0.raw() >= 0 && xEnd >= 0 && yEnd >= 0 &&
+                           x0.raw() < limX && y0.raw() < limY && xEnd < limX && yEnd < limY;
+    if (!allInside) { // slow path: per-sample checks (the ray leaves the frame)
+        Q16_16 x = x0, y = y0;
+        int inside = 0;
+        for (int i = 0; i < count; ++i) {
+            out[i] = sampleBilinear(v, x, y);
+            inside += out[i] != kOutsideFrame;
+            x = x + dx;
+            y = y + dy;
+        }
+        return inside;
     }
-    return inside;
+    // Fast path: the segment is inside (a convex frame contains it once both ends are),
+    // so no bounds checks; same arithmetic as sampleBilinear (test-pinned equal).
+    int32_t x = x0.raw(), y = y0.raw();
+    const int32_t sx = dx.raw(), sy = dy.raw();
+    const uint8_t *base = v.data;
+    const size_t stride = size_t(v.stride), step = size_t(v.pixelStep);
+    for (int i = 0; i < count; ++i, x += sx, y += sy) {
+        const int32_t xq = (x + 128) >> 8, yq = (y + 128) >> 8;
+        const uint32_t fx = uint32_t(xq & 255), fy = uint32_t(yq & 255);
+        const uint8_t *p = base + size_t(yq >> 8) * stride + size_t(xq >> 8) * step;
+        const uint8_t *q = p + stride;
+        const uint32_t top = p[0] * (256 - fx) + p[step] * fx;
+        const uint32_t bot = q[0] * (256 - fx) + q[step] * fx;
+        out[i] = uint16_t((top * (256 - fy) + bot * fy + 128) >> 8);
+    }
+    return count;
 }
 
 void rayDirection(int i, int n, Q2_14 *cosT, Q2_14 *sinT)

@@ -21,6 +21,8 @@ constexpr int kMaxFine = EndFaceAnalyzer::kMaxFineSamples;
 constexpr int kMaxCoarse = EndFaceAnalyzer::kMaxCoarseSamples;
 // A 3-grey-level step blurred to σ = 2 px gives a coarse derivative of about 1200.
 constexpr int32_t kMinCoarseStrength = 1000;
+// Widest ICA searched, as a fraction of the initial radius.
+constexpr double kMaxU = 0.32;
 
 double robustSigma(const int32_t *d, int lo, int hi)
 {
@@ -127,32 +129,36 @@ void RingSearch::sampleFine(double rStart, double step, int count, Measurement *
         rayDirection(i, kRays, &ray.cosT, &ray.sinT);
         uint16_t *row = fine + size_t(i) * kMaxFine;
         inside += uint32_t(sampleRay(*frame, ray, count, row));
-        for (int j = 0; j < count; ++j) saturated += row[j] == kFullScaleQ8;
     }
-    m->saturatedFraction = inside ? double(saturated) / inside : 0;
     if (inside < uint32_t(count) * kRays) m->flags |= kFlagSpecimenClipped;
 
     // Derivative across a [1 2 1] angular smoothing of neighbouring rays (the boundaries
     // vary slowly with angle; the noise does not). Stored as slope in 1/128 grey per px.
     int32_t t[kMaxFine];
+    const bool allInside = inside == uint32_t(count) * kRays;
     for (int i = 0; i < kRays; ++i) {
         const uint16_t *a = fine + size_t((i + kRays - 1) % kRays) * kMaxFine;
         const uint16_t *b = fine + size_t(i) * kMaxFine;
         const uint16_t *c = fine + size_t((i + 1) % kRays) * kMaxFine;
-        for (int j = 0; j < count; ++j)
-            t[j] = (a[j] == kOutsideFrame || b[j] == kOutsideFrame || c[j] == kOutsideFrame)
-                       ? -1
-                       : int32_t(a[j]) + 2 * int32_t(b[j]) + int32_t(c[j]);
-        int16_t *d = deriv + size_t(i) * kMaxFine;
         for (int j = 0; j < count; ++j) {
-            if (j < 2 || j + 2 >= count || t[j - 2] < 0 || t[j - 1] < 0 || t[j + 1] < 0 || t[j + 2] < 0) {
-                d[j] = 0;
-                continue;
-            }
+            saturated += b[j] == kFullScaleQ8;
+            t[j] = int32_t(a[j]) + 2 * int32_t(b[j]) + int32_t(c[j]);
+        }
+        if (!allInside) // a sum touching a sample outside the frame is marked unusable
+            for (int j = 0; j < count; ++j)
+                if (a[j] == kOutsideFrame || b[j] == kOutsideFrame || c[j] == kOutsideFrame) t[j] = -1;
+        int16_t *d = deriv + size_t(i) * kMaxFine;
+        d[0] = d[1] = 0;
+        if (count >= 2) d[count - 1] = d[count - 2] = 0;
+        for (int j = 2; j + 2 < count; ++j) {
             const int32_t g = t[j + 2] + 2 * t[j + 1] - 2 * t[j - 1] - t[j - 2];
             d[j] = int16_t(std::clamp(g >> 6, -32767, 32767));
         }
+        if (!allInside)
+            for (int j = 2; j + 2 < count; ++j)
+                if (t[j - 2] < 0 || t[j - 1] < 0 || t[j + 1] < 0 || t[j + 2] < 0) d[j] = 0;
     }
+    m->saturatedFraction = inside ? double(saturated) / inside : 0;
 }
 
 bool RingSearch::locateOnRays(int sign, const double *loPx, const double *hiPx, int32_t minStrength,
@@ -170,9 +176,8 @@ bool RingSearch::locateOnRays(int sign, const double *loPx, const double *hiPx, 
         const EdgePeak p = strongestEdge(d, fineCount_, lo, hi, sign, interior);
         valid[i] = p.found && p.value >= minStrength;
         radius[i] = fineStart_ + p.position.toDouble() * fineStep_;
-        const double t = 2 * kPi * i / kRays;
-        pts[i] = {Q16_16::fromDouble(cx + radius[i] * std::cos(t)),
-                  Q16_16::fromDouble(cy + radius[i] * std::sin(t)), Q16_16::fromDouble(radius[i]),
+        pts[i] = {Q16_16::fromDouble(cx + radius[i] * rayCos_[i]),
+                  Q16_16::fromDouble(cy + radius[i] * raySin_[i]), Q16_16::fromDouble(radius[i]),
                   p.value, valid[i]};
         if (!valid[i]) continue;
         const uint16_t *row = fine + size_t(i) * kMaxFine;
@@ -182,7 +187,7 @@ bool RingSearch::locateOnRays(int sign, const double *loPx, const double *hiPx, 
             steps[nSteps++] = (double(row[j + reach]) - double(row[j - reach])) / 256.0;
     }
     if (!fitBoundary(pts, radius, valid, kRays, cx, cy, FitOptions{}, fit)) return false;
-    for (int i = 0; i < kRays; ++i) pts[i].valid = pts[i].valid && std::fabs(radius[i] - fit->radiusAt(2 * kPi * i / kRays)) <= std::max(0.75, 3 * fit->scatterPx / 1.0);
+    for (int i = 0; i < kRays; ++i) pts[i].valid = pts[i].valid && std::fabs(radius[i] - fit->radiusAt(rayCos_[i], raySin_[i])) <= std::max(0.75, 3 * fit->scatterPx / 1.0);
     if (nSteps) {
         std::nth_element(steps, steps + nSteps / 2, steps + nSteps);
         *contrastOut = steps[nSteps / 2];
@@ -192,13 +197,18 @@ bool RingSearch::locateOnRays(int sign, const double *loPx, const double *hiPx, 
 
 ErrorCode RingSearch::run(Measurement *m)
 {
+    for (int i = 0; i < kRays; ++i) {
+        rayCos_[i] = std::cos(2 * kPi * i / kRays);
+        raySin_[i] = std::sin(2 * kPi * i / kRays);
+    }
     const MeanEdges me = meanProfileEdges();
     if (!me.found) return ErrorCode::OuterEdgeNotFound;
 
-    // Fine window: from the widest ICA the model knows (u up to 0.45·R0 inwards) to a
+    // Fine window: from beyond the widest ICA the model knows (u up to 0.32·R0 ≈ 1.6 mm at
+    // D0 = 10 mm, against 1.2 mm in the paper's data) to a
     // margin outside the contact edge that covers its departure from a circle.
     const double margin = std::max(10.0, 0.06 * r0);
-    const double rStart = std::max(0.3 * r0, me.rOuter - 0.45 * r0 - margin);
+    const double rStart = std::max(0.3 * r0, me.rOuter - kMaxU * r0 - margin);
     const double rEnd = me.rOuter + margin;
     const double step = std::max(1.0, (rEnd - rStart) / kMaxFine);
     const int count = std::min(kMaxFine, int((rEnd - rStart) / step));
@@ -221,7 +231,7 @@ ErrorCode RingSearch::run(Measurement *m)
     // Pass 2: close to the fitted curve, so a stain edge nearby cannot win.
     auto around = [&](const BoundaryFit &f, double half, double offset) {
         for (int i = 0; i < kRays; ++i) {
-            const double r = f.radiusAt(2 * kPi * i / kRays) + offset;
+            const double r = f.radiusAt(rayCos_[i], raySin_[i]) + offset;
             lo[i] = r - half;
             hi[i] = r + half;
         }
@@ -233,14 +243,14 @@ ErrorCode RingSearch::run(Measurement *m)
 
     // The original face edge, named on the mean of the rays aligned on the contact edge:
     // alignment keeps a narrow ring sharp even where the contact edge is not a circle.
-    const int K = std::min(count - 3, int((0.45 * r0 + 2) / step));
+    const int K = std::min(count - 3, int((kMaxU * r0 + 2) / step));
     const int M = std::min(int(8 / step) + 1, 12);
     constexpr int kSpan = kMaxFine + 16;
     int32_t aD[kSpan] = {}, aP[kSpan] = {};
     int32_t nD[kSpan] = {};
     for (int i = 0; i < kRays; ++i) {
         if (!outerPts[i].valid) continue;
-        const int base = int(std::lround((outer.radiusAt(2 * kPi * i / kRays) - rStart) / step));
+        const int base = int(std::lround((outer.radiusAt(rayCos_[i], raySin_[i]) - rStart) / step));
         const int16_t *d = deriv + size_t(i) * kMaxFine;
         const uint16_t *row = fine + size_t(i) * kMaxFine;
         for (int k = -K; k <= M; ++k) {
@@ -305,9 +315,8 @@ ErrorCode RingSearch::run(Measurement *m)
     const double reach = std::max(1.0, std::min(3.0, 0.5 * uGuess));
     for (int pass = 0; pass < 2; ++pass) {
         for (int i = 0; i < kRays; ++i) {
-            const double t = 2 * kPi * i / kRays;
-            const double ro = outer.radiusAt(t);
-            const double c = pass == 0 ? ro - uGuess : inner.radiusAt(t);
+            const double ro = outer.radiusAt(rayCos_[i], raySin_[i]);
+            const double c = pass == 0 ? ro - uGuess : inner.radiusAt(rayCos_[i], raySin_[i]);
             const double h = pass == 0 ? half : 2.5;
             lo[i] = c - h;
             hi[i] = std::min(c + h, ro - 2.0);

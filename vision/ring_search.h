@@ -9,6 +9,8 @@
 
 namespace icacam::vision {
 
+constexpr int kMaxRayTable = 256;
+
 struct RingSearch {
     const LumaView *frame;
     double r0;       // initial specimen radius, pixels
@@ -41,6 +43,7 @@ struct RingSearch {
 
     double fineStart_ = 0, fineStep_ = 1;
     int fineCount_ = 0;
+    double rayCos_[kMaxRayTable] = {}, raySin_[kMaxRayTable] = {}; // per fine ray
 };
 
 } // namespace icacam::vision

@@ -31,7 +31,7 @@ CentreEstimate SpecimenLocator::locate(const LumaView &v, double rMinPx, double 
     if (W < 8 || H < 8) return est;
 
     uint8_t *dec = work_;                                          // W × H luma
-    uint16_t *acc = reinterpret_cast<uint16_t *>(work_ + kMaxCells * kMaxCells); // votes
+    uint16_t *acc = reinterpret_cast<uint16_t *>(work_ + size_t(kMaxCells) * kMaxCells * 3); // votes
     std::fill(acc, acc + size_t(W) * H, uint16_t(0));
 
     // Decimate: mean of a 2×2 block at the centre of each D×D cell.
@@ -41,12 +41,17 @@ CentreEstimate SpecimenLocator::locate(const LumaView &v, double rMinPx, double 
         for (int x = 0; x < W; ++x) {
             const int px = x * D + off, py = y * D + off;
             const int px2 = std::min(px + step2, v.width - 1), py2 = std::min(py + step2, v.height - 1);
-            dec[y * W + x] = uint8_t((v.at(px, py) + v.at(px2, py) + v.at(px, py2) + v.at(px2, py2) + 2) >> 2);
+            const uint8_t *r0 = v.data + size_t(py) * size_t(v.stride);
+            const uint8_t *r1 = v.data + size_t(py2) * size_t(v.stride);
+            const size_t a = size_t(px) * size_t(v.pixelStep), b = size_t(px2) * size_t(v.pixelStep);
+            dec[y * W + x] = uint8_t((r0[a] + r0[b] + r1[a] + r1[b] + 2) >> 2);
         }
 
     // Sobel gradients; threshold at the 96th percentile of the L1 magnitude so that the
     // voters are the strongest edges whatever the exposure (and at least 4 grey levels).
     uint32_t hist[1024] = {};
+    // L1 gradient magnitudes, kept for the voting pass (the second half of the work area).
+    uint16_t *mag = reinterpret_cast<uint16_t *>(work_ + size_t(kMaxCells) * kMaxCells);
     auto sobel = [&](int x, int y, int *gx, int *gy) {
         const uint8_t *p = dec + y * W + x;
         *gx = (p[-W + 1] + 2 * p[1] + p[W + 1]) - (p[-W - 1] + 2 * p[-1] + p[W - 1]);
@@ -56,7 +61,9 @@ CentreEstimate SpecimenLocator::locate(const LumaView &v, double rMinPx, double 
         for (int x = 1; x < W - 1; ++x) {
             int gx, gy;
             sobel(x, y, &gx, &gy);
-            hist[std::min(1023, (std::abs(gx) + std::abs(gy)) >> 1)]++;
+            const int g = std::min(1023, (std::abs(gx) + std::abs(gy)) >> 1);
+            mag[y * W + x] = uint16_t(g);
+            hist[g]++;
         }
     const uint32_t total = uint32_t(W - 2) * uint32_t(H - 2);
     uint32_t above = 0;
@@ -68,9 +75,9 @@ CentreEstimate SpecimenLocator::locate(const LumaView &v, double rMinPx, double 
     const int rHi = std::max(rLo + 1, int(rMaxPx / D + 1));
     for (int y = 1; y < H - 1; ++y)
         for (int x = 1; x < W - 1; ++x) {
+            if (mag[y * W + x] < thr) continue;
             int gx, gy;
             sobel(x, y, &gx, &gy);
-            if (((std::abs(gx) + std::abs(gy)) >> 1) < thr) continue;
             const int norm = int(isqrt(uint32_t(gx * gx + gy * gy)));
             if (norm == 0) continue;
             // Unit vector in Q2.14; vote along both directions (either edge polarity).

@@ -18,9 +18,9 @@ struct CentreEstimate {
 
 class SpecimenLocator {
 public:
-    static constexpr int kMaxCells = 256; // decimated frame is at most 256 × 256
+    static constexpr int kMaxCells = 128; // decimated frame is at most 128 × 128
     // Working memory a locator needs (bytes), for the arena.
-    static constexpr size_t kWorkBytes = size_t(kMaxCells) * kMaxCells * 3;
+    static constexpr size_t kWorkBytes = size_t(kMaxCells) * kMaxCells * 5; // luma, |g|, votes
 
     // `work` must hold kWorkBytes and outlive the locator.
     explicit SpecimenLocator(uint8_t *work) : work_(work) {}

@@ -1,0 +1,45 @@
+// Per-frame cost of the vision pipeline and of the plain OpenCV pipeline on the same frame,
+// side by side (report the ratio, never assert on wall time).
+#include <benchmark/benchmark.h>
+
+#include <opencv2/core.hpp>
+
+#include "end_face_renderer.h"
+#include "opencv_baseline.h"
+#include "vision/end_face_analyzer.h"
+#include "vision/paper_model.h"
+
+namespace {
+const cv::Mat &frame()
+{
+    static const cv::Mat img = [] {
+        icacam::host::EndFaceScene s;
+        s.rInnerMm = 5.5; s.rOuterMm = 6.2; s.rMaxMm = 7.25;
+        s.blurSigmaPx = 1.2; s.noiseSigma = 3; s.stains = 3; s.turningMarks = 3;
+        return icacam::host::renderEndFace(s);
+    }();
+    return img;
+}
+
+void BM_VisionPipeline(benchmark::State &state)
+{
+    const cv::Mat &img = frame();
+    icacam::vision::EndFaceAnalyzer a;
+    a.configure(img.cols, img.rows);
+    icacam::vision::PaperModel model;
+    const icacam::vision::LumaView v{img.data, img.cols, img.rows, int(img.step[0]), 1};
+    const icacam::vision::SpecimenSpec spec{0.25, 500, 10, 15, 0.0135};
+    for (auto _ : state) benchmark::DoNotOptimize(a.measure(v, spec, model).mu);
+}
+BENCHMARK(BM_VisionPipeline)->Unit(benchmark::kMicrosecond);
+
+void BM_OpenCvBaseline(benchmark::State &state)
+{
+    cv::setNumThreads(1);
+    const cv::Mat &img = frame();
+    for (auto _ : state) benchmark::DoNotOptimize(icacam::bench::opencvBaselineRadius(img));
+}
+BENCHMARK(BM_OpenCvBaseline)->Unit(benchmark::kMicrosecond);
+} // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,142 @@
+#include "fe_model.h"
+
+#include <cmath>
+
+#include "fe_model_table.h"
+
+namespace icacam::vision {
+
+namespace t = fe_table;
+
+namespace {
+
+// One n row: the points (u, μ) with data where u rises strictly with μ (the invertible part).
+struct Row {
+    double u[t::kMuCount + 2] = {};
+    double mu[t::kMuCount + 2] = {};
+    int count = 0;
+};
+
+Row rowAt(int ni)
+{
+    Row r;
+    for (int j = 0; j < t::kMuCount; ++j) {
+        const double u = t::kU[ni][j];
+        if (u < 0) continue;
+        if (r.count > 0 && u <= r.u[r.count - 1] + 1e-6) {
+            // u did not grow (no fold-over yet at this μ): u cannot tell these μ apart; keep
+            // the largest, so that u just above it interpolates from the end of the plateau.
+            r.mu[r.count - 1] = t::kMu[j];
+            continue;
+        }
+        r.u[r.count] = u;
+        r.mu[r.count] = t::kMu[j];
+        ++r.count;
+    }
+    return r;
+}
+
+// Monotone cubic Hermite (Fritsch–Carlson) through the row's points; clamps outside.
+void pchip(const Row &r, double x, double &y, double &dy, bool &outside)
+{
+    outside = r.count < 2 || x < r.u[0] - 1e-9 || x > r.u[r.count - 1] + 1e-9;
+    if (r.count == 0) { y = 0; dy = 0; return; }
+    if (r.count == 1) { y = r.mu[0]; dy = 0; return; }
+    int k = 0;
+    while (k < r.count - 2 && x > r.u[k + 1]) ++k;
+    auto slope = [&](int i) { return (r.mu[i + 1] - r.mu[i]) / (r.u[i + 1] - r.u[i]); };
+    auto tangent = [&](int i) {
+        if (i == 0) return slope(0);
+        if (i == r.count - 1) return slope(i - 1);
+        const double a = slope(i - 1), b = slope(i);
+        if (a * b <= 0) return 0.0;
+        return 2 / (1 / a + 1 / b); // harmonic mean keeps it monotone
+    };
+    const double h = r.u[k + 1] - r.u[k];
+    double s = (x - r.u[k]) / h;
+    if (s < 0) { y = r.mu[k] + (x - r.u[k]) * tangent(k); dy = tangent(k); return; }
+    if (s > 1) { y = r.mu[k + 1] + (x - r.u[k + 1]) * tangent(k + 1); dy = tangent(k + 1); return; }
+    const double m0 = tangent(k) * h, m1 = tangent(k + 1) * h;
+    const double s2 = s * s, s3 = s2 * s;
+    y = (2 * s3 - 3 * s2 + 1) * r.mu[k] + (s3 - 2 * s2 + s) * m0 + (-2 * s3 + 3 * s2) * r.mu[k + 1] +
+        (s3 - s2) * m1;
+    dy = ((6 * s2 - 6 * s) * r.mu[k] + (3 * s2 - 4 * s + 1) * m0 + (-6 * s2 + 6 * s) * r.mu[k + 1] +
+          (3 * s2 - 2 * s) * m1) / h;
+}
+
+// Bracket x in a sorted axis: index i and weight w for axis[i], axis[i+1].
+void bracket(const double *axis, int count, double x, int &i, double &w)
+{
+    if (count == 1 || x <= axis[0]) { i = 0; w = 0; return; }
+    if (x >= axis[count - 1]) { i = count - 2; w = 1; return; }
+    i = 0;
+    while (i < count - 2 && x > axis[i + 1]) ++i;
+    w = (x - axis[i]) / (axis[i + 1] - axis[i]);
+}
+
+double lerp2(const double (&tab)[t::kNCount][t::kMuCount], double n, double mu)
+{
+    int i = 0, j = 0;
+    double wn = 0, wm = 0;
+    bracket(t::kN, t::kNCount, n, i, wn);
+    bracket(t::kMu, t::kMuCount, mu, j, wm);
+    auto at = [&](int a, int b) {
+        a = a < t::kNCount ? a : t::kNCount - 1;
+        b = b < t::kMuCount ? b : t::kMuCount - 1;
+        return tab[a][b];
+    };
+    const double v00 = at(i, j), v01 = at(i, j + 1), v10 = at(i + 1, j), v11 = at(i + 1, j + 1);
+    if (v00 < 0 || v01 < 0 || v10 < 0 || v11 < 0) return -1;
+    return (1 - wn) * ((1 - wm) * v00 + wm * v01) + wn * ((1 - wm) * v10 + wm * v11);
+}
+
+} // namespace
+
+ModelEstimate FeModel::estimate(const ModelInputs &in) const
+{
+    ModelEstimate e;
+    const double scale = in.d0Mm > 0 ? t::kD0Mm / in.d0Mm : 1.0;
+    const double u = in.uMm * scale;
+    if (in.n < t::kN[0] - 1e-9) e.range |= kModelNBelow;
+    if (in.n > t::kN[t::kNCount - 1] + 1e-9) e.range |= kModelNAbove;
+    if (in.kMpa > 0 && (in.kMpa < t::kKMinMpa - 1e-9 || in.kMpa > t::kKMaxMpa + 1e-9)) e.range |= kModelKOutside;
+    int i = 0;
+    double w = 0;
+    bracket(t::kN, t::kNCount, in.n, i, w);
+    const int i1 = t::kNCount > 1 ? i + 1 : i;
+    double mu0 = 0, d0 = 0, mu1 = 0, d1 = 0;
+    bool out0 = false, out1 = false;
+    const Row r0 = rowAt(i), r1 = rowAt(i1);
+    pchip(r0, u, mu0, d0, out0);
+    pchip(r1, u, mu1, d1, out1);
+    e.mu = (1 - w) * mu0 + w * mu1;
+    e.dMuDu = ((1 - w) * d0 + w * d1) * scale;
+    if ((w < 1 && out0) || (w > 0 && out1)) e.range |= kModelUOutside;
+    const double muLo = t::kMu[0], muHi = t::kMu[t::kMuCount - 1];
+    if (e.mu < muLo - 1e-9 || (u <= 0 && muLo > 0)) e.range |= kModelMuBelow;
+    if (e.mu > muHi + 1e-9) e.range |= kModelMuAbove;
+    if (e.dMuDu <= 0) e.range |= kModelUOutside;
+    // The model's own error: the mesh study's spread in u carried through the slope, plus
+    // the interpolation between simulated n (docs/fe.md).
+    e.modelSigma = 0.02 * std::fabs(e.mu) + 0.005;
+    return e;
+}
+
+double FeModel::uAt(double n, double mu) const { return lerp2(t::kU, n, mu); }
+
+FeRadii FeModel::radii(double n, double mu, double d0Mm) const
+{
+    FeRadii r;
+    const double s = d0Mm / t::kD0Mm;
+    r.riMm = lerp2(t::kRi, n, mu) * s;
+    r.roMm = lerp2(t::kRo, n, mu) * s;
+    r.rMaxMm = lerp2(t::kRmax, n, mu) * s;
+    if (n < t::kN[0] - 1e-9) r.range |= kModelNBelow;
+    if (n > t::kN[t::kNCount - 1] + 1e-9) r.range |= kModelNAbove;
+    if (mu < t::kMu[0] - 1e-9) r.range |= kModelMuBelow;
+    if (mu > t::kMu[t::kMuCount - 1] + 1e-9) r.range |= kModelMuAbove;
+    if (r.riMm < 0) r.range |= kModelUOutside;
+    return r;
+}
+
+} // namespace icacam::vision

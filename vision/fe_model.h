@@ -1,0 +1,26 @@
+#pragma once
+// μ(u, n) and the radii R_i, R_o, R_max from our own CalculiX runs (issue 5, docs/fe.md).
+// The table is generated: vision/fe_model_table.h, by `icacam fe fit` from data/fe/*.csv.
+// Pure C++20: no heap, no OS calls, no exceptions.
+#include "friction_model.h"
+
+namespace icacam::vision {
+
+struct FeRadii {
+    double riMm = 0, roMm = 0, rMaxMm = 0;
+    uint32_t range = kModelInRange;
+};
+
+class FeModel final : public FrictionModel {
+public:
+    const char *name() const override { return "fe"; }
+    // μ from u (scaled to D0 = 10 mm by geometric similarity) and n: monotone cubic (PCHIP)
+    // in u along each simulated n, linear between the simulated n.
+    ModelEstimate estimate(const ModelInputs &in) const override;
+    // The FE's u at (n, μ) (D0 = 10 mm), linear in μ and n between grid points.
+    double uAt(double n, double mu) const;
+    // The radii the FE predicts at (n, μ), scaled to d0Mm.
+    FeRadii radii(double n, double mu, double d0Mm = 10) const;
+};
+
+} // namespace icacam::vision
