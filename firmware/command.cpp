@@ -1,0 +1,146 @@
+#include "firmware/command.h"
+
+#include <cmath>
+#include <cstdlib>
+
+namespace icacam::fw {
+
+namespace {
+
+CommandParse fail(const char *code, std::string msg)
+{
+    CommandParse p;
+    p.code = code;
+    p.message = std::move(msg);
+    return p;
+}
+
+bool kindOf(std::string_view name, CommandKind *k)
+{
+    static const struct { const char *name; CommandKind kind; } kNames[] = {
+        {"help", CommandKind::Help}, {"status", CommandKind::Status}, {"trigger", CommandKind::Trigger},
+        {"get", CommandKind::Get},   {"set", CommandKind::Set},       {"results", CommandKind::Results},
+    };
+    for (const auto &n : kNames)
+        if (name == n.name) { *k = n.kind; return true; }
+    return false;
+}
+
+std::string printable(std::string_view s)
+{
+    std::string out;
+    for (char c : s.substr(0, 40)) out.push_back(uint8_t(c) >= 0x20 && uint8_t(c) < 0x7F ? c : '?');
+    return out;
+}
+
+bool parseCount(double v, int *count)
+{
+    if (!(v >= 1 && v <= kMaxResultsAsked) || v != std::floor(v)) return false;
+    *count = int(v);
+    return true;
+}
+
+} // namespace
+
+CommandParse parseCommand(std::string_view line)
+{
+    while (!line.empty() && (line.back() == '\r' || line.back() == ' ' || line.back() == '\t')) line.remove_suffix(1);
+    while (!line.empty() && (line.front() == ' ' || line.front() == '\t')) line.remove_prefix(1);
+    if (line.empty()) return fail("malformed", "empty line");
+    CommandParse p;
+    if (line.front() == '{') {
+        FlatObject obj;
+        if (std::string err = parseFlatObject(line, &obj); !err.empty()) return fail("malformed", "bad JSON: " + err);
+        const JsonField *cmd = obj.find("cmd");
+        if (!cmd || cmd->type != JsonField::Type::String) return fail("malformed", "missing \"cmd\" string");
+        if (const JsonField *id = obj.find("id"))
+            p.cmd.tag = id->type == JsonField::Type::String ? id->text.substr(0, 64) : id->text.substr(0, 64);
+        if (!kindOf(cmd->text, &p.cmd.kind))
+            return fail("unknown_command", "unknown command '" + printable(cmd->text) + "' (try help)");
+        if (const JsonField *k = obj.find("key")) {
+            if (k->type != JsonField::Type::String) return fail("bad_argument", "\"key\" must be a string");
+            p.cmd.key = k->text;
+        }
+        if (const JsonField *v = obj.find("value")) {
+            if (v->type != JsonField::Type::String && v->type != JsonField::Type::Number)
+                return fail("bad_argument", "\"value\" must be a number or a string");
+            p.cmd.value = v->text;
+        } else if (p.cmd.kind == CommandKind::Set) {
+            return fail("bad_argument", "set needs \"key\" and \"value\"");
+        }
+        if (const JsonField *n = obj.find("n")) {
+            if (n->type != JsonField::Type::Number || !parseCount(n->number, &p.cmd.count))
+                return fail("bad_argument", "\"n\" must be a whole number from 1 to 1000");
+        }
+        if (p.cmd.kind == CommandKind::Set && p.cmd.key.empty()) return fail("bad_argument", "set needs \"key\"");
+        p.ok = true;
+        return p;
+    }
+    // Words: cmd [arg [arg]]
+    std::string_view words[4];
+    int nw = 0;
+    size_t i = 0;
+    while (i < line.size()) {
+        while (i < line.size() && line[i] == ' ') ++i;
+        if (i >= line.size()) break;
+        if (nw == 3) return fail("bad_argument", "too many words");
+        const size_t b = i;
+        while (i < line.size() && line[i] != ' ') ++i;
+        words[nw++] = line.substr(b, i - b);
+    }
+    if (!kindOf(words[0], &p.cmd.kind))
+        return fail("unknown_command", "unknown command '" + printable(words[0]) + "' (try help)");
+    if (p.cmd.kind == CommandKind::Set) {
+        if (nw != 3) return fail("bad_argument", "usage: set KEY VALUE");
+        p.cmd.key = std::string(words[1]);
+        p.cmd.value = std::string(words[2]);
+    } else if (p.cmd.kind == CommandKind::Get) {
+        if (nw > 2) return fail("bad_argument", "usage: get [KEY]");
+        if (nw == 2) p.cmd.key = std::string(words[1]);
+    } else if (p.cmd.kind == CommandKind::Results) {
+        if (nw > 2) return fail("bad_argument", "usage: results [N]");
+        if (nw == 2) {
+            char *end = nullptr;
+            const std::string w(words[1].substr(0, 16));
+            const double v = std::strtod(w.c_str(), &end);
+            if (end != w.c_str() + w.size() || words[1].size() > 16 || !parseCount(v, &p.cmd.count))
+                return fail("bad_argument", "results: N must be a whole number from 1 to 1000");
+        }
+    } else if (nw > 1) {
+        return fail("bad_argument", "'" + std::string(words[0]) + "' takes no arguments");
+    }
+    p.ok = true;
+    return p;
+}
+
+LineAssembler::Event LineAssembler::push(std::string_view *data)
+{
+    if (ready_) {
+        buf_.clear();
+        ready_ = false;
+    }
+    while (!data->empty()) {
+        const char c = data->front();
+        data->remove_prefix(1);
+        if (c == '\n') {
+            if (discarding_) {
+                discarding_ = false;
+                buf_.clear();
+                continue;
+            }
+            ready_ = true;
+            return Event::Line;
+        }
+        if (discarding_) continue;
+        if (buf_.size() >= max_) {
+            discarding_ = true;
+            buf_.clear();
+            ready_ = true; // the empty buffer is cleared again on the next push
+            return Event::Overflow;
+        }
+        buf_.push_back(c);
+    }
+    return Event::None;
+}
+
+} // namespace icacam::fw

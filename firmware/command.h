@@ -1,0 +1,50 @@
+#pragma once
+// The serial command language: one JSON object a line, {"cmd":"status"}, or the same as
+// words for people at a terminal (`status`, `set n 0.25`, `results 5`). Parsing never fails
+// loudly: anything it does not understand becomes an error the device answers with.
+#include <cstddef>
+#include <string>
+#include <string_view>
+
+#include "firmware/json_line.h"
+
+namespace icacam::fw {
+
+enum class CommandKind { Help, Status, Trigger, Get, Set, Results };
+
+struct Command {
+    CommandKind kind = CommandKind::Help;
+    std::string key;   // get / set
+    std::string value; // set (numbers keep their literal text)
+    int count = 10;    // results
+    std::string tag;   // the request's "id", echoed in the answer
+};
+
+struct CommandParse {
+    bool ok = false;
+    Command cmd;
+    const char *code = "";   // malformed | unknown_command | bad_argument
+    std::string message;
+};
+
+constexpr int kMaxResultsAsked = 1000;
+CommandParse parseCommand(std::string_view line);
+
+// Splits a byte stream into lines of at most maxLine bytes. A longer line is reported once
+// as an overflow and its bytes are dropped up to the next newline. Memory: maxLine, once.
+class LineAssembler {
+public:
+    enum class Event { None, Line, Overflow };
+    explicit LineAssembler(size_t maxLine) : max_(maxLine) { buf_.reserve(maxLine); }
+    // Consumes bytes from *data until an event; returns None when *data is used up.
+    Event push(std::string_view *data);
+    std::string_view line() const { return buf_; }
+
+private:
+    size_t max_;
+    std::string buf_;
+    bool ready_ = false;
+    bool discarding_ = false;
+};
+
+} // namespace icacam::fw

@@ -1,0 +1,249 @@
+#include "firmware/config.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cstdlib>
+#include <cmath>
+#include <cstdio>
+
+namespace icacam::fw {
+
+namespace {
+
+struct KeyDef {
+    const char *key;
+    const char *alias; // short name accepted over serial
+    double Config::*number;
+    int Config::*integer;
+    std::string Config::*text;
+    double min, max;
+    const char *choices; // '|' separated, for text keys with fixed values
+    bool live;
+    const char *help;
+};
+
+const KeyDef kKeys[] = {
+    {"specimen.n", "n", &Config::n, nullptr, nullptr, 0.001, 1.0, nullptr, true,
+     "strain-hardening exponent (required; the μ model covers 0.05-0.5)"},
+    {"specimen.k_mpa", "k_mpa", &Config::kMpa, nullptr, nullptr, 0, 10000, nullptr, true,
+     "strength coefficient K in MPa, 0 = unknown"},
+    {"specimen.d0_mm", "d0_mm", &Config::d0Mm, nullptr, nullptr, 1, 200, nullptr, true, "initial diameter"},
+    {"specimen.h0_mm", "h0_mm", &Config::h0Mm, nullptr, nullptr, 1, 300, nullptr, true, "initial height"},
+    {"specimen.material", "material", nullptr, nullptr, &Config::material, 0, 32, nullptr, true,
+     "material label, up to 32 characters"},
+    {"calibration.mm_per_px", "mm_per_px", &Config::mmPerPx, nullptr, nullptr, 1e-5, 1, nullptr, true,
+     "scale in the end-face plane (required)"},
+    {"camera.backend", nullptr, nullptr, nullptr, &Config::cameraBackend, 0, 0, "file|libcamera|v4l2", false,
+     "camera driver"},
+    {"camera.frames", nullptr, nullptr, nullptr, &Config::cameraFrames, 0, 4096, nullptr, false,
+     "file backend: folder of images or list file"},
+    {"camera.format", nullptr, nullptr, nullptr, &Config::cameraFormat, 0, 0, "grey8|rgb24", false, "pixel format"},
+    {"camera.max_width", nullptr, nullptr, &Config::cameraMaxWidth, nullptr, 16, 16384, nullptr, false,
+     "largest frame width accepted"},
+    {"camera.max_height", nullptr, nullptr, &Config::cameraMaxHeight, nullptr, 16, 16384, nullptr, false,
+     "largest frame height accepted"},
+    {"camera.stride_align", nullptr, nullptr, &Config::cameraStrideAlign, nullptr, 1, 4096, nullptr, false,
+     "file backend: pad rows to this many bytes, as an ISP does"},
+    {"camera.timeout_ms", nullptr, nullptr, &Config::captureTimeoutMs, nullptr, 10, 60000, nullptr, false,
+     "capture watchdog"},
+    {"camera.loop", nullptr, nullptr, &Config::cameraLoop, nullptr, 0, 1, nullptr, false,
+     "file backend: 1 = start over after the last image"},
+    {"trigger.backend", nullptr, nullptr, nullptr, &Config::triggerBackend, 0, 0, "file|gpiod", false, "button driver"},
+    {"trigger.script", nullptr, nullptr, nullptr, &Config::triggerScript, 0, 4096, nullptr, false,
+     "file backend: trigger script file or FIFO"},
+    {"trigger.debounce_ms", nullptr, nullptr, &Config::debounceMs, nullptr, 1, 1000, nullptr, false,
+     "presses shorter than this are bounce"},
+    {"trigger.long_press_ms", nullptr, nullptr, &Config::longPressMs, nullptr, 100, 60000, nullptr, false,
+     "held this long: shows the settings page instead of measuring"},
+    {"trigger.gpio_chip", nullptr, nullptr, nullptr, &Config::gpioChip, 0, 256, nullptr, false, "gpiod: chip device"},
+    {"trigger.gpio_line", nullptr, nullptr, &Config::triggerLine, nullptr, 0, 1023, nullptr, false,
+     "gpiod: button line (pull-up, active low)"},
+    {"led.backend", nullptr, nullptr, nullptr, &Config::ledBackend, 0, 0, "file|gpiod", false, "LED ring driver"},
+    {"led.log", nullptr, nullptr, nullptr, &Config::ledLog, 0, 4096, nullptr, false, "file backend: LED state log"},
+    {"led.gpio_line", nullptr, nullptr, &Config::ledLine, nullptr, 0, 1023, nullptr, false, "gpiod: LED ring line"},
+    {"led.settle_ms", nullptr, nullptr, &Config::ledSettleMs, nullptr, 0, 1000, nullptr, false,
+     "wait after switching the ring on before capturing"},
+    {"display.backend", nullptr, nullptr, nullptr, &Config::displayBackend, 0, 0, "file|ssd1306|none", false,
+     "display driver"},
+    {"display.dir", nullptr, nullptr, nullptr, &Config::displayDir, 0, 4096, nullptr, false,
+     "file backend: folder for the PNG pictures"},
+    {"display.scale", nullptr, nullptr, &Config::displayScale, nullptr, 1, 8, nullptr, false,
+     "file backend: enlarge pictures"},
+    {"display.i2c_bus", nullptr, nullptr, &Config::i2cBus, nullptr, 0, 255, nullptr, false, "ssd1306: /dev/i2c-N"},
+    {"display.i2c_address", nullptr, nullptr, &Config::i2cAddress, nullptr, 3, 119, nullptr, false,
+     "ssd1306: 7-bit address (60 = 0x3C)"},
+    {"serial.backend", nullptr, nullptr, nullptr, &Config::serialBackend, 0, 0, "pty|uart", false, "serial driver"},
+    {"serial.link", nullptr, nullptr, nullptr, &Config::serialLink, 0, 4096, nullptr, false,
+     "pty backend: symlink to the pty for the host side"},
+    {"serial.device", nullptr, nullptr, nullptr, &Config::serialDevice, 0, 4096, nullptr, false, "uart: tty device"},
+    {"serial.baud", nullptr, nullptr, &Config::serialBaud, nullptr, 1200, 4000000, nullptr, false, "uart: baud rate"},
+    {"journal.dir", nullptr, nullptr, nullptr, &Config::journalDir, 1, 4096, nullptr, false,
+     "folder of the journal and images (required)"},
+    {"journal.images", nullptr, nullptr, nullptr, &Config::journalImages, 0, 0, "pgm|none", false,
+     "save each frame with its result"},
+    {"journal.quota_mb", nullptr, nullptr, &Config::journalQuotaMb, nullptr, 0, 1000000, nullptr, false,
+     "limit the journal folder (0 = free space of the card)"},
+    {"journal.memory", nullptr, nullptr, &Config::journalMemory, nullptr, 1, 1000, nullptr, false,
+     "results kept for the `results` command"},
+};
+
+const KeyDef *findKey(std::string_view key, bool allowAlias)
+{
+    for (const KeyDef &k : kKeys)
+        if (key == k.key || (allowAlias && k.alias && key == k.alias)) return &k;
+    return nullptr;
+}
+
+bool parseDouble(std::string_view s, double *v)
+{
+    if (s.empty() || s.size() > 64) return false;
+    char buf[72];
+    s.copy(buf, s.size());
+    buf[s.size()] = 0;
+    char *end = nullptr;
+    *v = std::strtod(buf, &end);
+    return end == buf + s.size() && std::isfinite(*v);
+}
+
+std::string_view trim(std::string_view s)
+{
+    while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+    while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
+    return s;
+}
+
+std::string fmt(double v)
+{
+    char b[32];
+    std::snprintf(b, sizeof b, "%.10g", v);
+    return b;
+}
+
+} // namespace
+
+std::string setConfigKey(Config *cfg, std::string_view key, std::string_view value, bool liveOnly)
+{
+    const KeyDef *k = findKey(key, liveOnly);
+    if (!k) return "unknown key '" + std::string(key.substr(0, 64)) + "'";
+    if (liveOnly && !k->live) return "'" + std::string(key) + "' cannot be changed while running";
+    if (k->number || k->integer) {
+        double v = 0;
+        if (!parseDouble(value, &v)) return std::string(k->key) + ": '" + std::string(value.substr(0, 64)) + "' is not a number";
+        if (v < k->min || v > k->max)
+            return std::string(k->key) + " must be between " + fmt(k->min) + " and " + fmt(k->max) + ", not " + fmt(v);
+        if (k->integer) {
+            if (v != std::floor(v)) return std::string(k->key) + " must be a whole number";
+            cfg->*(k->integer) = int(v);
+        } else {
+            cfg->*(k->number) = v;
+        }
+        return "";
+    }
+    if (k->choices) {
+        std::string_view c = k->choices;
+        while (!c.empty()) {
+            const size_t bar = c.find('|');
+            if (c.substr(0, bar) == value) { cfg->*(k->text) = std::string(value); return ""; }
+            if (bar == std::string_view::npos) break;
+            c.remove_prefix(bar + 1);
+        }
+        return std::string(k->key) + " must be one of " + k->choices + ", not '" + std::string(value.substr(0, 64)) + "'";
+    }
+    if (value.size() < size_t(k->min) || value.size() > size_t(k->max))
+        return std::string(k->key) + " must be " + fmt(k->min) + " to " + fmt(k->max) + " characters long";
+    for (char ch : value)
+        if (uint8_t(ch) < 0x20 || ch == '"' || ch == '\\') return std::string(k->key) + ": control characters, quotes and backslashes are not allowed";
+    cfg->*(k->text) = std::string(value);
+    return "";
+}
+
+bool getConfigKey(const Config &cfg, std::string_view key, std::string *value, bool *isNumber)
+{
+    const KeyDef *k = findKey(key, true);
+    if (!k) return false;
+    *isNumber = k->number || k->integer;
+    if (k->number) *value = fmt(cfg.*(k->number));
+    else if (k->integer) *value = std::to_string(cfg.*(k->integer));
+    else *value = cfg.*(k->text);
+    return true;
+}
+
+std::vector<std::string> configKeys(bool liveOnly)
+{
+    std::vector<std::string> out;
+    for (const KeyDef &k : kKeys)
+        if (!liveOnly || k.live) out.emplace_back(liveOnly ? k.alias : k.key);
+    return out;
+}
+
+std::string configHelp()
+{
+    std::string out;
+    for (const KeyDef &k : kKeys) {
+        out += "  ";
+        out += k.key;
+        out += std::string(size_t(std::max(1, 24 - int(std::string_view(k.key).size()))), ' ');
+        out += k.help;
+        if (k.choices) out += std::string(" (") + k.choices + ")";
+        if (k.live) out += " [settable over serial]";
+        out += '\n';
+    }
+    return out;
+}
+
+std::vector<ConfigIssue> parseConfig(std::string_view text, Config *cfg)
+{
+    std::vector<ConfigIssue> issues;
+    std::string section;
+    int lineNo = 0;
+    bool seenN = false, seenScale = false, seenJournal = false;
+    while (!text.empty()) {
+        ++lineNo;
+        const size_t nl = text.find('\n');
+        std::string_view line = text.substr(0, nl);
+        text.remove_prefix(nl == std::string_view::npos ? text.size() : nl + 1);
+        if (const size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
+        line = trim(line);
+        if (line.empty()) continue;
+        if (issues.size() >= 50) {
+            issues.push_back({lineNo, "too many errors, stopping"});
+            break;
+        }
+        if (line.front() == '[') {
+            if (line.back() != ']' || line.size() < 3) {
+                issues.push_back({lineNo, "a section header looks like [name]"});
+                continue;
+            }
+            section = std::string(trim(line.substr(1, line.size() - 2)));
+            continue;
+        }
+        const size_t eq = line.find('=');
+        if (eq == std::string_view::npos) {
+            issues.push_back({lineNo, "expected 'key = value'"});
+            continue;
+        }
+        std::string key = std::string(trim(line.substr(0, eq)));
+        std::string_view value = trim(line.substr(eq + 1));
+        if (value.size() >= 2 && value.front() == '"' && value.back() == '"') value = value.substr(1, value.size() - 2);
+        if (!section.empty() && key.find('.') == std::string::npos) key = section + "." + key;
+        if (std::string err = setConfigKey(cfg, key, value, false); !err.empty()) {
+            issues.push_back({lineNo, err});
+            continue;
+        }
+        seenN |= key == "specimen.n";
+        seenScale |= key == "calibration.mm_per_px";
+        seenJournal |= key == "journal.dir";
+    }
+    if (!seenN) issues.push_back({0, "specimen.n is required (the strain-hardening exponent)"});
+    if (!seenScale) issues.push_back({0, "calibration.mm_per_px is required (the camera's scale)"});
+    if (!seenJournal) issues.push_back({0, "journal.dir is required (where results are kept)"});
+    if (cfg->cameraBackend == "file" && cfg->cameraFrames.empty())
+        issues.push_back({0, "camera.frames is required with camera.backend = file"});
+    if (cfg->displayBackend == "file" && cfg->displayDir.empty())
+        issues.push_back({0, "display.dir is required with display.backend = file"});
+    if (cfg->serialBackend == "pty" && cfg->serialLink.empty())
+        issues.push_back({0, "serial.link is required with serial.backend = pty"});
+    return issues;
+}
+
+} // namespace icacam::fw

@@ -1,0 +1,72 @@
+#pragma once
+// The device configuration: a text file of `key = value` lines ('#' comments, optional
+// `[section]` headers that prefix the keys), validated as a whole at start-up so that every
+// mistake is reported at once with its line number. The keys are listed in docs/firmware.md
+// and by `icacam-fw --help-config`.
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace icacam::fw {
+
+struct Config {
+    // [specimen] what is being measured; changeable over serial ("live")
+    double n = 0;            // strain-hardening exponent (required)
+    double kMpa = 0;         // strength coefficient, 0 = unknown
+    double d0Mm = 10, h0Mm = 15;
+    std::string material;
+    // [calibration]
+    double mmPerPx = 0;      // scale in the end-face plane (required)
+    // [camera]
+    std::string cameraBackend = "file";
+    std::string cameraFrames;            // file backend: folder or list file
+    std::string cameraFormat = "grey8";
+    int cameraMaxWidth = 4096, cameraMaxHeight = 3072;
+    int cameraStrideAlign = 1;
+    int captureTimeoutMs = 2000;
+    int cameraLoop = 0;
+    // [trigger] and [led]
+    std::string triggerBackend = "file";
+    std::string triggerScript;           // file backend: script file or FIFO ("" = serial only)
+    int debounceMs = 30, longPressMs = 1500;
+    std::string gpioChip = "/dev/gpiochip0";
+    int triggerLine = 17, ledLine = 27;
+    std::string ledBackend = "file";
+    std::string ledLog;
+    int ledSettleMs = 20;
+    // [display]
+    std::string displayBackend = "file";
+    std::string displayDir;
+    int displayScale = 1;
+    int i2cBus = 1, i2cAddress = 0x3C;
+    // [serial]
+    std::string serialBackend = "pty";
+    std::string serialLink;              // pty backend: symlink to the slave
+    std::string serialDevice = "/dev/ttyAMA0";
+    int serialBaud = 115200;
+    // [journal]
+    std::string journalDir;
+    std::string journalImages = "pgm";   // pgm | none
+    int journalQuotaMb = 0;              // 0 = the card's free space
+    int journalMemory = 64;              // results kept in RAM for `results`
+};
+
+struct ConfigIssue {
+    int line = 0; // 0: not tied to a line
+    std::string message;
+};
+
+// Parses and validates text; issues empty means cfg is complete and valid. Never throws.
+std::vector<ConfigIssue> parseConfig(std::string_view text, Config *cfg);
+
+// Sets one key from its text value (used by the parser and by `set` over serial).
+// liveOnly: only the specimen and calibration keys. Returns "" or a message.
+std::string setConfigKey(Config *cfg, std::string_view key, std::string_view value, bool liveOnly);
+// The value of a key as text ("" and false for an unknown key).
+bool getConfigKey(const Config &cfg, std::string_view key, std::string *value, bool *isNumber);
+// Names of keys; live: only those settable over serial.
+std::vector<std::string> configKeys(bool liveOnly);
+std::string configHelp();
+
+} // namespace icacam::fw

@@ -1,0 +1,380 @@
+#include "firmware/device.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <ctime>
+
+#include "firmware/screen.h"
+#include "vision/paper_model.h"
+
+namespace icacam::fw {
+
+using vision::Measurement;
+
+namespace {
+
+std::string isoTime(int64_t wallMs)
+{
+    const time_t s = time_t(wallMs / 1000);
+    tm t{};
+    gmtime_r(&s, &t);
+    char b[96];
+    std::snprintf(b, sizeof b, "%04d-%02d-%02dT%02d:%02d:%02d.%03dZ", t.tm_year + 1900, t.tm_mon + 1, t.tm_mday,
+                  t.tm_hour, t.tm_min, t.tm_sec, int(wallMs % 1000));
+    return b;
+}
+
+std::string flagList(uint32_t flags)
+{
+    std::string s;
+    for (int b = 0; b < vision::kFlagCount; ++b)
+        if (flags & (1u << b)) {
+            if (!s.empty()) s += '|';
+            s += vision::flagName(b);
+        }
+    return s;
+}
+
+constexpr const char *kSettingsFile = "settings.conf";
+
+} // namespace
+
+const char *Device::stateName(State s)
+{
+    switch (s) {
+    case State::Idle: return "idle";
+    case State::LedOn: return "led_on";
+    case State::Capture: return "capture";
+    case State::LedOff: return "led_off";
+    case State::Measure: return "measure";
+    case State::Report: return "report";
+    }
+    return "unknown";
+}
+
+Device::Device(DeviceHal hal, Config cfg, const vision::FrictionModel &model)
+    : hal_(hal), cfg_(std::move(cfg)), model_(model), journal_(hal.storage, cfg_.journalMemory),
+      debouncer_(cfg_.debounceMs, cfg_.longPressMs), lines_(kMaxLine)
+{
+}
+
+hal::Error Device::start()
+{
+    startMs_ = hal_.clock.monotonicMs();
+    out_.reserve(8192);
+    const auto fmt = cfg_.cameraFormat == "rgb24" ? vision::PixelFormat::RGB24 : vision::PixelFormat::Grey8;
+    if (analyzer_.configure(cfg_.cameraMaxWidth, cfg_.cameraMaxHeight) != vision::ErrorCode::None)
+        return hal::Error::make(hal::Errc::Invalid, "vision: cannot size working memory");
+    lumaScratchBytes_ = vision::lumaScratchBytes(fmt, cfg_.cameraMaxWidth, cfg_.cameraMaxHeight);
+    if (lumaScratchBytes_ > 0) lumaScratch_ = std::make_unique<uint8_t[]>(lumaScratchBytes_);
+    if (cfg_.journalImages == "pgm") image_.reserve(size_t(cfg_.cameraMaxWidth) * size_t(cfg_.cameraMaxHeight) + 64);
+    if (hal::Error e = hal_.camera.configure({fmt, cfg_.cameraMaxWidth, cfg_.cameraMaxHeight}); !e.ok()) return e;
+    if (hal::Error e = hal_.led.set(false); !e.ok()) return e;
+
+    JournalRecovery rec;
+    if (hal::Error e = journal_.recover(&rec); !e.ok()) return e;
+    lastId_ = rec.lastId;
+    // Settings changed over serial survive a restart; a bad saved value is reported and skipped.
+    std::string note;
+    if (auto saved = hal_.storage.read(kSettingsFile); saved.ok()) {
+        Config trial = cfg_;
+        std::string_view t = saved.value;
+        while (!t.empty()) {
+            const size_t nl = t.find('\n');
+            std::string_view line = t.substr(0, nl);
+            t.remove_prefix(nl == std::string_view::npos ? t.size() : nl + 1);
+            const size_t eq = line.find(" = ");
+            if (eq == std::string_view::npos) continue;
+            if (!setConfigKey(&trial, line.substr(0, eq), line.substr(eq + 3), true).empty()) note = "saved setting bad";
+        }
+        cfg_ = trial;
+    }
+    out_.clear();
+    JsonBuilder(&out_)
+        .str("type", "hello")
+        .str("version", "0.1.0")
+        .str("model", model_.name())
+        .integer("records", rec.records)
+        .integer("last_id", rec.lastId)
+        .integer("recovered_cut_bytes", static_cast<long long>(rec.cutBytes))
+        .integer("temp_files_removed", rec.tempFilesRemoved)
+        .end();
+    send(out_);
+    if (rec.cutBytes > 0) note = "journal tail repaired";
+    showIdle(note);
+    return {};
+}
+
+void Device::tick()
+{
+    pollButton();
+    pollSerial();
+}
+
+void Device::pollButton()
+{
+    hal::ButtonEdge edges[16];
+    hal::Result<size_t> r = hal_.trigger.readEdges(edges, 16);
+    if (!r.ok()) {
+        if (lastProblem_ != r.error.message) {
+            lastProblem_ = r.error.message;
+            sendError("trigger_failed", r.error.message, "");
+        }
+        return;
+    }
+    for (size_t i = 0; i < r.value; ++i) {
+        const Press p = debouncer_.onEdge(edges[i]);
+        if (p == Press::Short) measure("button", "");
+    }
+    if (debouncer_.poll(hal_.clock.monotonicMs()) == Press::Long) {
+        drawSettings(&screen_, cfg_);
+        showOrLog(screen_);
+    }
+}
+
+void Device::pollSerial()
+{
+    char buf[4096];
+    for (int chunk = 0; chunk < 64; ++chunk) { // at most 256 KiB a tick, so buttons stay responsive
+        hal::Result<size_t> r = hal_.serial.read(buf, sizeof buf);
+        if (!r.ok() || r.value == 0) return;
+        std::string_view data(buf, r.value);
+        for (;;) {
+            const LineAssembler::Event ev = lines_.push(&data);
+            if (ev == LineAssembler::Event::None) break;
+            if (ev == LineAssembler::Event::Overflow)
+                sendError("line_too_long", "line longer than 1024 bytes: ignored up to its end", "");
+            else
+                handleLine(lines_.line());
+        }
+    }
+}
+
+void Device::handleLine(std::string_view line)
+{
+    if (line.empty() || line == "\r") return;
+    const CommandParse p = parseCommand(line);
+    if (!p.ok) {
+        sendError(p.code, p.message, "");
+        return;
+    }
+    handleCommand(p.cmd);
+}
+
+void Device::handleCommand(const Command &c)
+{
+    out_.clear();
+    JsonBuilder j(&out_);
+    switch (c.kind) {
+    case CommandKind::Help:
+        j.str("type", "help")
+            .str("commands", "status | trigger | get [KEY] | set KEY VALUE | results [N] | help; "
+                             "as words or JSON {\"cmd\":\"set\",\"key\":\"n\",\"value\":0.2,\"id\":\"x\"}")
+            .str("keys", "n k_mpa d0_mm h0_mm material mm_per_px");
+        break;
+    case CommandKind::Status: {
+        auto free = hal_.storage.freeBytes();
+        j.str("type", "status")
+            .str("state", stateName(state_))
+            .integer("records", journal_.count())
+            .integer("last_id", lastId_)
+            .integer("uptime_ms", hal_.clock.monotonicMs() - startMs_)
+            .integer("free_bytes", free.ok() ? (long long)free.value : -1)
+            .boolean("led", hal_.led.isOn())
+            .str("model", model_.name());
+        break;
+    }
+    case CommandKind::Trigger:
+        measure("serial", c.tag);
+        return;
+    case CommandKind::Get: {
+        j.str("type", "settings");
+        int matched = 0;
+        for (const std::string &k : configKeys(true)) {
+            if (!c.key.empty() && c.key != k && c.key != "specimen." + k && c.key != "calibration." + k) continue;
+            std::string v;
+            bool num = false;
+            getConfigKey(cfg_, k, &v, &num);
+            num ? j.raw(k, v) : j.str(k, v);
+            ++matched;
+        }
+        if (matched == 0) {
+            sendError("bad_argument", "unknown key (keys: n k_mpa d0_mm h0_mm material mm_per_px)", c.tag);
+            return;
+        }
+        break;
+    }
+    case CommandKind::Set: {
+        Config trial = cfg_;
+        if (std::string err = setConfigKey(&trial, c.key, c.value, true); !err.empty()) {
+            sendError("bad_argument", err, c.tag);
+            return;
+        }
+        cfg_ = trial;
+        persistSettings();
+        std::string v;
+        bool num = false;
+        getConfigKey(cfg_, c.key, &v, &num);
+        j.str("type", "settings");
+        num ? j.raw(c.key, v) : j.str(c.key, v);
+        showIdle("");
+        break;
+    }
+    case CommandKind::Results: {
+        const auto &recent = journal_.recent();
+        const size_t n = std::min(recent.size(), size_t(c.count));
+        j.str("type", "results").integer("count", static_cast<long long>(n));
+        if (!c.tag.empty()) j.str("tag", c.tag);
+        j.end();
+        send(out_);
+        for (size_t i = recent.size() - n; i < recent.size(); ++i) {
+            out_.assign("{\"type\":\"record\"");
+            out_.append(std::string_view(recent[i]).substr(std::string_view("{\"type\":\"result\"").size()));
+            out_.push_back('\n');
+            send(out_);
+        }
+        return;
+    }
+    }
+    if (!c.tag.empty()) j.str("tag", c.tag);
+    j.end();
+    send(out_);
+}
+
+void Device::measure(const char *origin, const std::string &tag)
+{
+    const int64_t t0 = hal_.clock.monotonicMs();
+    const long id = lastId_ + 1;
+    drawBusy(&screen_, id);
+    showOrLog(screen_);
+    Measurement m;
+    std::string problem;
+    hal::CapturedFrame frame;
+    bool captured = false;
+
+    state_ = State::LedOn;
+    if (hal::Error e = hal_.led.set(true); !e.ok()) problem = "LED: " + e.message;
+    hal_.clock.sleepMs(cfg_.ledSettleMs);
+    state_ = State::Capture;
+    if (problem.empty()) {
+        if (hal::Error e = hal_.camera.capture(cfg_.captureTimeoutMs, &frame); !e.ok())
+            problem = std::string("camera ") + hal::errcName(e.code) + ": " + e.message;
+        else
+            captured = true;
+    }
+    state_ = State::LedOff;
+    if (hal::Error e = hal_.led.set(false); !e.ok() && problem.empty()) problem = "LED: " + e.message;
+
+    state_ = State::Measure;
+    vision::LumaView luma;
+    if (captured) {
+        const vision::ErrorCode le = vision::lumaOf(frame.view, lumaScratch_.get(), lumaScratchBytes_, &luma);
+        if (le != vision::ErrorCode::None) problem = std::string("frame: ") + vision::errorMessage(le);
+        else {
+            const vision::SpecimenSpec spec{cfg_.n, cfg_.kMpa, cfg_.d0Mm, cfg_.h0Mm, cfg_.mmPerPx};
+            m = analyzer_.measure(luma, spec, model_);
+        }
+    }
+
+    state_ = State::Report;
+    lastId_ = id;
+    std::string imageName;
+    std::string storageProblem;
+    if (captured && problem.empty() && cfg_.journalImages == "pgm") {
+        char name[32];
+        std::snprintf(name, sizeof name, "img-%06ld.pgm", id);
+        if (hal::Error e = saveImage(name, luma); e.ok()) imageName = name;
+        else storageProblem = e.code == hal::Errc::Full ? "storage full: image not saved" : "image not saved: " + e.message;
+    }
+    buildRecord(id, origin, tag, m, problem, captured ? &frame : nullptr, imageName,
+                long(hal_.clock.monotonicMs() - t0));
+    // The record is durable before anyone hears of it: what was reported survives a crash.
+    if (hal::Error e = journal_.append(out_); !e.ok())
+        storageProblem = e.code == hal::Errc::Full ? "storage full: result not journaled" : "journal: " + e.message;
+    send(out_);
+    if (!problem.empty()) sendError("measurement_failed", problem, tag);
+    if (!storageProblem.empty()) sendError("storage", storageProblem, tag);
+
+    char title[32];
+    std::snprintf(title, sizeof title, "#%ld error", id);
+    if (!problem.empty()) drawProblem(&screen_, title, problem);
+    else drawResult(&screen_, id, m, storageProblem.empty() ? "" : "STORAGE FULL");
+    showOrLog(screen_);
+    state_ = State::Idle;
+}
+
+void Device::buildRecord(long id, const char *origin, const std::string &tag, const Measurement &m,
+                         std::string_view problem, const hal::CapturedFrame *frame, std::string_view image, long ms)
+{
+    out_.clear();
+    JsonBuilder j(&out_);
+    j.str("type", "result").integer("id", id).str("time", isoTime(hal_.clock.wallMs()));
+    const bool value = problem.empty() && m.hasValue();
+    j.str("status", problem.empty() ? vision::statusName(m.status) : "error");
+    if (value) {
+        j.num("mu", m.mu, 5).num("mu_sigma", m.muSigma, 3).num("u_mm", m.uMm, 5);
+        j.num("r_inner_mm", m.rInnerMm, 6).num("r_outer_mm", m.rOuterMm, 6);
+    }
+    j.str("flags", value ? flagList(m.flags) : "");
+    j.str("message", !problem.empty() ? std::string(problem) : m.hasValue() ? "" : vision::errorMessage(m.error));
+    j.str("image", image).str("source", frame ? std::string_view(frame->source) : std::string_view());
+    j.num("n", cfg_.n).num("k_mpa", cfg_.kMpa).num("mm_per_px", cfg_.mmPerPx, 8);
+    j.str("material", cfg_.material).str("trigger", origin).integer("ms", ms);
+    if (!tag.empty()) j.str("tag", tag);
+    j.end();
+}
+
+hal::Error Device::saveImage(std::string_view name, const vision::LumaView &v)
+{
+    char header[48];
+    const int n = std::snprintf(header, sizeof header, "P5\n%d %d\n255\n", v.width, v.height);
+    image_.assign(header, size_t(n));
+    for (int y = 0; y < v.height; ++y) {
+        const uint8_t *row = v.data + size_t(y) * size_t(v.stride);
+        if (v.pixelStep == 1) image_.append(reinterpret_cast<const char *>(row), size_t(v.width));
+        else
+            for (int x = 0; x < v.width; ++x) image_.push_back(char(row[size_t(x) * size_t(v.pixelStep)]));
+    }
+    return journal_.saveImage(name, image_);
+}
+
+void Device::persistSettings()
+{
+    std::string text;
+    for (const std::string &k : configKeys(true)) {
+        std::string v;
+        bool num = false;
+        getConfigKey(cfg_, k, &v, &num);
+        text += k + " = " + v + "\n";
+    }
+    if (hal::Error e = hal_.storage.writeAtomic(kSettingsFile, text); !e.ok())
+        sendError("storage", "setting not saved: " + e.message, "");
+}
+
+void Device::showIdle(std::string_view note)
+{
+    drawIdle(&screen_, cfg_, journal_.count(), note);
+    showOrLog(screen_);
+}
+
+void Device::showOrLog(const hal::MonoBitmap &bmp)
+{
+    if (hal::Error e = hal_.display.show(bmp); !e.ok() && lastProblem_ != e.message) {
+        lastProblem_ = e.message;
+        sendError("display_failed", e.message, "");
+    }
+}
+
+void Device::sendError(const char *code, std::string_view message, std::string_view tag)
+{
+    std::string line;
+    JsonBuilder j(&line);
+    j.str("type", "error").str("code", code).str("message", message);
+    if (!tag.empty()) j.str("tag", tag);
+    j.end();
+    send(line);
+}
+
+void Device::send(std::string_view line) { (void)hal_.serial.write(line); }
+
+} // namespace icacam::fw

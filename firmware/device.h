@@ -1,0 +1,85 @@
+#pragma once
+// The device program's logic, on the HAL seams and the vision library:
+//   idle → trigger (button or serial) → LED on → capture → LED off → measure
+//        → journal (image, then record; fsynced) → send on serial → show → idle.
+// Every failure on the way becomes a result with status "error", words on the display and
+// an error line on serial; nothing here blocks longer than the capture timeout.
+#include <memory>
+#include <string>
+#include <string_view>
+
+#include "firmware/command.h"
+#include "firmware/config.h"
+#include "firmware/debouncer.h"
+#include "firmware/journal.h"
+#include "hal/camera.h"
+#include "hal/clock.h"
+#include "hal/display.h"
+#include "hal/led_ring.h"
+#include "hal/serial_port.h"
+#include "hal/storage.h"
+#include "hal/trigger_button.h"
+#include "vision/end_face_analyzer.h"
+
+namespace icacam::fw {
+
+struct DeviceHal {
+    hal::Camera &camera;
+    hal::TriggerButton &trigger;
+    hal::LedRing &led;
+    hal::Display &display;
+    hal::SerialPort &serial;
+    hal::Storage &storage;
+    hal::Clock &clock;
+};
+
+class Device {
+public:
+    static constexpr size_t kMaxLine = 1024; // longer serial lines are answered with an error
+
+    enum class State { Idle, LedOn, Capture, LedOff, Measure, Report };
+    static const char *stateName(State s);
+
+    Device(DeviceHal hal, Config cfg, const vision::FrictionModel &model);
+    // Sizes all buffers, recovers the journal, loads saved settings, greets on serial.
+    hal::Error start();
+    // One pass of the main loop: button edges, serial input, measurements they ask for.
+    void tick();
+
+    const Config &config() const { return cfg_; }
+    long lastId() const { return lastId_; }
+    State state() const { return state_; }
+
+private:
+    void pollButton();
+    void pollSerial();
+    void handleLine(std::string_view line);
+    void handleCommand(const Command &c);
+    void measure(const char *origin, const std::string &tag);
+    void sendError(const char *code, std::string_view message, std::string_view tag);
+    void send(std::string_view line);
+    void showIdle(std::string_view note);
+    void buildRecord(long id, const char *origin, const std::string &tag, const vision::Measurement &m,
+                     std::string_view problem, const hal::CapturedFrame *frame, std::string_view image, long ms);
+    hal::Error saveImage(std::string_view name, const vision::LumaView &v);
+    void persistSettings();
+    void showOrLog(const hal::MonoBitmap &bmp);
+
+    DeviceHal hal_;
+    Config cfg_;
+    const vision::FrictionModel &model_;
+    vision::EndFaceAnalyzer analyzer_;
+    Journal journal_;
+    Debouncer debouncer_;
+    LineAssembler lines_;
+    State state_ = State::Idle;
+    long lastId_ = 0;
+    int64_t startMs_ = 0;
+    std::unique_ptr<uint8_t[]> lumaScratch_;
+    size_t lumaScratchBytes_ = 0;
+    std::string out_, image_;
+    hal::MonoBitmap screen_;
+    std::string lastProblem_;
+};
+
+} // namespace icacam::fw

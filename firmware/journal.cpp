@@ -1,0 +1,99 @@
+#include "firmware/journal.h"
+
+#include <array>
+#include <cstdio>
+
+#include "firmware/json_line.h"
+
+namespace icacam::fw {
+
+namespace {
+constexpr std::string_view kCrcKey = ",\"crc32\":\"";
+}
+
+uint32_t crc32(std::string_view data)
+{
+    // IEEE 802.3 polynomial, reflected, table built once at compile time.
+    static constexpr auto kTable = [] {
+        std::array<uint32_t, 256> t{};
+        for (uint32_t i = 0; i < 256; ++i) {
+            uint32_t c = i;
+            for (int k = 0; k < 8; ++k) c = (c & 1u) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
+            t[i] = c;
+        }
+        return t;
+    }();
+    uint32_t c = 0xFFFFFFFFu;
+    for (char ch : data) c = kTable[(c ^ uint8_t(ch)) & 0xFFu] ^ (c >> 8);
+    return c ^ 0xFFFFFFFFu;
+}
+
+long Journal::checkLine(std::string_view line)
+{
+    const size_t at = line.rfind(kCrcKey);
+    if (at == std::string_view::npos || line.size() != at + kCrcKey.size() + 10) return -1;
+    if (line.substr(line.size() - 2) != "\"}") return -1;
+    char want[9];
+    std::snprintf(want, sizeof want, "%08x", crc32(line.substr(0, at)));
+    if (line.substr(at + kCrcKey.size(), 8) != want) return -1;
+    FlatObject obj;
+    if (!parseFlatObject(line, &obj).empty()) return -1;
+    const JsonField *id = obj.find("id");
+    if (!id || id->type != JsonField::Type::Number || id->number < 1) return -1;
+    return long(id->number);
+}
+
+hal::Error Journal::recover(JournalRecovery *out)
+{
+    *out = {};
+    if (auto names = storage_.list(); names.ok()) {
+        for (const std::string &n : names.value)
+            if (n.size() > 4 && n.compare(n.size() - 4, 4, ".tmp") == 0 && storage_.remove(n).ok())
+                ++out->tempFilesRemoved;
+    } else {
+        return names.error;
+    }
+    hal::Result<std::string> text = storage_.read(kFile);
+    if (!text.ok()) return text.error.code == hal::Errc::NotFound ? hal::Error{} : text.error;
+    const std::string &t = text.value;
+    size_t good = 0;
+    while (good < t.size()) {
+        const size_t nl = t.find('\n', good);
+        if (nl == std::string::npos) break; // torn last line
+        const long id = checkLine(std::string_view(t).substr(good, nl - good));
+        if (id < 0) break;
+        ++out->records;
+        if (id > out->lastId) out->lastId = id;
+        recent_.emplace_back(t.substr(good, nl - good));
+        if (recent_.size() > memory_) recent_.pop_front();
+        good = nl + 1;
+    }
+    if (good < t.size()) {
+        out->cutBytes = t.size() - good;
+        char name[48];
+        std::snprintf(name, sizeof name, "journal.damaged-%zu", good);
+        if (hal::Error e = storage_.writeAtomic(name, std::string_view(t).substr(good)); !e.ok()) return e;
+        if (hal::Error e = storage_.truncate(kFile, good); !e.ok()) return e;
+    }
+    count_ = out->records;
+    return {};
+}
+
+hal::Error Journal::append(std::string_view record)
+{
+    if (record.size() < 3 || record.substr(record.size() - 2) != "}\n")
+        return hal::Error::make(hal::Errc::Invalid, "journal record must be one JSON object line");
+    line_.assign(record.substr(0, record.size() - 2));
+    char tail[32];
+    std::snprintf(tail, sizeof tail, "%.*s%08x\"}", int(kCrcKey.size()), kCrcKey.data(), crc32(line_));
+    line_.append(tail);
+    line_.push_back('\n');
+    if (hal::Error e = storage_.append(kFile, line_); !e.ok()) return e;
+    line_.pop_back();
+    recent_.push_back(line_);
+    if (recent_.size() > memory_) recent_.pop_front();
+    ++count_;
+    return {};
+}
+
+} // namespace icacam::fw

@@ -1,0 +1,133 @@
+// icacam-fw: the device program's composition root. Reads the config, builds the HAL
+// backends it names, and runs the device loop until SIGTERM/SIGINT.
+//
+// Exit codes suit systemd (Restart=on-failure, RestartPreventExitStatus=78):
+//   0 stopped by a signal, 64 bad command line, 78 bad configuration (restarting cannot
+//   help), 69 a device could not be opened, 70 internal error.
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include "firmware/config.h"
+#include "firmware/device.h"
+#include "hal/file/clocks.h"
+#include "hal/file/file_camera.h"
+#include "hal/file/file_led.h"
+#include "hal/file/file_trigger.h"
+#include "hal/file/folder_storage.h"
+#include "hal/file/png_display.h"
+#include "hal/file/pty_serial.h"
+#include "vision/paper_model.h"
+
+namespace {
+
+volatile std::sig_atomic_t gStop = 0;
+void onSignal(int) { gStop = 1; }
+
+constexpr int kExitUsage = 64, kExitUnavailable = 69, kExitConfig = 78;
+
+const char *kUsage =
+    "usage: icacam-fw --config FILE [--check]\n"
+    "       icacam-fw --help-config\n"
+    "Runs the icacam device program. --check validates the config and exits.\n"
+    "See docs/firmware.md for the config keys, the serial protocol and the journal.\n";
+
+std::string resolve(const std::string &base, const std::string &p)
+{
+    if (p.empty() || p.front() == '/') return p;
+    return (std::filesystem::path(base) / p).lexically_normal().string();
+}
+
+int unavailable(const char *what, const icacam::hal::Error &e)
+{
+    std::fprintf(stderr, "icacam-fw: %s: %s\n", what, e.message.c_str());
+    return kExitUnavailable;
+}
+
+} // namespace
+
+int main(int argc, char **argv)
+{
+    using namespace icacam;
+    std::string configPath;
+    bool checkOnly = false;
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        if (a == "--config" && i + 1 < argc) configPath = argv[++i];
+        else if (a == "--check") checkOnly = true;
+        else if (a == "--help-config") { std::printf("config keys:\n%s", fw::configHelp().c_str()); return 0; }
+        else if (a == "-h" || a == "--help") { std::printf("%s", kUsage); return 0; }
+        else { std::fprintf(stderr, "icacam-fw: unknown argument '%s'\n%s", a.c_str(), kUsage); return kExitUsage; }
+    }
+    if (configPath.empty()) { std::fprintf(stderr, "%s", kUsage); return kExitUsage; }
+
+    std::ifstream in(configPath);
+    if (!in) { std::fprintf(stderr, "icacam-fw: cannot read config '%s'\n", configPath.c_str()); return kExitConfig; }
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    fw::Config cfg;
+    const auto issues = fw::parseConfig(text, &cfg);
+    for (const auto &is : issues) {
+        if (is.line > 0) std::fprintf(stderr, "%s:%d: %s\n", configPath.c_str(), is.line, is.message.c_str());
+        else std::fprintf(stderr, "%s: %s\n", configPath.c_str(), is.message.c_str());
+    }
+    // Composition: this build carries the file-backed HAL; hardware backends come with their
+    // own targets (hal/libcamera, hal/gpiod, hal/ssd1306 …) and are chosen here by name.
+    auto onlyFile = [&](const char *key, const std::string &v, const char *ok) {
+        if (v != ok) {
+            std::fprintf(stderr, "%s: %s = %s: this icacam-fw is built with the %s backend only\n",
+                         configPath.c_str(), key, v.c_str(), ok);
+            return false;
+        }
+        return true;
+    };
+    bool ok = issues.empty();
+    ok = onlyFile("camera.backend", cfg.cameraBackend, "file") && ok;
+    ok = onlyFile("trigger.backend", cfg.triggerBackend, "file") && ok;
+    ok = onlyFile("led.backend", cfg.ledBackend, "file") && ok;
+    ok = (cfg.displayBackend == "none" || onlyFile("display.backend", cfg.displayBackend, "file")) && ok;
+    ok = onlyFile("serial.backend", cfg.serialBackend, "pty") && ok;
+    if (!ok) return kExitConfig;
+    if (checkOnly) { std::printf("%s: ok\n", configPath.c_str()); return 0; }
+
+    const std::string base = std::filesystem::path(configPath).parent_path().string();
+    hal::SystemClock clock;
+    hal::FileCamera camera(clock, {resolve(base, cfg.cameraFrames), cfg.cameraStrideAlign, cfg.cameraLoop != 0, 0});
+    hal::FileTrigger trigger(clock);
+    if (!cfg.triggerScript.empty())
+        if (hal::Error e = trigger.open(resolve(base, cfg.triggerScript)); !e.ok()) return unavailable("trigger", e);
+    hal::FileLed led(clock);
+    if (hal::Error e = led.open(resolve(base, cfg.ledLog)); !e.ok()) return unavailable("LED", e);
+    hal::PngDisplay display;
+    if (cfg.displayBackend == "file")
+        if (hal::Error e = display.open(resolve(base, cfg.displayDir), cfg.displayScale); !e.ok())
+            return unavailable("display", e);
+    hal::PtySerial serial;
+    if (hal::Error e = serial.open(resolve(base, cfg.serialLink)); !e.ok()) return unavailable("serial", e);
+    hal::FolderStorage storage;
+    if (hal::Error e = storage.open(resolve(base, cfg.journalDir), uint64_t(cfg.journalQuotaMb) << 20); !e.ok())
+        return unavailable("journal", e);
+
+    struct NoDisplay final : hal::Display {
+        hal::Error show(const hal::MonoBitmap &) override { return {}; }
+    } noDisplay;
+    vision::PaperModel model;
+    fw::Device device({camera, trigger, led, cfg.displayBackend == "none" ? static_cast<hal::Display &>(noDisplay) : display,
+                       serial, storage, clock},
+                      cfg, model);
+    std::signal(SIGTERM, onSignal);
+    std::signal(SIGINT, onSignal);
+    std::signal(SIGPIPE, SIG_IGN);
+    if (hal::Error e = device.start(); !e.ok()) return unavailable("start", e);
+    std::fprintf(stderr, "icacam-fw: running; serial on %s (%s)\n", serial.slavePath().c_str(),
+                 resolve(base, cfg.serialLink).c_str());
+    while (!gStop) {
+        device.tick();
+        clock.sleepMs(5);
+    }
+    std::fprintf(stderr, "icacam-fw: stopped\n");
+    return 0;
+}

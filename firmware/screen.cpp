@@ -1,0 +1,125 @@
+#include "firmware/screen.h"
+
+#include <cstdio>
+
+#include "firmware/font5x7.h"
+
+namespace icacam::fw {
+
+using vision::ErrorCode;
+
+const char *shortError(ErrorCode c)
+{
+    switch (c) {
+    case ErrorCode::None: return "";
+    case ErrorCode::NotConfigured: return "not configured";
+    case ErrorCode::FrameTooLarge: return "frame too large";
+    case ErrorCode::BadFrame: return "bad frame";
+    case ErrorCode::BadSpecimen: return "check scale and d0";
+    case ErrorCode::NoSpecimen: return "no specimen";
+    case ErrorCode::Saturated: return "image saturated";
+    case ErrorCode::TooDark: return "image too dark";
+    case ErrorCode::OuterEdgeNotFound: return "outer edge not found";
+    case ErrorCode::InnerEdgeNotFound: return "inner edge not found";
+    case ErrorCode::Blurred: return "image blurred";
+    case ErrorCode::InconsistentRing: return "edges out of order";
+    }
+    return "unknown error";
+}
+
+const char *shortFlag(int bit)
+{
+    static const char *const kWords[vision::kFlagCount] = {
+        "n outside 0.05-0.5", "K outside model", "mu below model", "mu above model",
+        "u outside model",    "low contrast",    "edge coverage low", "edges scatter",
+        "image blurred",      "saturated",       "specimen clipped",  "elliptical",
+        "not concentric",     "check scale",     "narrow ring",       "no silhouette"};
+    return bit >= 0 && bit < vision::kFlagCount ? kWords[bit] : "check";
+}
+
+namespace {
+
+// Word-wraps text into rows [row, lastRow] of the screen.
+void wrap(hal::MonoBitmap *bmp, int row, int lastRow, std::string_view text)
+{
+    while (!text.empty() && row <= lastRow) {
+        size_t take = text.size() <= size_t(kColumns) ? text.size() : text.rfind(' ', size_t(kColumns));
+        if (take == std::string_view::npos || take == 0) take = size_t(kColumns);
+        drawText(bmp, 0, row++, text.substr(0, take));
+        text.remove_prefix(take);
+        while (!text.empty() && text.front() == ' ') text.remove_prefix(1);
+    }
+}
+
+} // namespace
+
+void drawIdle(hal::MonoBitmap *bmp, const Config &cfg, long records, std::string_view note)
+{
+    bmp->clear();
+    char line[64];
+    drawText(bmp, 0, 0, "icacam  ready");
+    std::snprintf(line, sizeof line, "n=%.3f K=%.0f", cfg.n, cfg.kMpa);
+    drawText(bmp, 0, 2, line);
+    std::snprintf(line, sizeof line, "%.5f mm/px", cfg.mmPerPx);
+    drawText(bmp, 0, 3, line);
+    if (!cfg.material.empty()) drawText(bmp, 0, 4, cfg.material);
+    std::snprintf(line, sizeof line, "%ld in journal", records);
+    drawText(bmp, 0, 6, line);
+    if (!note.empty()) drawText(bmp, 0, 7, note);
+}
+
+void drawBusy(hal::MonoBitmap *bmp, long id)
+{
+    bmp->clear();
+    char line[40];
+    std::snprintf(line, sizeof line, "#%ld", id);
+    drawText(bmp, 0, 0, line);
+    drawText(bmp, 0, 3, "measuring...");
+}
+
+void drawResult(hal::MonoBitmap *bmp, long id, const vision::Measurement &m, std::string_view note)
+{
+    bmp->clear();
+    char line[64];
+    std::snprintf(line, sizeof line, "#%ld %s", id, vision::statusName(m.status));
+    drawText(bmp, 0, 0, line);
+    if (!m.hasValue()) {
+        wrap(bmp, 2, 5, shortError(m.error));
+    } else {
+        std::snprintf(line, sizeof line, "\xCE\xBC=%.3f\xC2\xB1%.3f", m.mu, m.muSigma);
+        drawText(bmp, 0, 2, line);
+        std::snprintf(line, sizeof line, "u=%.3f mm", m.uMm);
+        drawText(bmp, 0, 3, line);
+        std::snprintf(line, sizeof line, "Ri=%.3f Ro=%.3f", m.rInnerMm, m.rOuterMm);
+        drawText(bmp, 0, 4, line);
+        int row = 5;
+        for (int b = 0; b < vision::kFlagCount && row <= 6; ++b)
+            if (m.flags & (1u << b)) drawText(bmp, 0, row++, shortFlag(b));
+    }
+    if (!note.empty()) drawText(bmp, 0, 7, note);
+}
+
+void drawProblem(hal::MonoBitmap *bmp, std::string_view title, std::string_view words)
+{
+    bmp->clear();
+    drawText(bmp, 0, 0, title);
+    wrap(bmp, 2, 7, words);
+}
+
+void drawSettings(hal::MonoBitmap *bmp, const Config &cfg)
+{
+    bmp->clear();
+    char line[64];
+    drawText(bmp, 0, 0, "settings");
+    std::snprintf(line, sizeof line, "n     %.4f", cfg.n);
+    drawText(bmp, 0, 2, line);
+    std::snprintf(line, sizeof line, "K     %.0f MPa", cfg.kMpa);
+    drawText(bmp, 0, 3, line);
+    std::snprintf(line, sizeof line, "D0 %.1f H0 %.1f mm", cfg.d0Mm, cfg.h0Mm);
+    drawText(bmp, 0, 4, line);
+    std::snprintf(line, sizeof line, "scale %.6f", cfg.mmPerPx);
+    drawText(bmp, 0, 5, line);
+    drawText(bmp, 0, 6, cfg.material);
+}
+
+} // namespace icacam::fw

@@ -1,0 +1,46 @@
+#pragma once
+// A camera that "captures" image files in turn, and behaves like a sensor: frames of another
+// pixel format or larger than configured are refused, the row stride can be padded the way
+// ISPs pad it, and once the list is exhausted (or at a "!timeout" entry) a capture waits its
+// full timeout and fails with Errc::Timeout.
+//
+// Source: a folder (its .png/.jpg/.jpeg/.pgm files in name order) or a list file (one path a
+// line, relative to the list's folder; '#' comments; "!timeout" simulates a hung sensor).
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "hal/camera.h"
+#include "hal/clock.h"
+
+namespace icacam::hal {
+
+struct FileCameraOptions {
+    std::string source;     // folder or list file
+    int strideAlign = 1;    // rows padded to a multiple of this many bytes (e.g. 64)
+    bool loop = false;      // start over at the end instead of timing out
+    int exposureMs = 0;     // simulated capture latency
+};
+
+class FileCamera final : public Camera {
+public:
+    FileCamera(Clock &clock, FileCameraOptions opts) : clock_(clock), opts_(std::move(opts)) {}
+
+    Error configure(const CameraFormat &fmt) override;
+    Error capture(int timeoutMs, CapturedFrame *out) override;
+
+    size_t frameCount() const { return files_.size(); }
+    size_t position() const { return next_; }
+    void seek(size_t index) { next_ = index; }
+
+private:
+    Clock &clock_;
+    FileCameraOptions opts_;
+    CameraFormat fmt_;
+    std::vector<std::string> files_;
+    size_t next_ = 0;
+    std::unique_ptr<uint8_t[]> buffer_;
+    size_t capacity_ = 0;
+};
+
+} // namespace icacam::hal

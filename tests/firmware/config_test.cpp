@@ -1,0 +1,69 @@
+#include <gtest/gtest.h>
+
+#include "firmware/config.h"
+
+using namespace icacam::fw;
+
+namespace {
+const char *kGood = R"(# a device
+[specimen]
+n = 0.21
+k_mpa = 400
+material = "AlMgSi1"
+[calibration]
+mm_per_px = 0.0125
+[camera]
+frames = frames/
+timeout_ms = 500
+[display]
+dir = screen
+[serial]
+link = tty
+journal.dir = journal
+)";
+}
+
+TEST(Config, GoodFileParses)
+{
+    Config c;
+    auto issues = parseConfig(kGood, &c);
+    EXPECT_TRUE(issues.empty()) << issues[0].message;
+    EXPECT_DOUBLE_EQ(c.n, 0.21);
+    EXPECT_EQ(c.material, "AlMgSi1");
+    EXPECT_EQ(c.captureTimeoutMs, 500);
+    EXPECT_EQ(c.journalDir, "journal");
+}
+
+TEST(Config, EveryMistakeIsReportedWithItsLine)
+{
+    Config c;
+    auto issues = parseConfig("[specimen]\nn = 2\nk_mpa = abc\nbogus = 1\nno equals sign\n[camera\n"
+                              "camera.format = yuv\ncamera.timeout_ms = 10.5\n",
+                              &c);
+    std::vector<int> lines;
+    for (auto &i : issues) lines.push_back(i.line);
+    for (int want : {2, 3, 4, 5, 6, 7, 8}) EXPECT_NE(std::find(lines.begin(), lines.end(), want), lines.end()) << want;
+    bool mentionsRange = false, missingScale = false;
+    for (auto &i : issues) {
+        mentionsRange |= i.message.find("between") != std::string::npos;
+        missingScale |= i.message.find("mm_per_px is required") != std::string::npos;
+    }
+    EXPECT_TRUE(mentionsRange);
+    EXPECT_TRUE(missingScale);
+}
+
+TEST(Config, LiveKeysOnlyOverSerial)
+{
+    Config c;
+    EXPECT_EQ(setConfigKey(&c, "n", "0.3", true), "");
+    EXPECT_DOUBLE_EQ(c.n, 0.3);
+    EXPECT_NE(setConfigKey(&c, "journal.dir", "/", true), "");
+    EXPECT_NE(setConfigKey(&c, "n", "nan", true), "");
+    EXPECT_NE(setConfigKey(&c, "n", "inf", true), "");
+    EXPECT_NE(setConfigKey(&c, "material", "a\"b", true), "");
+    std::string v;
+    bool num = false;
+    ASSERT_TRUE(getConfigKey(c, "n", &v, &num));
+    EXPECT_TRUE(num);
+    EXPECT_EQ(v, "0.3");
+}

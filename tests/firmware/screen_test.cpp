@@ -1,0 +1,50 @@
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "firmware/font5x7.h"
+#include "firmware/screen.h"
+
+using namespace icacam;
+
+TEST(Font, GlyphsAreDistinctSoTheScreenCanBeReadBack)
+{
+    std::set<std::vector<uint8_t>> seen;
+    for (int g = 0; g < fw::glyphCount(); ++g) {
+        const uint8_t *c = fw::glyphColumns(g);
+        EXPECT_TRUE(seen.insert({c, c + 5}).second) << "glyph " << g;
+    }
+}
+
+TEST(Font, TextRoundTrips)
+{
+    hal::MonoBitmap bmp;
+    const std::string text = "\xCE\xBC=0.182\xC2\xB1" "0.004 \xCF\x83 ~{}";
+    fw::drawText(&bmp, 0, 3, text);
+    EXPECT_EQ(fw::readRow(bmp, 3), text);
+    EXPECT_EQ(fw::readRow(bmp, 2), "");
+    fw::drawText(&bmp, 0, 7, std::string(40, 'W')); // clipped at 21 columns
+    EXPECT_EQ(fw::readRow(bmp, 7), std::string(21, 'W'));
+}
+
+TEST(Screen, ErrorsAreShownInWords)
+{
+    hal::MonoBitmap bmp;
+    vision::Measurement m;
+    m.status = vision::Status::Error;
+    m.error = vision::ErrorCode::InnerEdgeNotFound;
+    fw::drawResult(&bmp, 12, m, "");
+    EXPECT_EQ(fw::readRow(bmp, 0), "#12 error");
+    EXPECT_EQ(fw::readRow(bmp, 2), "inner edge not found");
+    m.status = vision::Status::Warn;
+    m.error = vision::ErrorCode::None;
+    m.mu = 0.182;
+    m.muSigma = 0.004;
+    m.flags = vision::kFlagNOutOfRange;
+    fw::drawResult(&bmp, 13, m, "");
+    EXPECT_EQ(fw::readRow(bmp, 2), "\xCE\xBC=0.182\xC2\xB1" "0.004");
+    EXPECT_EQ(fw::readRow(bmp, 5), "n outside 0.05-0.5");
+    fw::drawProblem(&bmp, "#14 error", "camera timeout: no frame within 2000 ms");
+    EXPECT_EQ(fw::readRow(bmp, 2), "camera timeout: no");
+    EXPECT_EQ(fw::readRow(bmp, 3), "frame within 2000 ms");
+}
