@@ -12,7 +12,6 @@
 namespace icacam::vision {
 
 namespace {
-constexpr double kPi = std::numbers::pi;
 template <typename T> T *carve(uint8_t *&p, size_t count)
 {
     T *out = reinterpret_cast<T *>(p);
