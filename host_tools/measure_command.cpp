@@ -129,7 +129,7 @@ int measureCommand(const std::vector<std::string> &args)
         if (!ok) r.message = "manifest line " + std::to_string(row.line) + ": " + row.error;
         ok = ok && number("n", 0, true, &spec.n) && number("mm_per_px", 0, true, &spec.mmPerPx) &&
              number("k_mpa", 0, false, &spec.kMpa) && number("d0_mm", 10, false, &spec.d0Mm) &&
-             number("h0_mm", 15, false, &spec.h0Mm);
+             number("h0_mm", 15, false, &spec.h0Mm) && number("h_final_mm", 0, false, &spec.hFinalMm);
         if (ok && !row.has("image")) { r.message = "missing image"; ok = false; }
         if (ok && !(spec.mmPerPx > 0)) { r.message = "mm_per_px must be positive"; ok = false; }
         if (ok) {

@@ -21,6 +21,7 @@ struct SpecimenSpec {
     double d0Mm = 10;      // initial diameter
     double h0Mm = 15;      // initial height
     double mmPerPx = 0;    // scale in the plane of the end face
+    double hFinalMm = 0;   // final height when recorded (0: assume the model's 50 % reduction)
 };
 
 class EndFaceAnalyzer {

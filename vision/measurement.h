@@ -29,8 +29,9 @@ enum MeasureFlag : uint32_t {
     kFlagScaleSuspect = 1u << 13,   // R_max contradicts the declared scale and 50 % reduction
     kFlagNarrowRing = 1u << 14,     // the ICA is only a few pixels wide
     kFlagNoSilhouette = 1u << 15,   // the barrel silhouette was not found: scale unchecked
+    kFlagReductionOutside = 1u << 16, // recorded final height is not the model's 50 % reduction
 };
-constexpr int kFlagCount = 16;
+constexpr int kFlagCount = 17;
 const char *flagName(int bit);
 
 // One located edge point on a ray, in pixel coordinates (Q16.16).

@@ -19,7 +19,8 @@ const char *flagName(int bit)
         "n_out_of_range", "k_out_of_range", "mu_below_model", "mu_above_model",
         "u_outside_model", "low_contrast",  "low_coverage",   "high_scatter",
         "blurred",         "saturated",     "specimen_clipped", "elliptical",
-        "centre_offset",   "scale_suspect", "narrow_ring",    "no_silhouette"};
+        "centre_offset",   "scale_suspect", "narrow_ring",    "no_silhouette",
+        "reduction_outside_model"};
     return bit >= 0 && bit < kFlagCount ? kNames[bit] : "unknown";
 }
 

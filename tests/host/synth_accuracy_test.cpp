@@ -47,3 +47,24 @@ TEST(SynthAccuracy, RandomScenesWithNuisances)
     EXPECT_LE(p90, 0.008);
     EXPECT_EQ(silentWrong, 0);
 }
+
+TEST(SynthAccuracy, RecordedReductionOutsideTheModelIsFlagged)
+{
+    host::EndFaceScene s;
+    s.rInnerMm = 5.6; s.rOuterMm = 6.2; s.rMaxMm = 5.0 * std::sqrt(2.0) * (1.008 + 0.034 * 0.6);
+    s.blurSigmaPx = 1.0; s.noiseSigma = 2;
+    const cv::Mat img = host::renderEndFace(s);
+    vision::EndFaceAnalyzer analyzer;
+    ASSERT_EQ(analyzer.configure(img.cols, img.rows), vision::ErrorCode::None);
+    vision::PaperModel model;
+    const vision::LumaView v{img.data, img.cols, img.rows, int(img.step[0]), 1};
+    vision::SpecimenSpec spec{0.25, 500, 10, 15, s.mmPerPx};
+    spec.hFinalMm = 7.5; // exactly 50 %
+    auto m = analyzer.measure(v, spec, model);
+    ASSERT_TRUE(m.hasValue());
+    EXPECT_FALSE(m.flags & vision::kFlagReductionOutside);
+    spec.hFinalMm = 7.0; // 53 %
+    m = analyzer.measure(v, spec, model);
+    EXPECT_TRUE(m.flags & vision::kFlagReductionOutside);
+    EXPECT_EQ(m.status, vision::Status::Warn);
+}
