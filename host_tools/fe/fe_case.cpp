@@ -1,0 +1,161 @@
+#include "fe_case.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+#include <stdexcept>
+
+namespace icacam::host::fe {
+
+namespace {
+std::string fmt(const char *f, double v)
+{
+    char b[64];
+    std::snprintf(b, sizeof b, f, v);
+    return b;
+}
+} // namespace
+
+std::string FeCase::label() const
+{
+    char b[200];
+    std::snprintf(b, sizeof b, "K%g_n%g_mu%g_E%g_D%g_H%g_r%g_h%g", kMpa, n, mu, eMpa / 1000, d0Mm,
+                  h0Mm, reductionMax, elemMm);
+    return b;
+}
+
+FeMesh meshFor(const FeCase &c)
+{
+    FeMesh m;
+    const double r0 = c.d0Mm / 2, z0 = c.h0Mm / 2;
+    m.nr = std::max(2, int(std::lround(r0 / c.elemMm)));
+    m.nz = std::max(2, int(std::lround(z0 / c.elemMm)));
+    m.platenFirstNode = (m.nr + 1) * (m.nz + 1) + 1;
+    return m;
+}
+
+std::string makeDeck(const FeCase &c)
+{
+    if (!(c.n > 0 && c.kMpa > 0 && c.mu >= 0 && c.elemMm > 0 && c.reductionMax > 0 &&
+          c.reductionMax < 0.9 && c.d0Mm > 0 && c.h0Mm > 0))
+        throw std::invalid_argument("fe: invalid case inputs");
+    const FeMesh m = meshFor(c);
+    const double r0 = c.d0Mm / 2, z0 = c.h0Mm / 2;
+    const double dr = r0 / m.nr, dz = z0 / m.nz;
+    std::ostringstream o;
+    o.precision(10);
+    o << "** icacam fe: cylinder upsetting, axisymmetric quarter model (generated)\n"
+      << "** " << c.label() << "\n*NODE,NSET=NALL\n";
+    for (int j = 0; j <= m.nz; ++j)
+        for (int i = 0; i <= m.nr; ++i)
+            o << m.node(i, j) << ", " << i * dr << ", " << j * dz << "\n";
+    // The platen: one row of elements from the axis to 2.2 R0, with the specimen's spacing.
+    const int np = int(std::lround(2.2 * r0 / dr));
+    const double tp = std::max(dz, 0.5);
+    for (int j = 0; j <= 1; ++j)
+        for (int i = 0; i <= np; ++i)
+            o << m.platenFirstNode + i + j * (np + 1) << ", " << i * dr << ", " << z0 + j * tp << "\n";
+    o << "*ELEMENT,TYPE=CAX4R,ELSET=SPEC\n";
+    int e = 1;
+    for (int j = 0; j < m.nz; ++j)
+        for (int i = 0; i < m.nr; ++i, ++e)
+            o << e << ", " << m.node(i, j) << ", " << m.node(i + 1, j) << ", "
+              << m.node(i + 1, j + 1) << ", " << m.node(i, j + 1) << "\n";
+    const int firstPlatenElem = e;
+    o << "*ELEMENT,TYPE=CAX4R,ELSET=PLATEN\n";
+    for (int i = 0; i < np; ++i, ++e) {
+        const int a = m.platenFirstNode + i;
+        o << e << ", " << a << ", " << a + 1 << ", " << a + np + 2 << ", " << a + np + 1 << "\n";
+    }
+    auto nset = [&](const char *name, auto pred) {
+        o << "*NSET,NSET=" << name << "\n";
+        int k = 0;
+        for (int j = 0; j <= m.nz; ++j)
+            for (int i = 0; i <= m.nr; ++i)
+                if (pred(i, j)) o << m.node(i, j) << (++k % 8 ? ", " : ",\n");
+        if (k % 8) o << "\n";
+    };
+    nset("AXIS", [](int i, int) { return i == 0; });
+    nset("MID", [](int, int j) { return j == 0; });
+    o << "*NSET,NSET=PLATENN,GENERATE\n"
+      << m.platenFirstNode << ", " << m.platenFirstNode + 2 * (np + 1) - 1 << ", 1\n";
+    // Slave: specimen top (S3 of the top row) and lateral surface (S2 of the outer column).
+    o << "*SURFACE,NAME=SLAVE\n";
+    for (int i = 0; i < m.nr; ++i) o << 1 + i + (m.nz - 1) * m.nr << ", S3\n";
+    for (int j = 0; j < m.nz; ++j) o << 1 + (m.nr - 1) + j * m.nr << ", S2\n";
+    o << "*SURFACE,NAME=MASTER\n";
+    for (int i = 0; i < np; ++i) o << firstPlatenElem + i << ", S1\n";
+    o << "*MATERIAL,NAME=WORK\n*ELASTIC\n" << c.eMpa << ", " << c.nu << "\n*PLASTIC\n";
+    // σ = K (0.002 + ε_p)^n, tabulated geometrically up to ε_p = 5.
+    std::vector<double> eps{0.0};
+    for (double x = 1e-4; x < 5.0001; x *= 1.35) eps.push_back(x);
+    eps.push_back(5.0);
+    for (double ep : eps) o << c.kMpa * std::pow(0.002 + ep, c.n) << ", " << ep << "\n";
+    o << "*MATERIAL,NAME=TOOL\n*ELASTIC\n" << 1e7 << ", 0.3\n"
+      << "*SOLID SECTION,ELSET=SPEC,MATERIAL=WORK\n*SOLID SECTION,ELSET=PLATEN,MATERIAL=TOOL\n"
+      << "*SURFACE INTERACTION,NAME=SI\n*SURFACE BEHAVIOR,PRESSURE-OVERCLOSURE=LINEAR\n"
+      << c.contactSlope << ", 0.1\n*FRICTION\n" << c.mu << ", " << c.stickSlope << "\n"
+      << "*CONTACT PAIR,INTERACTION=SI,TYPE=NODE TO SURFACE\nSLAVE, MASTER\n"
+      << "*BOUNDARY\nAXIS, 1, 1\nMID, 2, 2\nPLATENN, 1, 2\n"
+      << "*TIME POINTS,NAME=SNAP\n";
+    for (double r : c.reductions)
+        if (r <= c.reductionMax + 1e-12) o << fmt("%.10g", r / c.reductionMax) << "\n";
+    const double stroke = z0 * 2 * c.reductionMax / 2; // quarter model: half the stroke
+    o << "*STEP,NLGEOM,INC=100000\n*STATIC\n"
+      << c.incInit << ", 1.0, " << c.incMin << ", " << c.incMax << "\n"
+      << "*BOUNDARY\nPLATENN, 2, 2, " << -stroke << "\n"
+      << "*NODE FILE,TIME POINTS=SNAP\nU\n"
+      << "*NODE PRINT,NSET=PLATENN,TOTALS=ONLY\nRF\n"
+      << "*END STEP\n";
+    return o.str();
+}
+
+Radii computeRadii(const FeCase &c, const FeMesh &m, const NodeXY &coords, const NodeXY &disp,
+                   double reduction, double gapTolMm)
+{
+    Radii r;
+    r.reduction = reduction;
+    const double zPlaten = c.h0Mm / 2 * (1 - reduction);
+    auto pos = [&](int id) {
+        const auto ci = coords.find(id);
+        const auto di = disp.find(id);
+        if (ci == coords.end() || di == disp.end()) throw std::runtime_error("fe: node missing in results");
+        return std::pair<double, double>{ci->second.first + di->second.first,
+                                         ci->second.second + di->second.second};
+    };
+    r.riMm = pos(m.cornerNode()).first;
+    r.roMm = r.riMm;
+    r.roInterpMm = r.riMm;
+    // Walk down the former lateral surface from the corner: the nodes still on the platen
+    // form the immigrated contact area; the first node off it ends it.
+    int last = m.nz;
+    for (int j = m.nz - 1; j >= 0; --j) {
+        const auto p = pos(m.node(m.nr, j));
+        if (zPlaten - p.second <= gapTolMm) { last = j; r.roMm = std::max(r.roMm, p.first); ++r.contactNodes; }
+        else break;
+    }
+    // Sub-node edge: near a tangent contact edge the gap grows quadratically with distance,
+    // so sqrt(gap) is linear in r; extrapolate it to zero from the next two free nodes,
+    // clamped to the segment between the last contact node and the first free one.
+    if (last >= 2) {
+        const auto a = pos(m.node(m.nr, last));
+        const auto b = pos(m.node(m.nr, last - 1));
+        const auto cc = pos(m.node(m.nr, last - 2));
+        const double gb = std::sqrt(std::max(0.0, zPlaten - b.second));
+        const double gc = std::sqrt(std::max(0.0, zPlaten - cc.second));
+        double edge = a.first;
+        if (gc > gb + 1e-12 && b.first != cc.first) {
+            // Parametrise along the surface polyline: s from b towards c.
+            const double t = -gb / (gc - gb); // ≤ 0: behind b, towards a
+            const double s = 1 + t;           // position on a→b (0 at a, 1 at b)
+            const double sc = std::clamp(s, 0.0, 1.0);
+            edge = a.first + sc * (b.first - a.first);
+        }
+        r.roInterpMm = std::max(r.roMm, edge);
+    }
+    for (int j = 0; j <= m.nz; ++j) r.rMaxMm = std::max(r.rMaxMm, pos(m.node(m.nr, j)).first);
+    return r;
+}
+
+} // namespace icacam::host::fe

@@ -1,0 +1,56 @@
+#pragma once
+// One upsetting case for CalculiX: the deck (axisymmetric quarter model, CAX4R, Coulomb
+// friction against a rigid platen row, NLGEOM, σ = K(0.002 + ε_p)^n) and the
+// post-processing of its results into R_i, R_o, R_max, u and the force–stroke curve.
+#include <map>
+#include <string>
+#include <vector>
+
+namespace icacam::host::fe {
+
+struct FeCase {
+    double kMpa = 500;
+    double n = 0.25;
+    double mu = 0.2;
+    double eMpa = 210000;
+    double nu = 0.3;
+    double d0Mm = 10;
+    double h0Mm = 15;
+    double reductionMax = 0.5;              // total height reduction of the run
+    std::vector<double> reductions{0.3, 0.4, 0.45, 0.5}; // result snapshots (≤ reductionMax)
+    double elemMm = 0.2;                    // element edge length (uniform structured mesh)
+    double contactSlope = 1e5;              // N/mm³, linear pressure–overclosure
+    double stickSlope = 1e5;                // N/mm³, friction stick slope
+    double incInit = 0.005, incMin = 1e-7, incMax = 0.01; // of the step time 1
+    std::string label() const;              // a file-safe name from the inputs
+};
+
+// Node numbering of the generated mesh (needed to post-process).
+struct FeMesh {
+    int nr = 0, nz = 0;       // specimen elements radially / axially
+    int platenFirstNode = 0;  // first node id of the platen
+    int node(int i, int j) const { return 1 + i + j * (nr + 1); }
+    int cornerNode() const { return node(nr, nz); }
+};
+
+FeMesh meshFor(const FeCase &c);
+std::string makeDeck(const FeCase &c);
+
+struct Radii {
+    double reduction = 0;
+    double riMm = 0;     // original end face edge (the former corner node)
+    double roMm = 0;     // outermost former-lateral node touching the platen
+    double roInterpMm = 0; // R_o with the edge interpolated between nodes (tangent contact)
+    double rMaxMm = 0;   // silhouette: the largest radius of the deformed lateral surface
+    double uMm() const { return roMm - riMm; }
+    double uInterpMm() const { return roInterpMm - riMm; }
+    int contactNodes = 0; // former lateral nodes in contact
+};
+
+// Node coordinates (x = r, y = z) and one displacement field.
+using NodeXY = std::map<int, std::pair<double, double>>;
+
+Radii computeRadii(const FeCase &c, const FeMesh &m, const NodeXY &coords, const NodeXY &disp,
+                   double reduction, double gapTolMm = 1e-4);
+
+} // namespace icacam::host::fe

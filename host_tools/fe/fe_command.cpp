@@ -1,0 +1,215 @@
+// `icacam fe`: deck generation, ccx runs, sweeps, the model fit and the report (issue 5).
+#include "fe_command.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <mutex>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+
+#include "fe_fit.h"
+#include "fe_runner.h"
+
+namespace icacam::host {
+
+namespace fs = std::filesystem;
+using namespace icacam::host::fe;
+
+namespace {
+
+const char *kUsage =
+    "usage: icacam fe <run|sweep|fit|report|deck> [options]\n"
+    "  deck    --k MPa --n N --mu MU [case options]           print the CalculiX deck\n"
+    "  run     [case options] [--out CSV] [--work DIR]       one case: ccx, R_i R_o R_max u force\n"
+    "  sweep   --grid 'k=500;n=0.25,0.05;mu=0.05,0.1' [case options] --out CSV [--jobs 1]\n"
+    "          resumable: cases already in CSV are skipped; grid keys: k n mu e d0 h0 red elem\n"
+    "  fit     --in CSV [--in CSV2] --out vision/fe_model_table.h [--reduction 0.5]\n"
+    "  report  --in CSV --out DIR                             Table 1 / Fig. 3 comparison\n"
+    "case options: --k 500 --n 0.25 --mu 0.2 --e 210000 --d0 10 --h0 15 --reduction 0.5\n"
+    "              --elem 0.2 --contact-slope 1e5 --stick-slope 1e5 --inc-max 0.01\n"
+    "              --ccx ccx --timeout 3600 --work /tmp/icacam-fe\n";
+
+struct Parsed {
+    FeCase c;
+    RunOptions run;
+    std::vector<std::string> in;
+    std::string out, grid;
+    double reduction = 0.5;
+    int jobs = 1;
+};
+
+double toDouble(const std::string &key, const std::string &v)
+{
+    size_t pos = 0;
+    double x = 0;
+    try { x = std::stod(v, &pos); } catch (...) { pos = 0; }
+    if (pos != v.size() || !std::isfinite(x)) throw std::runtime_error(key + ": not a number: '" + v + "'");
+    return x;
+}
+
+bool setCaseKey(FeCase &c, const std::string &key, double v)
+{
+    if (key == "k") c.kMpa = v;
+    else if (key == "n") c.n = v;
+    else if (key == "mu") c.mu = v;
+    else if (key == "e") c.eMpa = v;
+    else if (key == "d0") c.d0Mm = v;
+    else if (key == "h0") c.h0Mm = v;
+    else if (key == "reduction" || key == "red") c.reductionMax = v;
+    else if (key == "elem") c.elemMm = v;
+    else if (key == "contact-slope") c.contactSlope = v;
+    else if (key == "stick-slope") c.stickSlope = v;
+    else if (key == "inc-max") c.incMax = v;
+    else return false;
+    return true;
+}
+
+Parsed parse(const std::vector<std::string> &args, size_t from)
+{
+    Parsed p;
+    for (size_t i = from; i < args.size(); ++i) {
+        const std::string &a = args[i];
+        if (a == "-h" || a == "--help") { std::cout << kUsage; std::exit(0); }
+        if (a.rfind("--", 0) != 0 || i + 1 >= args.size())
+            throw std::runtime_error("bad or incomplete option '" + a + "'\n" + kUsage);
+        const std::string key = a.substr(2), v = args[++i];
+        if (key == "out") p.out = v;
+        else if (key == "in") p.in.push_back(v);
+        else if (key == "grid") p.grid = v;
+        else if (key == "work") p.run.workDir = v;
+        else if (key == "ccx") p.run.ccx = v;
+        else if (key == "timeout") p.run.timeoutS = int(toDouble(key, v));
+        else if (key == "jobs") p.jobs = std::clamp(int(toDouble(key, v)), 1, 2);
+        else if (key == "snapshot-reduction") p.reduction = toDouble(key, v);
+        else if (!setCaseKey(p.c, key, toDouble(key, v)))
+            throw std::runtime_error("unknown option '" + a + "'\n" + kUsage);
+    }
+    if (p.reduction <= 0) p.reduction = p.c.reductionMax;
+    return p;
+}
+
+std::set<std::string> casesIn(const std::string &csv)
+{
+    std::set<std::string> s;
+    std::ifstream f(csv);
+    std::string line;
+    std::getline(f, line);
+    while (std::getline(f, line))
+        if (!line.empty()) s.insert(line.substr(0, line.find(',')));
+    return s;
+}
+
+void appendRows(const std::string &csv, const std::vector<std::string> &rows)
+{
+    const bool fresh = !fs::exists(csv) || fs::file_size(csv) == 0;
+    if (fs::path(csv).has_parent_path()) fs::create_directories(fs::path(csv).parent_path());
+    std::ofstream f(csv, std::ios::app);
+    if (fresh) f << csvHeader() << "\n";
+    for (const auto &r : rows) f << r << "\n";
+    if (!f) throw std::runtime_error("cannot write " + csv);
+}
+
+void printResult(const FeCase &c, const RunResult &r)
+{
+    std::cout << c.label() << ": " << r.status << " in " << r.wallS << " s" << (r.message.empty() ? "" : " (" + r.message + ")") << "\n";
+    for (const Radii &x : r.radii) {
+        double f = 0;
+        for (const auto &p : r.force) if (std::fabs(p.time - x.reduction) < 1e-6) f = p.fy;
+        std::printf("  reduction %.3f  R_i %.4f  R_o %.4f  R_max %.4f  u %.4f (interp %.4f)  F %.2f kN\n",
+                    x.reduction, x.riMm, x.roMm, x.rMaxMm, x.uMm(), x.uInterpMm(), f);
+    }
+    std::fflush(stdout);
+}
+
+// "k=500;n=0.25,0.05;mu=0.05,0.1" → the cases, the first key outermost.
+std::vector<FeCase> expandGrid(const FeCase &base, const std::string &grid)
+{
+    std::vector<FeCase> cases{base};
+    std::istringstream g(grid);
+    std::string part;
+    while (std::getline(g, part, ';')) {
+        if (part.empty()) continue;
+        const auto eq = part.find('=');
+        if (eq == std::string::npos) throw std::runtime_error("grid: expected key=v1,v2: " + part);
+        const std::string key = part.substr(0, eq);
+        std::vector<double> values;
+        std::istringstream vs(part.substr(eq + 1));
+        std::string v;
+        while (std::getline(vs, v, ',')) values.push_back(toDouble(key, v));
+        std::vector<FeCase> next;
+        for (const FeCase &c : cases)
+            for (double x : values) {
+                FeCase d = c;
+                if (!setCaseKey(d, key, x)) throw std::runtime_error("grid: unknown key " + key);
+                next.push_back(d);
+            }
+        cases = next;
+    }
+    return cases;
+}
+
+int sweep(const Parsed &p)
+{
+    if (p.out.empty() || p.grid.empty()) throw std::runtime_error("sweep needs --grid and --out");
+    const auto cases = expandGrid(p.c, p.grid);
+    const auto done = casesIn(p.out);
+    std::vector<FeCase> todo;
+    for (const FeCase &c : cases)
+        if (!done.count(c.label())) todo.push_back(c);
+    std::cout << "sweep: " << cases.size() << " cases, " << cases.size() - todo.size()
+              << " already in " << p.out << ", " << todo.size() << " to run\n";
+    std::mutex m;
+    size_t next = 0;
+    auto worker = [&] {
+        for (;;) {
+            FeCase c;
+            {
+                std::lock_guard<std::mutex> l(m);
+                if (next >= todo.size()) return;
+                c = todo[next++];
+            }
+            RunResult r;
+            try { r = runCase(c, p.run); } catch (const std::exception &e) { r.status = "error"; r.message = e.what(); }
+            std::lock_guard<std::mutex> l(m);
+            printResult(c, r);
+            appendRows(p.out, csvRows(c, r));
+        }
+    };
+    std::vector<std::thread> threads;
+    for (int j = 0; j < p.jobs; ++j) threads.emplace_back(worker);
+    for (auto &t : threads) t.join();
+    return 0;
+}
+
+} // namespace
+
+int feCommand(const std::vector<std::string> &args)
+{
+    if (args.empty() || args[0] == "-h" || args[0] == "--help") { std::cout << kUsage; return args.empty() ? 2 : 0; }
+    const std::string sub = args[0];
+    const Parsed p = parse(args, 1);
+    if (sub == "deck") { std::cout << makeDeck(p.c); return 0; }
+    if (sub == "run") {
+        const RunResult r = runCase(p.c, p.run);
+        printResult(p.c, r);
+        if (!p.out.empty()) appendRows(p.out, csvRows(p.c, r));
+        return r.status == "ok" ? 0 : 1;
+    }
+    if (sub == "sweep") return sweep(p);
+    if (sub == "fit") {
+        if (p.in.empty() || p.out.empty()) throw std::runtime_error("fit needs --in and --out");
+        return fitCommand(p.in, p.out, p.reduction);
+    }
+    if (sub == "report") {
+        if (p.in.empty() || p.out.empty()) throw std::runtime_error("report needs --in and --out");
+        return reportCommand(p.in, p.out, p.reduction);
+    }
+    throw std::runtime_error("unknown fe subcommand '" + sub + "'\n" + kUsage);
+}
+
+} // namespace icacam::host

@@ -1,0 +1,8 @@
+#pragma once
+#include <string>
+#include <vector>
+
+namespace icacam::host {
+// `icacam fe run|sweep|fit|report`: our own μ model from CalculiX (issue 5, docs/fe.md).
+int feCommand(const std::vector<std::string> &args);
+} // namespace icacam::host

@@ -1,0 +1,234 @@
+#include "fe_fit.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+#include "vision/paper_model.h"
+
+namespace icacam::host::fe {
+
+namespace fs = std::filesystem;
+
+namespace {
+std::vector<std::string> split(const std::string &line)
+{
+    std::vector<std::string> out;
+    std::string cell;
+    std::istringstream s(line);
+    while (std::getline(s, cell, ',')) out.push_back(cell);
+    if (!line.empty() && line.back() == ',') out.emplace_back();
+    return out;
+}
+double d(const std::string &s) { return s.empty() ? 0.0 : std::strtod(s.c_str(), nullptr); }
+
+// The base data of the model: 50 % (or the chosen) reduction, the paper's specimen and E,
+// the finest mesh present for each (n, μ), averaged over K.
+struct Point {
+    double n = 0, mu = 0, u = 0, ri = 0, ro = 0, rMax = 0, force = 0, elem = 0;
+    int count = 0;
+    double kMin = 1e9, kMax = 0;
+};
+
+std::map<std::pair<double, double>, Point> basePoints(const std::vector<std::string> &in, double reduction)
+{
+    std::vector<FeRow> rows;
+    for (const auto &path : in) {
+        const auto r = readSweepCsv(path);
+        rows.insert(rows.end(), r.begin(), r.end());
+    }
+    // The mesh used for the base data: the most common element size at this reduction.
+    std::map<double, int> elemCount;
+    for (const auto &r : rows)
+        if (r.status == "ok" && std::fabs(r.reduction - reduction) < 1e-6) ++elemCount[r.elem];
+    double elem = 0;
+    int best = 0;
+    for (auto [e, c] : elemCount) if (c > best) { best = c; elem = e; }
+    std::map<std::pair<double, double>, Point> pts;
+    for (const auto &r : rows) {
+        if (r.status != "ok" || std::fabs(r.reduction - reduction) > 1e-6 || r.elem != elem ||
+            r.eMpa != 210000 || r.d0 != 10 || r.h0 != 15)
+            continue;
+        Point &p = pts[{r.n, r.mu}];
+        p.n = r.n; p.mu = r.mu; p.elem = r.elem;
+        p.u += r.uInterp; p.ri += r.ri; p.ro += r.roInterp; p.rMax += r.rMax; p.force += r.force / r.kMpa;
+        p.kMin = std::min(p.kMin, r.kMpa); p.kMax = std::max(p.kMax, r.kMpa);
+        ++p.count;
+    }
+    for (auto &[k, p] : pts) {
+        const double c = p.count;
+        p.u /= c; p.ri /= c; p.ro /= c; p.rMax /= c; p.force /= c;
+    }
+    return pts;
+}
+
+std::string list(const std::vector<double> &v, const char *f = "%.6g")
+{
+    std::string s;
+    for (size_t i = 0; i < v.size(); ++i) {
+        char b[40];
+        std::snprintf(b, sizeof b, f, v[i]);
+        s += (i ? ", " : "") + std::string(b);
+    }
+    return s;
+}
+} // namespace
+
+std::vector<FeRow> readSweepCsv(const std::string &path)
+{
+    std::ifstream f(path);
+    if (!f) throw std::runtime_error("cannot read " + path);
+    std::string line;
+    std::getline(f, line);
+    const auto head = split(line);
+    std::map<std::string, size_t> col;
+    for (size_t i = 0; i < head.size(); ++i) col[head[i]] = i;
+    for (const char *need : {"case", "status", "k_mpa", "n", "mu", "e_mpa", "d0_mm", "h0_mm", "reduction",
+                             "elem_mm", "r_i_mm", "r_o_interp_mm", "r_max_mm", "u_interp_mm", "force_kn"})
+        if (!col.count(need)) throw std::runtime_error(path + ": missing column " + need);
+    std::vector<FeRow> rows;
+    while (std::getline(f, line)) {
+        if (line.empty()) continue;
+        const auto c = split(line);
+        auto get = [&](const char *k) { const size_t i = col[k]; return i < c.size() ? c[i] : std::string(); };
+        FeRow r;
+        r.caseId = get("case"); r.status = get("status");
+        r.kMpa = d(get("k_mpa")); r.n = d(get("n")); r.mu = d(get("mu")); r.eMpa = d(get("e_mpa"));
+        r.d0 = d(get("d0_mm")); r.h0 = d(get("h0_mm")); r.reductionMax = d(get("reduction_max"));
+        r.reduction = d(get("reduction")); r.elem = d(get("elem_mm"));
+        r.ri = d(get("r_i_mm")); r.ro = d(get("r_o_mm")); r.roInterp = d(get("r_o_interp_mm"));
+        r.rMax = d(get("r_max_mm")); r.u = d(get("u_mm")); r.uInterp = d(get("u_interp_mm"));
+        r.force = d(get("force_kn")); r.wallS = d(get("wall_s"));
+        rows.push_back(r);
+    }
+    return rows;
+}
+
+int fitCommand(const std::vector<std::string> &in, const std::string &out, double reduction)
+{
+    const auto pts = basePoints(in, reduction);
+    if (pts.empty()) throw std::runtime_error("fit: no usable rows");
+    std::set<double> ns, mus;
+    double kMin = 1e9, kMax = 0, elem = 0;
+    for (const auto &[k, p] : pts) {
+        ns.insert(p.n); mus.insert(p.mu);
+        kMin = std::min(kMin, p.kMin); kMax = std::max(kMax, p.kMax); elem = p.elem;
+    }
+    const std::vector<double> nv(ns.begin(), ns.end()), mv(mus.begin(), mus.end());
+    auto table = [&](auto get) {
+        std::string s;
+        for (double n : nv) {
+            std::vector<double> row;
+            for (double mu : mv) {
+                const auto it = pts.find({n, mu});
+                row.push_back(it == pts.end() ? -1.0 : get(it->second));
+            }
+            s += "    {" + list(row, "%.5f") + "},\n";
+        }
+        return s;
+    };
+    std::string inputs;
+    for (const auto &p : in) inputs += " --in " + p;
+    std::ofstream f(out);
+    f << "#pragma once\n"
+      << "// GENERATED by `icacam fe fit" << inputs << " --out " << out << "` — do not edit.\n"
+      << "// Base data: CalculiX 2.20 CAX4R axisymmetric upsetting (host_tools/fe, docs/fe.md),\n"
+      << "// D0 = 10 mm, H0 = 15 mm, E = 210 GPa, reduction " << reduction << ", element " << elem
+      << " mm, values averaged over K.\n"
+      << "// u is the interpolated contact edge (u_interp_mm); -1 marks a grid point without data.\n"
+      << "namespace icacam::vision::fe_table {\n"
+      << "inline constexpr const char *kProvenance = \"icacam fe fit" << inputs << "\";\n"
+      << "inline constexpr double kReduction = " << reduction << ";\n"
+      << "inline constexpr double kD0Mm = 10, kH0Mm = 15;\n"
+      << "inline constexpr double kKMinMpa = " << kMin << ", kKMaxMpa = " << kMax << ";\n"
+      << "inline constexpr int kNCount = " << nv.size() << ", kMuCount = " << mv.size() << ";\n"
+      << "inline constexpr double kN[kNCount] = {" << list(nv) << "};\n"
+      << "inline constexpr double kMu[kMuCount] = {" << list(mv) << "};\n"
+      << "// [n][μ] in mm\n"
+      << "inline constexpr double kU[kNCount][kMuCount] = {\n" << table([](const Point &p) { return p.u; }) << "};\n"
+      << "inline constexpr double kRi[kNCount][kMuCount] = {\n" << table([](const Point &p) { return p.ri; }) << "};\n"
+      << "inline constexpr double kRo[kNCount][kMuCount] = {\n" << table([](const Point &p) { return p.ro; }) << "};\n"
+      << "inline constexpr double kRmax[kNCount][kMuCount] = {\n" << table([](const Point &p) { return p.rMax; }) << "};\n"
+      << "} // namespace icacam::vision::fe_table\n";
+    if (!f) throw std::runtime_error("cannot write " + out);
+    std::cout << "fit: " << pts.size() << " (n, mu) points, n " << list(nv) << ", mu " << list(mv) << " -> " << out << "\n";
+    return 0;
+}
+
+int reportCommand(const std::vector<std::string> &in, const std::string &outDir, double reduction)
+{
+    const auto pts = basePoints(in, reduction);
+    fs::create_directories(outDir);
+    vision::PaperModel paper;
+    std::ofstream md(fs::path(outDir) / "comparison.md");
+    md << "# FE (CalculiX) against Duran & Karadogan (2016)\n\n"
+       << "Generated by `icacam fe report`. u: our FE (interpolated contact edge), u_paper: the u at which the\n"
+       << "paper's corrected Eq. 2/3 gives this μ, μ_paper(u): the paper's μ at our u.\n\n"
+       << "| n | μ | u FE (mm) | u paper (mm) | Δu % | μ_paper(u_FE) | R_i | R_o | R_max | F/K (kN/MPa) |\n"
+       << "|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const auto &[k, p] : pts) {
+        // Invert the paper's cubic at this n by bisection over u ∈ [0, 1.4].
+        double lo = 0, hi = 1.4;
+        vision::ModelInputs mi;
+        mi.n = p.n;
+        for (int it = 0; it < 60; ++it) {
+            const double mid = 0.5 * (lo + hi);
+            mi.uMm = mid;
+            (paper.estimate(mi).mu < p.mu ? lo : hi) = mid;
+        }
+        const double uPaper = 0.5 * (lo + hi);
+        mi.uMm = p.u;
+        char b[400];
+        std::snprintf(b, sizeof b, "| %g | %g | %.4f | %.4f | %+.1f | %.4f | %.4f | %.4f | %.4f | %.4f |\n", p.n,
+                      p.mu, p.u, uPaper, uPaper > 0 ? 100 * (p.u - uPaper) / uPaper : 0.0,
+                      paper.estimate(mi).mu, p.ri, p.ro, p.rMax, p.force);
+        md << b;
+    }
+    // Fig. 3-like plot: μ over u, one colour per n, FE points and the paper's curves.
+    std::ofstream svg(fs::path(outDir) / "mu_vs_u.svg");
+    const double W = 640, H = 420, x0 = 60, y0 = 380, sx = 500 / 1.4, sy = 340 / 0.35;
+    const char *colours[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b"};
+    svg << "<svg xmlns='http://www.w3.org/2000/svg' width='" << W << "' height='" << H << "'>\n"
+        << "<rect width='100%' height='100%' fill='white'/>\n"
+        << "<line x1='" << x0 << "' y1='" << y0 << "' x2='" << x0 + 500 << "' y2='" << y0 << "' stroke='black'/>\n"
+        << "<line x1='" << x0 << "' y1='" << y0 << "' x2='" << x0 << "' y2='" << y0 - 340 << "' stroke='black'/>\n"
+        << "<text x='" << x0 + 220 << "' y='" << H - 5 << "'>u (mm)</text><text x='5' y='30'>mu</text>\n";
+    for (int t = 0; t <= 7; ++t)
+        svg << "<text x='" << x0 + t * 0.2 * sx - 8 << "' y='" << y0 + 15 << "' font-size='11'>" << t * 0.2 << "</text>\n";
+    for (int t = 0; t <= 7; ++t)
+        svg << "<text x='20' y='" << y0 - t * 0.05 * sy + 4 << "' font-size='11'>" << t * 0.05 << "</text>\n";
+    std::set<double> ns;
+    for (const auto &[k, p] : pts) ns.insert(p.n);
+    int ci = 0;
+    for (double n : ns) {
+        const char *col = colours[ci++ % 6];
+        std::string path;
+        vision::ModelInputs mi;
+        mi.n = n;
+        for (int i = 0; i <= 70; ++i) {
+            mi.uMm = 1.25 * i / 70;
+            const double mu = paper.estimate(mi).mu;
+            char b[64];
+            std::snprintf(b, sizeof b, "%s%.1f,%.1f ", i ? "L" : "M", x0 + mi.uMm * sx, y0 - mu * sy);
+            path += b;
+        }
+        svg << "<path d='" << path << "' fill='none' stroke='" << col << "' stroke-dasharray='4,3'/>\n";
+        for (const auto &[k, p] : pts)
+            if (p.n == n)
+                svg << "<circle cx='" << x0 + p.u * sx << "' cy='" << y0 - p.mu * sy << "' r='4' fill='" << col << "'/>\n";
+        svg << "<text x='" << x0 + 420 << "' y='" << 40 + ci * 16 << "' fill='" << col << "'>n = " << n << "</text>\n";
+    }
+    svg << "<text x='" << x0 + 300 << "' y='" << 40 << "' font-size='11'>dots: FE, dashed: paper Eq. 2/3</text>\n</svg>\n";
+    std::cout << "report: " << pts.size() << " points -> " << outDir << "/comparison.md, mu_vs_u.svg\n";
+    return 0;
+}
+
+} // namespace icacam::host::fe

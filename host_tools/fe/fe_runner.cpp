@@ -1,0 +1,127 @@
+#include "fe_runner.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace icacam::host::fe {
+
+namespace fs = std::filesystem;
+
+namespace {
+std::string slurp(const fs::path &p)
+{
+    std::ifstream f(p, std::ios::binary);
+    std::ostringstream s;
+    s << f.rdbuf();
+    return s.str();
+}
+std::string shellQuote(const std::string &s)
+{
+    std::string q = "'";
+    for (char ch : s) q += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
+    return q + "'";
+}
+} // namespace
+
+std::vector<double> snapshotReductions(const FeCase &c)
+{
+    std::vector<double> r;
+    for (int k = 1; k * 0.05 <= c.reductionMax + 1e-9; ++k) r.push_back(std::round(k * 0.05 * 1e6) / 1e6);
+    for (double x : c.reductions)
+        if (x > 0 && x <= c.reductionMax + 1e-9) r.push_back(x);
+    r.push_back(c.reductionMax);
+    std::sort(r.begin(), r.end());
+    r.erase(std::unique(r.begin(), r.end(), [](double a, double b) { return std::fabs(a - b) < 1e-9; }), r.end());
+    return r;
+}
+
+RunResult runCase(FeCase c, const RunOptions &o)
+{
+    RunResult res;
+    c.reductions = snapshotReductions(c);
+    const FeMesh mesh = meshFor(c);
+    const fs::path dir = fs::path(o.workDir) / c.label();
+    res.dir = dir.string();
+    fs::create_directories(dir);
+    {
+        std::ofstream deck(dir / "job.inp");
+        deck << makeDeck(c);
+    }
+    for (const char *ext : {".frd", ".dat", ".sta", ".cvg"}) fs::remove(dir / (std::string("job") + ext));
+    const std::string cmd = "cd " + shellQuote(dir.string()) + " && OMP_NUM_THREADS=1 CCX_NPROC_EQUATION_SOLVER=1 timeout " +
+                            std::to_string(o.timeoutS) + " " + o.ccx + " -i job > ccx.log 2>&1";
+    const auto t0 = std::chrono::steady_clock::now();
+    const int rc = std::system(cmd.c_str());
+    res.wallS = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const std::string log = slurp(dir / "ccx.log");
+    if (!fs::exists(dir / "job.frd")) {
+        res.status = "error";
+        res.message = "ccx produced no .frd (exit " + std::to_string(rc) + ")";
+        return res;
+    }
+    const FrdResults frd = parseFrd(slurp(dir / "job.frd"));
+    const auto forces = parseDatTotals(slurp(dir / "job.dat"));
+    for (const FrdStep &s : frd.steps) {
+        const double red = s.time * c.reductionMax;
+        res.radii.push_back(computeRadii(c, mesh, frd.coords, s.disp, red));
+    }
+    for (ForcePoint f : forces) {
+        // Axisymmetric elements: CalculiX reports forces for a 2° segment.
+        f.fx *= 180.0 / 1000.0;
+        f.fy *= -180.0 / 1000.0; // compressive force on the specimen, positive, kN
+        f.time *= c.reductionMax;
+        res.force.push_back(f);
+    }
+    const bool finished = log.find("Job finished") != std::string::npos;
+    const bool complete = !res.radii.empty() && std::fabs(res.radii.back().reduction - c.reductionMax) < 1e-6;
+    res.status = finished && complete ? "ok" : "failed";
+    if (!finished) {
+        // The last error line of the log says why (e.g. too many cutbacks).
+        const auto at = log.rfind("*ERROR");
+        res.message = at == std::string::npos ? "ccx did not finish" : log.substr(at, log.find('\n', at) - at);
+        for (char &ch : res.message) if (ch == ',') ch = ';';
+    }
+    if (!o.keep) fs::remove_all(dir);
+    return res;
+}
+
+std::string csvHeader()
+{
+    return "case,status,k_mpa,n,mu,e_mpa,nu,d0_mm,h0_mm,reduction_max,reduction,elem_mm,element,"
+           "contact,contact_slope,stick_slope,inc_max,r_i_mm,r_o_mm,r_o_interp_mm,r_max_mm,u_mm,"
+           "u_interp_mm,contact_nodes,force_kn,wall_s,solver,message";
+}
+
+std::vector<std::string> csvRows(const FeCase &c, const RunResult &r)
+{
+    std::vector<std::string> rows;
+    auto row = [&](const Radii *x, double force) {
+        char b[1024];
+        std::snprintf(b, sizeof b,
+                      "%s,%s,%g,%g,%g,%g,%g,%g,%g,%g,%.4f,%g,CAX4R,node-to-surface penalty,%g,%g,%g,"
+                      "%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%d,%.3f,%.1f,CalculiX 2.20 OMP=1,%s",
+                      c.label().c_str(), r.status.c_str(), c.kMpa, c.n, c.mu, c.eMpa, c.nu, c.d0Mm,
+                      c.h0Mm, c.reductionMax, x ? x->reduction : 0.0, c.elemMm, c.contactSlope,
+                      c.stickSlope, c.incMax, x ? x->riMm : 0.0, x ? x->roMm : 0.0,
+                      x ? x->roInterpMm : 0.0, x ? x->rMaxMm : 0.0, x ? x->uMm() : 0.0,
+                      x ? x->uInterpMm() : 0.0, x ? x->contactNodes : 0, force, r.wallS,
+                      r.message.c_str());
+        rows.emplace_back(b);
+    };
+    for (const Radii &x : r.radii) {
+        double f = 0;
+        for (const ForcePoint &p : r.force)
+            if (std::fabs(p.time - x.reduction) < 1e-6) f = p.fy;
+        row(&x, f);
+    }
+    if (r.radii.empty()) row(nullptr, 0);
+    return rows;
+}
+
+} // namespace icacam::host::fe

@@ -1,0 +1,36 @@
+#pragma once
+// Running one case through ccx and collecting its results.
+#include <string>
+#include <vector>
+
+#include "fe_case.h"
+#include "fe_results.h"
+
+namespace icacam::host::fe {
+
+struct RunOptions {
+    std::string workDir = "/tmp/icacam-fe";
+    std::string ccx = "ccx";
+    int timeoutS = 3600;
+    bool keep = true; // keep the work files (deck, .frd, .dat, log)
+};
+
+struct RunResult {
+    std::string status;   // ok | failed (ccx stopped before the last snapshot) | error
+    std::string message;
+    double wallS = 0;
+    std::vector<Radii> radii;      // one per snapshot reached
+    std::vector<ForcePoint> force; // total force in kN over the whole 360°, per snapshot
+    std::string dir;
+};
+
+// The snapshot reductions of a case: every 0.05 and the requested ones, up to reductionMax.
+std::vector<double> snapshotReductions(const FeCase &c);
+
+RunResult runCase(FeCase c, const RunOptions &o);
+
+// The CSV header and rows of a result (one row per snapshot).
+std::string csvHeader();
+std::vector<std::string> csvRows(const FeCase &c, const RunResult &r);
+
+} // namespace icacam::host::fe

@@ -1,0 +1,78 @@
+// Deck generation: mesh numbering, material table, contact, boundary conditions, snapshots.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include "fe_case.h"
+#include "fe_runner.h"
+
+using namespace icacam::host::fe;
+
+namespace {
+int countLines(const std::string &deck, const std::string &from, const std::string &to)
+{
+    const auto a = deck.find(from);
+    const auto b = deck.find(to, a + from.size());
+    if (a == std::string::npos || b == std::string::npos) return -1;
+    std::istringstream s(deck.substr(a + from.size(), b - a - from.size()));
+    std::string line;
+    int n = 0;
+    while (std::getline(s, line)) if (!line.empty()) ++n;
+    return n;
+}
+} // namespace
+
+TEST(FeDeck, MeshNumberingAndCounts)
+{
+    FeCase c;
+    c.elemMm = 0.5;
+    const FeMesh m = meshFor(c);
+    EXPECT_EQ(m.nr, 10);
+    EXPECT_EQ(m.nz, 15);
+    EXPECT_EQ(m.cornerNode(), 11 * 16);
+    const std::string deck = makeDeck(c);
+    // 11 × 16 specimen nodes + 2 rows of 23 platen nodes.
+    EXPECT_EQ(countLines(deck, "*NODE,NSET=NALL\n", "*ELEMENT"), 11 * 16 + 2 * 23);
+    EXPECT_EQ(countLines(deck, "*ELEMENT,TYPE=CAX4R,ELSET=SPEC\n", "*ELEMENT"), 150);
+    EXPECT_EQ(countLines(deck, "*ELEMENT,TYPE=CAX4R,ELSET=PLATEN\n", "*NSET"), 22);
+    EXPECT_NE(deck.find("*STEP,NLGEOM"), std::string::npos);
+    EXPECT_NE(deck.find("TYPE=NODE TO SURFACE"), std::string::npos);
+    EXPECT_EQ(deck.find("CAX4,"), std::string::npos) << "fully integrated CAX4 locks";
+}
+
+TEST(FeDeck, MaterialFrictionAndStroke)
+{
+    FeCase c;
+    c.kMpa = 750;
+    c.n = 0.125;
+    c.mu = 0.08;
+    c.reductionMax = 0.6;
+    const std::string deck = makeDeck(c);
+    // First plastic point: σ = K · 0.002^n at ε_p = 0.
+    const auto p = deck.find("*PLASTIC\n");
+    ASSERT_NE(p, std::string::npos);
+    const double sigma0 = std::stod(deck.substr(p + 9));
+    EXPECT_NEAR(sigma0, 750 * std::pow(0.002, 0.125), 1e-6);
+    EXPECT_NE(deck.find("*FRICTION\n0.08, 100000"), std::string::npos);
+    // Quarter model: the platen moves half the stroke, 0.6 · 15 / 2 = 4.5 mm.
+    EXPECT_NE(deck.find("PLATENN, 2, 2, -4.5\n"), std::string::npos);
+    // Snapshots as step-time fractions: 0.45 of 0.6 → 0.75.
+    EXPECT_NE(deck.find("\n0.75\n"), std::string::npos);
+}
+
+TEST(FeDeck, SnapshotsAndLabels)
+{
+    FeCase c;
+    c.reductionMax = 0.5;
+    c.reductions = {0.48, 0.7};
+    const auto s = snapshotReductions(c);
+    ASSERT_EQ(s.size(), 11u); // 0.05 … 0.5 and 0.48; 0.7 is beyond the run
+    EXPECT_DOUBLE_EQ(s.back(), 0.5);
+    EXPECT_NEAR(s[9], 0.48, 1e-12);
+    FeCase d = c;
+    d.mu = 0.25;
+    EXPECT_NE(c.label(), d.label());
+    EXPECT_THROW(makeDeck(FeCase{.kMpa = -1}), std::invalid_argument);
+}

@@ -1,0 +1,95 @@
+// The generated model (vision/fe_model_table.h) against the committed FE data
+// (data/fe/sweep.csv): the table is current, and μ is reproduced within 1 % in range.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <map>
+
+#include "fe_fit.h"
+#include "vision/fe_model.h"
+#include "vision/fe_model_table.h"
+
+using namespace icacam;
+namespace t = icacam::vision::fe_table;
+
+namespace {
+const std::string kCsv = std::string(ICACAM_SOURCE_DIR) + "/data/fe/sweep.csv";
+
+// (n, μ) → mean u over K of the base rows (as `icacam fe fit` takes them).
+std::map<std::pair<double, double>, double> baseU()
+{
+    std::map<std::pair<double, double>, std::pair<double, int>> acc;
+    for (const auto &r : host::fe::readSweepCsv(kCsv))
+        if (r.status == "ok" && std::fabs(r.reduction - t::kReduction) < 1e-6 && r.eMpa == 210000 &&
+            r.d0 == 10 && r.h0 == 15) {
+            auto &a = acc[{r.n, r.mu}];
+            a.first += r.uInterp;
+            ++a.second;
+        }
+    std::map<std::pair<double, double>, double> out;
+    for (auto &[k, a] : acc) out[k] = a.first / a.second;
+    return out;
+}
+} // namespace
+
+TEST(FeModel, TableMatchesCommittedData)
+{
+    if (!std::filesystem::exists(kCsv)) GTEST_SKIP() << "no " << kCsv;
+    const auto base = baseU();
+    int found = 0;
+    for (int i = 0; i < t::kNCount; ++i)
+        for (int j = 0; j < t::kMuCount; ++j) {
+            if (t::kU[i][j] < 0) continue;
+            const auto it = base.find({t::kN[i], t::kMu[j]});
+            ASSERT_NE(it, base.end()) << "table point n=" << t::kN[i] << " mu=" << t::kMu[j] << " not in CSV";
+            EXPECT_NEAR(t::kU[i][j], it->second, 2e-5) << "stale table: rerun icacam fe fit";
+            ++found;
+        }
+    EXPECT_GE(found, 1);
+}
+
+TEST(FeModel, ReproducesFeDataWithinOnePercent)
+{
+    if (!std::filesystem::exists(kCsv)) GTEST_SKIP() << "no " << kCsv;
+    vision::FeModel model;
+    int checked = 0;
+    for (const auto &[key, u] : baseU()) {
+        vision::ModelInputs in;
+        in.n = key.first;
+        in.uMm = u;
+        const auto e = model.estimate(in);
+        if (e.range != vision::kModelInRange) continue; // e.g. u = 0: no fold-over, μ unresolved
+        EXPECT_NEAR(e.mu, key.second, 0.01 * key.second) << "n=" << key.first << " u=" << u;
+        EXPECT_GT(e.dMuDu, 0);
+        ++checked;
+    }
+    EXPECT_GE(checked, 1);
+}
+
+TEST(FeModel, FlagsOutsideTheRange)
+{
+    vision::FeModel model;
+    vision::ModelInputs in;
+    in.n = t::kN[0] - 0.02;
+    in.uMm = 0.5;
+    EXPECT_TRUE(model.estimate(in).range & vision::kModelNBelow);
+    in.n = t::kN[t::kNCount - 1] + 0.05;
+    EXPECT_TRUE(model.estimate(in).range & vision::kModelNAbove);
+    in.n = t::kN[0];
+    in.uMm = 5.0;
+    EXPECT_NE(model.estimate(in).range, 0u);
+    in.uMm = 0.5;
+    in.kMpa = 5000;
+    EXPECT_TRUE(model.estimate(in).range & vision::kModelKOutside);
+    // Geometric similarity: u at D0 = 20 mm is twice u at 10 mm for the same μ.
+    vision::ModelInputs a, b;
+    a.n = b.n = t::kN[0];
+    a.uMm = 0.4;
+    b.uMm = 0.8;
+    b.d0Mm = 20;
+    EXPECT_NEAR(model.estimate(a).mu, model.estimate(b).mu, 1e-12);
+    const auto r = model.radii(t::kN[0], t::kMu[0], 20);
+    const auto r10 = model.radii(t::kN[0], t::kMu[0], 10);
+    EXPECT_NEAR(r.rMaxMm, 2 * r10.rMaxMm, 1e-9);
+}
