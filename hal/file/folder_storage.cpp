@@ -8,6 +8,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
 #include <memory>
 
 #include "hal/unique_fd.h"
@@ -40,7 +41,9 @@ Error writeAll(int fd, std::string_view data, const std::string &what)
 
 Error FolderStorage::open(const std::string &folder, uint64_t quotaBytes)
 {
-    if (::mkdir(folder.c_str(), 0755) != 0 && errno != EEXIST) return osError("storage '" + folder + "'", errno);
+    std::error_code ec;
+    std::filesystem::create_directories(folder, ec); // a missing parent is made, as on a fresh card
+    if (ec) return Error::make(Errc::Io, "storage '" + folder + "': " + ec.message());
     struct stat st {};
     if (::stat(folder.c_str(), &st) != 0 || !S_ISDIR(st.st_mode))
         return Error::make(Errc::NotFound, "storage '" + folder + "' is not a folder");

@@ -29,10 +29,14 @@ Error checkGeometry(int w, int h, int ch, int maxW, int maxH, int minStride, siz
     return {};
 }
 
+// libpng's default handlers print to stderr; ours stay quiet and return by longjmp.
+void pngQuietError(png_structp png, png_const_charp) { png_longjmp(png, 1); }
+void pngQuietWarning(png_structp, png_const_charp) {}
+
 // libpng reports errors by longjmp; nothing with a destructor lives between setjmp and it.
 Error decodePng(FILE *f, uint8_t *dst, size_t cap, int maxW, int maxH, int minStride, DecodedImage *out)
 {
-    png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+    png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, pngQuietError, pngQuietWarning);
     if (!png) return Error::make(Errc::Io, "libpng: out of memory");
     png_infop info = png_create_info_struct(png);
     if (!info) {
@@ -160,7 +164,7 @@ Error writePng(const std::string &path, const uint8_t *data, int width, int heig
 {
     FilePtr f(std::fopen(path.c_str(), "wb"));
     if (!f) return Error::make(Errc::Io, "cannot write '" + path + "': " + std::strerror(errno));
-    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, pngQuietError, pngQuietWarning);
     png_infop info = png ? png_create_info_struct(png) : nullptr;
     if (!info) {
         png_destroy_write_struct(&png, nullptr);

@@ -1,0 +1,144 @@
+// The device loop on the file-backed HAL with a manual clock: errors become words on the
+// display and error lines on serial, never a hang or a crash.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "firmware/device.h"
+#include "firmware/font5x7.h"
+#include "hal/file/clocks.h"
+#include "hal/file/file_camera.h"
+#include "hal/file/file_led.h"
+#include "hal/file/file_trigger.h"
+#include "hal/file/folder_storage.h"
+#include "vision/paper_model.h"
+
+using namespace icacam;
+namespace fs = std::filesystem;
+
+namespace {
+
+// Serial and display stand-ins that record what the device sent and showed.
+struct RecordingSerial final : hal::SerialPort {
+    std::string in, out;
+    hal::Result<size_t> read(char *buf, size_t cap) override
+    {
+        const size_t n = std::min(cap, in.size());
+        in.copy(buf, n);
+        in.erase(0, n);
+        return {n, {}};
+    }
+    hal::Error write(std::string_view d) override
+    {
+        out.append(d);
+        return {};
+    }
+};
+
+struct RecordingDisplay final : hal::Display {
+    hal::MonoBitmap last;
+    hal::Error show(const hal::MonoBitmap &p) override
+    {
+        last = p;
+        return {};
+    }
+    std::string row(int r) const { return fw::readRow(last, r); }
+};
+
+struct Rig {
+    std::string dir;
+    hal::ManualClock clock;
+    hal::FileCamera camera;
+    hal::FileTrigger trigger{clock};
+    hal::FileLed led{clock};
+    RecordingDisplay display;
+    RecordingSerial serial;
+    hal::FolderStorage storage;
+    vision::PaperModel model;
+    std::unique_ptr<fw::Device> device;
+
+    explicit Rig(const std::string &frames, uint64_t quota = 0)
+        : dir(makeDir()), camera(clock, {frames.empty() ? dir : frames, 1, false, 0})
+    {
+        EXPECT_TRUE(storage.open(dir + "/journal", quota).ok());
+        fw::Config cfg;
+        cfg.n = 0.2;
+        cfg.mmPerPx = 0.0125;
+        cfg.cameraMaxWidth = 256;
+        cfg.cameraMaxHeight = 256;
+        cfg.captureTimeoutMs = 700;
+        device = std::make_unique<fw::Device>(
+            fw::DeviceHal{camera, trigger, led, display, serial, storage, clock}, cfg, model);
+    }
+    ~Rig() { fs::remove_all(dir); }
+    static std::string makeDir()
+    {
+        char t[] = "/tmp/icacam-dev-test-XXXXXX";
+        return ::mkdtemp(t);
+    }
+};
+
+void writeGrey(const std::string &path, int w, int h, uint8_t v)
+{
+    std::ofstream f(path, std::ios::binary);
+    f << "P5\n" << w << " " << h << "\n255\n" << std::string(size_t(w * h), char(v));
+}
+
+} // namespace
+
+TEST(Device, CameraTimeoutIsShownInWordsAndJournaled)
+{
+    char t[] = "/tmp/icacam-frames-XXXXXX";
+    const std::string frames = ::mkdtemp(t);
+    { std::ofstream(frames + "/list.txt") << "!timeout\n"; }
+    Rig rig(frames + "/list.txt");
+    ASSERT_TRUE(rig.device->start().ok());
+    EXPECT_NE(rig.serial.out.find("\"type\":\"hello\""), std::string::npos);
+    EXPECT_EQ(rig.display.row(0), "icacam  ready");
+    rig.serial.in = "trigger\n";
+    const int64_t t0 = rig.clock.monotonicMs();
+    rig.device->tick();
+    EXPECT_LE(rig.clock.monotonicMs() - t0, 700 + 20 + 1); // the watchdog bounds the wait
+    EXPECT_NE(rig.serial.out.find("\"code\":\"measurement_failed\""), std::string::npos);
+    EXPECT_EQ(rig.display.row(0), "#1 error");
+    EXPECT_EQ(rig.display.row(2), "camera timeout: no");
+    EXPECT_FALSE(rig.led.isOn());
+    EXPECT_EQ(fw::Journal::checkLine(rig.storage.read(fw::Journal::kFile).value.substr(0,
+                  rig.storage.read(fw::Journal::kFile).value.size() - 1)), 1);
+    fs::remove_all(frames);
+}
+
+TEST(Device, NoSpecimenAndFullDiskAreWordsNotCrashes)
+{
+    Rig rig("", 4000); // a blank frame, and a card too small for its image
+    writeGrey(rig.dir + "/blank.pgm", 200, 150, 30);
+    ASSERT_TRUE(rig.device->start().ok());
+    rig.trigger.feed("press 80\n");
+    rig.device->tick();
+    rig.clock.advance(100);
+    rig.device->tick();
+    EXPECT_NE(rig.serial.out.find("\"type\":\"result\",\"id\":1"), std::string::npos) << rig.serial.out;
+    EXPECT_NE(rig.serial.out.find("\"status\":\"error\""), std::string::npos);
+    EXPECT_NE(rig.serial.out.find("\"code\":\"storage\""), std::string::npos);
+    EXPECT_EQ(rig.display.row(0), "#1 error");
+    EXPECT_FALSE(rig.display.row(2).empty());
+    rig.serial.in = "status\n";
+    rig.device->tick();
+    EXPECT_NE(rig.serial.out.find("\"type\":\"status\""), std::string::npos);
+}
+
+TEST(Device, SettingsSurviveARestart)
+{
+    Rig rig("");
+    writeGrey(rig.dir + "/a.pgm", 64, 64, 0);
+    ASSERT_TRUE(rig.device->start().ok());
+    rig.serial.in = "set n 0.37\nset journal.dir /\n{\"cmd\":\"get\",\"key\":\"n\",\"id\":\"g\"}\n";
+    rig.device->tick();
+    EXPECT_NE(rig.serial.out.find("\"code\":\"bad_argument\""), std::string::npos);
+    EXPECT_NE(rig.serial.out.find("{\"type\":\"settings\",\"n\":0.37,\"tag\":\"g\"}"), std::string::npos);
+    fw::Device again({rig.camera, rig.trigger, rig.led, rig.display, rig.serial, rig.storage, rig.clock},
+                     fw::Config{}, rig.model);
+    ASSERT_TRUE(again.start().ok());
+    EXPECT_DOUBLE_EQ(again.config().n, 0.37);
+}
