@@ -13,26 +13,26 @@ using vision::Measurement;
 
 namespace {
 
-std::string isoTime(int64_t wallMs)
+// Both write into caller buffers: the report path allocates nothing once out_ has grown.
+void isoTime(int64_t wallMs, char (&b)[96])
 {
     const time_t s = time_t(wallMs / 1000);
     tm t{};
     gmtime_r(&s, &t);
-    char b[96];
     std::snprintf(b, sizeof b, "%04d-%02d-%02dT%02d:%02d:%02d.%03dZ", t.tm_year + 1900, t.tm_mon + 1, t.tm_mday,
                   t.tm_hour, t.tm_min, t.tm_sec, int(wallMs % 1000));
-    return b;
 }
 
-std::string flagList(uint32_t flags)
+void flagList(uint32_t flags, char (&b)[512])
 {
-    std::string s;
-    for (int b = 0; b < vision::kFlagCount; ++b)
-        if (flags & (1u << b)) {
-            if (!s.empty()) s += '|';
-            s += vision::flagName(b);
+    size_t n = 0;
+    b[0] = 0;
+    for (int bit = 0; bit < vision::kFlagCount; ++bit)
+        if (flags & (1u << bit)) {
+            const int w = std::snprintf(b + n, sizeof b - n, "%s%s", n ? "|" : "", vision::flagName(bit));
+            if (w < 0 || size_t(w) >= sizeof b - n) break;
+            n += size_t(w);
         }
-    return s;
 }
 
 constexpr const char *kSettingsFile = "settings.conf";
@@ -221,15 +221,15 @@ void Device::handleCommand(const Command &c)
         break;
     }
     case CommandKind::Results: {
-        const auto &recent = journal_.recent();
-        const size_t n = std::min(recent.size(), size_t(c.count));
+        const size_t have = journal_.recentCount();
+        const size_t n = std::min(have, size_t(c.count));
         j.str("type", "results").integer("count", static_cast<long long>(n));
         if (!c.tag.empty()) j.str("tag", c.tag);
         j.end();
         send(out_);
-        for (size_t i = recent.size() - n; i < recent.size(); ++i) {
+        for (size_t i = have - n; i < have; ++i) {
             out_.assign("{\"type\":\"record\"");
-            out_.append(std::string_view(recent[i]).substr(std::string_view("{\"type\":\"result\"").size()));
+            out_.append(journal_.recent(i).substr(std::string_view("{\"type\":\"result\"").size()));
             out_.push_back('\n');
             send(out_);
         }
@@ -308,15 +308,18 @@ void Device::buildRecord(long id, const char *origin, const std::string &tag, co
 {
     out_.clear();
     JsonBuilder j(&out_);
-    j.str("type", "result").integer("id", id).str("time", isoTime(hal_.clock.wallMs()));
     const bool value = problem.empty() && m.hasValue();
+    char when[96], flags[512];
+    isoTime(hal_.clock.wallMs(), when);
+    flagList(value ? m.flags : 0, flags);
+    j.str("type", "result").integer("id", id).str("time", when);
     j.str("status", problem.empty() ? vision::statusName(m.status) : "error");
     if (value) {
         j.num("mu", m.mu, 5).num("mu_sigma", m.muSigma, 3).num("u_mm", m.uMm, 5);
         j.num("r_inner_mm", m.rInnerMm, 6).num("r_outer_mm", m.rOuterMm, 6);
     }
-    j.str("flags", value ? flagList(m.flags) : "");
-    j.str("message", !problem.empty() ? std::string(problem) : m.hasValue() ? "" : vision::errorMessage(m.error));
+    j.str("flags", flags);
+    j.str("message", !problem.empty() ? problem : m.hasValue() ? std::string_view() : vision::errorMessage(m.error));
     j.str("image", image).str("source", frame ? std::string_view(frame->source) : std::string_view());
     j.num("n", cfg_.n).num("k_mpa", cfg_.kMpa).num("mm_per_px", cfg_.mmPerPx, 8);
     j.str("material", cfg_.material).str("trigger", origin).integer("ms", ms);

@@ -28,6 +28,19 @@ uint32_t crc32(std::string_view data)
     return c ^ 0xFFFFFFFFu;
 }
 
+Journal::Journal(hal::Storage &storage, int memory) : storage_(storage), ring_(size_t(memory > 0 ? memory : 1))
+{
+    for (std::string &s : ring_) s.reserve(1024); // a result line is about 400 bytes
+    line_.reserve(1024);
+}
+
+void Journal::remember(std::string_view line)
+{
+    ring_[head_].assign(line);
+    head_ = (head_ + 1) % ring_.size();
+    if (used_ < ring_.size()) ++used_;
+}
+
 long Journal::checkLine(std::string_view line)
 {
     const size_t at = line.rfind(kCrcKey);
@@ -64,8 +77,7 @@ hal::Error Journal::recover(JournalRecovery *out)
         if (id < 0) break;
         ++out->records;
         if (id > out->lastId) out->lastId = id;
-        recent_.emplace_back(t.substr(good, nl - good));
-        if (recent_.size() > memory_) recent_.pop_front();
+        remember(std::string_view(t).substr(good, nl - good));
         good = nl + 1;
     }
     if (good < t.size()) {
@@ -90,8 +102,7 @@ hal::Error Journal::append(std::string_view record)
     line_.push_back('\n');
     if (hal::Error e = storage_.append(kFile, line_); !e.ok()) return e;
     line_.pop_back();
-    recent_.push_back(line_);
-    if (recent_.size() > memory_) recent_.pop_front();
+    remember(line_);
     ++count_;
     return {};
 }

@@ -5,9 +5,9 @@
 // bytes in journal.damaged-OFFSET) and removes temporary files, so after a power loss only
 // the measurement in flight is lost.
 #include <cstdint>
-#include <deque>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "hal/storage.h"
 
@@ -26,7 +26,8 @@ class Journal {
 public:
     static constexpr const char *kFile = "journal.jsonl";
 
-    explicit Journal(hal::Storage &storage, int memory) : storage_(storage), memory_(size_t(memory)) {}
+    // memory: how many recent records to keep in RAM (a ring sized once, lines reused).
+    Journal(hal::Storage &storage, int memory);
     hal::Error recover(JournalRecovery *out);
 
     // Appends one record (a JSON object line without the crc, ending in "}\n"). On success
@@ -35,8 +36,9 @@ public:
     // Saves an image durably (temp + fsync + rename).
     hal::Error saveImage(std::string_view name, std::string_view bytes) { return storage_.writeAtomic(name, bytes); }
 
-    // The most recent records (with crc), oldest first, at most memory.
-    const std::deque<std::string> &recent() const { return recent_; }
+    // The most recent records (with crc): recentCount() of them, index 0 the oldest.
+    size_t recentCount() const { return used_; }
+    std::string_view recent(size_t i) const { return ring_[(head_ + ring_.size() - used_ + i) % ring_.size()]; }
     long count() const { return count_; }
 
     // Checks one stored line (without its '\n'); returns the record id or -1.
@@ -44,8 +46,11 @@ public:
 
 private:
     hal::Storage &storage_;
-    size_t memory_;
-    std::deque<std::string> recent_;
+    void remember(std::string_view line);
+
+    std::vector<std::string> ring_;
+    size_t head_ = 0; // next slot to write
+    size_t used_ = 0;
     std::string line_;
     long count_ = 0;
 };

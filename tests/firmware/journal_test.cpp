@@ -38,7 +38,8 @@ TEST(Journal, AppendsAndRecoversAcrossRestarts)
         ASSERT_TRUE(j.recover(&rec).ok());
         EXPECT_EQ(rec.records, 0);
         for (long id = 1; id <= 6; ++id) ASSERT_TRUE(j.append(record(id)).ok());
-        EXPECT_EQ(j.recent().size(), 4u);
+        EXPECT_EQ(j.recentCount(), 4u);
+        EXPECT_EQ(fw::Journal::checkLine(j.recent(0)), 3);
     }
     fw::Journal j(st, 4);
     fw::JournalRecovery rec;
@@ -46,7 +47,7 @@ TEST(Journal, AppendsAndRecoversAcrossRestarts)
     EXPECT_EQ(rec.records, 6);
     EXPECT_EQ(rec.lastId, 6);
     EXPECT_EQ(rec.cutBytes, 0u);
-    EXPECT_EQ(fw::Journal::checkLine(j.recent().back()), 6);
+    EXPECT_EQ(fw::Journal::checkLine(j.recent(j.recentCount() - 1)), 6);
 }
 
 TEST(Journal, TornTailAndCorruptLineAreCutAndKept)
