@@ -142,3 +142,25 @@ TEST(Device, SettingsSurviveARestart)
     ASSERT_TRUE(again.start().ok());
     EXPECT_DOUBLE_EQ(again.config().n, 0.37);
 }
+
+TEST(Device, LongPressShowsSettingsAndBounceDoesNotMeasure)
+{
+    Rig rig("");
+    writeGrey(rig.dir + "/a.pgm", 64, 64, 0);
+    ASSERT_TRUE(rig.device->start().ok());
+    rig.trigger.feed("0 down\n3 up\n6 down\n9 up\n"); // bounce only
+    rig.clock.advance(20);
+    rig.device->tick();
+    EXPECT_EQ(rig.serial.out.find("\"type\":\"result\""), std::string::npos);
+    rig.trigger.feed("press 2000\n");
+    rig.clock.advance(1);
+    rig.device->tick();
+    rig.clock.advance(1600);
+    rig.device->tick();
+    EXPECT_EQ(rig.display.row(0), "settings");
+    EXPECT_EQ(rig.display.row(2), "n     0.2000");
+    rig.clock.advance(1000);
+    rig.device->tick();
+    EXPECT_EQ(rig.serial.out.find("\"type\":\"result\""), std::string::npos);
+    EXPECT_EQ(rig.led.switchCount(), 0);
+}

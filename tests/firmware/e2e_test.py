@@ -5,6 +5,7 @@ Frames from ../shared/data/devset, trigger presses through the FIFO and over ser
 lines and display pictures checked against truth.csv; random bytes and a 1 MB line on serial;
 kill -9 during a burst and a restart with the journal checked. Exit 77 when the data is absent.
 usage: e2e_test.py ICACAM_FW FW_SCREEN_TEXT SHARED_DATA_DIR
+ICACAM_EMULATOR (e.g. "qemu-aarch64 -L /usr/aarch64-linux-gnu") prefixes both programs.
 """
 import csv, json, os, select, signal, subprocess, sys, tempfile, threading, time, zlib
 
@@ -12,6 +13,7 @@ MU_TOL = 0.008
 
 
 PROCS = []
+EMULATOR = os.environ.get("ICACAM_EMULATOR", "").split()
 
 
 def fail(msg):
@@ -74,7 +76,7 @@ class Serial:
 
 
 def screen_text(tool, png):
-    out = subprocess.run([tool, png], capture_output=True, text=True)
+    out = subprocess.run(EMULATOR + [tool, png], capture_output=True, text=True)
     return out.stdout.split("\n") if out.returncode == 0 else []
 
 
@@ -138,7 +140,7 @@ dir = journal
     fifo = os.open(os.path.join(work, "trigger.fifo"), os.O_RDWR)
     log = open(os.path.join(work, "fw.log"), "ab")
     def start():
-        p = subprocess.Popen([fw, "--config", os.path.join(work, "device.conf")], stdout=log, stderr=log)
+        p = subprocess.Popen(EMULATOR + [fw, "--config", os.path.join(work, "device.conf")], stdout=log, stderr=log)
         PROCS.append(p)
         return p
     proc = start()
