@@ -61,11 +61,18 @@ Error PtySerial::write(std::string_view data)
     int waitedMs = 0;
     while (done < data.size()) {
         const ssize_t n = ::write(master_.get(), data.data() + done, data.size() - done);
-        if (n > 0) { done += size_t(n); continue; }
+        if (n > 0) {
+            done += size_t(n);
+            stalled_ = false;
+            continue;
+        }
         if (n < 0 && errno == EINTR) continue;
         if (n < 0 && errno != EAGAIN)
             return Error::make(Errc::Io, std::string("serial write: ") + std::strerror(errno));
-        if (waitedMs >= writeTimeoutMs_) {
+        // Once a write has timed out, later ones do not wait again until the far end reads:
+        // a device with nobody listening must not slow down by the timeout per line.
+        if (waitedMs >= (stalled_ ? 0 : writeTimeoutMs_)) {
+            stalled_ = true;
             dropped_ += long(data.size() - done);
             return Error::make(Errc::Full, "serial output dropped: nobody is reading");
         }

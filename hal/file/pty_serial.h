@@ -26,6 +26,7 @@ private:
     std::string slavePath_, linkPath_;
     int writeTimeoutMs_ = 200;
     long dropped_ = 0;
+    bool stalled_ = false;
 };
 
 } // namespace icacam::hal

@@ -139,4 +139,15 @@ TEST(PtySerial, BytesBothWaysAndNoStallWithoutReader)
     const std::string chunk(4096, 'x');
     for (int i = 0; i < 1000 && e.ok(); ++i) e = s.write(chunk);
     EXPECT_EQ(e.code, hal::Errc::Full);
+    // Further lines are dropped at once, not after another timeout each.
+    hal::SystemClock clock;
+    const int64_t t0 = clock.monotonicMs();
+    for (int i = 0; i < 20; ++i) EXPECT_EQ(s.write(chunk).code, hal::Errc::Full);
+    EXPECT_LT(clock.monotonicMs() - t0, 200);
+    // The far end reads again: output flows again.
+    char drain[65536];
+    ::fcntl(host.get(), F_SETFL, O_NONBLOCK);
+    while (::read(host.get(), drain, sizeof drain) > 0) {
+    }
+    EXPECT_TRUE(s.write("back\n").ok());
 }
