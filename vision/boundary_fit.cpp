@@ -25,6 +25,25 @@ namespace {
 
 constexpr int kMaxRays = 1024;
 
+// cos and sin of 2πj/256: every ray count the pipeline uses divides 256, so the harmonic
+// terms of the fit are table look-ups, not trigonometry.
+constexpr int kTable = 256;
+struct TrigTable {
+    double c[kTable], s[kTable];
+    TrigTable()
+    {
+        for (int j = 0; j < kTable; ++j) {
+            c[j] = std::cos(2.0 * std::numbers::pi * j / kTable);
+            s[j] = std::sin(2.0 * std::numbers::pi * j / kTable);
+        }
+    }
+};
+const TrigTable &trig()
+{
+    static const TrigTable t;
+    return t;
+}
+
 double medianOf(double *v, int n)
 {
     std::nth_element(v, v + n / 2, v + n);
@@ -41,15 +60,14 @@ bool fitBoundary(const EdgeSample *points, const double *radiusPx, const bool *v
     // The rays are evenly spaced, so the least-squares Fourier fit with some rays missing is
     // found by imputation: fill the missing rays with the current curve and take the DFT
     // (an EM iteration that converges to the least-squares solution). O(n·K) per pass.
-    double work[kMaxRays], filled[kMaxRays], c1[kMaxRays], s1[kMaxRays];
+    if (kTable % n != 0) return false; // ray counts must divide the table (32, 64, 256 …)
+    const TrigTable &T = trig();
+    const int stride = kTable / n;
+    double work[kMaxRays], filled[kMaxRays];
     bool keep[kMaxRays];
     int nValid = 0;
-    for (int i = 0; i < n; ++i) {
-        const double t = 2.0 * std::numbers::pi * i / n;
-        c1[i] = std::cos(t);
-        s1[i] = std::sin(t);
+    for (int i = 0; i < n; ++i)
         if (valid[i]) work[nValid++] = radiusPx[i];
-    }
     if (nValid < 8) return false;
     // Gross outliers (a stain edge, the other boundary) first: far from the median radius.
     const double med = medianOf(work, nValid);
@@ -57,7 +75,15 @@ bool fitBoundary(const EdgeSample *points, const double *radiusPx, const bool *v
 
     BoundaryFit f;
     f.a0 = med;
-    auto curveAt = [&](int i) { return f.radiusAt(c1[i], s1[i]); };
+    // r at ray i: a0 + Σ a_k cos(kθ_i) + b_k sin(kθ_i), with kθ_i looked up mod 2π.
+    auto curveAt = [&](int i) {
+        double r = f.a0;
+        for (int k = 1; k <= f.harmonics; ++k) {
+            const int j = (k * i * stride) & (kTable - 1);
+            r += f.a[k] * T.c[j] + f.b[k] * T.s[j];
+        }
+        return r;
+    };
     int used = 0;
     for (int pass = 0; pass < 4; ++pass) {
         used = 0;
@@ -74,16 +100,12 @@ bool fitBoundary(const EdgeSample *points, const double *radiusPx, const bool *v
             double sum = 0;
             for (int i = 0; i < n; ++i) sum += filled[i];
             g.a0 = sum / n;
-            for (int i = 0; i < n; ++i) {
-                double ck = 1, sk = 0;
+            for (int i = 0; i < n; ++i)
                 for (int k = 1; k <= K; ++k) {
-                    const double c = ck * c1[i] - sk * s1[i];
-                    sk = sk * c1[i] + ck * s1[i];
-                    ck = c;
-                    g.a[k] += filled[i] * ck;
-                    g.b[k] += filled[i] * sk;
+                    const int j = (k * i * stride) & (kTable - 1);
+                    g.a[k] += filled[i] * T.c[j];
+                    g.b[k] += filled[i] * T.s[j];
                 }
-            }
             for (int k = 1; k <= K; ++k) { g.a[k] *= 2.0 / n; g.b[k] *= 2.0 / n; }
             f = g;
         }

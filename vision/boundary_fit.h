@@ -11,8 +11,8 @@ struct FitOptions {
     double minRejectPx = 0.75;    // never reject closer than this (sub-pixel noise)
 };
 
-// Fits the valid samples of `points` (n rays, evenly spaced from angle 0). Returns false
-// when fewer than 8 points survive. Per boundary, not per pixel: double is fine here.
+// Fits the valid samples of `points` (n rays, evenly spaced from angle 0; n must divide
+// 256). Returns false when fewer than 8 points survive. Per boundary, not per pixel: double is fine here.
 bool fitBoundary(const EdgeSample *points, const double *radiusPx, const bool *valid, int n,
                  double centreX, double centreY, const FitOptions &opt, BoundaryFit *out);
 

@@ -55,7 +55,7 @@ bool EndFaceAnalyzer::refineCentre(const LumaView &v, double r0Px, double *cx, d
     bool valid[kCoarseRays];
     for (int pass = 0; pass < 2; ++pass) {
         const int rays = pass == 0 ? kCoarseRays / 2 : kCoarseRays;
-        const double rA = 0.85 * r0Px, rB = 1.85 * r0Px;
+        const double rA = kCoarseStart * r0Px, rB = kCoarseEnd * r0Px;
         const double step = std::max(pass == 0 ? 2.0 : 1.0, (rB - rA) / kMaxCoarseSamples);
         const int count = std::min(kMaxCoarseSamples, int((rB - rA) / step));
         for (int i = 0; i < rays; ++i) {
@@ -165,7 +165,10 @@ void EndFaceAnalyzer::finishResult(const SpecimenSpec &spec, const FrictionModel
     if (m->rMaxPx > 0) {
         const double uNorm = m->uMm * 10.0 / spec.d0Mm;
         const double expected = 0.5 * spec.d0Mm * std::sqrt(2.0) * (1.008 + 0.034 * uNorm);
-        if (std::fabs(m->rMaxMm / expected - 1.0) > 0.02) f |= kFlagScaleSuspect;
+        // The relation holds to 0.5 % on the reference renderings and R_max is measured to
+        // about 0.3 %: beyond 1.5 % the scale or the reduction is not what the model assumes
+        // (1.5 % of R_max is about 1.6 % of height reduction, 0.05–0.13 mm of u).
+        if (std::fabs(m->rMaxMm / expected - 1.0) > 0.015) f |= kFlagScaleSuspect;
     } else {
         f |= kFlagNoSilhouette;
     }

@@ -30,6 +30,9 @@ public:
     static constexpr int kFineRays = 256;
     static constexpr int kMaxCoarseSamples = 1024;
     static constexpr int kMaxFineSamples = 640;
+    // Radial span of the coarse rays, in initial radii: from inside the widest ICA's outer
+    // edge to beyond the silhouette at 60 % reduction (R0·1.58·1.04 ≈ 1.65 R0).
+    static constexpr double kCoarseStart = 0.88, kCoarseEnd = 1.72;
 
     EndFaceAnalyzer() = default;
     EndFaceAnalyzer(const EndFaceAnalyzer &) = delete;

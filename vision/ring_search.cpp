@@ -45,7 +45,7 @@ bool isExtremum(const int32_t *d, int i)
 RingSearch::MeanEdges RingSearch::meanProfileEdges()
 {
     // The coarse rows hold the centre refinement's last pass (see refineCentre).
-    const double rA = 0.85 * r0, rB = 1.85 * r0;
+    const double rA = EndFaceAnalyzer::kCoarseStart * r0, rB = EndFaceAnalyzer::kCoarseEnd * r0;
     const double step = std::max(1.0, (rB - rA) / kMaxCoarse);
     const int count = std::min(kMaxCoarse, int((rB - rA) / step));
     uint16_t mean[kMaxCoarse];
@@ -195,6 +195,57 @@ bool RingSearch::locateOnRays(int sign, const double *loPx, const double *hiPx, 
     return true;
 }
 
+double RingSearch::silhouetteFromRays(const BoundaryFit &outer)
+{
+    constexpr int kCoarse = EndFaceAnalyzer::kCoarseRays;
+    const double rA = EndFaceAnalyzer::kCoarseStart * r0, rB = EndFaceAnalyzer::kCoarseEnd * r0;
+    const double step = std::max(1.0, (rB - rA) / kMaxCoarse);
+    const int count = std::min(kMaxCoarse, int((rB - rA) / step));
+    const int w = std::max(4, int(0.035 * r0 / step)); // step detector half-width
+    double radius[kCoarse];
+    bool valid[kCoarse];
+    int32_t prefix[kMaxCoarse + 1];
+    for (int i = 0; i < kCoarse; ++i) {
+        valid[i] = false;
+        const uint16_t *row = coarse + size_t(i) * kMaxCoarse;
+        prefix[0] = 0;
+        bool inside = true;
+        for (int j = 0; j < count; ++j) {
+            inside = inside && row[j] != kOutsideFrame;
+            prefix[j + 1] = prefix[j] + (row[j] == kOutsideFrame ? 0 : row[j]);
+        }
+        if (!inside) continue;
+        // Step across r: mean of the w samples outside minus the w samples inside (Q8).
+        auto stepAt = [&](int j) { return (prefix[j + 1 + w] - prefix[j + 1]) - (prefix[j] - prefix[j - w]); };
+        const int fineIdx = i * (kRays / kCoarse);
+        const double ro = outer.radiusAt(rayCos_[fineIdx], raySin_[fineIdx]);
+        const int lo = std::max(w, int((ro + 0.04 * r0 - rA) / step));
+        const int hi = count - w - 2;
+        if (hi - lo < 2 * w) continue;
+        // Noise: the step detector's spread over the outer quarter (background, mostly).
+        int32_t tmp[kMaxCoarse];
+        int nt = 0;
+        for (int j = std::max(lo, hi - (hi - lo) / 4); j <= hi; ++j) tmp[nt++] = std::abs(stepAt(j));
+        std::nth_element(tmp, tmp + nt / 2, tmp + nt);
+        const double threshold = std::max(3.0 * 1.4826 * tmp[nt / 2], 4.0 * 256 * w);
+        // Outermost clear step, then its local peak.
+        for (int j = hi; j >= lo; --j) {
+            if (std::abs(stepAt(j)) < threshold) continue;
+            int best = j;
+            while (best - 1 >= lo && std::abs(stepAt(best - 1)) >= std::abs(stepAt(best))) --best;
+            radius[i] = rA + (best + 0.5) * step;
+            valid[i] = true;
+            break;
+        }
+    }
+    BoundaryFit fit;
+    FitOptions opt;
+    opt.maxHarmonics = 2;
+    opt.minRejectPx = 2.0;
+    if (!fitBoundary(nullptr, radius, valid, kCoarse, cx, cy, opt, &fit) || fit.coverage < 0.4) return 0;
+    return fit.rEqPx;
+}
+
 ErrorCode RingSearch::run(Measurement *m)
 {
     for (int i = 0; i < kRays; ++i) {
@@ -332,7 +383,10 @@ ErrorCode RingSearch::run(Measurement *m)
     outer.contrast = contrastOuter;
     m->inner = inner;
     m->outer = outer;
-    m->rMaxPx = me.rMax;
+    // The silhouette per coarse ray refines the mean profile's estimate (the mean profile
+    // blurs a weak barrel/background step and can name a highlight's flank instead).
+    const double perRay = silhouetteFromRays(outer);
+    m->rMaxPx = perRay > 0 ? perRay : me.rMax;
     m->innerPoints = innerPts;
     m->outerPoints = outerPts;
     m->rayCount = kRays;

@@ -40,6 +40,8 @@ struct RingSearch {
                       EdgeSample *pts, bool interior, double reachPx, BoundaryFit *fit,
                       double *contrastOut);
     void sampleFine(double rStart, double step, int count, Measurement *m);
+    // Silhouette R_max from the coarse rays, outside the fitted contact edge; 0 if unclear.
+    double silhouetteFromRays(const BoundaryFit &outer);
 
     double fineStart_ = 0, fineStep_ = 1;
     int fineCount_ = 0;
