@@ -34,6 +34,26 @@ double robustSigma(const int32_t *d, int lo, int hi)
     return 1.4826 * tmp[n / 2];
 }
 
+// Box step detector: mean of the w samples outside minus the w samples inside sample j,
+// for rows of 4×Q8 sums (angular [1 2 1]); out in 1/32 grey level. Ridges (turning marks,
+// scratch lines) average out over a box wider than their period; a level change does not.
+void boxStep(const int32_t *t, int count, int w, bool allInside, int16_t *d)
+{
+    int64_t prefix[kMaxFine + 1];
+    prefix[0] = 0;
+    bool bad[kMaxFine + 1] = {};
+    for (int j = 0; j < count; ++j) {
+        prefix[j + 1] = prefix[j] + (t[j] < 0 ? 0 : t[j]);
+        bad[j + 1] = bad[j] || (!allInside && t[j] < 0);
+    }
+    for (int j = 0; j < count; ++j) {
+        if (j < w || j + w >= count) { d[j] = 0; continue; }
+        if (!allInside && bad[j + w + 1] != bad[j - w]) { d[j] = 0; continue; }
+        const int64_t diff = (prefix[j + w + 1] - prefix[j + 1]) - (prefix[j] - prefix[j - w]);
+        d[j] = int16_t(std::clamp<int64_t>(diff / (int64_t(w) * 32), -32767, 32767)); // 4·256/32
+    }
+}
+
 bool isExtremum(const int32_t *d, int i)
 {
     const int32_t a = std::abs(d[i]);
@@ -117,23 +137,24 @@ RingSearch::MeanEdges RingSearch::meanProfileEdges()
     return e;
 }
 
-void RingSearch::sampleFine(double rStart, double step, int count, Measurement *m)
+void RingSearch::sampleWindow(const double *start, double step, int count, int boxHalf, Measurement *m)
 {
-    fineStart_ = rStart;
     fineStep_ = step;
     fineCount_ = count;
     uint32_t saturated = 0, inside = 0;
     for (int i = 0; i < kRays; ++i) {
-        RaySpec ray{Q16_16::fromDouble(cx), Q16_16::fromDouble(cy), {}, {},
-                    Q16_16::fromDouble(rStart), Q16_16::fromDouble(step)};
-        rayDirection(i, kRays, &ray.cosT, &ray.sinT);
+        fineStart_[i] = start[i];
+        RaySpec ray{Q16_16::fromDouble(cx), Q16_16::fromDouble(cy), rayCosQ_[i], raySinQ_[i],
+                    Q16_16::fromDouble(start[i]), Q16_16::fromDouble(step)};
         uint16_t *row = fine + size_t(i) * kMaxFine;
         inside += uint32_t(sampleRay(*frame, ray, count, row));
     }
     if (inside < uint32_t(count) * kRays) m->flags |= kFlagSpecimenClipped;
 
     // Derivative across a [1 2 1] angular smoothing of neighbouring rays (the boundaries
-    // vary slowly with angle; the noise does not). Stored as slope in 1/128 grey per px.
+    // vary slowly with angle; the noise does not). Samples at the same index of adjacent
+    // rays lie at the same offset from the window's start curve. Stored as slope in 1/128
+    // grey per px.
     int32_t t[kMaxFine];
     const bool allInside = inside == uint32_t(count) * kRays;
     for (int i = 0; i < kRays; ++i) {
@@ -148,6 +169,10 @@ void RingSearch::sampleFine(double rStart, double step, int count, Measurement *
             for (int j = 0; j < count; ++j)
                 if (a[j] == kOutsideFrame || b[j] == kOutsideFrame || c[j] == kOutsideFrame) t[j] = -1;
         int16_t *d = deriv + size_t(i) * kMaxFine;
+        if (boxHalf > 0) {
+            boxStep(t, count, boxHalf, allInside, d);
+            continue;
+        }
         d[0] = d[1] = 0;
         if (count >= 2) d[count - 1] = d[count - 2] = 0;
         for (int j = 2; j + 2 < count; ++j) {
@@ -158,7 +183,9 @@ void RingSearch::sampleFine(double rStart, double step, int count, Measurement *
             for (int j = 2; j + 2 < count; ++j)
                 if (t[j - 2] < 0 || t[j - 1] < 0 || t[j + 1] < 0 || t[j + 2] < 0) d[j] = 0;
     }
-    m->saturatedFraction = inside ? double(saturated) / inside : 0;
+    samplesInside_ += inside;
+    samplesSaturated_ += saturated;
+    m->saturatedFraction = samplesInside_ ? double(samplesSaturated_) / samplesInside_ : 0;
 }
 
 bool RingSearch::locateOnRays(int sign, const double *loPx, const double *hiPx, int32_t minStrength,
@@ -170,12 +197,12 @@ bool RingSearch::locateOnRays(int sign, const double *loPx, const double *hiPx, 
     int nSteps = 0;
     const int reach = std::max(1, int(reachPx / fineStep_ + 0.5));
     for (int i = 0; i < kRays; ++i) {
-        const int lo = int(std::floor((loPx[i] - fineStart_) / fineStep_));
-        const int hi = int(std::ceil((hiPx[i] - fineStart_) / fineStep_));
+        const int lo = int(std::floor((loPx[i] - fineStart_[i]) / fineStep_));
+        const int hi = int(std::ceil((hiPx[i] - fineStart_[i]) / fineStep_));
         const int16_t *d = deriv + size_t(i) * kMaxFine;
         const EdgePeak p = strongestEdge(d, fineCount_, lo, hi, sign, interior);
         valid[i] = p.found && p.value >= minStrength;
-        radius[i] = fineStart_ + p.position.toDouble() * fineStep_;
+        radius[i] = fineStart_[i] + p.position.toDouble() * fineStep_;
         pts[i] = {Q16_16::fromDouble(cx + radius[i] * rayCos_[i]),
                   Q16_16::fromDouble(cy + radius[i] * raySin_[i]), Q16_16::fromDouble(radius[i]),
                   p.value, valid[i]};
@@ -251,26 +278,25 @@ ErrorCode RingSearch::run(Measurement *m)
     for (int i = 0; i < kRays; ++i) {
         rayCos_[i] = std::cos(2 * kPi * i / kRays);
         raySin_[i] = std::sin(2 * kPi * i / kRays);
+        rayDirection(i, kRays, &rayCosQ_[i], &raySinQ_[i]);
     }
     const MeanEdges me = meanProfileEdges();
     if (!me.found) return ErrorCode::OuterEdgeNotFound;
 
-    // Fine window: from beyond the widest ICA the model knows (u up to 0.32·R0 ≈ 1.6 mm at
-    // D0 = 10 mm, against 1.2 mm in the paper's data) to a
-    // margin outside the contact edge that covers its departure from a circle.
-    const double margin = std::max(10.0, 0.06 * r0);
-    const double rStart = std::max(0.3 * r0, me.rOuter - kMaxU * r0 - margin);
-    const double rEnd = me.rOuter + margin;
-    const double step = std::max(1.0, (rEnd - rStart) / kMaxFine);
-    const int count = std::min(kMaxFine, int((rEnd - rStart) / step));
-    sampleFine(rStart, step, count, m);
+    // Stage 1, the contact edge on every fine ray: a window about the mean profile's radius
+    // wide enough for its departure from a circle, short of the silhouette.
+    const double margin = std::max(8.0, 0.05 * r0);
+    const double outerHi = me.rMax > 0 ? std::min(margin, 0.5 * (me.rMax - me.rOuter)) : margin;
+    const double step = 1.0;
+    double start[kRays];
+    const int outerCount = std::min(kMaxFine, int(margin + outerHi) + 6);
+    for (int i = 0; i < kRays; ++i) start[i] = me.rOuter - margin - 3;
+    sampleWindow(start, step, outerCount, 0, m);
     if (m->saturatedFraction > 0.5) return ErrorCode::Saturated;
 
     double lo[kRays], hi[kRays];
     BoundaryFit outer, inner;
     double contrastOuter = 0, contrastInner = 0;
-    // Contact edge, pass 1: around the mean radius, short of the silhouette.
-    const double outerHi = me.rMax > 0 ? std::min(margin, 0.5 * (me.rMax - me.rOuter)) : margin;
     for (int i = 0; i < kRays; ++i) {
         lo[i] = me.rOuter - margin;
         hi[i] = me.rOuter + outerHi;
@@ -280,41 +306,44 @@ ErrorCode RingSearch::run(Measurement *m)
         outer.coverage < 0.3)
         return ErrorCode::OuterEdgeNotFound;
     // Pass 2: close to the fitted curve, so a stain edge nearby cannot win.
-    auto around = [&](const BoundaryFit &f, double half, double offset) {
-        for (int i = 0; i < kRays; ++i) {
-            const double r = f.radiusAt(rayCos_[i], raySin_[i]) + offset;
-            lo[i] = r - half;
-            hi[i] = r + half;
-        }
-    };
-    around(outer, 3.0, 0);
+    for (int i = 0; i < kRays; ++i) {
+        const double r = outer.radiusAt(rayCos_[i], raySin_[i]);
+        lo[i] = r - 3.0;
+        hi[i] = r + 3.0;
+    }
     if (!locateOnRays(me.signOuter, lo, hi, outerMin, outerPts, false, 3.0, &outer, &contrastOuter) ||
         outer.coverage < 0.3)
         return ErrorCode::OuterEdgeNotFound;
 
-    // The original face edge, named on the mean of the rays aligned on the contact edge:
-    // alignment keeps a narrow ring sharp even where the contact edge is not a circle.
-    const int K = std::min(count - 3, int((kMaxU * r0 + 2) / step));
-    const int M = std::min(int(8 / step) + 1, 12);
-    constexpr int kSpan = kMaxFine + 16;
+    // Stage 2, naming the original face edge: a mean profile of every fourth ray sampled at
+    // fixed offsets from the fitted contact edge. Following the edge keeps a narrow ring
+    // sharp where the contact edge is not a circle.
+    const int K = int(kMaxU * r0 + 2);
+    const int M = 10;
+    constexpr int kSpan = kMaxCoarse;
+    if (K + M + 1 > kSpan) return ErrorCode::BadSpecimen;
     int32_t aD[kSpan] = {}, aP[kSpan] = {};
-    int32_t nD[kSpan] = {};
-    for (int i = 0; i < kRays; ++i) {
-        if (!outerPts[i].valid) continue;
-        const int base = int(std::lround((outer.radiusAt(rayCos_[i], raySin_[i]) - rStart) / step));
-        const int16_t *d = deriv + size_t(i) * kMaxFine;
-        const uint16_t *row = fine + size_t(i) * kMaxFine;
-        for (int k = -K; k <= M; ++k) {
-            const int j = base + k;
-            if (j < 2 || j + 2 >= count || row[j] == kOutsideFrame) continue;
-            aD[k + K] += d[j];
-            aP[k + K] += row[j];
-            nD[k + K]++;
+    {
+        uint32_t sum[kSpan] = {}, n[kSpan] = {};
+        uint16_t row[kSpan];
+        for (int i = 0; i < kRays; i += 4) {
+            if (!outerPts[i].valid) continue;
+            const double ro = outer.radiusAt(rayCos_[i], raySin_[i]);
+            RaySpec ray{Q16_16::fromDouble(cx), Q16_16::fromDouble(cy), rayCosQ_[i], raySinQ_[i],
+                        Q16_16::fromDouble(ro - K), Q16_16::fromDouble(1.0)};
+            sampleRay(*frame, ray, K + M + 1, row);
+            for (int k = 0; k < K + M + 1; ++k)
+                if (row[k] != kOutsideFrame) { sum[k] += row[k]; n[k]++; }
         }
+        uint16_t mean[kSpan];
+        for (int k = 0; k < K + M + 1; ++k) {
+            mean[k] = n[k] * 4 >= uint32_t(kRays / 8) ? uint16_t(sum[k] / n[k]) : kOutsideFrame;
+            aP[k] = mean[k] == kOutsideFrame ? 0 : mean[k];
+        }
+        // Same units as the fine derivative rows (the [1 2 1] angular weights sum to 4).
+        profileDerivative(mean, K + M + 1, aD);
+        for (int k = 0; k < K + M + 1; ++k) aD[k] = (aD[k] * 4) >> 6;
     }
-    const int spanN = K + M + 1;
-    for (int k = 0; k < spanN; ++k)
-        if (nD[k]) { aD[k] /= nD[k]; aP[k] /= nD[k]; }
     // Blur of the contact edge: second moment of its derivative peak (the kernel adds 0.75
     // px² and bilinear sampling about 0.17 px²).
     {
@@ -337,7 +366,7 @@ ErrorCode RingSearch::run(Measurement *m)
     for (int k = -K; k <= M; ++k) std::fprintf(stderr, "%d:%d/%d ", k, aD[k + K], aP[k + K] / 256);
     std::fprintf(stderr, "\n");
 #endif
-    const double innerMin = std::max(5.0 * noise, 40.0);
+    const double innerMin = std::max(3.0 * noise, 40.0);
     int bestK = 0, innerSign = 0;
     int32_t bestV = 0;
     for (int k = -K + 2; k <= -2; ++k) {
@@ -360,17 +389,41 @@ ErrorCode RingSearch::run(Measurement *m)
     }
     if (!innerSign) return m->saturatedFraction > 0.1 ? ErrorCode::Saturated : ErrorCode::InnerEdgeNotFound;
 
+    // The derivative names the edge; its position is taken from a box step detector half
+    // as wide as the ring (up to 12 px), which turning marks next to the edge cannot pull.
+    // On a ring narrower than 12 px a box would reach across the contact edge's blur: there
+    // the derivative itself locates the edge (W = 0).
+    const int W = -bestK >= 12 ? std::min(-bestK / 2, 12) : 0;
+    int32_t boxV = W ? 0 : bestV;
+    if (W) {
+        int64_t prefix[kSpan + 1];
+        prefix[0] = 0;
+        for (int k = 0; k < K + M + 1; ++k) prefix[k + 1] = prefix[k] + aP[k];
+        const int idx0 = bestK + K;
+        for (int j = std::max(W, idx0 - W); j <= std::min(K - 2 - W, idx0 + W); ++j) {
+            const int64_t diff = (prefix[j + W + 1] - prefix[j + 1]) - (prefix[j] - prefix[j - W]);
+            const int32_t v = int32_t(innerSign * diff / (int64_t(W) * 8)); // 1/32 grey
+            if (v > boxV) { boxV = v; bestK = j - K; }
+        }
+    }
+    if (boxV <= 0) return ErrorCode::InnerEdgeNotFound;
     const double uGuess = -bestK * step;
     const double half = std::max(3.0, std::min(0.04 * r0, 0.5 * uGuess));
-    const int32_t innerStrength = std::max<int32_t>(6, int32_t(0.3 * bestV));
+    const int32_t innerStrength = std::max<int32_t>(W ? 4 : 6, int32_t(0.3 * boxV));
     const double reach = std::max(1.0, std::min(3.0, 0.5 * uGuess));
+    // Stage 3, the original face edge on every fine ray: a window following the contact
+    // edge at the named offset.
+    const int innerCount = std::min(kMaxFine, int(2 * half) + 12 + 2 * W);
+    for (int i = 0; i < kRays; ++i)
+        start[i] = outer.radiusAt(rayCos_[i], raySin_[i]) - uGuess - half - 5 - W;
+    sampleWindow(start, step, innerCount, W, m);
     for (int pass = 0; pass < 2; ++pass) {
         for (int i = 0; i < kRays; ++i) {
             const double ro = outer.radiusAt(rayCos_[i], raySin_[i]);
             const double c = pass == 0 ? ro - uGuess : inner.radiusAt(rayCos_[i], raySin_[i]);
             const double h = pass == 0 ? half : 2.5;
             lo[i] = c - h;
-            hi[i] = std::min(c + h, ro - 2.0);
+            hi[i] = std::min(c + h, ro - (W ? 1.0 + W : 2.0));
         }
         if (!locateOnRays(innerSign, lo, hi, innerStrength, innerPts, true, reach, &inner,
                           &contrastInner) ||

@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "luma_view.h"
+#include "fixed_point.h"
 #include "measurement.h"
 
 namespace icacam::vision {
@@ -39,11 +40,15 @@ struct RingSearch {
     bool locateOnRays(int sign, const double *loPx, const double *hiPx, int32_t minStrength,
                       EdgeSample *pts, bool interior, double reachPx, BoundaryFit *fit,
                       double *contrastOut);
-    void sampleFine(double rStart, double step, int count, Measurement *m);
+    // Samples every fine ray from start[i] (pixels) and fills the smoothed derivative rows.
+    // boxHalf > 0: the rows hold a box step detector of that half-width instead.
+    void sampleWindow(const double *start, double step, int count, int boxHalf, Measurement *m);
     // Silhouette R_max from the coarse rays, outside the fitted contact edge; 0 if unclear.
     double silhouetteFromRays(const BoundaryFit &outer);
 
-    double fineStart_ = 0, fineStep_ = 1;
+    double fineStart_[kMaxRayTable] = {}, fineStep_ = 1;
+    Q2_14 rayCosQ_[kMaxRayTable] = {}, raySinQ_[kMaxRayTable] = {};
+    uint32_t samplesInside_ = 0, samplesSaturated_ = 0;
     int fineCount_ = 0;
     double rayCos_[kMaxRayTable] = {}, raySin_[kMaxRayTable] = {}; // per fine ray
 };
