@@ -20,17 +20,46 @@ std::string fmt(const char *f, double v)
 std::string FeCase::label() const
 {
     char b[200];
-    std::snprintf(b, sizeof b, "K%g_n%g_mu%g_E%g_D%g_H%g_r%g_h%g", kMpa, n, mu, eMpa / 1000, d0Mm,
-                  h0Mm, reductionMax, elemMm);
+    std::snprintf(b, sizeof b, "K%g_n%g_mu%g_E%g_D%g_H%g_r%g_h%g_c%g_cs%g", kMpa, n, mu, eMpa / 1000,
+                  d0Mm, h0Mm, reductionMax, elemMm, cornerMm, contactSlope);
     return b;
 }
+
+namespace {
+// Node positions on [0, len]: uniform `elem`, or graded from `fine` at len to `elem`.
+std::vector<double> axisNodes(double len, double elem, double fine)
+{
+    std::vector<double> x;
+    if (fine <= 0 || fine >= elem) {
+        const int n = std::max(2, int(std::lround(len / elem)));
+        for (int i = 0; i <= n; ++i) x.push_back(len * i / n);
+        return x;
+    }
+    std::vector<double> sizes; // from the fine end
+    double sum = 0, h = fine;
+    while (sum + h < len - 1e-9) {
+        sizes.push_back(h);
+        sum += h;
+        h = std::min(elem, h * 1.2);
+    }
+    // Spread the remainder over the coarse elements so the sizes sum to len.
+    const double rest = len - sum;
+    if (rest > 0.3 * sizes.back()) { sizes.push_back(rest); sum += rest; }
+    else sizes.back() += rest;
+    x.push_back(0);
+    for (auto it = sizes.rbegin(); it != sizes.rend(); ++it) x.push_back(x.back() + *it);
+    x.back() = len;
+    return x;
+}
+} // namespace
 
 FeMesh meshFor(const FeCase &c)
 {
     FeMesh m;
-    const double r0 = c.d0Mm / 2, z0 = c.h0Mm / 2;
-    m.nr = std::max(2, int(std::lround(r0 / c.elemMm)));
-    m.nz = std::max(2, int(std::lround(z0 / c.elemMm)));
+    m.r = axisNodes(c.d0Mm / 2, c.elemMm, c.cornerMm);
+    m.z = axisNodes(c.h0Mm / 2, c.elemMm, c.cornerMm);
+    m.nr = int(m.r.size()) - 1;
+    m.nz = int(m.z.size()) - 1;
     m.platenFirstNode = (m.nr + 1) * (m.nz + 1) + 1;
     return m;
 }
@@ -42,14 +71,15 @@ std::string makeDeck(const FeCase &c)
         throw std::invalid_argument("fe: invalid case inputs");
     const FeMesh m = meshFor(c);
     const double r0 = c.d0Mm / 2, z0 = c.h0Mm / 2;
-    const double dr = r0 / m.nr, dz = z0 / m.nz;
+    const double dr = c.cornerMm > 0 ? std::max(c.cornerMm, 0.5 * c.elemMm) : r0 / m.nr; // platen spacing
+    const double dz = m.z[1] - m.z[0];
     std::ostringstream o;
     o.precision(10);
     o << "** icacam fe: cylinder upsetting, axisymmetric quarter model (generated)\n"
       << "** " << c.label() << "\n*NODE,NSET=NALL\n";
     for (int j = 0; j <= m.nz; ++j)
         for (int i = 0; i <= m.nr; ++i)
-            o << m.node(i, j) << ", " << i * dr << ", " << j * dz << "\n";
+            o << m.node(i, j) << ", " << m.r[i] << ", " << m.z[j] << "\n";
     // The platen: one row of elements from the axis to 2.2 R0, with the specimen's spacing.
     const int np = int(std::lround(2.2 * r0 / dr));
     const double tp = std::max(dz, 0.5);

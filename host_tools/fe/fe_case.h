@@ -18,9 +18,12 @@ struct FeCase {
     double h0Mm = 15;
     double reductionMax = 0.5;              // total height reduction of the run
     std::vector<double> reductions{0.3, 0.4, 0.45, 0.5}; // result snapshots (≤ reductionMax)
-    double elemMm = 0.2;                    // element edge length (uniform structured mesh)
+    double elemMm = 0.2;                    // element edge length (structured mesh)
+    // > 0: graded mesh, cornerMm at the end-face corner, growing by 1.2 per element
+    // towards the axis and the mid-plane until elemMm (the ICA is then resolved to cornerMm).
+    double cornerMm = 0;
     double contactSlope = 1e5;              // N/mm³, linear pressure–overclosure
-    double stickSlope = 1e5;                // N/mm³, friction stick slope
+    double stickSlope = 1e4;                // N/mm³, friction stick slope (1e4 and 1e5 give the same u)
     double incInit = 0.005, incMin = 1e-7, incMax = 0.01; // of the step time 1
     std::string label() const;              // a file-safe name from the inputs
 };
@@ -28,6 +31,7 @@ struct FeCase {
 // Node numbering of the generated mesh (needed to post-process).
 struct FeMesh {
     int nr = 0, nz = 0;       // specimen elements radially / axially
+    std::vector<double> r, z; // node coordinates along the axes (nr + 1, nz + 1 values)
     int platenFirstNode = 0;  // first node id of the platen
     int node(int i, int j) const { return 1 + i + j * (nr + 1); }
     int cornerNode() const { return node(nr, nz); }

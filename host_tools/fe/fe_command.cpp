@@ -31,7 +31,8 @@ const char *kUsage =
     "  fit     --in CSV [--in CSV2] --out vision/fe_model_table.h [--reduction 0.5]\n"
     "  report  --in CSV --out DIR                             Table 1 / Fig. 3 comparison\n"
     "case options: --k 500 --n 0.25 --mu 0.2 --e 210000 --d0 10 --h0 15 --reduction 0.5\n"
-    "              --elem 0.2 --contact-slope 1e5 --stick-slope 1e5 --inc-max 0.01\n"
+    "              --elem 0.2 --corner 0 --contact-slope 1e5 --stick-slope 1e4 --fallback-stick-slope 1e3\n"
+    "              --inc-max 0.01\n"
     "              --ccx ccx --timeout 3600 --work /tmp/icacam-fe\n";
 
 struct Parsed {
@@ -62,6 +63,7 @@ bool setCaseKey(FeCase &c, const std::string &key, double v)
     else if (key == "h0") c.h0Mm = v;
     else if (key == "reduction" || key == "red") c.reductionMax = v;
     else if (key == "elem") c.elemMm = v;
+    else if (key == "corner") c.cornerMm = v;
     else if (key == "contact-slope") c.contactSlope = v;
     else if (key == "stick-slope") c.stickSlope = v;
     else if (key == "inc-max") c.incMax = v;
@@ -84,6 +86,7 @@ Parsed parse(const std::vector<std::string> &args, size_t from)
         else if (key == "work") p.run.workDir = v;
         else if (key == "ccx") p.run.ccx = v;
         else if (key == "timeout") p.run.timeoutS = int(toDouble(key, v));
+        else if (key == "fallback-stick-slope") p.run.fallbackStickSlope = toDouble(key, v);
         else if (key == "jobs") p.jobs = std::clamp(int(toDouble(key, v)), 1, 2);
         else if (key == "snapshot-reduction") p.reduction = toDouble(key, v);
         else if (!setCaseKey(p.c, key, toDouble(key, v)))
@@ -195,9 +198,10 @@ int feCommand(const std::vector<std::string> &args)
     const Parsed p = parse(args, 1);
     if (sub == "deck") { std::cout << makeDeck(p.c); return 0; }
     if (sub == "run") {
-        const RunResult r = runCase(p.c, p.run);
-        printResult(p.c, r);
-        if (!p.out.empty()) appendRows(p.out, csvRows(p.c, r));
+        FeCase c = p.c;
+        const RunResult r = runCase(c, p.run);
+        printResult(c, r);
+        if (!p.out.empty()) appendRows(p.out, csvRows(c, r));
         return r.status == "ok" ? 0 : 1;
     }
     if (sub == "sweep") return sweep(p);

@@ -41,7 +41,24 @@ std::vector<double> snapshotReductions(const FeCase &c)
     return r;
 }
 
-RunResult runCase(FeCase c, const RunOptions &o)
+RunResult runOnce(FeCase c, const RunOptions &o);
+
+RunResult runCase(FeCase &c, const RunOptions &o)
+{
+    RunResult r = runOnce(c, o);
+    if (r.status == "failed" && o.fallbackStickSlope > 0 && o.fallbackStickSlope < c.stickSlope) {
+        const double wall = r.wallS;
+        const std::string why = r.message;
+        c.stickSlope = o.fallbackStickSlope;
+        r = runOnce(c, o);
+        r.wallS += wall;
+        r.message = "retried with stick slope " + std::to_string(int(c.stickSlope)) + " after: " + why;
+        for (char &ch : r.message) if (ch == ',') ch = ';';
+    }
+    return r;
+}
+
+RunResult runOnce(FeCase c, const RunOptions &o)
 {
     RunResult res;
     c.reductions = snapshotReductions(c);
@@ -69,6 +86,11 @@ RunResult runCase(FeCase c, const RunOptions &o)
     const auto forces = parseDatTotals(slurp(dir / "job.dat"));
     for (const FrdStep &s : frd.steps) {
         const double red = s.time * c.reductionMax;
+        // A run that stopped leaves its diverged "best solution" as a last block: keep the
+        // snapshots only.
+        const bool snapshot = std::any_of(c.reductions.begin(), c.reductions.end(),
+                                          [&](double x) { return std::fabs(x - red) < 1e-6; });
+        if (!snapshot) continue;
         res.radii.push_back(computeRadii(c, mesh, frd.coords, s.disp, red));
     }
     for (ForcePoint f : forces) {
@@ -93,7 +115,7 @@ RunResult runCase(FeCase c, const RunOptions &o)
 
 std::string csvHeader()
 {
-    return "case,status,k_mpa,n,mu,e_mpa,nu,d0_mm,h0_mm,reduction_max,reduction,elem_mm,element,"
+    return "case,status,k_mpa,n,mu,e_mpa,nu,d0_mm,h0_mm,reduction_max,reduction,elem_mm,corner_mm,element,"
            "contact,contact_slope,stick_slope,inc_max,r_i_mm,r_o_mm,r_o_interp_mm,r_max_mm,u_mm,"
            "u_interp_mm,contact_nodes,force_kn,wall_s,solver,message";
 }
@@ -104,10 +126,10 @@ std::vector<std::string> csvRows(const FeCase &c, const RunResult &r)
     auto row = [&](const Radii *x, double force) {
         char b[1024];
         std::snprintf(b, sizeof b,
-                      "%s,%s,%g,%g,%g,%g,%g,%g,%g,%g,%.4f,%g,CAX4R,node-to-surface penalty,%g,%g,%g,"
+                      "%s,%s,%g,%g,%g,%g,%g,%g,%g,%g,%.4f,%g,%g,CAX4R,node-to-surface penalty,%g,%g,%g,"
                       "%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%d,%.3f,%.1f,CalculiX 2.20 OMP=1,%s",
                       c.label().c_str(), r.status.c_str(), c.kMpa, c.n, c.mu, c.eMpa, c.nu, c.d0Mm,
-                      c.h0Mm, c.reductionMax, x ? x->reduction : 0.0, c.elemMm, c.contactSlope,
+                      c.h0Mm, c.reductionMax, x ? x->reduction : 0.0, c.elemMm, c.cornerMm, c.contactSlope,
                       c.stickSlope, c.incMax, x ? x->riMm : 0.0, x ? x->roMm : 0.0,
                       x ? x->roInterpMm : 0.0, x ? x->rMaxMm : 0.0, x ? x->uMm() : 0.0,
                       x ? x->uInterpMm() : 0.0, x ? x->contactNodes : 0, force, r.wallS,

@@ -13,6 +13,9 @@ struct RunOptions {
     std::string ccx = "ccx";
     int timeoutS = 3600;
     bool keep = true; // keep the work files (deck, .frd, .dat, log)
+    // When ccx stops early (too many cutbacks: the folding corner with a stiff stick
+    // slope), the case is rerun with this stick slope; 0 = no retry. The row records it.
+    double fallbackStickSlope = 1e3;
 };
 
 struct RunResult {
@@ -27,7 +30,8 @@ struct RunResult {
 // The snapshot reductions of a case: every 0.05 and the requested ones, up to reductionMax.
 std::vector<double> snapshotReductions(const FeCase &c);
 
-RunResult runCase(FeCase c, const RunOptions &o);
+// Runs c (retrying with the fallback stick slope, which is then written into c).
+RunResult runCase(FeCase &c, const RunOptions &o);
 
 // The CSV header and rows of a result (one row per snapshot).
 std::string csvHeader();
