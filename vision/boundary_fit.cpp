@@ -75,6 +75,8 @@ bool fitBoundary(const EdgeSample *points, const double *radiusPx, const bool *v
 
     BoundaryFit f;
     f.a0 = med;
+    double curve[kMaxRays]; // the current curve at every ray
+    for (int i = 0; i < n; ++i) curve[i] = med;
     // r at ray i: a0 + Σ a_k cos(kθ_i) + b_k sin(kθ_i), with kθ_i looked up mod 2π.
     auto curveAt = [&](int i) {
         double r = f.a0;
@@ -85,16 +87,16 @@ bool fitBoundary(const EdgeSample *points, const double *radiusPx, const bool *v
         return r;
     };
     int used = 0;
-    for (int pass = 0; pass < 4; ++pass) {
+    for (int pass = 0; pass < 3; ++pass) {
         used = 0;
         for (int i = 0; i < n; ++i) used += keep[i];
         const int K = std::min({opt.maxHarmonics, BoundaryFit::kMaxHarmonics, pass == 0 ? 2 : 99,
                                 std::max(1, used / 8), (n - 1) / 2});
         if (used < 8) return false;
         // A few imputation sweeps per pass; more where many rays are missing.
-        const int sweeps = used == n ? 1 : (pass == 3 ? 3 : 1);
+        const int sweeps = used == n ? 1 : (pass == 2 ? 3 : 1);
         for (int sweep = 0; sweep < sweeps; ++sweep) {
-            for (int i = 0; i < n; ++i) filled[i] = keep[i] ? radiusPx[i] : curveAt(i);
+            for (int i = 0; i < n; ++i) filled[i] = keep[i] ? radiusPx[i] : curve[i];
             BoundaryFit g;
             g.harmonics = K;
             double sum = 0;
@@ -108,19 +110,20 @@ bool fitBoundary(const EdgeSample *points, const double *radiusPx, const bool *v
                 }
             for (int k = 1; k <= K; ++k) { g.a[k] *= 2.0 / n; g.b[k] *= 2.0 / n; }
             f = g;
+            for (int i = 0; i < n; ++i) curve[i] = curveAt(i);
         }
         int m = 0;
         for (int i = 0; i < n; ++i)
-            if (keep[i]) work[m++] = std::fabs(radiusPx[i] - curveAt(i));
+            if (keep[i]) work[m++] = std::fabs(radiusPx[i] - curve[i]);
         const double sigma = 1.4826 * medianOf(work, m);
         const double limit = std::max(opt.minRejectPx, opt.rejectSigma * sigma);
-        for (int i = 0; i < n; ++i) keep[i] = valid[i] && std::fabs(radiusPx[i] - curveAt(i)) <= limit;
+        for (int i = 0; i < n; ++i) keep[i] = valid[i] && std::fabs(radiusPx[i] - curve[i]) <= limit;
     }
     used = 0;
     double ss = 0;
     for (int i = 0; i < n; ++i) {
         if (!keep[i]) continue;
-        const double e = radiusPx[i] - curveAt(i);
+        const double e = radiusPx[i] - curve[i];
         ss += e * e;
         ++used;
     }

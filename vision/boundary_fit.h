@@ -6,7 +6,7 @@
 namespace icacam::vision {
 
 struct FitOptions {
-    int maxHarmonics = 6;
+    int maxHarmonics = 4;
     double rejectSigma = 3.0;     // residuals beyond this many robust σ are dropped
     double minRejectPx = 0.75;    // never reject closer than this (sub-pixel noise)
 };

@@ -50,13 +50,16 @@ ErrorCode EndFaceAnalyzer::configure(int maxWidth, int maxHeight)
 // first-harmonic fit, and the centre moved by the fitted offset.
 bool EndFaceAnalyzer::refineCentre(const LumaView &v, double r0Px, double *cx, double *cy)
 {
+    // Pass 1: the strongest edge on each of 32 rays at 2 px steps (usually the contact edge
+    // or the silhouette, both circles about the specimen's axis), a robust first-harmonic
+    // fit, and the centre moved by the fitted offset.
     int32_t d[kMaxCoarseSamples];
     double radius[kCoarseRays];
     bool valid[kCoarseRays];
-    for (int pass = 0; pass < 2; ++pass) {
-        const int rays = pass == 0 ? kCoarseRays / 2 : kCoarseRays;
-        const double rA = kCoarseStart * r0Px, rB = kCoarseEnd * r0Px;
-        const double step = std::max(pass == 0 ? 2.0 : 1.0, (rB - rA) / kMaxCoarseSamples);
+    const double rA = kCoarseStart * r0Px, rB = kCoarseEnd * r0Px;
+    {
+        const int rays = kCoarseRays / 2;
+        const double step = std::max(2.0, (rB - rA) / kMaxCoarseSamples);
         const int count = std::min(kMaxCoarseSamples, int((rB - rA) / step));
         for (int i = 0; i < rays; ++i) {
             RaySpec ray{Q16_16::fromDouble(*cx), Q16_16::fromDouble(*cy), {}, {},
@@ -79,6 +82,16 @@ bool EndFaceAnalyzer::refineCentre(const LumaView &v, double r0Px, double *cx, d
         if (fit.coverage < 0.25) return false;
         *cx = fit.centreX;
         *cy = fit.centreY;
+    }
+    // Pass 2: 64 rays about the refined centre, kept for the mean profile and the
+    // silhouette (the fine stage's contact-edge fit absorbs what offset remains).
+    const double step = coarseStep(r0Px);
+    const int count = std::min(kMaxCoarseSamples, int((rB - rA) / step));
+    for (int i = 0; i < kCoarseRays; ++i) {
+        RaySpec ray{Q16_16::fromDouble(*cx), Q16_16::fromDouble(*cy), {}, {},
+                    Q16_16::fromDouble(rA), Q16_16::fromDouble(step)};
+        rayDirection(i, kCoarseRays, &ray.cosT, &ray.sinT);
+        sampleRay(v, ray, count, coarse_ + size_t(i) * kMaxCoarseSamples);
     }
     return true;
 }
@@ -123,7 +136,7 @@ Measurement EndFaceAnalyzer::measure(const LumaView &v, const SpecimenSpec &spec
 void EndFaceAnalyzer::finishResult(const SpecimenSpec &spec, const FrictionModel &model,
                                    Measurement *m) const
 {
-    const double s = spec.mmPerPx;
+    double s = spec.mmPerPx;
     m->rInnerMm = m->inner.rEqPx * s;
     m->rOuterMm = m->outer.rEqPx * s;
     m->rMaxMm = m->rMaxPx * s;

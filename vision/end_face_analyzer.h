@@ -33,6 +33,13 @@ public:
     // Radial span of the coarse rays, in initial radii: from inside the widest ICA's outer
     // edge to beyond the silhouette at 60 % reduction (R0·1.58·1.04 ≈ 1.65 R0).
     static constexpr double kCoarseStart = 0.88, kCoarseEnd = 1.72;
+    // Radial step of the coarse rays: 2 px is fine enough to name the edges (the fine stage
+    // locates them) and to find the silhouette to a quarter of a percent.
+    static double coarseStep(double r0Px)
+    {
+        const double span = (kCoarseEnd - kCoarseStart) * r0Px;
+        return span / 2 > kMaxCoarseSamples ? span / kMaxCoarseSamples : 2.0;
+    }
 
     EndFaceAnalyzer() = default;
     EndFaceAnalyzer(const EndFaceAnalyzer &) = delete;

@@ -66,7 +66,7 @@ RingSearch::MeanEdges RingSearch::meanProfileEdges()
 {
     // The coarse rows hold the centre refinement's last pass (see refineCentre).
     const double rA = EndFaceAnalyzer::kCoarseStart * r0, rB = EndFaceAnalyzer::kCoarseEnd * r0;
-    const double step = std::max(1.0, (rB - rA) / kMaxCoarse);
+    const double step = EndFaceAnalyzer::coarseStep(r0);
     const int count = std::min(kMaxCoarse, int((rB - rA) / step));
     uint16_t mean[kMaxCoarse];
     for (int j = 0; j < count; ++j) {
@@ -226,7 +226,7 @@ double RingSearch::silhouetteFromRays(const BoundaryFit &outer)
 {
     constexpr int kCoarse = EndFaceAnalyzer::kCoarseRays;
     const double rA = EndFaceAnalyzer::kCoarseStart * r0, rB = EndFaceAnalyzer::kCoarseEnd * r0;
-    const double step = std::max(1.0, (rB - rA) / kMaxCoarse);
+    const double step = EndFaceAnalyzer::coarseStep(r0);
     const int count = std::min(kMaxCoarse, int((rB - rA) / step));
     const int w = std::max(4, int(0.035 * r0 / step)); // step detector half-width
     double radius[kCoarse];

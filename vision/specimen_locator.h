@@ -18,7 +18,7 @@ struct CentreEstimate {
 
 class SpecimenLocator {
 public:
-    static constexpr int kMaxCells = 128; // decimated frame is at most 128 × 128
+    static constexpr int kMaxCells = 96; // decimated frame is at most 96 × 96
     // Working memory a locator needs (bytes), for the arena.
     static constexpr size_t kWorkBytes = size_t(kMaxCells) * kMaxCells * 5; // luma, |g|, votes
 
