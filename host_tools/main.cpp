@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "calibrate_command.h"
 #include "fe/fe_command.h"
 #include "measure_command.h"
 #include "synth_command.h"
@@ -14,6 +15,7 @@ const char *kHelp =
     "commands:\n"
     "  measure   measure μ from saved end-face images listed in a manifest\n"
     "  synth     render synthetic end-face images with ground truth\n"
+    "  calibrate camera intrinsics, distortion and fixture pose from board photos\n"
     "  fe        CalculiX upsetting runs, sweeps and the μ model built from them\n"
     "Run 'icacam <command> --help' for the options of one command.\n";
 }
@@ -26,6 +28,7 @@ int main(int argc, char **argv)
     try {
         if (cmd == "measure") return icacam::host::measureCommand(args);
         if (cmd == "synth") return icacam::host::synthCommand(args);
+        if (cmd == "calibrate") return icacam::host::calibrateCommand(args);
         if (cmd == "fe") return icacam::host::feCommand(args);
         if (cmd == "-h" || cmd == "--help" || cmd == "help") { std::cout << kHelp; return 0; }
         std::cerr << "icacam: unknown command '" << cmd << "'\n" << kHelp;

@@ -5,11 +5,13 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <stdexcept>
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "calibration_file.h"
 #include "friction_models.h"
 #include "image_file.h"
 #include "manifest.h"
@@ -27,7 +29,10 @@ const char *kUsage =
     "usage: icacam measure --manifest FILE [--out FILE] [--format csv|jsonl]\n"
     "                      [--overlay DIR] [--repeat N] [--model paper]\n"
     "Measures every record of a manifest (columns id,image,n,mm_per_px; optional k_mpa,\n"
-    "d0_mm, h0_mm). One bad record never stops the batch: it gets status=error.\n";
+    "d0_mm, h0_mm). One bad record never stops the batch: it gets status=error.\n"
+    "A 'calibration' column (a file from 'icacam calibrate', relative to the manifest) may\n"
+    "stand beside or instead of mm_per_px; the end face is then taken at h_final_mm above\n"
+    "the fixture, or h0_mm/2 when no final height is given (docs/calibration.md).\n";
 
 void drawOverlay(const cv::Mat &luma, const Measurement &m, const std::string &path)
 {
@@ -105,6 +110,7 @@ int measureCommand(const std::vector<std::string> &args)
 
     EndFaceAnalyzer analyzer;
     analyzer.configure(16384, 16384); // working memory does not grow with the frame
+    std::map<std::string, std::pair<CalibrationFile, std::string>> calibrations; // by path
     int nOk = 0, nWarn = 0, nErr = 0;
     for (const ManifestRow &row : manifest.rows) {
         ResultRow r;
@@ -113,6 +119,8 @@ int measureCommand(const std::vector<std::string> &args)
         Measurement m;
         LumaImage img;
         SpecimenSpec spec;
+        PlaneCalibration calibration;
+        const bool calibrated = row.has("calibration");
         auto number = [&](const char *key, double fallback, bool required, double *outV) {
             if (!row.has(key)) {
                 if (required) { r.message = std::string("missing ") + key; return false; }
@@ -127,15 +135,45 @@ int measureCommand(const std::vector<std::string> &args)
         };
         bool ok = row.error.empty();
         if (!ok) r.message = "manifest line " + std::to_string(row.line) + ": " + row.error;
-        ok = ok && number("n", 0, true, &spec.n) && number("mm_per_px", 0, true, &spec.mmPerPx) &&
+        ok = ok && number("n", 0, true, &spec.n) && number("mm_per_px", 0, !calibrated, &spec.mmPerPx) &&
              number("k_mpa", 0, false, &spec.kMpa) && number("d0_mm", 10, false, &spec.d0Mm) &&
              number("h0_mm", 15, false, &spec.h0Mm) && number("h_final_mm", 0, false, &spec.hFinalMm);
         if (ok && !row.has("image")) { r.message = "missing image"; ok = false; }
-        if (ok && !(spec.mmPerPx > 0)) { r.message = "mm_per_px must be positive"; ok = false; }
+        if (ok && !(spec.mmPerPx > 0) && !(calibrated && spec.mmPerPx == 0)) {
+            r.message = "mm_per_px must be positive";
+            ok = false;
+        }
         if (ok) {
             fs::path p = row.get("image");
             if (p.is_relative()) p = fs::path(manifest.baseDir) / p;
             if (std::string e = loadLuma(p.string(), &img); !e.empty()) { r.message = e; ok = false; }
+        }
+        if (ok && calibrated) {
+            fs::path p = row.get("calibration");
+            if (p.is_relative()) p = fs::path(manifest.baseDir) / p;
+            auto it = calibrations.find(p.string());
+            if (it == calibrations.end()) {
+                CalibrationFile c;
+                const std::string e = readCalibrationFile(p.string(), &c);
+                it = calibrations.emplace(p.string(), std::make_pair(c, e)).first;
+            }
+            const CalibrationFile &c = it->second.first;
+            if (!it->second.second.empty()) r.message = it->second.second;
+            else if (c.imageWidth != img.luma.cols || c.imageHeight != img.luma.rows)
+                r.message = "calibration is for " + std::to_string(c.imageWidth) + "x" +
+                            std::to_string(c.imageHeight) + " images, this one is " +
+                            std::to_string(img.luma.cols) + "x" + std::to_string(img.luma.rows);
+            else if (spec.hFinalMm < 0 || !(spec.h0Mm > 0)) r.message = "h_final_mm or h0_mm not usable";
+            ok = r.message.empty();
+            if (ok) {
+                calibration = c.plane;
+                calibration.heightMm = spec.hFinalMm > 0 ? spec.hFinalMm : 0.5 * spec.h0Mm;
+                spec.calibration = &calibration;
+                // Without a declared scale, the search is sized from the calibrated one.
+                if (spec.mmPerPx == 0)
+                    spec.mmPerPx = planeScaleAt(calibration, 0.5 * (img.luma.cols - 1), 0.5 * (img.luma.rows - 1));
+                if (!(spec.mmPerPx > 0)) { r.message = "calibration does not map the image centre"; ok = false; }
+            }
         }
         if (ok) {
             const LumaView view{img.luma.data, img.luma.cols, img.luma.rows, int(img.luma.step[0]), 1};

@@ -142,6 +142,26 @@ void EndFaceAnalyzer::finishResult(const SpecimenSpec &spec, const FrictionModel
     m->rMaxMm = m->rMaxPx * s;
     m->uPx = m->outer.rEqPx - m->inner.rEqPx;
     m->uMm = m->uPx * s;
+    if (spec.calibration) {
+        // Each boundary mapped point by point into the end-face plane (undistorted, tilt
+        // removed, at the specimen's height); s becomes the contact edge's effective scale
+        // for the uncertainties and thresholds below.
+        const double ri = equivalentRadiusMm(m->inner, m->centreX, m->centreY, *spec.calibration);
+        const double ro = equivalentRadiusMm(m->outer, m->centreX, m->centreY, *spec.calibration);
+        if (!(ri > 0 && ro > 0 && m->outer.rEqPx > 0)) {
+            m->status = Status::Error;
+            m->error = ErrorCode::BadSpecimen;
+            return;
+        }
+        m->rInnerMm = ri, m->rOuterMm = ro, m->uMm = ro - ri;
+        s = ro / m->outer.rEqPx;
+        // The barrel is widest about half-way down: its silhouette maps at half the height.
+        BoundaryFit silhouette;
+        silhouette.a0 = m->rMaxPx;
+        PlaneCalibration mid = *spec.calibration;
+        mid.heightMm *= 0.5;
+        m->rMaxMm = m->rMaxPx > 0 ? equivalentRadiusMm(silhouette, m->centreX, m->centreY, mid) : 0;
+    }
     // Edge location has a floor of about 0.1 px of bias per boundary besides its scatter.
     const double sigPx = std::sqrt(m->inner.rEqSigmaPx * m->inner.rEqSigmaPx +
                                    m->outer.rEqSigmaPx * m->outer.rEqSigmaPx + 2 * 0.1 * 0.1);

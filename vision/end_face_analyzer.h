@@ -10,6 +10,7 @@
 #include "friction_model.h"
 #include "luma_view.h"
 #include "measurement.h"
+#include "plane_calibration.h"
 #include "specimen_locator.h"
 
 namespace icacam::vision {
@@ -22,6 +23,10 @@ struct SpecimenSpec {
     double h0Mm = 15;      // initial height
     double mmPerPx = 0;    // scale in the plane of the end face
     double hFinalMm = 0;   // final height when recorded (0: assume the model's 50 % reduction)
+    // Camera calibration with the end face's height set (docs/calibration.md): when given,
+    // the radii in mm come from mapping each boundary into the end-face plane, and mmPerPx
+    // only sizes the search.
+    const PlaneCalibration *calibration = nullptr;
 };
 
 class EndFaceAnalyzer {

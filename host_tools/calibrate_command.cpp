@@ -1,0 +1,248 @@
+#include "calibrate_command.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+
+#include <opencv2/calib3d.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "calibration_file.h"
+#include "image_file.h"
+#include "manifest.h"
+
+namespace icacam::host {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const char *kUsage =
+    "usage: icacam calibrate --images DIR --board chessboard:COLSxROWS:SQUARE_MM\n"
+    "                        --flat PHOTO --out FILE [--board-thickness MM]\n"
+    "                        [--max-blur PX] [--free-k3]\n"
+    "  --images DIR   photos of the board in different poses (png/jpg/tif/bmp/pgm)\n"
+    "  --board        chessboard:COLSxROWS:SQUARE_MM (inner corners, square side) or\n"
+    "                 circles:COLSxROWS:SPACING_MM (symmetric grid of dark dots)\n"
+    "  --flat PHOTO   the photo with the board lying flat on the fixture (path, or a name\n"
+    "                 in DIR): gives the fixture plane's pose\n"
+    "  --board-thickness MM  the board's surface above the fixture (default 0)\n"
+    "  --max-blur PX  refuse views whose chessboard edges are wider than this (default 3)\n"
+    "  --free-k3      also fit k3 (default: fixed at 0, ill-determined in a narrow field)\n"
+    "Needs at least 5 usable views. See docs/calibration.md.\n";
+
+constexpr int kMinViews = 5;
+
+struct Board {
+    bool circles = false;
+    cv::Size size;
+    double pitchMm = 0;
+    std::vector<cv::Point3f> object() const
+    {
+        std::vector<cv::Point3f> pts;
+        for (int j = 0; j < size.height; ++j)
+            for (int i = 0; i < size.width; ++i)
+                pts.emplace_back(float(i * pitchMm), float(j * pitchMm), 0.f);
+        return pts;
+    }
+};
+
+Board parseBoard(const std::string &spec)
+{
+    Board b;
+    const size_t c1 = spec.find(':'), c2 = spec.rfind(':'), x = spec.find('x', c1 + 1);
+    auto fail = [&]() -> Board {
+        throw std::runtime_error("bad --board '" + spec +
+                                 "': expected chessboard:COLSxROWS:SQUARE_MM or circles:COLSxROWS:SPACING_MM");
+    };
+    if (c1 == std::string::npos || c2 == c1 || x == std::string::npos || x > c2) return fail();
+    const std::string kind = spec.substr(0, c1);
+    if (kind != "chessboard" && kind != "circles") return fail();
+    b.circles = kind == "circles";
+    double cols, rows;
+    if (!parseNumber(spec.substr(c1 + 1, x - c1 - 1), &cols) ||
+        !parseNumber(spec.substr(x + 1, c2 - x - 1), &rows) ||
+        !parseNumber(spec.substr(c2 + 1), &b.pitchMm))
+        return fail();
+    if (cols < 3 || rows < 3 || cols > 100 || rows > 100 || cols != std::floor(cols) ||
+        rows != std::floor(rows) || !(b.pitchMm > 0))
+        throw std::runtime_error("bad --board '" + spec + "': at least 3×3 points and a positive pitch");
+    b.size = {int(cols), int(rows)};
+    return b;
+}
+
+// Finds the board; returns an empty string or why the view is unusable.
+std::string detect(const cv::Mat &gray, const Board &b, double maxBlur, std::vector<cv::Point2f> *pts,
+                   double *blur)
+{
+    *blur = 0;
+    if (b.circles) {
+        if (!cv::findCirclesGrid(gray, b.size, *pts, cv::CALIB_CB_SYMMETRIC_GRID))
+            return "circle grid not found";
+        return "";
+    }
+    if (!cv::findChessboardCorners(gray, b.size, *pts,
+                                   cv::CALIB_CB_ADAPTIVE_THRESH | cv::CALIB_CB_NORMALIZE_IMAGE))
+        return "chessboard not found (blurred, cut off, or not " + std::to_string(b.size.width) + "x" +
+               std::to_string(b.size.height) + " inner corners?)";
+    // Edge rise width across the board's edges (OpenCV's estimate, pixels): a soft view
+    // moves corners by more than its scatter shows.
+    const cv::Scalar sharp = cv::estimateChessboardSharpness(gray, b.size, *pts);
+    *blur = sharp[0];
+    if (!(sharp[0] <= maxBlur)) {
+        char msg[120];
+        std::snprintf(msg, sizeof msg, "blurred (edge width %.1f px > %.1f px)", sharp[0], maxBlur);
+        return msg;
+    }
+    cv::cornerSubPix(gray, *pts, {5, 5}, {-1, -1},
+                     cv::TermCriteria(cv::TermCriteria::EPS | cv::TermCriteria::COUNT, 50, 1e-4));
+    return "";
+}
+
+bool isImage(const fs::path &p)
+{
+    std::string e = p.extension().string();
+    std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    for (const char *x : {".png", ".jpg", ".jpeg", ".tif", ".tiff", ".bmp", ".pgm", ".pnm"})
+        if (e == x) return true;
+    return false;
+}
+
+} // namespace
+
+int calibrateCommand(const std::vector<std::string> &args)
+{
+    std::string dir, boardSpec, flat, outPath;
+    double thickness = 0, maxBlur = 3.0;
+    bool freeK3 = false;
+    for (size_t i = 0; i < args.size(); ++i) {
+        auto value = [&]() -> std::string {
+            if (i + 1 >= args.size()) throw std::runtime_error(args[i] + " needs a value");
+            return args[++i];
+        };
+        auto number = [&](double *v) {
+            const std::string opt = args[i], s = value();
+            if (!parseNumber(s, v) || *v < 0) throw std::runtime_error(opt + " needs a non-negative number");
+        };
+        if (args[i] == "--images") dir = value();
+        else if (args[i] == "--board") boardSpec = value();
+        else if (args[i] == "--flat") flat = value();
+        else if (args[i] == "--out") outPath = value();
+        else if (args[i] == "--board-thickness") number(&thickness);
+        else if (args[i] == "--max-blur") number(&maxBlur);
+        else if (args[i] == "--free-k3") freeK3 = true;
+        else if (args[i] == "-h" || args[i] == "--help") { std::cout << kUsage; return 0; }
+        else throw std::runtime_error("unknown option '" + args[i] + "'\n" + kUsage);
+    }
+    if (dir.empty() || boardSpec.empty() || flat.empty() || outPath.empty())
+        throw std::runtime_error(std::string("--images, --board, --flat and --out are required\n") + kUsage);
+    const Board board = parseBoard(boardSpec);
+    if (!fs::is_directory(dir)) throw std::runtime_error("--images: '" + dir + "' is not a folder");
+    fs::path flatPath = flat;
+    if (!fs::exists(flatPath) && fs::exists(fs::path(dir) / flat)) flatPath = fs::path(dir) / flat;
+
+    std::vector<fs::path> files;
+    for (const auto &e : fs::directory_iterator(dir))
+        if (e.is_regular_file() && isImage(e.path())) files.push_back(e.path());
+    std::sort(files.begin(), files.end());
+
+    std::vector<std::vector<cv::Point3f>> objectPts;
+    std::vector<std::vector<cv::Point2f>> imagePts;
+    std::vector<std::string> used;
+    std::ostringstream rejected;
+    cv::Size imageSize;
+    for (const fs::path &p : files) {
+        LumaImage img;
+        std::string why = loadLuma(p.string(), &img);
+        if (why.empty() && imageSize.width && img.luma.size() != imageSize)
+            why = "size differs from the first view";
+        std::vector<cv::Point2f> pts;
+        double blur = 0;
+        if (why.empty()) why = detect(img.luma, board, maxBlur, &pts, &blur);
+        if (!why.empty()) {
+            rejected << "  " << p.filename().string() << ": " << why << "\n";
+            continue;
+        }
+        if (!imageSize.width) imageSize = img.luma.size();
+        objectPts.push_back(board.object());
+        imagePts.push_back(pts);
+        used.push_back(p.filename().string());
+    }
+    if (!rejected.str().empty()) std::cerr << "icacam calibrate: views not used:\n" << rejected.str();
+    if (int(used.size()) < kMinViews)
+        throw std::runtime_error("only " + std::to_string(used.size()) + " usable view" +
+                                 (used.size() == 1 ? "" : "s") + " of " + std::to_string(files.size()) +
+                                 " in '" + dir + "': a calibration needs at least " +
+                                 std::to_string(kMinViews) +
+                                 " sharp views of the whole board in different tilts");
+
+    cv::Mat K, D;
+    std::vector<cv::Mat> rvecs, tvecs;
+    const int flags = freeK3 ? 0 : cv::CALIB_FIX_K3;
+    const double rms = cv::calibrateCamera(objectPts, imagePts, imageSize, K, D, rvecs, tvecs, flags,
+                                           cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, 100, 1e-12));
+
+    // The flat view: the fixture plane's pose with the intrinsics just found.
+    LumaImage flatImg;
+    if (std::string e = loadLuma(flatPath.string(), &flatImg); !e.empty())
+        throw std::runtime_error("--flat: " + e);
+    if (flatImg.luma.size() != imageSize) throw std::runtime_error("--flat: photo size differs from the views");
+    std::vector<cv::Point2f> flatPts;
+    double flatBlur = 0;
+    if (std::string e = detect(flatImg.luma, board, maxBlur, &flatPts, &flatBlur); !e.empty())
+        throw std::runtime_error("--flat '" + flatPath.string() + "': " + e);
+    cv::Mat rvec, tvec;
+    const std::vector<cv::Point3f> obj = board.object();
+    if (!cv::solvePnP(obj, flatPts, K, D, rvec, tvec, false, cv::SOLVEPNP_ITERATIVE))
+        throw std::runtime_error("--flat: the board's pose could not be solved");
+    std::vector<cv::Point2f> reproj;
+    cv::projectPoints(obj, rvec, tvec, K, D, reproj);
+    double flatErr = 0;
+    for (size_t i = 0; i < obj.size(); ++i) flatErr += std::pow(cv::norm(reproj[i] - flatPts[i]), 2);
+    flatErr = std::sqrt(flatErr / double(obj.size()));
+
+    CalibrationFile c;
+    vision::PlaneCalibration &p = c.plane;
+    p.fx = K.at<double>(0, 0), p.fy = K.at<double>(1, 1), p.cx = K.at<double>(0, 2), p.cy = K.at<double>(1, 2);
+    p.k1 = D.at<double>(0), p.k2 = D.at<double>(1), p.p1 = D.at<double>(2), p.p2 = D.at<double>(3);
+    p.k3 = D.total() > 4 ? D.at<double>(4) : 0;
+    cv::Matx33d R;
+    cv::Rodrigues(rvec, R);
+    cv::Vec3d t(tvec.at<double>(0), tvec.at<double>(1), tvec.at<double>(2));
+    // The fixture lies the board's thickness below the board's surface, away from the camera.
+    const cv::Vec3d normal(R(0, 2), R(1, 2), R(2, 2));
+    const double up = -(R.t() * t)[2] >= 0 ? 1.0 : -1.0;
+    t -= up * thickness * normal;
+    for (int i = 0; i < 9; ++i) p.r[i] = R.val[i];
+    for (int i = 0; i < 3; ++i) p.t[i] = t[i];
+    c.imageWidth = imageSize.width, c.imageHeight = imageSize.height;
+    c.rmsPx = rms;
+    c.views = int(used.size());
+    c.board = boardSpec;
+    c.boardThicknessMm = thickness;
+    if (!p.valid()) throw std::runtime_error("the calibration came out not physical; check the board geometry");
+    if (std::string e = writeCalibrationFile(outPath, c); !e.empty()) throw std::runtime_error(e);
+
+    const double tiltDeg = std::acos(std::min(1.0, std::fabs(normal[2]))) * 180 / M_PI;
+    std::printf("icacam calibrate: %d views of %zu, RMS reprojection error %.3f px%s\n", c.views,
+                files.size(), rms, rms > 0.5 ? " (high: check the views)" : "");
+    std::printf("  fx %.2f  fy %.2f  cx %.2f  cy %.2f\n", p.fx, p.fy, p.cx, p.cy);
+    std::printf("  distortion k1 %.5f  k2 %.5f  p1 %.6f  p2 %.6f  k3 %.5f\n", p.k1, p.k2, p.p1, p.p2, p.k3);
+    std::printf("  fixture: %.2f mm from the camera along the axis, tilted %.2f deg; flat view RMS %.3f px\n",
+                std::fabs(t[2]), tiltDeg, flatErr);
+    std::printf("  scale at the image centre (mm/px) by height above the fixture:");
+    for (double h : {0.0, 2.5, 5.0, 7.5, 10.0}) {
+        vision::PlaneCalibration at = p;
+        at.heightMm = h;
+        std::printf(" %.1f mm: %.6f%s", h, vision::planeScaleAt(at, 0.5 * (imageSize.width - 1), 0.5 * (imageSize.height - 1)),
+                    h < 10 ? "," : "\n");
+    }
+    std::printf("  written to %s\n", outPath.c_str());
+    return 0;
+}
+
+} // namespace icacam::host
