@@ -3,9 +3,9 @@
 // images are decoded by the file-backed HAL (libpng / libjpeg-turbo, no OpenCV), so the test
 // also pins the decoder: a different luma plane shows as a different digest first.
 //
-// Regenerate the expected file on x86-64 (and say so in the commit):
-//   ICACAM_WRITE_REFERENCE=$PWD/tests/data/sample/reference-measurements.txt
-//   build/tests/hal/reference_images_test  (with that variable set)
+// Regenerate the expected file on x86-64 after a deliberate change to vision/ (commit it
+// with that change):  cmake --build build --target update-reference-measurements
+// (which runs this program with ICACAM_WRITE_REFERENCE set to the file's path).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -82,7 +82,7 @@ void printFit(std::string *out, const char *name, const vision::BoundaryFit &f)
 {
     put(out, "%s rEqPx %a rEqSigmaPx %a scatterPx %a coverage %a used %d\n", name, f.rEqPx, f.rEqSigmaPx,
         f.scatterPx, f.coverage, f.used);
-    put(out, "%s contrast %a ellipticity %a axisDeg %a centre %a %a harmonics %d\n", name, f.contrast,
+    put(out, "%s contrast %a ellipticity %.12g axisDeg %a centre %a %a harmonics %d\n", name, f.contrast,
         f.ellipticity, f.axisDeg, f.centreX, f.centreY, f.harmonics);
 }
 
@@ -133,7 +133,10 @@ std::string measureAll(std::string *failure)
         put(&out, "mm rInner %a rOuter %a rMax %a\n", m.rInnerMm, m.rOuterMm, m.rMaxMm);
         put(&out, "u px %a mm %a sigma %a\n", m.uPx, m.uMm, m.uSigmaMm);
         put(&out, "mu %a sigma %a (%.6f)\n", m.mu, m.muSigma, m.mu);
-        put(&out, "centreOffsetPx %a rays %d\n", m.centreOffsetPx, m.rayCount);
+        // std::hypot is not correctly rounded and glibc's x86-64 and aarch64 builds differ in
+        // its last bit (seen: 0x1.dba7936758132p-6 vs ...133p-6). Values from it are printed
+        // to 12 digits until vision/ computes them with sqrt (correctly rounded everywhere).
+        put(&out, "centreOffsetPx %.12g rays %d\n", m.centreOffsetPx, m.rayCount);
         printPoints(&out, "innerPt", m.innerPoints, m.rayCount);
         printPoints(&out, "outerPt", m.outerPoints, m.rayCount);
     }
@@ -170,7 +173,10 @@ TEST(ReferenceImages, MeasurementsMatchTheCommittedX86Results)
         if (want[i] != have[i] && shown++ < 20)
             ADD_FAILURE() << "line " << i + 1 << "\n  expected: " << want[i] << "\n  measured: " << have[i];
     }
-    EXPECT_EQ(shown, 0) << "lines differ from " << kExpected;
+    EXPECT_EQ(shown, 0) << "lines differ from " << kExpected
+                        << "\nIf vision/ was changed on purpose, regenerate it on x86-64 with\n"
+                           "  cmake --build <build> --target update-reference-measurements\n"
+                           "and commit it with the change; if only aarch64 differs, that is the bug.";
 }
 
 } // namespace

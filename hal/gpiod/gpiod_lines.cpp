@@ -1,0 +1,235 @@
+// libgpiod backends. ICACAM_GPIOD_API (from pkg-config's version, hal/gpiod/CMakeLists.txt)
+// selects libgpiod 1.6's API (line objects owned by the chip) or 2.x's (line requests built
+// from settings); above the #if both present the same small set of operations.
+#include "hal/gpiod/gpiod_lines.h"
+
+#include <gpiod.h>
+#include <poll.h>
+#include <time.h>
+
+#include <cerrno>
+#include <cstring>
+
+namespace icacam::hal {
+
+namespace {
+
+constexpr int kEventBatch = 16; // edges read per call; more wait for the next call
+
+Error fromErrno(const char *what, const std::string &path, int err)
+{
+    const Errc c = (err == ENOENT || err == ENODEV || err == ENOTTY) ? Errc::NotFound : Errc::Io;
+    return Error::make(c, std::string(what) + " " + path + ": " + std::strerror(err));
+}
+
+int64_t monotonicNs()
+{
+    timespec ts{};
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return int64_t(ts.tv_sec) * 1000000000 + ts.tv_nsec;
+}
+
+// Edges are stamped by the kernel on CLOCK_MONOTONIC; the HAL's Clock may have another
+// origin (a test's manual clock), so the edge is placed by its age.
+int64_t toClockMs(const Clock &clock, int64_t edgeNs)
+{
+    const int64_t ageNs = monotonicNs() - edgeNs;
+    return clock.monotonicMs() - (ageNs > 0 ? ageNs / 1000000 : 0);
+}
+
+} // namespace
+
+#if ICACAM_GPIOD_API >= 2
+// ---- libgpiod 2.x --------------------------------------------------------------------
+struct LineRequest {
+    gpiod_chip *chip = nullptr;
+    gpiod_line_request *request = nullptr;
+    gpiod_edge_event_buffer *events = nullptr;
+    unsigned offset = 0;
+
+    LineRequest() = default;
+    LineRequest(const LineRequest &) = delete;
+    LineRequest &operator=(const LineRequest &) = delete;
+    ~LineRequest()
+    {
+        if (events) gpiod_edge_event_buffer_free(events);
+        if (request) gpiod_line_request_release(request);
+        if (chip) gpiod_chip_close(chip);
+    }
+
+    // Returns 0 or an errno value.
+    int open(const GpioLineSpec &spec, const char *consumer, bool output)
+    {
+        offset = spec.offset;
+        chip = gpiod_chip_open(spec.chipPath.c_str());
+        if (!chip) return errno;
+        gpiod_line_settings *settings = gpiod_line_settings_new();
+        gpiod_line_config *lineCfg = gpiod_line_config_new();
+        gpiod_request_config *reqCfg = gpiod_request_config_new();
+        int err = (settings && lineCfg && reqCfg) ? 0 : ENOMEM;
+        if (!err) {
+            if (output) {
+                gpiod_line_settings_set_direction(settings, GPIOD_LINE_DIRECTION_OUTPUT);
+                gpiod_line_settings_set_output_value(settings, spec.activeLow ? GPIOD_LINE_VALUE_ACTIVE
+                                                                              : GPIOD_LINE_VALUE_INACTIVE);
+            } else {
+                gpiod_line_settings_set_direction(settings, GPIOD_LINE_DIRECTION_INPUT);
+                gpiod_line_settings_set_edge_detection(settings, GPIOD_LINE_EDGE_BOTH);
+                gpiod_line_settings_set_event_clock(settings, GPIOD_LINE_CLOCK_MONOTONIC);
+                if (spec.pullUp) gpiod_line_settings_set_bias(settings, GPIOD_LINE_BIAS_PULL_UP);
+            }
+            gpiod_request_config_set_consumer(reqCfg, consumer);
+            if (gpiod_line_config_add_line_settings(lineCfg, &offset, 1, settings) != 0) err = errno;
+        }
+        if (!err) {
+            request = gpiod_chip_request_lines(chip, reqCfg, lineCfg);
+            if (!request) err = errno;
+        }
+        if (!err && !output) {
+            events = gpiod_edge_event_buffer_new(kEventBatch);
+            if (!events) err = ENOMEM;
+        }
+        if (reqCfg) gpiod_request_config_free(reqCfg);
+        if (lineCfg) gpiod_line_config_free(lineCfg);
+        if (settings) gpiod_line_settings_free(settings);
+        return err;
+    }
+    int fd() const { return gpiod_line_request_get_fd(request); }
+    int setRaw(bool high)
+    {
+        return gpiod_line_request_set_value(request, offset, high ? GPIOD_LINE_VALUE_ACTIVE : GPIOD_LINE_VALUE_INACTIVE) == 0
+                   ? 0 : errno;
+    }
+    // Reads up to cap edges into (rising, ns) pairs; returns the count or -errno.
+    int readEdges(bool *rising, int64_t *ns, int cap)
+    {
+        const int n = gpiod_line_request_read_edge_events(request, events, size_t(cap));
+        if (n < 0) return -errno;
+        for (int i = 0; i < n; ++i) {
+            gpiod_edge_event *e = gpiod_edge_event_buffer_get_event(events, unsigned(i));
+            rising[i] = gpiod_edge_event_get_event_type(e) == GPIOD_EDGE_EVENT_RISING_EDGE;
+            ns[i] = int64_t(gpiod_edge_event_get_timestamp_ns(e));
+        }
+        return n;
+    }
+};
+#else
+// ---- libgpiod 1.6 --------------------------------------------------------------------
+struct LineRequest {
+    gpiod_chip *chip = nullptr;
+    gpiod_line *line = nullptr; // owned by chip
+    gpiod_line_event events[kEventBatch] = {};
+
+    LineRequest() = default;
+    LineRequest(const LineRequest &) = delete;
+    LineRequest &operator=(const LineRequest &) = delete;
+    ~LineRequest()
+    {
+        if (chip) gpiod_chip_close(chip); // releases the line too
+    }
+
+    int open(const GpioLineSpec &spec, const char *consumer, bool output)
+    {
+        chip = gpiod_chip_open(spec.chipPath.c_str());
+        if (!chip) return errno;
+        line = gpiod_chip_get_line(chip, spec.offset);
+        if (!line) return errno;
+        int rc;
+        if (output) {
+            rc = gpiod_line_request_output(line, consumer, spec.activeLow ? 1 : 0);
+        } else {
+            const int flags = spec.pullUp ? GPIOD_LINE_REQUEST_FLAG_BIAS_PULL_UP : 0;
+            rc = gpiod_line_request_both_edges_events_flags(line, consumer, flags);
+        }
+        return rc == 0 ? 0 : errno;
+    }
+    int fd() const { return gpiod_line_event_get_fd(line); }
+    int setRaw(bool high) { return gpiod_line_set_value(line, high ? 1 : 0) == 0 ? 0 : errno; }
+    int readEdges(bool *rising, int64_t *ns, int cap)
+    {
+        const int n = gpiod_line_event_read_multiple(line, events, unsigned(cap));
+        if (n < 0) return -errno;
+        for (int i = 0; i < n; ++i) {
+            rising[i] = events[i].event_type == GPIOD_LINE_EVENT_RISING_EDGE;
+            ns[i] = int64_t(events[i].ts.tv_sec) * 1000000000 + events[i].ts.tv_nsec;
+        }
+        return n;
+    }
+};
+#endif
+
+// ---- the HAL classes -------------------------------------------------------------------
+struct GpiodTrigger::Lines : LineRequest {};
+struct GpiodLed::Lines : LineRequest {};
+
+GpiodTrigger::GpiodTrigger(const Clock &clock) : clock_(clock) {}
+GpiodTrigger::~GpiodTrigger() = default;
+void GpiodTrigger::close() { lines_.reset(); }
+
+Error GpiodTrigger::open(const GpioLineSpec &spec, const char *consumer)
+{
+    close();
+    auto lines = std::make_unique<Lines>();
+    // The request is raw (no kernel active-low): which edge is a press is decided here, the
+    // same way for both API versions.
+    if (const int err = lines->open(spec, consumer, false))
+        return fromErrno("trigger line", spec.chipPath + ":" + std::to_string(spec.offset), err);
+    activeLow_ = spec.activeLow;
+    lines_ = std::move(lines);
+    return {};
+}
+
+Result<size_t> GpiodTrigger::readEdges(ButtonEdge *out, size_t cap)
+{
+    if (!lines_) return Result<size_t>::fail(Errc::Invalid, "trigger line not open");
+    if (cap == 0) return {};
+    pollfd p{lines_->fd(), POLLIN, 0};
+    const int pr = ::poll(&p, 1, 0);
+    if (pr < 0) return Result<size_t>::fail(Errc::Io, std::string("trigger poll: ") + std::strerror(errno));
+    if (pr == 0) return {};
+    if (p.revents & (POLLERR | POLLHUP | POLLNVAL))
+        return Result<size_t>::fail(Errc::Closed, "trigger line went away");
+    bool rising[kEventBatch];
+    int64_t ns[kEventBatch];
+    const int want = cap < size_t(kEventBatch) ? int(cap) : kEventBatch;
+    const int n = lines_->readEdges(rising, ns, want);
+    if (n < 0) return Result<size_t>::fail(Errc::Io, std::string("trigger events: ") + std::strerror(-n));
+    for (int i = 0; i < n; ++i) {
+        out[i].timeMs = toClockMs(clock_, ns[i]);
+        out[i].pressed = activeLow_ ? !rising[i] : rising[i];
+    }
+    return Result<size_t>{size_t(n), {}};
+}
+
+GpiodLed::GpiodLed() = default;
+GpiodLed::~GpiodLed() { close(); }
+
+void GpiodLed::close()
+{
+    if (lines_ && on_) (void)set(false);
+    lines_.reset();
+    on_ = false;
+}
+
+Error GpiodLed::open(const GpioLineSpec &spec, const char *consumer)
+{
+    lines_.reset();
+    auto lines = std::make_unique<Lines>();
+    if (const int err = lines->open(spec, consumer, true))
+        return fromErrno("LED line", spec.chipPath + ":" + std::to_string(spec.offset), err);
+    lines_ = std::move(lines);
+    on_ = false;
+    activeLow_ = spec.activeLow;
+    return {};
+}
+
+Error GpiodLed::set(bool on)
+{
+    if (!lines_) return Error::make(Errc::Invalid, "LED line not open");
+    if (const int err = lines_->setRaw(on != activeLow_))
+        return Error::make(Errc::Io, std::string("LED line: ") + std::strerror(err));
+    on_ = on;
+    return {};
+}
+
+} // namespace icacam::hal
