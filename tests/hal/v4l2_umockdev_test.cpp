@@ -1,0 +1,317 @@
+// The V4L2 camera against a mocked /dev/video0 (umockdev): the backend's real ioctl sequence
+// (QUERYCAP, S_FMT, REQBUFS, QUERYBUF, QBUF, STREAMON, DQBUF, STREAMOFF) is answered here the
+// way a UVC driver would; the buffer memory comes from the test through the mapper seam,
+// since umockdev does not wrap mmap (PLATFORM.md). Exits 77 without the preload library.
+#include <gtest/gtest.h>
+
+#include <linux/videodev2.h>
+#include <time.h>
+#include <umockdev.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <deque>
+#include <mutex>
+#include <vector>
+
+#include "hal/file/clocks.h"
+#include "hal/v4l2/v4l2_camera.h"
+
+namespace {
+
+using namespace icacam;
+
+constexpr uint32_t kOffsetStep = 1u << 24; // buffer i's mmap offset
+
+int64_t nowNs()
+{
+    timespec ts{};
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return int64_t(ts.tv_sec) * 1000000000 + ts.tv_nsec;
+}
+
+// The driver's side: formats it accepts, its buffers and their state, frames "exposed".
+struct FakeVideo {
+    std::mutex m;
+    std::vector<uint32_t> formats{V4L2_PIX_FMT_YUYV}; // what S_FMT accepts (first = default)
+    uint32_t width = 64, height = 48;
+    std::vector<std::vector<uint8_t>> memory;
+    std::vector<bool> queued;
+    struct Frame { int64_t ns; uint8_t fill; };
+    std::deque<Frame> exposures; // frames the sensor will deliver, into the next queued buffer
+    bool streaming = false, unplugged = false;
+    uint32_t pixfmt = 0;
+    std::vector<unsigned long> seen; // request codes, in order
+};
+
+template <typename T> T *argOf(UMockdevIoctlClient *client)
+{
+    UMockdevIoctlData *arg = umockdev_ioctl_client_get_arg(client);
+    UMockdevIoctlData *d = arg ? umockdev_ioctl_data_resolve(arg, 0, sizeof(T), nullptr) : nullptr;
+    return d && size_t(d->data_len) >= sizeof(T) ? reinterpret_cast<T *>(d->data) : nullptr;
+}
+
+gboolean onIoctl(UMockdevIoctlBase *, UMockdevIoctlClient *client, gpointer user)
+{
+    auto *v = static_cast<FakeVideo *>(user);
+    std::lock_guard<std::mutex> lock(v->m);
+    const unsigned long req = umockdev_ioctl_client_get_request(client);
+    v->seen.push_back(req);
+    auto done = [&](int err) {
+        umockdev_ioctl_client_complete(client, err ? -1 : 0, err);
+        return TRUE;
+    };
+    if (v->unplugged) return done(ENODEV);
+    switch (req) {
+    case VIDIOC_QUERYCAP: {
+        auto *c = argOf<v4l2_capability>(client);
+        if (!c) return done(EFAULT);
+        *c = {};
+        std::snprintf(reinterpret_cast<char *>(c->driver), sizeof c->driver, "uvcvideo");
+        c->capabilities = V4L2_CAP_VIDEO_CAPTURE | V4L2_CAP_STREAMING | V4L2_CAP_DEVICE_CAPS;
+        c->device_caps = V4L2_CAP_VIDEO_CAPTURE | V4L2_CAP_STREAMING;
+        return done(0);
+    }
+    case VIDIOC_S_FMT: {
+        auto *f = argOf<v4l2_format>(client);
+        if (!f || f->type != V4L2_BUF_TYPE_VIDEO_CAPTURE) return done(EINVAL);
+        bool ok = false;
+        for (uint32_t cc : v->formats) ok = ok || cc == f->fmt.pix.pixelformat;
+        if (!ok) f->fmt.pix.pixelformat = v->formats.front(); // drivers adjust, not refuse
+        v->pixfmt = f->fmt.pix.pixelformat;
+        f->fmt.pix.width = std::min(f->fmt.pix.width, v->width);
+        f->fmt.pix.height = std::min(f->fmt.pix.height, v->height);
+        const uint32_t bpp = v->pixfmt == V4L2_PIX_FMT_YUYV ? 2 : 1;
+        f->fmt.pix.bytesperline = f->fmt.pix.width * bpp;
+        f->fmt.pix.sizeimage = f->fmt.pix.bytesperline * f->fmt.pix.height * (v->pixfmt == V4L2_PIX_FMT_NV12 ? 3 : 2) / 2;
+        if (v->pixfmt != V4L2_PIX_FMT_NV12) f->fmt.pix.sizeimage = f->fmt.pix.bytesperline * f->fmt.pix.height;
+        return done(0);
+    }
+    case VIDIOC_REQBUFS: {
+        auto *r = argOf<v4l2_requestbuffers>(client);
+        if (!r || r->memory != V4L2_MEMORY_MMAP) return done(EINVAL);
+        if (v->streaming) return done(EBUSY);
+        v->memory.assign(r->count, std::vector<uint8_t>(size_t(v->width) * v->height * 2));
+        v->queued.assign(r->count, false);
+        return done(0);
+    }
+    case VIDIOC_QUERYBUF:
+    case VIDIOC_QBUF: {
+        auto *b = argOf<v4l2_buffer>(client);
+        if (!b || b->index >= v->memory.size()) return done(EINVAL);
+        if (req == VIDIOC_QUERYBUF) {
+            b->length = uint32_t(v->memory[b->index].size());
+            b->m.offset = b->index * kOffsetStep;
+        } else {
+            if (v->queued[b->index]) return done(EINVAL);
+            v->queued[b->index] = true;
+        }
+        return done(0);
+    }
+    case VIDIOC_STREAMON: v->streaming = true; return done(0);
+    case VIDIOC_STREAMOFF:
+        v->streaming = false;
+        v->queued.assign(v->queued.size(), false);
+        return done(0);
+    case VIDIOC_DQBUF: {
+        auto *b = argOf<v4l2_buffer>(client);
+        if (!b) return done(EFAULT);
+        if (!v->streaming) return done(EINVAL);
+        size_t i = 0;
+        while (i < v->queued.size() && !v->queued[i]) ++i;
+        if (v->exposures.empty() || i == v->queued.size()) return done(EAGAIN);
+        const FakeVideo::Frame fr = v->exposures.front();
+        v->exposures.pop_front();
+        v->queued[i] = false;
+        std::fill(v->memory[i].begin(), v->memory[i].end(), fr.fill);
+        b->index = uint32_t(i);
+        b->bytesused = v->width * v->height * 2;
+        b->flags = V4L2_BUF_FLAG_TIMESTAMP_MONOTONIC;
+        b->timestamp.tv_sec = fr.ns / 1000000000;
+        b->timestamp.tv_usec = (fr.ns % 1000000000) / 1000;
+        return done(0);
+    }
+    default:
+        return done(ENOTTY);
+    }
+}
+
+// The test's side of mmap: buffer i's memory for offset i × kOffsetStep.
+struct TestMapper final : hal::V4l2BufferMapper {
+    FakeVideo *video = nullptr;
+    int mapped = 0;
+    void *map(int, size_t length, uint32_t offset) override
+    {
+        std::lock_guard<std::mutex> lock(video->m);
+        const size_t i = offset / kOffsetStep;
+        if (i >= video->memory.size() || length > video->memory[i].size()) return nullptr;
+        ++mapped;
+        return video->memory[i].data();
+    }
+    void unmap(void *, size_t) override { --mapped; }
+};
+
+class V4l2Mock : public ::testing::Test {
+protected:
+    void SetUp() override
+    {
+        bed_ = umockdev_testbed_new();
+        GError *err = nullptr;
+        const char *dev = "P: /devices/pci0000:00/usb1/1-1/1-1:1.0/video4linux/video0\n"
+                          "N: video0\n"
+                          "E: SUBSYSTEM=video4linux\n"
+                          "E: DEVNAME=/dev/video0\n"
+                          "A: dev=81:0\\n\n"
+                          "A: name=Mock UVC Camera\n";
+        ASSERT_TRUE(umockdev_testbed_add_from_string(bed_, dev, &err)) << (err ? err->message : "");
+        handler_ = umockdev_ioctl_base_new();
+        g_signal_connect(handler_, "handle-ioctl", G_CALLBACK(onIoctl), &video_);
+        ASSERT_TRUE(umockdev_testbed_attach_ioctl(bed_, "/dev/video0", handler_, &err)) << (err ? err->message : "");
+        mapper_.video = &video_;
+    }
+    void TearDown() override
+    {
+        if (handler_) g_object_unref(handler_);
+        if (bed_) g_object_unref(bed_);
+    }
+    void expose(int64_t ns, uint8_t fill)
+    {
+        std::lock_guard<std::mutex> lock(video_.m);
+        video_.exposures.push_back({ns, fill});
+    }
+
+    UMockdevTestbed *bed_ = nullptr;
+    UMockdevIoctlBase *handler_ = nullptr;
+    FakeVideo video_;
+    TestMapper mapper_;
+    hal::SystemClock clock_;
+};
+
+TEST_F(V4l2Mock, NegotiatesAFormatTheDriverHasAndStreams)
+{
+    hal::V4l2Camera cam(clock_, {"/dev/video0", 3}, &mapper_);
+    hal::Error e = cam.configure({vision::PixelFormat::Grey8, 640, 480});
+    ASSERT_TRUE(e.ok()) << e.message;
+    // GREY asked for, the driver only has YUYV: taken, luma viewed with a pixel step of 2.
+    EXPECT_EQ(cam.format(), vision::PixelFormat::YUYV);
+    EXPECT_EQ(cam.width(), 64);
+    EXPECT_EQ(cam.stride(), 128);
+    EXPECT_EQ(mapper_.mapped, 3);
+    {
+        std::lock_guard<std::mutex> lock(video_.m);
+        EXPECT_TRUE(video_.streaming);
+        const std::vector<unsigned long> start{VIDIOC_QUERYCAP, VIDIOC_S_FMT, VIDIOC_REQBUFS,
+                                               VIDIOC_QUERYBUF, VIDIOC_QBUF, VIDIOC_QUERYBUF, VIDIOC_QBUF,
+                                               VIDIOC_QUERYBUF, VIDIOC_QBUF, VIDIOC_STREAMON};
+        EXPECT_EQ(video_.seen, start);
+    }
+}
+
+TEST_F(V4l2Mock, RefusesACameraWithoutAnInPlaceFormat)
+{
+    {
+        std::lock_guard<std::mutex> lock(video_.m);
+        video_.formats = {V4L2_PIX_FMT_MJPEG};
+    }
+    hal::V4l2Camera cam(clock_, {"/dev/video0", 2}, &mapper_);
+    hal::Error e = cam.configure({vision::PixelFormat::Grey8, 640, 480});
+    EXPECT_EQ(e.code, hal::Errc::BadFormat) << e.message;
+    std::lock_guard<std::mutex> lock(video_.m);
+    EXPECT_EQ(std::count(video_.seen.begin(), video_.seen.end(), VIDIOC_S_FMT), 3); // GREY, NV12, YUYV
+    EXPECT_FALSE(video_.streaming);
+}
+
+TEST_F(V4l2Mock, SkipsFramesExposedBeforeTheTriggerAndRecyclesBuffers)
+{
+    hal::V4l2Camera cam(clock_, {"/dev/video0", 2}, &mapper_);
+    ASSERT_TRUE(cam.configure({vision::PixelFormat::YUYV, 640, 480}).ok());
+    const int64_t t = nowNs();
+    expose(t - 50000000, 11); // stale: exposed 50 ms before capture() was called
+    expose(t + 1000000000, 22); // after the trigger
+    hal::CapturedFrame frame;
+    hal::Error e = cam.capture(500, &frame);
+    ASSERT_TRUE(e.ok()) << e.message;
+    EXPECT_EQ(frame.view.format, vision::PixelFormat::YUYV);
+    ASSERT_NE(frame.view.data, nullptr);
+    EXPECT_EQ(frame.view.data[0], 22);
+    EXPECT_EQ(frame.view.stride, 128);
+    // Ten more frames with two buffers: only works if every buffer goes back to the driver.
+    for (int i = 0; i < 10; ++i) {
+        expose(nowNs() + 1000000000, uint8_t(100 + i));
+        ASSERT_TRUE(cam.capture(500, &frame).ok()) << i;
+        EXPECT_EQ(frame.view.data[0], 100 + i);
+    }
+}
+
+TEST_F(V4l2Mock, CaptureTimesOutWithoutBlocking)
+{
+    hal::V4l2Camera cam(clock_, {"/dev/video0", 2}, &mapper_);
+    ASSERT_TRUE(cam.configure({vision::PixelFormat::YUYV, 640, 480}).ok());
+    hal::CapturedFrame frame;
+    const int64_t t0 = clock_.monotonicMs();
+    hal::Error e = cam.capture(150, &frame);
+    const int64_t took = clock_.monotonicMs() - t0;
+    EXPECT_EQ(e.code, hal::Errc::Timeout) << e.message;
+    EXPECT_GE(took, 140);
+    EXPECT_LT(took, 1000);
+}
+
+TEST_F(V4l2Mock, UnplugIsAnErrorAndCaptureResumesAfterReplug)
+{
+    hal::V4l2Camera cam(clock_, {"/dev/video0", 2}, &mapper_);
+    ASSERT_TRUE(cam.configure({vision::PixelFormat::YUYV, 640, 480}).ok());
+    hal::CapturedFrame frame;
+    {
+        std::lock_guard<std::mutex> lock(video_.m);
+        video_.unplugged = true;
+    }
+    hal::Error e = cam.capture(200, &frame);
+    EXPECT_EQ(e.code, hal::Errc::Closed) << e.message;
+    EXPECT_NE(e.message.find("unplugged"), std::string::npos) << e.message;
+    EXPECT_EQ(mapper_.mapped, 0); // everything released
+    // Still gone: a clear error, no hang.
+    e = cam.capture(200, &frame);
+    EXPECT_FALSE(e.ok());
+    {
+        std::lock_guard<std::mutex> lock(video_.m);
+        video_.unplugged = false;
+        video_.streaming = false;
+    }
+    expose(nowNs() + 1000000000, 77);
+    e = cam.capture(500, &frame);
+    ASSERT_TRUE(e.ok()) << e.message;
+    EXPECT_EQ(frame.view.data[0], 77);
+}
+
+TEST_F(V4l2Mock, NoCameraIsNotFound)
+{
+    hal::V4l2Camera cam(clock_, {"/dev/video5", 2}, &mapper_);
+    hal::Error e = cam.configure({vision::PixelFormat::YUYV, 640, 480});
+    EXPECT_EQ(e.code, hal::Errc::NotFound) << e.message;
+    hal::CapturedFrame frame;
+    EXPECT_EQ(cam.capture(10, &frame).code, hal::Errc::NotFound);
+}
+
+bool preloadLoaded()
+{
+    std::FILE *f = std::fopen("/proc/self/maps", "r");
+    if (!f) return false;
+    char line[512];
+    bool found = false;
+    while (!found && std::fgets(line, sizeof line, f)) found = std::strstr(line, "libumockdev-preload") != nullptr;
+    std::fclose(f);
+    return found;
+}
+
+} // namespace
+
+int main(int argc, char **argv)
+{
+    if (!preloadLoaded()) {
+        std::fprintf(stderr, "v4l2_umockdev_test: not under umockdev (LD_PRELOAD=libumockdev-preload.so.0): skipped\n");
+        return 77;
+    }
+    ::testing::InitGoogleTest(&argc, argv);
+    return RUN_ALL_TESTS();
+}
