@@ -22,6 +22,12 @@
 #include "hal/file/png_display.h"
 #include "hal/file/pty_serial.h"
 #include "vision/paper_model.h"
+#ifdef ICACAM_HAVE_GPIOD
+#include "hal/gpiod/gpiod_lines.h"
+#endif
+#ifdef ICACAM_HAVE_V4L2
+#include "hal/v4l2/v4l2_camera.h"
+#endif
 
 namespace {
 
@@ -85,9 +91,23 @@ int main(int argc, char **argv)
         return true;
     };
     bool ok = issues.empty();
-    ok = onlyFile("camera.backend", cfg.cameraBackend, "file") && ok;
-    ok = onlyFile("trigger.backend", cfg.triggerBackend, "file") && ok;
-    ok = onlyFile("led.backend", cfg.ledBackend, "file") && ok;
+    // Hardware backends compiled into this build (hal/gpiod, hal/v4l2: issue 4).
+    auto built = [&](const char *key, const std::string &v, const char *hw, bool have) {
+        return (have && v == hw) || onlyFile(key, v, "file");
+    };
+#ifdef ICACAM_HAVE_GPIOD
+    constexpr bool kGpiod = true;
+#else
+    constexpr bool kGpiod = false;
+#endif
+#ifdef ICACAM_HAVE_V4L2
+    constexpr bool kV4l2 = true;
+#else
+    constexpr bool kV4l2 = false;
+#endif
+    ok = built("camera.backend", cfg.cameraBackend, "v4l2", kV4l2) && ok;
+    ok = built("trigger.backend", cfg.triggerBackend, "gpiod", kGpiod) && ok;
+    ok = built("led.backend", cfg.ledBackend, "gpiod", kGpiod) && ok;
     ok = (cfg.displayBackend == "none" || onlyFile("display.backend", cfg.displayBackend, "file")) && ok;
     ok = onlyFile("serial.backend", cfg.serialBackend, "pty") && ok;
     if (!ok) return kExitConfig;
@@ -96,11 +116,37 @@ int main(int argc, char **argv)
     const std::string base = std::filesystem::path(configPath).parent_path().string();
     hal::SystemClock clock;
     hal::FileCamera camera(clock, {resolve(base, cfg.cameraFrames), cfg.cameraStrideAlign, cfg.cameraLoop != 0, 0});
-    hal::FileTrigger trigger(clock);
-    if (!cfg.triggerScript.empty())
-        if (hal::Error e = trigger.open(resolve(base, cfg.triggerScript)); !e.ok()) return unavailable("trigger", e);
-    hal::FileLed led(clock);
-    if (hal::Error e = led.open(resolve(base, cfg.ledLog)); !e.ok()) return unavailable("LED", e);
+    hal::FileTrigger fileTrigger(clock);
+    if (cfg.triggerBackend == "file" && !cfg.triggerScript.empty())
+        if (hal::Error e = fileTrigger.open(resolve(base, cfg.triggerScript)); !e.ok()) return unavailable("trigger", e);
+    hal::FileLed fileLed(clock);
+    if (cfg.ledBackend == "file")
+        if (hal::Error e = fileLed.open(resolve(base, cfg.ledLog)); !e.ok()) return unavailable("LED", e);
+    hal::Camera *cameraUsed = &camera;
+    hal::TriggerButton *triggerUsed = &fileTrigger;
+    hal::LedRing *ledUsed = &fileLed;
+#ifdef ICACAM_HAVE_V4L2
+    // A UVC camera: the udev rule (deploy/) names it /dev/icacam-camera; else the first one.
+    const std::string videoNode = std::filesystem::exists("/dev/icacam-camera") ? "/dev/icacam-camera" : "/dev/video0";
+    hal::V4l2Camera v4l2Camera(clock, {videoNode, 4});
+    if (cfg.cameraBackend == "v4l2") cameraUsed = &v4l2Camera;
+#endif
+#ifdef ICACAM_HAVE_GPIOD
+    // Button to ground with the SoC's pull-up (pressed = low); LED ring through a driver
+    // transistor (on = high). docs/hardware.md has the wiring.
+    hal::GpiodTrigger gpioTrigger(clock);
+    if (cfg.triggerBackend == "gpiod") {
+        if (hal::Error e = gpioTrigger.open({cfg.gpioChip, unsigned(cfg.triggerLine), true, true}); !e.ok())
+            return unavailable("trigger", e);
+        triggerUsed = &gpioTrigger;
+    }
+    hal::GpiodLed gpioLed;
+    if (cfg.ledBackend == "gpiod") {
+        if (hal::Error e = gpioLed.open({cfg.gpioChip, unsigned(cfg.ledLine), false, false}); !e.ok())
+            return unavailable("LED", e);
+        ledUsed = &gpioLed;
+    }
+#endif
     hal::PngDisplay display;
     if (cfg.displayBackend == "file")
         if (hal::Error e = display.open(resolve(base, cfg.displayDir), cfg.displayScale); !e.ok())
@@ -115,7 +161,7 @@ int main(int argc, char **argv)
         hal::Error show(const hal::MonoBitmap &) override { return {}; }
     } noDisplay;
     vision::PaperModel model;
-    fw::Device device({camera, trigger, led, cfg.displayBackend == "none" ? static_cast<hal::Display &>(noDisplay) : display,
+    fw::Device device({*cameraUsed, *triggerUsed, *ledUsed, cfg.displayBackend == "none" ? static_cast<hal::Display &>(noDisplay) : display,
                        serial, storage, clock},
                       cfg, model);
     std::signal(SIGTERM, onSignal);
