@@ -22,7 +22,7 @@ std::map<std::pair<double, double>, double> baseU()
     std::map<std::pair<double, double>, std::pair<double, int>> acc;
     for (const auto &r : host::fe::readSweepCsv(kCsv))
         if (r.status == "ok" && std::fabs(r.reduction - t::kReduction) < 1e-6 && r.eMpa == 210000 &&
-            r.d0 == 10 && r.h0 == 15) {
+            r.d0 == 10 && r.h0 == 15 && r.kMpa >= t::kKMinMpa && r.kMpa <= t::kKMaxMpa) {
             auto &a = acc[{r.n, r.mu}];
             a.first += r.uInterp;
             ++a.second;
