@@ -28,6 +28,12 @@
 #ifdef ICACAM_HAVE_V4L2
 #include "hal/v4l2/v4l2_camera.h"
 #endif
+#ifdef ICACAM_HAVE_SSD1306
+#include "hal/ssd1306/ssd1306_display.h"
+#endif
+#ifdef ICACAM_HAVE_TERMIOS
+#include "hal/termios/termios_serial.h"
+#endif
 
 namespace {
 
@@ -108,8 +114,18 @@ int main(int argc, char **argv)
     ok = built("camera.backend", cfg.cameraBackend, "v4l2", kV4l2) && ok;
     ok = built("trigger.backend", cfg.triggerBackend, "gpiod", kGpiod) && ok;
     ok = built("led.backend", cfg.ledBackend, "gpiod", kGpiod) && ok;
-    ok = (cfg.displayBackend == "none" || onlyFile("display.backend", cfg.displayBackend, "file")) && ok;
-    ok = onlyFile("serial.backend", cfg.serialBackend, "pty") && ok;
+#ifdef ICACAM_HAVE_SSD1306
+    constexpr bool kSsd1306 = true;
+#else
+    constexpr bool kSsd1306 = false;
+#endif
+#ifdef ICACAM_HAVE_TERMIOS
+    constexpr bool kTermios = true;
+#else
+    constexpr bool kTermios = false;
+#endif
+    ok = (cfg.displayBackend == "none" || built("display.backend", cfg.displayBackend, "ssd1306", kSsd1306)) && ok;
+    ok = ((kTermios && cfg.serialBackend == "uart") || onlyFile("serial.backend", cfg.serialBackend, "pty")) && ok;
     if (!ok) return kExitConfig;
     if (checkOnly) { std::printf("%s: ok\n", configPath.c_str()); return 0; }
 
@@ -152,7 +168,30 @@ int main(int argc, char **argv)
         if (hal::Error e = display.open(resolve(base, cfg.displayDir), cfg.displayScale); !e.ok())
             return unavailable("display", e);
     hal::PtySerial serial;
-    if (hal::Error e = serial.open(resolve(base, cfg.serialLink)); !e.ok()) return unavailable("serial", e);
+    if (cfg.serialBackend == "pty")
+        if (hal::Error e = serial.open(resolve(base, cfg.serialLink)); !e.ok()) return unavailable("serial", e);
+    hal::SerialPort *serialUsed = &serial;
+    std::string serialName = serial.slavePath() + " (" + resolve(base, cfg.serialLink) + ")";
+#ifdef ICACAM_HAVE_TERMIOS
+    hal::TermiosSerial uart;
+    if (cfg.serialBackend == "uart") {
+        if (hal::Error e = uart.open(cfg.serialDevice, cfg.serialBaud); !e.ok()) return unavailable("serial", e);
+        serialUsed = &uart;
+        serialName = cfg.serialDevice + " at " + std::to_string(cfg.serialBaud) + " baud";
+    }
+#endif
+    hal::Display *displayUsed = &display;
+#ifdef ICACAM_HAVE_SSD1306
+    hal::I2cDevBus i2c;
+    hal::Ssd1306Display oled(i2c);
+    if (cfg.displayBackend == "ssd1306") {
+        // A display that does not answer now is reported by each show(), not fatal: the
+        // measurement still goes out on serial and into the journal.
+        if (hal::Error e = i2c.open(cfg.i2cBus, cfg.i2cAddress); !e.ok()) return unavailable("display", e);
+        if (hal::Error e = oled.init(); !e.ok()) std::fprintf(stderr, "icacam-fw: display: %s\n", e.message.c_str());
+        displayUsed = &oled;
+    }
+#endif
     hal::FolderStorage storage;
     if (hal::Error e = storage.open(resolve(base, cfg.journalDir), uint64_t(cfg.journalQuotaMb) << 20); !e.ok())
         return unavailable("journal", e);
@@ -161,15 +200,14 @@ int main(int argc, char **argv)
         hal::Error show(const hal::MonoBitmap &) override { return {}; }
     } noDisplay;
     vision::PaperModel model;
-    fw::Device device({*cameraUsed, *triggerUsed, *ledUsed, cfg.displayBackend == "none" ? static_cast<hal::Display &>(noDisplay) : display,
-                       serial, storage, clock},
+    fw::Device device({*cameraUsed, *triggerUsed, *ledUsed, cfg.displayBackend == "none" ? static_cast<hal::Display &>(noDisplay) : *displayUsed,
+                       *serialUsed, storage, clock},
                       cfg, model);
     std::signal(SIGTERM, onSignal);
     std::signal(SIGINT, onSignal);
     std::signal(SIGPIPE, SIG_IGN);
     if (hal::Error e = device.start(); !e.ok()) return unavailable("start", e);
-    std::fprintf(stderr, "icacam-fw: running; serial on %s (%s)\n", serial.slavePath().c_str(),
-                 resolve(base, cfg.serialLink).c_str());
+    std::fprintf(stderr, "icacam-fw: running; serial on %s\n", serialName.c_str());
     while (!gStop) {
         device.tick();
         clock.sleepMs(5);
