@@ -53,7 +53,8 @@ double medianOf(double *v, int n)
 } // namespace
 
 bool fitBoundary(const EdgeSample *points, const double *radiusPx, const bool *valid, int n,
-                 double centreX, double centreY, const FitOptions &opt, BoundaryFit *out)
+                 double centreX, double centreY, const FitOptions &opt, BoundaryFit *out,
+                 double *curveOut)
 {
     (void)points;
     if (n > kMaxRays || n < 8) return false;
@@ -94,7 +95,7 @@ bool fitBoundary(const EdgeSample *points, const double *radiusPx, const bool *v
                                 std::max(1, used / 8), (n - 1) / 2});
         if (used < 8) return false;
         // A few imputation sweeps per pass; more where many rays are missing.
-        const int sweeps = used == n ? 1 : (pass == 2 ? 3 : 1);
+        const int sweeps = used == n ? 1 : (pass == 2 ? 2 : 1);
         for (int sweep = 0; sweep < sweeps; ++sweep) {
             for (int i = 0; i < n; ++i) filled[i] = keep[i] ? radiusPx[i] : curve[i];
             BoundaryFit g;
@@ -144,6 +145,8 @@ bool fitBoundary(const EdgeSample *points, const double *radiusPx, const bool *v
     f.centreX = centreX + f.a[1];
     f.centreY = centreY + f.b[1];
     *out = f;
+    if (curveOut)
+        for (int i = 0; i < n; ++i) curveOut[i] = curve[i];
     return true;
 }
 

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <type_traits>
 
 namespace icacam::vision {
 
@@ -49,15 +50,23 @@ int sampleRay(const LumaView &v, const RaySpec &ray, int count, uint16_t *out)
     const int32_t sx = dx.raw(), sy = dy.raw();
     const uint8_t *base = v.data;
     const size_t stride = size_t(v.stride), step = size_t(v.pixelStep);
-    for (int i = 0; i < count; ++i, x += sx, y += sy) {
-        const int32_t xq = (x + 128) >> 8, yq = (y + 128) >> 8;
-        const uint32_t fx = uint32_t(xq & 255), fy = uint32_t(yq & 255);
-        const uint8_t *p = base + size_t(yq >> 8) * stride + size_t(xq >> 8) * step;
-        const uint8_t *q = p + stride;
-        const uint32_t top = p[0] * (256 - fx) + p[step] * fx;
-        const uint32_t bot = q[0] * (256 - fx) + q[step] * fx;
-        out[i] = uint16_t((top * (256 - fy) + bot * fy + 128) >> 8);
-    }
+    // Rounding to 1/256 px is folded into the start position (+128 in Q16.16).
+    x += 128;
+    y += 128;
+    auto loop = [&](auto pixelStep) {
+        for (int i = 0; i < count; ++i, x += sx, y += sy) {
+            const int32_t xq = x >> 8, yq = y >> 8;
+            const uint32_t fx = uint32_t(xq & 255), fy = uint32_t(yq & 255);
+            const uint8_t *p = base + size_t(yq >> 8) * stride + size_t(xq >> 8) * pixelStep;
+            const uint8_t *q = p + stride;
+            const uint32_t top = p[0] * (256 - fx) + p[pixelStep] * fx;
+            const uint32_t bot = q[0] * (256 - fx) + q[pixelStep] * fx;
+            out[i] = uint16_t((top * (256 - fy) + bot * fy + 128) >> 8);
+        }
+    };
+    // A compile-time pixel step of 1 (grey, NV12, YUV420) saves a multiply per sample.
+    if (step == 1) loop(std::integral_constant<size_t, 1>{});
+    else loop(step);
     return count;
 }
 

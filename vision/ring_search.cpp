@@ -190,7 +190,7 @@ void RingSearch::sampleWindow(const double *start, double step, int count, int b
 
 bool RingSearch::locateOnRays(int sign, const double *loPx, const double *hiPx, int32_t minStrength,
                               EdgeSample *pts, bool interior, double reachPx, BoundaryFit *fit,
-                              double *contrastOut)
+                              double *curveOut, double *contrastOut)
 {
     double radius[kRays], steps[kRays];
     bool valid[kRays];
@@ -213,8 +213,10 @@ bool RingSearch::locateOnRays(int sign, const double *loPx, const double *hiPx, 
             row[j + reach] != kOutsideFrame)
             steps[nSteps++] = (double(row[j + reach]) - double(row[j - reach])) / 256.0;
     }
-    if (!fitBoundary(pts, radius, valid, kRays, cx, cy, FitOptions{}, fit)) return false;
-    for (int i = 0; i < kRays; ++i) pts[i].valid = pts[i].valid && std::fabs(radius[i] - fit->radiusAt(rayCos_[i], raySin_[i])) <= std::max(0.75, 3 * fit->scatterPx / 1.0);
+    if (!fitBoundary(pts, radius, valid, kRays, cx, cy, FitOptions{}, fit, curveOut)) return false;
+    // Points the robust fit rejected are shown as such (overlays, diagnostics).
+    const double keep = std::max(0.75, 3 * fit->scatterPx);
+    for (int i = 0; i < kRays; ++i) pts[i].valid = pts[i].valid && std::fabs(radius[i] - curveOut[i]) <= keep;
     if (nSteps) {
         std::nth_element(steps, steps + nSteps / 2, steps + nSteps);
         *contrastOut = steps[nSteps / 2];
@@ -222,7 +224,7 @@ bool RingSearch::locateOnRays(int sign, const double *loPx, const double *hiPx, 
     return true;
 }
 
-double RingSearch::silhouetteFromRays(const BoundaryFit &outer)
+double RingSearch::silhouetteFromRays(const double *outerR)
 {
     constexpr int kCoarse = EndFaceAnalyzer::kCoarseRays;
     const double rA = EndFaceAnalyzer::kCoarseStart * r0, rB = EndFaceAnalyzer::kCoarseEnd * r0;
@@ -245,7 +247,7 @@ double RingSearch::silhouetteFromRays(const BoundaryFit &outer)
         // Step across r: mean of the w samples outside minus the w samples inside (Q8).
         auto stepAt = [&](int j) { return (prefix[j + 1 + w] - prefix[j + 1]) - (prefix[j] - prefix[j - w]); };
         const int fineIdx = i * (kRays / kCoarse);
-        const double ro = outer.radiusAt(rayCos_[fineIdx], raySin_[fineIdx]);
+        const double ro = outerR[fineIdx];
         const int lo = std::max(w, int((ro + 0.04 * r0 - rA) / step));
         const int hi = count - w - 2;
         if (hi - lo < 2 * w) continue;
@@ -285,7 +287,7 @@ ErrorCode RingSearch::run(Measurement *m)
 
     // Stage 1, the contact edge on every fine ray: a window about the mean profile's radius
     // wide enough for its departure from a circle, short of the silhouette.
-    const double margin = std::max(8.0, 0.05 * r0);
+    const double margin = std::max(8.0, 0.035 * r0);
     const double outerHi = me.rMax > 0 ? std::min(margin, 0.5 * (me.rMax - me.rOuter)) : margin;
     const double step = 1.0;
     double start[kRays];
@@ -296,22 +298,22 @@ ErrorCode RingSearch::run(Measurement *m)
 
     double lo[kRays], hi[kRays];
     BoundaryFit outer, inner;
+    double outerR[kRays], innerR[kRays]; // the fitted curves at every fine ray
     double contrastOuter = 0, contrastInner = 0;
     for (int i = 0; i < kRays; ++i) {
         lo[i] = me.rOuter - margin;
         hi[i] = me.rOuter + outerHi;
     }
     const int32_t outerMin = std::max<int32_t>(8, int32_t(0.3 * me.strengthOuter));
-    if (!locateOnRays(me.signOuter, lo, hi, outerMin, outerPts, false, 3.0, &outer, &contrastOuter) ||
+    if (!locateOnRays(me.signOuter, lo, hi, outerMin, outerPts, false, 3.0, &outer, outerR, &contrastOuter) ||
         outer.coverage < 0.3)
         return ErrorCode::OuterEdgeNotFound;
     // Pass 2: close to the fitted curve, so a stain edge nearby cannot win.
     for (int i = 0; i < kRays; ++i) {
-        const double r = outer.radiusAt(rayCos_[i], raySin_[i]);
-        lo[i] = r - 3.0;
-        hi[i] = r + 3.0;
+        lo[i] = outerR[i] - 3.0;
+        hi[i] = outerR[i] + 3.0;
     }
-    if (!locateOnRays(me.signOuter, lo, hi, outerMin, outerPts, false, 3.0, &outer, &contrastOuter) ||
+    if (!locateOnRays(me.signOuter, lo, hi, outerMin, outerPts, false, 3.0, &outer, outerR, &contrastOuter) ||
         outer.coverage < 0.3)
         return ErrorCode::OuterEdgeNotFound;
 
@@ -328,7 +330,7 @@ ErrorCode RingSearch::run(Measurement *m)
         uint16_t row[kSpan];
         for (int i = 0; i < kRays; i += 4) {
             if (!outerPts[i].valid) continue;
-            const double ro = outer.radiusAt(rayCos_[i], raySin_[i]);
+            const double ro = outerR[i];
             RaySpec ray{Q16_16::fromDouble(cx), Q16_16::fromDouble(cy), rayCosQ_[i], raySinQ_[i],
                         Q16_16::fromDouble(ro - K), Q16_16::fromDouble(1.0)};
             sampleRay(*frame, ray, K + M + 1, row);
@@ -408,24 +410,24 @@ ErrorCode RingSearch::run(Measurement *m)
     }
     if (boxV <= 0) return ErrorCode::InnerEdgeNotFound;
     const double uGuess = -bestK * step;
-    const double half = std::max(3.0, std::min(0.04 * r0, 0.5 * uGuess));
+    const double half = std::max(3.0, std::min(0.025 * r0, 0.5 * uGuess));
     const int32_t innerStrength = std::max<int32_t>(W ? 4 : 6, int32_t(0.3 * boxV));
     const double reach = std::max(1.0, std::min(3.0, 0.5 * uGuess));
     // Stage 3, the original face edge on every fine ray: a window following the contact
     // edge at the named offset.
     const int innerCount = std::min(kMaxFine, int(2 * half) + 12 + 2 * W);
     for (int i = 0; i < kRays; ++i)
-        start[i] = outer.radiusAt(rayCos_[i], raySin_[i]) - uGuess - half - 5 - W;
+        start[i] = outerR[i] - uGuess - half - 5 - W;
     sampleWindow(start, step, innerCount, W, m);
     for (int pass = 0; pass < 2; ++pass) {
         for (int i = 0; i < kRays; ++i) {
-            const double ro = outer.radiusAt(rayCos_[i], raySin_[i]);
-            const double c = pass == 0 ? ro - uGuess : inner.radiusAt(rayCos_[i], raySin_[i]);
+            const double ro = outerR[i];
+            const double c = pass == 0 ? ro - uGuess : innerR[i];
             const double h = pass == 0 ? half : 2.5;
             lo[i] = c - h;
             hi[i] = std::min(c + h, ro - (W ? 1.0 + W : 2.0));
         }
-        if (!locateOnRays(innerSign, lo, hi, innerStrength, innerPts, true, reach, &inner,
+        if (!locateOnRays(innerSign, lo, hi, innerStrength, innerPts, true, reach, &inner, innerR,
                           &contrastInner) ||
             inner.coverage < 0.25)
             return ErrorCode::InnerEdgeNotFound;
@@ -438,7 +440,7 @@ ErrorCode RingSearch::run(Measurement *m)
     m->outer = outer;
     // The silhouette per coarse ray refines the mean profile's estimate (the mean profile
     // blurs a weak barrel/background step and can name a highlight's flank instead).
-    const double perRay = silhouetteFromRays(outer);
+    const double perRay = silhouetteFromRays(outerR);
     m->rMaxPx = perRay > 0 ? perRay : me.rMax;
     m->innerPoints = innerPts;
     m->outerPoints = outerPts;

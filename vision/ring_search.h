@@ -39,12 +39,12 @@ struct RingSearch {
     // Per ray, the strongest edge of `sign` between loPx[i] and hiPx[i]; then the fit.
     bool locateOnRays(int sign, const double *loPx, const double *hiPx, int32_t minStrength,
                       EdgeSample *pts, bool interior, double reachPx, BoundaryFit *fit,
-                      double *contrastOut);
+                      double *curveOut, double *contrastOut);
     // Samples every fine ray from start[i] (pixels) and fills the smoothed derivative rows.
     // boxHalf > 0: the rows hold a box step detector of that half-width instead.
     void sampleWindow(const double *start, double step, int count, int boxHalf, Measurement *m);
     // Silhouette R_max from the coarse rays, outside the fitted contact edge; 0 if unclear.
-    double silhouetteFromRays(const BoundaryFit &outer);
+    double silhouetteFromRays(const double *outerR);
 
     double fineStart_[kMaxRayTable] = {}, fineStep_ = 1;
     Q2_14 rayCosQ_[kMaxRayTable] = {}, raySinQ_[kMaxRayTable] = {};

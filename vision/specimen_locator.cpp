@@ -92,13 +92,21 @@ CentreEstimate SpecimenLocator::locate(const LumaView &v, double rMinPx, double 
             }
         }
 
-    // Peak of the 3×3 sums, then the vote-weighted centroid around it.
+    // Peak of the 3×3 sums, then the vote-weighted centroid around it. A cell below a
+    // quarter of the highest single cell cannot hold the best 3×3 sum's centre in practice
+    // (the peak's cell carries the most votes of its block), so it is skipped.
     uint64_t sum = 0;
+    uint16_t top = 0;
+    for (int y = 1; y < H - 1; ++y)
+        for (int x = 1; x < W - 1; ++x) {
+            sum += acc[y * W + x];
+            top = std::max(top, acc[y * W + x]);
+        }
     int best = -1, bx = 0, by = 0;
     for (int y = 1; y < H - 1; ++y)
         for (int x = 1; x < W - 1; ++x) {
             const uint16_t *a = acc + y * W + x;
-            sum += a[0];
+            if (a[0] * 4 < top) continue;
             const int s = a[-W - 1] + a[-W] + a[-W + 1] + a[-1] + a[0] + a[1] + a[W - 1] + a[W] + a[W + 1];
             if (s > best) { best = s; bx = x; by = y; }
         }
