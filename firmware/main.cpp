@@ -31,6 +31,9 @@
 #ifdef ICACAM_HAVE_SSD1306
 #include "hal/ssd1306/ssd1306_display.h"
 #endif
+#ifdef ICACAM_HAVE_LIBCAMERA
+#include "hal/libcamera/libcamera_camera.h"
+#endif
 #ifdef ICACAM_HAVE_TERMIOS
 #include "hal/termios/termios_serial.h"
 #endif
@@ -111,7 +114,12 @@ int main(int argc, char **argv)
 #else
     constexpr bool kV4l2 = false;
 #endif
-    ok = built("camera.backend", cfg.cameraBackend, "v4l2", kV4l2) && ok;
+#ifdef ICACAM_HAVE_LIBCAMERA
+    constexpr bool kLibcamera = true;
+#else
+    constexpr bool kLibcamera = false;
+#endif
+    ok = ((kLibcamera && cfg.cameraBackend == "libcamera") || built("camera.backend", cfg.cameraBackend, "v4l2", kV4l2)) && ok;
     ok = built("trigger.backend", cfg.triggerBackend, "gpiod", kGpiod) && ok;
     ok = built("led.backend", cfg.ledBackend, "gpiod", kGpiod) && ok;
 #ifdef ICACAM_HAVE_SSD1306
@@ -146,6 +154,11 @@ int main(int argc, char **argv)
     const std::string videoNode = std::filesystem::exists("/dev/icacam-camera") ? "/dev/icacam-camera" : "/dev/video0";
     hal::V4l2Camera v4l2Camera(clock, {videoNode, 4});
     if (cfg.cameraBackend == "v4l2") cameraUsed = &v4l2Camera;
+#endif
+#ifdef ICACAM_HAVE_LIBCAMERA
+    // A CSI camera: fixed exposure and gain, locked colour gains (LibcameraOptions defaults).
+    hal::LibcameraCamera csiCamera(clock, {});
+    if (cfg.cameraBackend == "libcamera") cameraUsed = &csiCamera;
 #endif
 #ifdef ICACAM_HAVE_GPIOD
     // Button to ground with the SoC's pull-up (pressed = low); LED ring through a driver
