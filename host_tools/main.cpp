@@ -6,6 +6,7 @@
 
 #include "calibrate_command.h"
 #include "fe/fe_command.h"
+#include "loop/loop_command.h"
 #include "measure_command.h"
 #include "synth_command.h"
 
@@ -17,6 +18,7 @@ const char *kHelp =
     "  synth     render synthetic end-face images with ground truth\n"
     "  calibrate camera intrinsics, distortion and fixture pose from board photos\n"
     "  fe        CalculiX upsetting runs, sweeps and the μ model built from them\n"
+    "  loop      residuals against measured records: rank causes, correct, report\n"
     "Run 'icacam <command> --help' for the options of one command.\n";
 }
 
@@ -30,6 +32,7 @@ int main(int argc, char **argv)
         if (cmd == "synth") return icacam::host::synthCommand(args);
         if (cmd == "calibrate") return icacam::host::calibrateCommand(args);
         if (cmd == "fe") return icacam::host::feCommand(args);
+        if (cmd == "loop") return icacam::host::loopCommand(args);
         if (cmd == "-h" || cmd == "--help" || cmd == "help") { std::cout << kHelp; return 0; }
         std::cerr << "icacam: unknown command '" << cmd << "'\n" << kHelp;
         return 2;

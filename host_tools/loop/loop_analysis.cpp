@@ -1,0 +1,362 @@
+#include "loop_analysis.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <random>
+#include <set>
+
+#include "manifest.h"
+
+namespace icacam::host::loop {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// Solves A x = b (row-major, n×n) by Gaussian elimination with partial pivoting.
+bool solve(std::vector<double> a, std::vector<double> b, std::vector<double> *x)
+{
+    const size_t n = b.size();
+    for (size_t c = 0; c < n; ++c) {
+        size_t p = c;
+        for (size_t r = c + 1; r < n; ++r)
+            if (std::fabs(a[r * n + c]) > std::fabs(a[p * n + c])) p = r;
+        if (std::fabs(a[p * n + c]) < 1e-14) return false;
+        if (p != c) {
+            for (size_t k = 0; k < n; ++k) std::swap(a[p * n + k], a[c * n + k]);
+            std::swap(b[p], b[c]);
+        }
+        for (size_t r = c + 1; r < n; ++r) {
+            const double f = a[r * n + c] / a[c * n + c];
+            for (size_t k = c; k < n; ++k) a[r * n + k] -= f * a[c * n + k];
+            b[r] -= f * b[c];
+        }
+    }
+    x->assign(n, 0);
+    for (size_t c = n; c-- > 0;) {
+        double s = b[c];
+        for (size_t k = c + 1; k < n; ++k) s -= a[c * n + k] * (*x)[k];
+        (*x)[c] = s / a[c * n + c];
+    }
+    return true;
+}
+
+double normalUpperQuantile(double p) // x with P(Z > x) = p
+{
+    double lo = -10, hi = 10;
+    for (int i = 0; i < 200; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        if (0.5 * std::erfc(mid / std::sqrt(2.0)) > p) lo = mid;
+        else hi = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
+double mean(const std::vector<double> &v)
+{
+    double s = 0;
+    for (double x : v) s += x;
+    return v.empty() ? 0 : s / double(v.size());
+}
+
+// Fits the candidate on the records with fold != k and predicts those with fold == k.
+// k < 0: fit on all and predict all.
+void fitPredict(const Candidate *c, const std::vector<double> &y, const std::vector<int> &fold, int k,
+                std::vector<double> *pred)
+{
+    const size_t n = y.size();
+    auto train = [&](size_t i) { return k < 0 || fold[i] != k; };
+    auto test = [&](size_t i) { return k < 0 || fold[i] == k; };
+    double sy = 0;
+    int cnt = 0;
+    for (size_t i = 0; i < n; ++i)
+        if (train(i)) { sy += y[i]; ++cnt; }
+    const double my = cnt ? sy / cnt : 0;
+    if (!c) {
+        for (size_t i = 0; i < n; ++i)
+            if (test(i)) (*pred)[i] = my;
+        return;
+    }
+    if (c->kind == "categorical") {
+        std::map<std::string, std::pair<double, int>> lv;
+        for (size_t i = 0; i < n; ++i)
+            if (train(i)) { auto &e = lv[c->levels[i]]; e.first += y[i]; e.second++; }
+        for (size_t i = 0; i < n; ++i) {
+            if (!test(i)) continue;
+            auto it = lv.find(c->levels[i]);
+            (*pred)[i] = it == lv.end() ? my : it->second.first / it->second.second;
+        }
+        return;
+    }
+    double sx = 0;
+    int nx = 0;
+    for (size_t i = 0; i < n; ++i)
+        if (train(i) && std::isfinite(c->x[i])) { sx += c->x[i]; ++nx; }
+    const double mx = nx ? sx / nx : 0;
+    double sxx = 0, sxy = 0;
+    for (size_t i = 0; i < n; ++i) {
+        if (!train(i)) continue;
+        const double x = std::isfinite(c->x[i]) ? c->x[i] - mx : 0;
+        sxx += x * x;
+        sxy += x * (y[i] - my);
+    }
+    const double b = sxx > 1e-300 ? sxy / sxx : 0;
+    for (size_t i = 0; i < n; ++i) {
+        if (!test(i)) continue;
+        const double x = std::isfinite(c->x[i]) ? c->x[i] - mx : 0;
+        (*pred)[i] = my + b * x;
+    }
+}
+
+std::vector<double> cvErrors(const Candidate *c, const std::vector<double> &y, const std::vector<int> &fold,
+                             int folds)
+{
+    std::vector<double> pred(y.size(), 0);
+    for (int k = 0; k < folds; ++k) fitPredict(c, y, fold, k, &pred);
+    for (size_t i = 0; i < y.size(); ++i) pred[i] = y[i] - pred[i];
+    return pred;
+}
+
+} // namespace
+
+double rms(const std::vector<double> &v)
+{
+    double s = 0;
+    for (double x : v) s += x * x;
+    return v.empty() ? 0 : std::sqrt(s / double(v.size()));
+}
+
+std::vector<int> foldAssignment(size_t count, int folds, uint32_t seed)
+{
+    std::vector<size_t> order(count);
+    for (size_t i = 0; i < count; ++i) order[i] = i;
+    std::mt19937 rng(seed);
+    for (size_t i = count; i > 1; --i) { // Fisher–Yates with raw draws: the same on every platform
+        const size_t j = size_t(rng() % uint32_t(i));
+        std::swap(order[i - 1], order[j]);
+    }
+    std::vector<int> fold(count, 0);
+    for (size_t i = 0; i < count; ++i) fold[order[i]] = int(i % size_t(std::max(folds, 1)));
+    return fold;
+}
+
+std::vector<Candidate> buildCandidates(const std::vector<LoopRecord> &usable)
+{
+    std::vector<Candidate> out;
+    if (usable.empty()) return out;
+    static const std::set<std::string> kSkip = {"id", "image", "mu_ref", "calibration"};
+    std::set<std::string> names;
+    for (const LoopRecord &r : usable)
+        for (const auto &[k, v] : r.columns) names.insert(k);
+    for (const std::string &name : names) {
+        if (kSkip.count(name)) continue;
+        bool numeric = true, any = false;
+        std::set<std::string> distinct;
+        for (const LoopRecord &r : usable) {
+            auto it = r.columns.find(name);
+            const std::string v = it == r.columns.end() ? "" : it->second;
+            distinct.insert(v);
+            if (v.empty()) continue;
+            any = true;
+            double d;
+            if (!parseNumber(v, &d)) numeric = false;
+        }
+        if (!any || distinct.size() < 2) continue; // constant: explains nothing
+        Candidate c;
+        c.name = name;
+        if (numeric) {
+            c.kind = "numeric";
+            for (const LoopRecord &r : usable) {
+                auto it = r.columns.find(name);
+                double d;
+                c.x.push_back(it != r.columns.end() && parseNumber(it->second, &d) ? d : kNaN);
+            }
+        } else {
+            if (distinct.size() * 2 > usable.size()) continue; // an identifier, not a factor
+            c.kind = "categorical";
+            for (const LoopRecord &r : usable) {
+                auto it = r.columns.find(name);
+                c.levels.push_back(it == r.columns.end() ? "" : it->second);
+            }
+        }
+        out.push_back(std::move(c));
+    }
+    bool anyReduction = false;
+    for (const LoopRecord &r : usable) anyReduction = anyReduction || r.reduction >= 0;
+    if (anyReduction) {
+        Candidate c{"reduction", "numeric", {}, {}};
+        for (const LoopRecord &r : usable) c.x.push_back(r.reduction >= 0 ? r.reduction : kNaN);
+        out.push_back(std::move(c));
+    }
+    std::set<std::string> diag;
+    for (const LoopRecord &r : usable)
+        for (const auto &[k, v] : r.diagnostics) diag.insert(k);
+    for (const std::string &name : diag) {
+        Candidate c{name, "diagnostic", {}, {}};
+        std::set<double> distinct;
+        for (const LoopRecord &r : usable) {
+            auto it = r.diagnostics.find(name);
+            c.x.push_back(it == r.diagnostics.end() ? kNaN : it->second);
+            if (std::isfinite(c.x.back())) distinct.insert(c.x.back());
+        }
+        if (distinct.size() >= 2) out.push_back(std::move(c));
+    }
+    return out;
+}
+
+std::vector<double> cvPredict(const Candidate &c, const std::vector<double> &residual, const std::vector<int> &fold,
+                              int folds)
+{
+    std::vector<double> pred(residual.size(), 0);
+    for (int k = 0; k < folds; ++k) fitPredict(&c, residual, fold, k, &pred);
+    return pred;
+}
+
+std::vector<RankedCandidate> rankCandidates(const std::vector<Candidate> &candidates, const std::vector<double> &y,
+                                            const RankingOptions &opt)
+{
+    std::vector<RankedCandidate> out;
+    if (y.size() < 4) return out;
+    const int folds = std::clamp(opt.folds, 2, int(y.size()));
+    const std::vector<int> fold = foldAssignment(y.size(), folds, opt.seed);
+    const std::vector<double> e0 = cvErrors(nullptr, y, fold, folds);
+    const double before = rms(e0);
+    const double zCrit = normalUpperQuantile(opt.alpha / double(std::max<size_t>(candidates.size(), 1)));
+    for (const Candidate &c : candidates) {
+        const std::vector<double> e1 = cvErrors(&c, y, fold, folds);
+        RankedCandidate r;
+        r.name = c.name;
+        r.kind = c.kind;
+        r.cvRmsBefore = before;
+        r.cvRmsAfter = rms(e1);
+        r.gain = before - r.cvRmsAfter;
+        std::vector<double> d(y.size());
+        for (size_t i = 0; i < y.size(); ++i) d[i] = e0[i] * e0[i] - e1[i] * e1[i];
+        const double md = mean(d);
+        double v = 0;
+        for (double x : d) v += (x - md) * (x - md);
+        const double se = std::sqrt(v / double(d.size() - 1) / double(d.size()));
+        r.z = se > 0 ? md / se : 0;
+        if (c.kind != "categorical") {
+            double sx = 0, sy2 = 0, sxy = 0, mx = 0, myv = mean(y);
+            int cnt = 0;
+            for (size_t i = 0; i < y.size(); ++i)
+                if (std::isfinite(c.x[i])) { mx += c.x[i]; ++cnt; }
+            mx = cnt ? mx / cnt : 0;
+            for (size_t i = 0; i < y.size(); ++i) {
+                if (!std::isfinite(c.x[i])) continue;
+                sx += (c.x[i] - mx) * (c.x[i] - mx);
+                sy2 += (y[i] - myv) * (y[i] - myv);
+                sxy += (c.x[i] - mx) * (y[i] - myv);
+            }
+            r.correlation = sx > 0 && sy2 > 0 ? sxy / std::sqrt(sx * sy2) : 0;
+        }
+        r.significant = r.gain > 0 && r.z > zCrit && r.gain >= opt.minRelativeGain * before;
+        out.push_back(r);
+    }
+    std::stable_sort(out.begin(), out.end(),
+                     [](const RankedCandidate &a, const RankedCandidate &b) { return a.gain > b.gain; });
+    return out;
+}
+
+bool ReductionSlope::load(const std::string &path, std::string *error)
+{
+    std::ifstream f(path);
+    if (!f) { *error = "cannot read '" + path + "'"; return false; }
+    std::string line;
+    std::vector<std::string> header;
+    if (!std::getline(f, line) || !splitCsvLine(line, &header)) { *error = "no header in '" + path + "'"; return false; }
+    struct Case { double n = 0, mu = 0; std::vector<std::pair<double, double>> pts; };
+    std::map<std::string, Case> cases;
+    std::vector<std::string> cells;
+    while (std::getline(f, line)) {
+        if (!splitCsvLine(line, &cells) || cells.size() != header.size()) continue;
+        ManifestRow row;
+        for (size_t i = 0; i < header.size(); ++i) row.cells[header[i]] = cells[i];
+        double n, mu, red, u, corner = 0;
+        if (row.get("status") != "ok") continue;
+        if (!parseNumber(row.get("n"), &n) || !parseNumber(row.get("mu"), &mu) ||
+            !parseNumber(row.get("reduction"), &red) || !parseNumber(row.get("u_interp_mm"), &u))
+            continue;
+        if (parseNumber(row.get("corner_mm"), &corner) && corner > 0) continue; // graded mesh: another study
+        double d0 = 10;
+        if (parseNumber(row.get("d0_mm"), &d0) && d0 > 0) u *= 10.0 / d0;
+        if (red < 0.349 || u <= 0.02) continue; // before the ICA opens the slope is not u's
+        Case &c = cases[row.get("case")];
+        c.n = n;
+        c.mu = mu;
+        c.pts.emplace_back(red, u);
+    }
+    std::vector<double> ata(36, 0), atb(6, 0);
+    cases_ = 0;
+    for (const auto &[name, c] : cases) {
+        if (c.pts.size() < 3) continue;
+        // u = a + b (r − 0.5) + c (r − 0.5)²: b is du/dr at the model's 50 % (u accelerates).
+        std::vector<double> m3(9, 0), v3(3, 0), q;
+        for (auto [x, y] : c.pts) {
+            const double t[3] = {1, x - 0.5, (x - 0.5) * (x - 0.5)};
+            for (int i = 0; i < 3; ++i) {
+                v3[size_t(i)] += t[i] * y;
+                for (int j = 0; j < 3; ++j) m3[size_t(i * 3 + j)] += t[i] * t[j];
+            }
+        }
+        if (!solve(m3, v3, &q)) continue;
+        const double s = q[1];
+        const double phi[6] = {1, c.n, c.mu, c.n * c.n, c.n * c.mu, c.mu * c.mu};
+        for (int i = 0; i < 6; ++i) {
+            atb[size_t(i)] += phi[i] * s;
+            for (int j = 0; j < 6; ++j) ata[size_t(i * 6 + j)] += phi[i] * phi[j];
+        }
+        ++cases_;
+    }
+    for (int i = 0; i < 6; ++i) ata[size_t(i * 6 + i)] += 1e-9; // keeps a thin grid solvable
+    if (cases_ < 6 || !solve(ata, atb, &coef_)) {
+        *error = "too few FE cases with an open ICA over reductions 0.35-0.5 in '" + path + "'";
+        return false;
+    }
+    return true;
+}
+
+double ReductionSlope::slope(double n, double mu) const
+{
+    if (coef_.size() != 6) return 0;
+    // Evaluate inside the simulated box only: outside it the quadratic is not data.
+    n = std::clamp(n, 0.05, 0.5);
+    mu = std::clamp(mu, 0.05, 0.3);
+    return coef_[0] + coef_[1] * n + coef_[2] * mu + coef_[3] * n * n + coef_[4] * n * mu + coef_[5] * mu * mu;
+}
+
+double uAtModelReduction(const vision::FrictionModel &model, const ReductionSlope &slope, const vision::ModelInputs &in,
+                         double reduction, double scaleFactor)
+{
+    if (reduction < 0) return in.uMm;
+    const double geo = in.d0Mm > 0 ? in.d0Mm / 10.0 : 1.0;
+    vision::ModelInputs m = in;
+    double u50 = in.uMm;
+    for (int it = 0; it < 20; ++it) {
+        m.uMm = u50;
+        const double mu = model.estimate(m).mu;
+        const double next = in.uMm - scaleFactor * geo * slope.slope(in.n, mu) * (reduction - 0.5);
+        if (std::fabs(next - u50) < 1e-9) { u50 = next; break; }
+        u50 = 0.5 * (u50 + next);
+    }
+    return u50;
+}
+
+double uForMu(const vision::FrictionModel &model, double mu, double n, double d0Mm)
+{
+    vision::ModelInputs in;
+    in.n = n;
+    in.d0Mm = d0Mm;
+    double lo = 0, hi = 1.25 * d0Mm / 10.0;
+    for (int i = 0; i < 100; ++i) {
+        in.uMm = 0.5 * (lo + hi);
+        if (model.estimate(in).mu < mu) lo = in.uMm;
+        else hi = in.uMm;
+    }
+    return 0.5 * (lo + hi);
+}
+
+} // namespace icacam::host::loop

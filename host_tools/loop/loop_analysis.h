@@ -1,0 +1,99 @@
+#pragma once
+// Closing the loop (PRODUCT.md §5, docs/loop.md): residuals of the μ model against measured
+// records, a cross-validated ranking of candidate explanations, and the physical correction
+// of the leading effect when it is the height reduction.
+//
+// Pure computation (no image I/O): the command (loop_command.cpp) measures the records and
+// fills LoopRecord; the tests build record sets directly.
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "vision/friction_model.h"
+
+namespace icacam::host::loop {
+
+struct LoopRecord {
+    std::string id;
+    std::map<std::string, std::string> columns; // every recorded column, as text
+    std::map<std::string, double> diagnostics;  // measured by the pipeline (or derived)
+    double n = 0, kMpa = 0, d0Mm = 10, h0Mm = 15;
+    double uMm = 0;       // measured ICA width
+    double muModel = 0;   // the model's μ at the measured u
+    double muRef = 0;     // reference μ (independent method)
+    double reduction = -1; // 1 - h_final/h0 when recorded, else -1
+    bool usable = false;   // measured and with a reference
+};
+
+// Candidate explanation of the residual: one recorded column or one diagnostic.
+struct Candidate {
+    std::string name;
+    std::string kind; // "numeric", "categorical" or "diagnostic"
+    std::vector<double> x;            // numeric value per usable record (NaN: missing)
+    std::vector<std::string> levels;  // categorical level per usable record
+};
+
+struct RankedCandidate {
+    std::string name, kind;
+    double cvRmsBefore = 0; // k-fold RMS of the residual with a constant offset only
+    double cvRmsAfter = 0;  // k-fold RMS with the one-candidate model
+    double gain = 0;        // cvRmsBefore - cvRmsAfter
+    double z = 0;           // paired z of the per-record squared-error reduction
+    double correlation = 0; // numeric: Pearson r with the residual (for reading only)
+    bool significant = false;
+};
+
+struct RankingOptions {
+    int folds = 5;
+    uint32_t seed = 1;
+    double alpha = 0.05;          // family-wise, Bonferroni over the candidates
+    double minRelativeGain = 0.05; // a chosen effect must cut the CV RMS by at least 5 %
+};
+
+// Fold index per record: a seeded permutation dealt round-robin (reproducible everywhere).
+std::vector<int> foldAssignment(size_t count, int folds, uint32_t seed);
+
+// Candidates from the records: every recorded column except id/image/mu_ref and identifier
+// columns (a distinct text in every record), a derived `reduction` when h_final_mm is
+// recorded, and every diagnostic.
+std::vector<Candidate> buildCandidates(const std::vector<LoopRecord> &usable);
+
+// Ranks candidates by k-fold CV gain on the residual (μ_model − μ_ref), best first.
+std::vector<RankedCandidate> rankCandidates(const std::vector<Candidate> &candidates,
+                                            const std::vector<double> &residual,
+                                            const RankingOptions &opt);
+
+// Cross-validated predictions of the residual by one candidate (for before/after plots).
+std::vector<double> cvPredict(const Candidate &c, const std::vector<double> &residual,
+                              const std::vector<int> &fold, int folds);
+
+// du/dr (mm per unit height reduction, D0 = 10 mm) from FE snapshots: per (n, μ) case, the
+// slope at 50 % of a least-squares quadratic in r of u over the reductions 0.35–0.5; then a smooth quadratic surface in
+// (n, μ) through those slopes. Built from data/fe/sweep.csv.
+class ReductionSlope {
+public:
+    bool load(const std::string &sweepCsv, std::string *error);
+    // Direct construction (tests): slope = c0 + c1 n + c2 μ + c3 n² + c4 nμ + c5 μ².
+    void setCoefficients(const std::vector<double> &c) { coef_ = c; }
+    double slope(double n, double mu) const;
+    const std::vector<double> &coefficients() const { return coef_; }
+    int cases() const { return cases_; }
+
+private:
+    std::vector<double> coef_;
+    int cases_ = 0;
+};
+
+// u at the model's 50 % reduction: u50 = u − (du/dr)(r − 0.5), du/dr at (n, μ(u50)) found by
+// fixed-point iteration, scaled with D0 by geometric similarity.
+double uAtModelReduction(const vision::FrictionModel &model, const ReductionSlope &slope,
+                         const vision::ModelInputs &in, double reduction, double scaleFactor = 1.0);
+
+// Inverse of the model in u at fixed n (bisection on [0, 1.25] mm at D0 = 10): for tests and
+// synthetic record sets.
+double uForMu(const vision::FrictionModel &model, double mu, double n, double d0Mm = 10);
+
+double rms(const std::vector<double> &v);
+
+} // namespace icacam::host::loop

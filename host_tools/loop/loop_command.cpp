@@ -1,0 +1,391 @@
+// `icacam loop`: close the loop on measured records (PRODUCT.md §5, docs/loop.md).
+#include "loop_command.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <stdexcept>
+
+#include "friction_models.h"
+#include "image_file.h"
+#include "loop_plot.h"
+#include "manifest.h"
+#include "vision/end_face_analyzer.h"
+
+#ifndef ICACAM_LOOP_DEFAULT_SWEEP
+#define ICACAM_LOOP_DEFAULT_SWEEP "data/fe/sweep.csv"
+#endif
+
+namespace icacam::host {
+
+namespace fs = std::filesystem;
+using namespace icacam::vision;
+
+namespace {
+
+const char *kUsage =
+    "usage: icacam loop --manifest FILE --report DIR [--model paper] [--folds 5] [--seed S]\n"
+    "                   [--fe-sweep CSV] [--alpha 0.05]\n"
+    "Measures every record (image + mm_per_px, or r_inner_mm + r_outer_mm), takes the residual\n"
+    "μ_model − mu_ref, ranks every recorded column and every pipeline diagnostic by the k-fold\n"
+    "cross-validated gain of a one-candidate model of the residual, and corrects the leading\n"
+    "effect. A height reduction other than the model's 50 % is corrected physically: u is\n"
+    "carried to 50 % with du/dr from the FE sweep before μ = model(u, n). Writes ranking.csv,\n"
+    "report.md, records.csv and PNG plots to DIR (docs/loop.md).\n";
+
+std::string f4(double v, const char *fmt = "%.4f")
+{
+    char b[48];
+    std::snprintf(b, sizeof b, fmt, v);
+    return b;
+}
+
+} // namespace
+
+namespace loop {
+
+namespace {
+
+bool measureRecord(const ManifestRow &row, const Manifest &manifest, const FrictionModel &model,
+                   EndFaceAnalyzer &analyzer, LoopRecord *r, std::string *why)
+{
+    auto num = [&](const char *key, double fallback, double *out) {
+        if (!row.has(key) || row.get(key).empty()) { *out = fallback; return true; }
+        if (parseNumber(row.get(key), out)) return true;
+        *why = std::string("bad number in ") + key;
+        return false;
+    };
+    double hFinal = 0;
+    if (!row.error.empty()) { *why = row.error; return false; }
+    if (!num("n", -1, &r->n) || !num("k_mpa", 0, &r->kMpa) || !num("d0_mm", 10, &r->d0Mm) ||
+        !num("h0_mm", 15, &r->h0Mm) || !num("h_final_mm", 0, &hFinal) || !num("mu_ref", NAN, &r->muRef))
+        return false;
+    if (!(r->n > 0)) { *why = "missing n"; return false; }
+    if (!std::isfinite(r->muRef)) { *why = "no mu_ref"; return false; }
+    if (hFinal > 0 && r->h0Mm > 0) r->reduction = 1.0 - hFinal / r->h0Mm;
+    double ri = 0, ro = 0;
+    if (row.has("r_inner_mm") && row.has("r_outer_mm") && parseNumber(row.get("r_inner_mm"), &ri) &&
+        parseNumber(row.get("r_outer_mm"), &ro)) {
+        r->uMm = ro - ri;
+        r->diagnostics["diag_u_mm"] = r->uMm;
+        double rb;
+        if (row.has("r_bulge_mm") && parseNumber(row.get("r_bulge_mm"), &rb))
+            r->diagnostics["diag_rmax_over_r0"] = rb / (0.5 * r->d0Mm);
+    } else if (row.has("image")) {
+        SpecimenSpec spec;
+        spec.n = r->n;
+        spec.kMpa = r->kMpa;
+        spec.d0Mm = r->d0Mm;
+        spec.h0Mm = r->h0Mm;
+        spec.hFinalMm = hFinal;
+        if (!num("mm_per_px", 0, &spec.mmPerPx) || !(spec.mmPerPx > 0)) { *why = "no mm_per_px"; return false; }
+        fs::path p = row.get("image");
+        if (p.is_relative()) p = fs::path(manifest.baseDir) / p;
+        LumaImage img;
+        if (std::string e = loadLuma(p.string(), &img); !e.empty()) { *why = e; return false; }
+        const LumaView view{img.luma.data, img.luma.cols, img.luma.rows, int(img.luma.step[0]), 1};
+        const Measurement m = analyzer.measure(view, spec, model);
+        if (!m.hasValue()) { *why = errorMessage(m.error); return false; }
+        r->uMm = m.uMm;
+        auto &d = r->diagnostics;
+        d["diag_u_mm"] = m.uMm;
+        d["diag_r_inner_mm"] = m.rInnerMm;
+        d["diag_r_outer_mm"] = m.rOuterMm;
+        if (m.rMaxMm > 0) d["diag_rmax_over_r0"] = m.rMaxMm / (0.5 * r->d0Mm);
+        d["diag_inner_contrast"] = m.inner.contrast;
+        d["diag_outer_contrast"] = m.outer.contrast;
+        d["diag_inner_coverage"] = m.inner.coverage;
+        d["diag_outer_coverage"] = m.outer.coverage;
+        d["diag_inner_scatter_px"] = m.inner.scatterPx;
+        d["diag_outer_scatter_px"] = m.outer.scatterPx;
+        d["diag_inner_ellipticity"] = m.inner.ellipticity;
+        d["diag_outer_ellipticity"] = m.outer.ellipticity;
+        d["diag_outer_axis_deg"] = m.outer.axisDeg;
+        d["diag_centre_offset_px"] = m.centreOffsetPx;
+        d["diag_edge_width_px"] = m.edgeWidthPx;
+        d["diag_saturated_fraction"] = m.saturatedFraction;
+        d["diag_u_px"] = m.uPx;
+        d["diag_flag_count"] = double(__builtin_popcount(m.flags));
+    } else {
+        *why = "neither image nor r_inner_mm/r_outer_mm";
+        return false;
+    }
+    ModelInputs in;
+    in.uMm = r->uMm;
+    in.n = r->n;
+    in.kMpa = r->kMpa;
+    in.d0Mm = r->d0Mm;
+    in.h0Mm = r->h0Mm;
+    r->muModel = model.estimate(in).mu;
+    for (const std::string &c : manifest.columns) r->columns[c] = row.get(c);
+    r->usable = true;
+    return true;
+}
+
+void plotCandidate(const std::string &path, const Candidate &c, const std::vector<double> &res, const RankedCandidate &rc)
+{
+    Series s;
+    s.y = res;
+    s.colour = 0x1f77b4;
+    std::vector<std::string> ticks;
+    if (c.kind == "categorical") {
+        std::map<std::string, int> idx;
+        for (const std::string &l : c.levels) idx.emplace(l, 0);
+        int k = 0;
+        for (auto &[l, i] : idx) { i = k++; ticks.push_back(l.empty() ? "(none)" : l); }
+        for (size_t i = 0; i < c.levels.size(); ++i)
+            s.x.push_back(idx[c.levels[i]] + 0.25 * (double(i % 7) / 6.0 - 0.5));
+    } else {
+        s.x = c.x;
+    }
+    const std::string title = "residual vs " + c.name + "  (CV gain " + f4(rc.gain) + ", z " + f4(rc.z, "%.1f") + ")";
+    scatterPlot(path, title, c.name, "mu_model - mu_ref", {s}, ticks);
+}
+
+} // namespace
+
+LoopSummary runLoop(const std::string &manifestPath, const std::string &reportDir, const std::string &modelName,
+                    const RankingOptions &opt, const std::string &fePath)
+{
+    auto model = makeFrictionModel(modelName);
+    if (!model) throw std::runtime_error("unknown model '" + modelName + "' (known: paper, fe)");
+    Manifest manifest;
+    std::string err;
+    if (!readManifest(manifestPath, &manifest, &err)) throw std::runtime_error(err);
+    fs::create_directories(reportDir);
+
+    EndFaceAnalyzer analyzer;
+    analyzer.configure(16384, 16384);
+    std::vector<LoopRecord> usable;
+    std::vector<std::string> skipped;
+    for (const ManifestRow &row : manifest.rows) {
+        LoopRecord r;
+        r.id = row.get("id", "line" + std::to_string(row.line));
+        std::string why;
+        if (measureRecord(row, manifest, *model, analyzer, &r, &why)) usable.push_back(std::move(r));
+        else skipped.push_back(r.id + ": " + why);
+    }
+    LoopSummary s;
+    s.records = int(manifest.rows.size());
+    s.usable = int(usable.size());
+    if (usable.size() < 6) throw std::runtime_error("fewer than 6 usable records (measured, with mu_ref)");
+
+    std::vector<double> res;
+    for (const LoopRecord &r : usable) res.push_back(r.muModel - r.muRef);
+    s.rmsBefore = rms(res);
+    const int folds = std::clamp(opt.folds, 2, int(usable.size()));
+    const std::vector<int> fold = foldAssignment(usable.size(), folds, opt.seed);
+    const std::vector<Candidate> cands = buildCandidates(usable);
+    s.ranking = rankCandidates(cands, res, opt);
+    s.cvRmsOffset = s.ranking.empty() ? s.rmsBefore : s.ranking.front().cvRmsBefore;
+    s.cvRmsAfter = s.rmsBefore;
+    if (!s.ranking.empty() && s.ranking.front().significant) {
+        s.chosen = s.ranking.front().name;
+        s.cvRmsAfter = s.ranking.front().cvRmsAfter;
+    }
+
+    // The physical correction of the reduction (when it leads and is recorded).
+    std::vector<double> muPhys(usable.size(), NAN);
+    const bool reductionLeads = s.chosen == "reduction" || s.chosen == "h_final_mm";
+    ReductionSlope slope;
+    if (reductionLeads) {
+        std::string e;
+        if (!slope.load(fePath, &e)) std::cerr << "icacam loop: no physical correction: " << e << "\n";
+        else s.physical = true;
+    }
+    if (s.physical) {
+        std::vector<double> after(usable.size()), delta(usable.size());
+        for (size_t i = 0; i < usable.size(); ++i) {
+            const LoopRecord &r = usable[i];
+            ModelInputs in;
+            in.uMm = r.uMm;
+            in.n = r.n;
+            in.kMpa = r.kMpa;
+            in.d0Mm = r.d0Mm;
+            in.h0Mm = r.h0Mm;
+            in.uMm = uAtModelReduction(*model, slope, in, r.reduction);
+            muPhys[i] = model->estimate(in).mu;
+            after[i] = muPhys[i] - r.muRef;
+            delta[i] = r.muModel - muPhys[i]; // what the correction removed
+        }
+        s.rmsPhysical = rms(after);
+        // The FE slope's scale, fitted by least squares (all records and per fold): a check that
+        // the FE du/dr carries the data's effect, not a parameter of the correction.
+        auto fitScale = [&](int k) {
+            double sdd = 0, sdr = 0;
+            for (size_t i = 0; i < res.size(); ++i)
+                if (k < 0 || fold[i] != k) { sdd += delta[i] * delta[i]; sdr += delta[i] * res[i]; }
+            return sdd > 0 ? sdr / sdd : 0.0;
+        };
+        s.slopeScale = fitScale(-1);
+        std::vector<double> cvErr(res.size());
+        for (int k = 0; k < folds; ++k) {
+            const double a = fitScale(k);
+            for (size_t i = 0; i < res.size(); ++i)
+                if (fold[i] == k) cvErr[i] = res[i] - a * delta[i];
+        }
+        s.cvRmsPhysicalScaled = rms(cvErr);
+        s.cvRmsAfter = s.rmsPhysical; // no parameter is fitted to these records: held out as is
+    }
+
+    // ranking.csv
+    {
+        std::ofstream f(fs::path(reportDir) / "ranking.csv");
+        f << "rank,candidate,kind,cv_rms_before,cv_rms_after,gain,z,correlation,chosen\n";
+        int k = 0;
+        for (const RankedCandidate &r : s.ranking)
+            f << ++k << "," << r.name << "," << r.kind << "," << f4(r.cvRmsBefore, "%.5f") << ","
+              << f4(r.cvRmsAfter, "%.5f") << "," << f4(r.gain, "%.5f") << "," << f4(r.z, "%.2f") << ","
+              << f4(r.correlation, "%.3f") << "," << (r.name == s.chosen ? "yes" : r.significant ? "significant" : "no")
+              << "\n";
+    }
+    // records.csv
+    {
+        std::ofstream f(fs::path(reportDir) / "records.csv");
+        f << "id,n,u_mm,reduction,mu_ref,mu_model,residual,mu_corrected,residual_corrected\n";
+        for (size_t i = 0; i < usable.size(); ++i) {
+            const LoopRecord &r = usable[i];
+            f << r.id << "," << r.n << "," << f4(r.uMm, "%.5f") << "," << f4(r.reduction, "%.4f") << "," << r.muRef
+              << "," << f4(r.muModel, "%.5f") << "," << f4(res[i], "%.5f") << ","
+              << (s.physical ? f4(muPhys[i], "%.5f") : "") << ","
+              << (s.physical ? f4(muPhys[i] - r.muRef, "%.5f") : "") << "\n";
+        }
+    }
+    // Plots: residual against the three leading candidates; before/after.
+    std::vector<std::string> plots;
+    for (size_t k = 0; k < s.ranking.size() && k < 3; ++k) {
+        for (const Candidate &c : cands) {
+            if (c.name != s.ranking[k].name) continue;
+            const std::string name = "residual_vs_" + c.name + ".png";
+            plotCandidate((fs::path(reportDir) / name).string(), c, res, s.ranking[k]);
+            plots.push_back(name);
+        }
+    }
+    {
+        Series before, after;
+        before.label = "paper model (before), RMS " + f4(s.rmsBefore);
+        before.colour = 0xb0b0b0;
+        after.colour = 0xd62728;
+        for (size_t i = 0; i < usable.size(); ++i) { before.x.push_back(usable[i].muRef); before.y.push_back(usable[i].muModel); }
+        std::vector<Series> ser{before};
+        if (s.physical) {
+            after.label = "reduction-corrected (after), RMS " + f4(s.rmsPhysical);
+            for (size_t i = 0; i < usable.size(); ++i) { after.x.push_back(usable[i].muRef); after.y.push_back(muPhys[i]); }
+            ser.push_back(after);
+        } else if (!s.chosen.empty()) {
+            after.label = "with " + s.chosen + " (after, CV), RMS " + f4(s.cvRmsAfter);
+            for (const Candidate &c : cands)
+                if (c.name == s.chosen) {
+                    const std::vector<double> p = cvPredict(c, res, fold, folds);
+                    for (size_t i = 0; i < usable.size(); ++i) {
+                        after.x.push_back(usable[i].muRef);
+                        after.y.push_back(usable[i].muModel - p[i]);
+                    }
+                }
+            ser.push_back(after);
+        }
+        scatterPlot((fs::path(reportDir) / "before_after.png").string(), "mu: model vs reference", "mu_ref",
+                    "mu (model)", ser, {}, true);
+        plots.push_back("before_after.png");
+    }
+    // report.md
+    {
+        std::ofstream f(fs::path(reportDir) / "report.md");
+        f << "# icacam loop report\n\n";
+        f << "Manifest: `" << manifestPath << "`, model `" << modelName << "`, " << folds << "-fold CV, seed "
+          << opt.seed << ". Records: " << s.records << ", usable " << s.usable << ".\n\n";
+        for (const std::string &k : skipped) f << "- skipped " << k << "\n";
+        f << "\n## Error in μ (μ_model − μ_ref)\n\n| | RMS |\n|---|---|\n";
+        f << "| before (model as is) | " << f4(s.rmsBefore) << " |\n";
+        f << "| constant offset only (k-fold) | " << f4(s.cvRmsOffset) << " |\n";
+        if (!s.ranking.empty())
+            f << "| best one-candidate regression of the residual (" << s.ranking.front().name << ", k-fold) | "
+              << f4(s.ranking.front().cvRmsAfter) << " |\n";
+        if (s.physical) {
+            f << "| **after: u carried to 50 % with FE du/dr, μ = model(u50, n)** (no parameter fitted here) | **"
+              << f4(s.rmsPhysical) << "** |\n";
+            f << "| same with the FE slope's scale fitted per fold (k-fold; scale on all records "
+              << f4(s.slopeScale, "%.3f") << ") | " << f4(s.cvRmsPhysicalScaled) << " |\n";
+        } else if (!s.chosen.empty()) {
+            f << "| **after (" << s.chosen << ", k-fold)** | **" << f4(s.cvRmsAfter) << "** |\n";
+        }
+        f << "\n## Chosen effect\n\n";
+        if (s.chosen.empty()) {
+            f << "None: no candidate has a significant positive cross-validated gain (Bonferroni over "
+              << s.ranking.size() << " candidates, α = " << opt.alpha << ", and ≥ " << opt.minRelativeGain * 100
+              << " % of the CV RMS). The model is left as it is.\n";
+        } else if (s.physical) {
+            f << "`" << s.chosen << "`: the recorded final height says the specimens were not upset to the model's "
+                 "50 % height reduction. The ICA width u grows with the reduction (the contact edge keeps moving "
+                 "out while the folded side becomes contact), so the model, which maps u to μ at 50 %, reads a "
+                 "deeper upset as more friction. Correction: u50 = u − (du/dr)(r − 0.5), du/dr from the FE sweep "
+                 "(`" << fePath << "`, " << slope.cases() << " cases, quadratic in n and μ), then μ = model(u50, n). "
+                 "A fitted scale of the FE slope near 1 (here " << f4(s.slopeScale, "%.3f") << ") says the FE runs "
+                 "carry the effect found in the data.\n";
+        } else {
+            f << "`" << s.chosen << "` (" << s.ranking.front().kind << "): corrected empirically by its "
+                 "one-candidate model of the residual (k-fold). Trace it to its cause before building it into "
+                 "the model: a camera/lens column or an image diagnostic points to the scale (optics), a process "
+                 "column to the upsetting.\n";
+        }
+        f << "\n## Ranking (best first; full list in ranking.csv)\n\n| # | candidate | kind | CV RMS before | CV RMS after | "
+             "gain | z | r |\n|---|---|---|---|---|---|---|---|\n";
+        for (size_t k = 0; k < s.ranking.size() && k < 15; ++k) {
+            const RankedCandidate &r = s.ranking[k];
+            f << "| " << k + 1 << " | " << r.name << (r.significant ? " *" : "") << " | " << r.kind << " | "
+              << f4(r.cvRmsBefore) << " | " << f4(r.cvRmsAfter) << " | " << f4(r.gain, "%.5f") << " | "
+              << f4(r.z, "%.1f") << " | " << f4(r.correlation, "%.2f") << " |\n";
+        }
+        f << "\n(* significant)\n\n## Plots\n\n";
+        for (const std::string &p : plots) f << "![" << p << "](" << p << ")\n\n";
+    }
+    return s;
+}
+
+} // namespace loop
+
+int loopCommand(const std::vector<std::string> &args)
+{
+    std::string manifestPath, reportDir, modelName = "paper", fePath = ICACAM_LOOP_DEFAULT_SWEEP;
+    loop::RankingOptions opt;
+    for (size_t i = 0; i < args.size(); ++i) {
+        auto value = [&]() -> std::string {
+            if (i + 1 >= args.size()) throw std::runtime_error(args[i] + " needs a value");
+            return args[++i];
+        };
+        double v;
+        if (args[i] == "--manifest") manifestPath = value();
+        else if (args[i] == "--report") reportDir = value();
+        else if (args[i] == "--model") modelName = value();
+        else if (args[i] == "--fe-sweep") fePath = value();
+        else if (args[i] == "--folds") {
+            if (!parseNumber(value(), &v) || v < 2 || v > 1000) throw std::runtime_error("--folds: 2 to 1000");
+            opt.folds = int(v);
+        } else if (args[i] == "--seed") {
+            if (!parseNumber(value(), &v) || v < 0 || v > 4294967295.0) throw std::runtime_error("--seed: 0 to 2^32-1");
+            opt.seed = uint32_t(v);
+        } else if (args[i] == "--alpha") {
+            if (!parseNumber(value(), &v) || !(v > 0 && v < 1)) throw std::runtime_error("--alpha: in (0, 1)");
+            opt.alpha = v;
+        } else if (args[i] == "-h" || args[i] == "--help") { std::cout << kUsage; return 0; }
+        else throw std::runtime_error("unknown option '" + args[i] + "'\n" + kUsage);
+    }
+    if (manifestPath.empty() || reportDir.empty())
+        throw std::runtime_error(std::string("--manifest and --report are required\n") + kUsage);
+    if (!fs::exists(fePath) && fs::exists("data/fe/sweep.csv")) fePath = "data/fe/sweep.csv";
+    const loop::LoopSummary s = loop::runLoop(manifestPath, reportDir, modelName, opt, fePath);
+    std::cout << "records " << s.records << " usable " << s.usable << "\n"
+              << "rms_before " << f4(s.rmsBefore) << "\ncv_rms_offset " << f4(s.cvRmsOffset) << "\n"
+              << "top " << (s.ranking.empty() ? "-" : s.ranking.front().name) << "\n"
+              << "chosen " << (s.chosen.empty() ? "(none)" : s.chosen) << "\n"
+              << "rms_after " << f4(s.cvRmsAfter) << (s.physical ? " (physical FE du/dr correction)" : "") << "\n";
+    if (s.physical)
+        std::cout << "fe_slope_scale " << f4(s.slopeScale, "%.3f") << " cv_rms_scaled " << f4(s.cvRmsPhysicalScaled)
+                  << "\n";
+    std::cout << "report " << reportDir << "/report.md\n";
+    return 0;
+}
+
+} // namespace icacam::host

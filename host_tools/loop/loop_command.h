@@ -1,0 +1,31 @@
+#pragma once
+#include <string>
+#include <vector>
+
+#include "loop_analysis.h"
+
+namespace icacam::host {
+// `icacam loop --manifest FILE --report DIR [--model paper] [--folds 5] [--seed S] [--fe-sweep CSV]`
+int loopCommand(const std::vector<std::string> &args);
+} // namespace icacam::host
+
+namespace icacam::host::loop {
+
+struct LoopSummary {
+    int records = 0, usable = 0;
+    std::vector<RankedCandidate> ranking;
+    std::string chosen;          // empty: nothing significant, the model is left as it is
+    double rmsBefore = 0;        // RMS of μ_model − μ_ref (no correction)
+    double cvRmsOffset = 0;      // k-fold, constant offset only
+    double cvRmsAfter = 0;       // k-fold, after the chosen effect (= rmsBefore if none)
+    bool physical = false;       // the chosen effect was corrected through FE du/dr
+    double rmsPhysical = 0;      // RMS after the physical reduction correction (no fitted parameter)
+    double slopeScale = 0;       // least-squares scale of the FE du/dr on all records (1: FE as is)
+    double cvRmsPhysicalScaled = 0; // k-fold with that scale fitted per fold
+};
+
+// Runs the whole analysis on a manifest and writes the report folder. fePath: FE sweep CSV.
+LoopSummary runLoop(const std::string &manifestPath, const std::string &reportDir, const std::string &modelName,
+                    const RankingOptions &opt, const std::string &fePath);
+
+} // namespace icacam::host::loop
