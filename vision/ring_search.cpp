@@ -23,6 +23,9 @@ constexpr int kMaxCoarse = EndFaceAnalyzer::kMaxCoarseSamples;
 constexpr int32_t kMinCoarseStrength = 1000;
 // Widest ICA searched, as a fraction of the initial radius.
 constexpr double kMaxU = 0.32;
+// Every how many fine rays the edge-following mean profile samples (it only names the
+// face edge; the fine rays locate it).
+constexpr int kAlignStride = 8;
 
 double robustSigma(const int32_t *d, int lo, int hi)
 {
@@ -39,18 +42,21 @@ double robustSigma(const int32_t *d, int lo, int hi)
 // scratch lines) average out over a box wider than their period; a level change does not.
 void boxStep(const int32_t *t, int count, int w, bool allInside, int16_t *d)
 {
-    int64_t prefix[kMaxFine + 1];
+    // Sums of at most 640 samples of 4×Q8 (≤ 261120) fit in 32 bits.
+    int32_t prefix[kMaxFine + 1];
+    int16_t badCount[kMaxFine + 1]; // samples outside the frame up to j (only if any)
     prefix[0] = 0;
-    bool bad[kMaxFine + 1] = {};
-    for (int j = 0; j < count; ++j) {
-        prefix[j + 1] = prefix[j] + (t[j] < 0 ? 0 : t[j]);
-        bad[j + 1] = bad[j] || (!allInside && t[j] < 0);
+    for (int j = 0; j < count; ++j) prefix[j + 1] = prefix[j] + (t[j] < 0 ? 0 : t[j]);
+    if (!allInside) {
+        badCount[0] = 0;
+        for (int j = 0; j < count; ++j) badCount[j + 1] = int16_t(badCount[j] + (t[j] < 0));
     }
+    const int32_t scale = w * 32; // 4·256/32: out in 1/32 grey
     for (int j = 0; j < count; ++j) {
         if (j < w || j + w >= count) { d[j] = 0; continue; }
-        if (!allInside && bad[j + w + 1] != bad[j - w]) { d[j] = 0; continue; }
-        const int64_t diff = (prefix[j + w + 1] - prefix[j + 1]) - (prefix[j] - prefix[j - w]);
-        d[j] = int16_t(std::clamp<int64_t>(diff / (int64_t(w) * 32), -32767, 32767)); // 4·256/32
+        if (!allInside && badCount[j + w + 1] != badCount[j - w]) { d[j] = 0; continue; }
+        const int32_t diff = (prefix[j + w + 1] - prefix[j + 1]) - (prefix[j] - prefix[j - w]);
+        d[j] = int16_t(std::clamp(diff / scale, -32767, 32767));
     }
 }
 
@@ -328,7 +334,7 @@ ErrorCode RingSearch::run(Measurement *m)
     {
         uint32_t sum[kSpan] = {}, n[kSpan] = {};
         uint16_t row[kSpan];
-        for (int i = 0; i < kRays; i += 4) {
+        for (int i = 0; i < kRays; i += kAlignStride) {
             if (!outerPts[i].valid) continue;
             const double ro = outerR[i];
             RaySpec ray{Q16_16::fromDouble(cx), Q16_16::fromDouble(cy), rayCosQ_[i], raySinQ_[i],
@@ -339,7 +345,7 @@ ErrorCode RingSearch::run(Measurement *m)
         }
         uint16_t mean[kSpan];
         for (int k = 0; k < K + M + 1; ++k) {
-            mean[k] = n[k] * 4 >= uint32_t(kRays / 8) ? uint16_t(sum[k] / n[k]) : kOutsideFrame;
+            mean[k] = n[k] * 2 >= uint32_t(kRays / kAlignStride) ? uint16_t(sum[k] / n[k]) : kOutsideFrame;
             aP[k] = mean[k] == kOutsideFrame ? 0 : mean[k];
         }
         // Same units as the fine derivative rows (the [1 2 1] angular weights sum to 4).
@@ -415,9 +421,11 @@ ErrorCode RingSearch::run(Measurement *m)
     const double reach = std::max(1.0, std::min(3.0, 0.5 * uGuess));
     // Stage 3, the original face edge on every fine ray: a window following the contact
     // edge at the named offset.
-    const int innerCount = std::min(kMaxFine, int(2 * half) + 12 + 2 * W);
-    for (int i = 0; i < kRays; ++i)
-        start[i] = outerR[i] - uGuess - half - 5 - W;
+    // The search spans ±half about the guess (pass 2: ±2.5 about the fit); the detector
+    // needs W (or 2 for the derivative) more on each side.
+    const int pad = std::max(W, 2) + 3;
+    const int innerCount = std::min(kMaxFine, int(2 * half) + 2 * pad + 1);
+    for (int i = 0; i < kRays; ++i) start[i] = outerR[i] - uGuess - half - pad;
     sampleWindow(start, step, innerCount, W, m);
     for (int pass = 0; pass < 2; ++pass) {
         for (int i = 0; i < kRays; ++i) {
