@@ -12,10 +12,15 @@
 #include <cstdio>
 #include <cstring>
 #include <deque>
+#include <filesystem>
 #include <mutex>
 #include <vector>
 
+#include "firmware/device.h"
+#include "firmware/font5x7.h"
 #include "hal/file/clocks.h"
+#include "hal/file/folder_storage.h"
+#include "vision/paper_model.h"
 #include "hal/v4l2/v4l2_camera.h"
 
 namespace {
@@ -291,6 +296,82 @@ TEST_F(V4l2Mock, NoCameraIsNotFound)
     EXPECT_EQ(e.code, hal::Errc::NotFound) << e.message;
     hal::CapturedFrame frame;
     EXPECT_EQ(cam.capture(10, &frame).code, hal::Errc::NotFound);
+}
+
+// The product-level bar: the camera unplugged while streaming shows as an error on the display
+// and on serial, the program keeps going, and measuring resumes once it is plugged back in.
+struct QuietTrigger final : hal::TriggerButton {
+    hal::Result<size_t> readEdges(hal::ButtonEdge *, size_t) override { return {}; }
+};
+struct PlainLed final : hal::LedRing {
+    bool on = false;
+    hal::Error set(bool v) override { on = v; return {}; }
+    bool isOn() const override { return on; }
+};
+struct RecordingSerial final : hal::SerialPort {
+    std::string in, out;
+    hal::Result<size_t> read(char *buf, size_t cap) override
+    {
+        const size_t n = std::min(cap, in.size());
+        in.copy(buf, n);
+        in.erase(0, n);
+        return {n, {}};
+    }
+    hal::Error write(std::string_view d) override { out.append(d); return {}; }
+};
+struct RecordingDisplay final : hal::Display {
+    hal::MonoBitmap last;
+    hal::Error show(const hal::MonoBitmap &p) override { last = p; return {}; }
+};
+
+TEST_F(V4l2Mock, FirmwareReportsUnplugAndMeasuresAgainAfterReplug)
+{
+    char t[] = "/tmp/icacam-v4l2-fw-XXXXXX";
+    const std::string dir = ::mkdtemp(t);
+    hal::V4l2Camera cam(clock_, {"/dev/video0", 2}, &mapper_);
+    QuietTrigger trigger;
+    PlainLed led;
+    RecordingDisplay display;
+    RecordingSerial serial;
+    hal::FolderStorage storage;
+    ASSERT_TRUE(storage.open(dir, 0).ok());
+    fw::Config cfg;
+    cfg.n = 0.2;
+    cfg.mmPerPx = 0.0125;
+    cfg.cameraMaxWidth = 640;
+    cfg.cameraMaxHeight = 480;
+    cfg.captureTimeoutMs = 300;
+    cfg.journalImages = "none";
+    vision::PaperModel model;
+    fw::Device device({cam, trigger, led, display, serial, storage, clock_}, cfg, model);
+    ASSERT_TRUE(device.start().ok());
+
+    {
+        std::lock_guard<std::mutex> lock(video_.m);
+        video_.unplugged = true;
+    }
+    serial.in = "trigger\n";
+    device.tick();
+    EXPECT_NE(serial.out.find("\"code\":\"measurement_failed\""), std::string::npos) << serial.out;
+    EXPECT_NE(serial.out.find("unplugged"), std::string::npos) << serial.out;
+    EXPECT_EQ(fw::readRow(display.last, 0), "#1 error");
+    EXPECT_NE(fw::readRow(display.last, 2).find("camera"), std::string::npos) << fw::readRow(display.last, 2);
+    EXPECT_FALSE(led.on);
+
+    {
+        std::lock_guard<std::mutex> lock(video_.m);
+        video_.unplugged = false;
+        video_.streaming = false;
+    }
+    expose(nowNs() + 1000000000, 128);
+    serial.out.clear();
+    serial.in = "trigger\n";
+    device.tick();
+    // A frame was captured and measured (a blank frame: the vision finds no specimen, a
+    // result, not a camera failure).
+    EXPECT_EQ(serial.out.find("camera"), std::string::npos) << serial.out;
+    EXPECT_NE(fw::readRow(display.last, 0).find("#2"), std::string::npos) << fw::readRow(display.last, 0);
+    std::filesystem::remove_all(dir);
 }
 
 bool preloadLoaded()
