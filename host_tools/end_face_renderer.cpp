@@ -27,6 +27,17 @@ double smoothStep(double x) { return std::clamp(x + 0.5, 0.0, 1.0); } // 1 px li
 double EndFaceScene::rInnerEqMm() const { return rInnerMm * eqFactor(*this, 0); }
 double EndFaceScene::rOuterEqMm() const { return rOuterMm * eqFactor(*this, 1); }
 
+EndFaceScene nominalScene(double uMm)
+{
+    EndFaceScene s;
+    s.rOuterMm = 6.2;
+    s.rInnerMm = 6.2 - uMm;
+    s.rMaxMm = 5.0 * std::sqrt(2.0) * (1.008 + 0.034 * uMm);
+    s.blurSigmaPx = 1.0;
+    s.noiseSigma = 2;
+    return s;
+}
+
 EndFaceScene randomScene(std::mt19937 &rng, double uMm, double rOuterMm, double rMaxMm, bool hard)
 {
     auto U = [&](double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); };

@@ -37,6 +37,11 @@ struct EndFaceScene {
     double rOuterEqMm() const;
 };
 
+// A clean scene of the paper's geometry at 50 % reduction (D0 10 mm): contact edge 6.2 mm,
+// ICA width u, silhouette from volume constancy, mild blur and noise. Tests and benchmarks
+// start from it and add what they exercise.
+EndFaceScene nominalScene(double uMm = 0.6);
+
 // Random scene for the given (u, geometry); nuisances drawn from the ranges the vision
 // library must handle. `hard` widens them to the limits.
 EndFaceScene randomScene(std::mt19937 &rng, double uMm, double rOuterMm, double rMaxMm, bool hard);

@@ -13,9 +13,9 @@ namespace {
 const cv::Mat &frame()
 {
     static const cv::Mat img = [] {
-        icacam::host::EndFaceScene s;
-        s.rInnerMm = 5.5; s.rOuterMm = 6.2; s.rMaxMm = 7.25;
-        s.blurSigmaPx = 1.2; s.noiseSigma = 3; s.stains = 3; s.turningMarks = 3;
+        icacam::host::EndFaceScene s = icacam::host::nominalScene(0.7);
+        s.stains = 3;
+        s.turningMarks = 3;
         return icacam::host::renderEndFace(s);
     }();
     return img;

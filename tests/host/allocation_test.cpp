@@ -33,12 +33,7 @@ using namespace icacam;
 
 TEST(Allocation, NoneDuringMeasurement)
 {
-    host::EndFaceScene s;
-    s.rInnerMm = 5.5;
-    s.rOuterMm = 6.2;
-    s.rMaxMm = 7.25;
-    s.blurSigmaPx = 1.2;
-    s.noiseSigma = 3;
+    host::EndFaceScene s = host::nominalScene(0.7);
     s.stains = 3;
     const cv::Mat img = host::renderEndFace(s);
     vision::EndFaceAnalyzer analyzer;

@@ -23,17 +23,7 @@ TEST(BadInput, EachGetsAnErrorAndTheBatchGoesOn)
 {
     const fs::path dir = test::tempDir("bad");
     // One good image, rendered by our own renderer.
-    host::EndFaceScene s;
-    s.width = 1456;
-    s.height = 1088;
-    s.mmPerPx = 0.0135;
-    s.rInnerMm = 5.6;
-    s.rOuterMm = 6.2;
-    s.rMaxMm = 7.22;
-    s.cxPx = 700;
-    s.cyPx = 540;
-    s.blurSigmaPx = 1.0;
-    s.noiseSigma = 2;
+    const host::EndFaceScene s = host::nominalScene(0.6);
     const cv::Mat good = host::renderEndFace(s);
     std::vector<uint8_t> png;
     cv::imencode(".png", good, png);

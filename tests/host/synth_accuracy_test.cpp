@@ -50,9 +50,7 @@ TEST(SynthAccuracy, RandomScenesWithNuisances)
 
 TEST(SynthAccuracy, RecordedReductionOutsideTheModelIsFlagged)
 {
-    host::EndFaceScene s;
-    s.rInnerMm = 5.6; s.rOuterMm = 6.2; s.rMaxMm = 5.0 * std::sqrt(2.0) * (1.008 + 0.034 * 0.6);
-    s.blurSigmaPx = 1.0; s.noiseSigma = 2;
+    const host::EndFaceScene s = host::nominalScene(0.6);
     const cv::Mat img = host::renderEndFace(s);
     vision::EndFaceAnalyzer analyzer;
     ASSERT_EQ(analyzer.configure(img.cols, img.rows), vision::ErrorCode::None);
