@@ -61,60 +61,104 @@ double mean(const std::vector<double> &v)
     return v.empty() ? 0 : s / double(v.size());
 }
 
-// Fits the candidate on the records with fold != k and predicts those with fold == k.
-// k < 0: fit on all and predict all.
+// Features of one record for a candidate in a form. mu form: [1] (baseline), [1, x]
+// (numeric), one-hot levels (categorical). scale form (g = dμ/du · u): [1, g] (baseline: an
+// offset and a global scale), [1, g, g·x] (numeric), [1, g·one-hot] (categorical). Every
+// model contains its form's baseline, so a candidate's gain is what its values add.
+struct Design {
+    const Candidate *c;
+    const std::vector<double> *g;
+    std::vector<std::string> levels; // categorical levels seen in training
+    std::vector<double> xMean;       // numeric: training mean (missing values take it)
+
+    size_t size() const
+    {
+        if (!c) return g ? 2 : 1;
+        if (c->kind == "categorical") return g ? 1 + levels.size() : levels.size();
+        return g ? 3 : 2;
+    }
+    void row(size_t i, std::vector<double> *f) const
+    {
+        f->assign(size(), 0);
+        if (c && c->kind == "categorical") {
+            const auto it = std::lower_bound(levels.begin(), levels.end(), c->levels[i]);
+            const bool seen = it != levels.end() && *it == c->levels[i];
+            const size_t j = size_t(it - levels.begin());
+            if (g) {
+                (*f)[0] = 1;
+                if (seen) (*f)[1 + j] = (*g)[i];
+            } else if (seen) {
+                (*f)[j] = 1;
+            }
+            return;
+        }
+        (*f)[0] = 1;
+        if (g) (*f)[1] = (*g)[i];
+        if (c) {
+            const double x = std::isfinite(c->x[i]) ? c->x[i] - xMean[0] : 0;
+            (*f)[g ? 2 : 1] = g ? (*g)[i] * x : x;
+        }
+    }
+};
+
+// Fits the candidate (nullptr: the baseline) on the records with fold != k and predicts those
+// with fold == k. k < 0: fit on all and predict all. sens: the scale form.
 void fitPredict(const Candidate *c, const std::vector<double> &y, const std::vector<int> &fold, int k,
-                std::vector<double> *pred)
+                std::vector<double> *pred, const std::vector<double> *sens = nullptr)
 {
     const size_t n = y.size();
     auto train = [&](size_t i) { return k < 0 || fold[i] != k; };
-    auto test = [&](size_t i) { return k < 0 || fold[i] == k; };
+    Design d{c, sens, {}, {0}};
     double sy = 0;
     int cnt = 0;
     for (size_t i = 0; i < n; ++i)
         if (train(i)) { sy += y[i]; ++cnt; }
     const double my = cnt ? sy / cnt : 0;
-    if (!c) {
+    if (c && c->kind == "categorical") {
+        std::set<std::string> lv;
         for (size_t i = 0; i < n; ++i)
-            if (test(i)) (*pred)[i] = my;
-        return;
-    }
-    if (c->kind == "categorical") {
-        std::map<std::string, std::pair<double, int>> lv;
+            if (train(i)) lv.insert(c->levels[i]);
+        d.levels.assign(lv.begin(), lv.end());
+    } else if (c) {
+        double sx = 0;
+        int nx = 0;
         for (size_t i = 0; i < n; ++i)
-            if (train(i)) { auto &e = lv[c->levels[i]]; e.first += y[i]; e.second++; }
-        for (size_t i = 0; i < n; ++i) {
-            if (!test(i)) continue;
-            auto it = lv.find(c->levels[i]);
-            (*pred)[i] = it == lv.end() ? my : it->second.first / it->second.second;
-        }
-        return;
+            if (train(i) && std::isfinite(c->x[i])) { sx += c->x[i]; ++nx; }
+        d.xMean[0] = nx ? sx / nx : 0;
     }
-    double sx = 0;
-    int nx = 0;
-    for (size_t i = 0; i < n; ++i)
-        if (train(i) && std::isfinite(c->x[i])) { sx += c->x[i]; ++nx; }
-    const double mx = nx ? sx / nx : 0;
-    double sxx = 0, sxy = 0;
+    const size_t p = d.size();
+    std::vector<double> a(p * p, 0), b(p, 0), q, f;
     for (size_t i = 0; i < n; ++i) {
         if (!train(i)) continue;
-        const double x = std::isfinite(c->x[i]) ? c->x[i] - mx : 0;
-        sxx += x * x;
-        sxy += x * (y[i] - my);
+        d.row(i, &f);
+        for (size_t r = 0; r < p; ++r) {
+            b[r] += f[r] * y[i];
+            for (size_t cc = 0; cc < p; ++cc) a[r * p + cc] += f[r] * f[cc];
+        }
     }
-    const double b = sxx > 1e-300 ? sxy / sxx : 0;
+    double tr = 0;
+    for (size_t r = 0; r < p; ++r) tr += a[r * p + r];
+    for (size_t r = 0; r < p; ++r) a[r * p + r] += 1e-10 * tr / double(p) + 1e-300; // degenerate columns
+    const bool ok = solve(a, b, &q);
     for (size_t i = 0; i < n; ++i) {
-        if (!test(i)) continue;
-        const double x = std::isfinite(c->x[i]) ? c->x[i] - mx : 0;
-        (*pred)[i] = my + b * x;
+        if (k >= 0 && fold[i] != k) continue;
+        if (!ok) { (*pred)[i] = my; continue; }
+        d.row(i, &f);
+        double v = 0;
+        for (size_t r = 0; r < p; ++r) v += f[r] * q[r];
+        // An unseen level in the mu form has no feature: it takes the training mean.
+        if (c && c->kind == "categorical" && !sens &&
+            !std::binary_search(d.levels.begin(), d.levels.end(), c->levels[i]))
+            v = my;
+        (*pred)[i] = v;
     }
 }
 
 std::vector<double> cvErrors(const Candidate *c, const std::vector<double> &y, const std::vector<int> &fold,
-                             int folds)
+                             int folds, const std::vector<double> *sens = nullptr)
 {
     std::vector<double> pred(y.size(), 0);
-    for (int k = 0; k < folds; ++k) fitPredict(c, y, fold, k, &pred);
+    for (int k = 0; k < folds; ++k) fitPredict(c, y, fold, k, &pred, sens);
     for (size_t i = 0; i < y.size(); ++i) pred[i] = y[i] - pred[i];
     return pred;
 }
@@ -207,33 +251,42 @@ std::vector<Candidate> buildCandidates(const std::vector<LoopRecord> &usable)
 }
 
 std::vector<double> cvPredict(const Candidate &c, const std::vector<double> &residual, const std::vector<int> &fold,
-                              int folds)
+                              int folds, const std::vector<double> *scaleSensitivity)
 {
     std::vector<double> pred(residual.size(), 0);
-    for (int k = 0; k < folds; ++k) fitPredict(&c, residual, fold, k, &pred);
+    for (int k = 0; k < folds; ++k) fitPredict(&c, residual, fold, k, &pred, scaleSensitivity);
     return pred;
 }
 
 std::vector<RankedCandidate> rankCandidates(const std::vector<Candidate> &candidates, const std::vector<double> &y,
-                                            const RankingOptions &opt)
+                                            const RankingOptions &opt, const std::vector<double> *scaleSensitivity)
 {
     std::vector<RankedCandidate> out;
     if (y.size() < 4) return out;
     const int folds = std::clamp(opt.folds, 2, int(y.size()));
     const std::vector<int> fold = foldAssignment(y.size(), folds, opt.seed);
-    const std::vector<double> e0 = cvErrors(nullptr, y, fold, folds);
-    const double before = rms(e0);
-    const double zCrit = normalUpperQuantile(opt.alpha / double(std::max<size_t>(candidates.size(), 1)));
+    const std::vector<double> e0mu = cvErrors(nullptr, y, fold, folds);
+    const std::vector<double> e0scale =
+        scaleSensitivity ? cvErrors(nullptr, y, fold, folds, scaleSensitivity) : e0mu;
+    const size_t forms = scaleSensitivity ? 2 : 1;
+    const double zCrit = normalUpperQuantile(opt.alpha / double(std::max<size_t>(candidates.size() * forms, 1)));
     for (const Candidate &c : candidates) {
-        const std::vector<double> e1 = cvErrors(&c, y, fold, folds);
+        std::vector<double> e1 = cvErrors(&c, y, fold, folds);
+        const std::vector<double> *e0 = &e0mu;
+        std::string form = "mu";
+        if (scaleSensitivity) {
+            std::vector<double> e2 = cvErrors(&c, y, fold, folds, scaleSensitivity);
+            if (rms(e0scale) - rms(e2) > rms(e0mu) - rms(e1)) { e1 = std::move(e2); e0 = &e0scale; form = "scale"; }
+        }
         RankedCandidate r;
         r.name = c.name;
         r.kind = c.kind;
-        r.cvRmsBefore = before;
+        r.form = form;
+        r.cvRmsBefore = rms(*e0);
         r.cvRmsAfter = rms(e1);
-        r.gain = before - r.cvRmsAfter;
+        r.gain = r.cvRmsBefore - r.cvRmsAfter;
         std::vector<double> d(y.size());
-        for (size_t i = 0; i < y.size(); ++i) d[i] = e0[i] * e0[i] - e1[i] * e1[i];
+        for (size_t i = 0; i < y.size(); ++i) d[i] = std::fabs((*e0)[i]) - std::fabs(e1[i]);
         const double md = mean(d);
         double v = 0;
         for (double x : d) v += (x - md) * (x - md);
@@ -253,11 +306,11 @@ std::vector<RankedCandidate> rankCandidates(const std::vector<Candidate> &candid
             }
             r.correlation = sx > 0 && sy2 > 0 ? sxy / std::sqrt(sx * sy2) : 0;
         }
-        r.significant = r.gain > 0 && r.z > zCrit && r.gain >= opt.minRelativeGain * before;
+        r.significant = r.gain > 0 && r.z > zCrit && r.gain >= opt.minRelativeGain * r.cvRmsBefore;
         out.push_back(r);
     }
     std::stable_sort(out.begin(), out.end(),
-                     [](const RankedCandidate &a, const RankedCandidate &b) { return a.gain > b.gain; });
+                     [](const RankedCandidate &a, const RankedCandidate &b) { return a.cvRmsAfter < b.cvRmsAfter; });
     return out;
 }
 

@@ -22,6 +22,7 @@ struct LoopRecord {
     double uMm = 0;       // measured ICA width
     double muModel = 0;   // the model's μ at the measured u
     double muRef = 0;     // reference μ (independent method)
+    double scaleSens = 0; // dμ/du · u: μ's change per unit relative scale error of u
     double reduction = -1; // 1 - h_final/h0 when recorded, else -1
     bool usable = false;   // measured and with a reference
 };
@@ -36,6 +37,10 @@ struct Candidate {
 
 struct RankedCandidate {
     std::string name, kind;
+    // "mu": an offset in μ (per level, or linear in the value); "scale": a relative scale of
+    // u (per level, or linear in the value), i.e. residual = (dμ/du · u) · (a + b x) — how an
+    // optical scale error acts.
+    std::string form = "mu";
     double cvRmsBefore = 0; // k-fold RMS of the residual with a constant offset only
     double cvRmsAfter = 0;  // k-fold RMS with the one-candidate model
     double gain = 0;        // cvRmsBefore - cvRmsAfter
@@ -59,14 +64,19 @@ std::vector<int> foldAssignment(size_t count, int folds, uint32_t seed);
 // recorded, and every diagnostic.
 std::vector<Candidate> buildCandidates(const std::vector<LoopRecord> &usable);
 
-// Ranks candidates by k-fold CV gain on the residual (μ_model − μ_ref), best first.
+// Ranks candidates by k-fold CV RMS of the residual (μ_model − μ_ref) after the candidate's
+// model, best first; significance is the gain over the form's own baseline. With
+// scaleSensitivity (dμ/du · u per record) each candidate is tried in both forms (the better
+// one counts; the Bonferroni count doubles).
 std::vector<RankedCandidate> rankCandidates(const std::vector<Candidate> &candidates,
                                             const std::vector<double> &residual,
-                                            const RankingOptions &opt);
+                                            const RankingOptions &opt,
+                                            const std::vector<double> *scaleSensitivity = nullptr);
 
 // Cross-validated predictions of the residual by one candidate (for before/after plots).
 std::vector<double> cvPredict(const Candidate &c, const std::vector<double> &residual,
-                              const std::vector<int> &fold, int folds);
+                              const std::vector<int> &fold, int folds,
+                              const std::vector<double> *scaleSensitivity = nullptr);
 
 // du/dr (mm per unit height reduction, D0 = 10 mm) from FE snapshots: per (n, μ) case, the
 // slope at 50 % of a least-squares quadratic in r of u over the reductions 0.35–0.5; then a smooth quadratic surface in

@@ -63,7 +63,7 @@ bool scatterPlot(const std::string &path, const std::string &title, const std::s
     cv::rectangle(img, {L, T}, {W - R, H - B}, black, 1);
     cv::putText(img, title, {L, 30}, cv::FONT_HERSHEY_SIMPLEX, 0.65, black, 1, cv::LINE_AA);
     cv::putText(img, xLabel, {W / 2 - 80, H - 25}, cv::FONT_HERSHEY_SIMPLEX, 0.55, black, 1, cv::LINE_AA);
-    cv::putText(img, yLabel, {5, T - 10}, cv::FONT_HERSHEY_SIMPLEX, 0.5, black, 1, cv::LINE_AA);
+    cv::putText(img, yLabel, {5, 14}, cv::FONT_HERSHEY_SIMPLEX, 0.45, black, 1, cv::LINE_AA);
     int legendY = T + 20;
     for (const Series &s : series) {
         const cv::Scalar c = bgr(s.colour);
@@ -81,8 +81,8 @@ bool scatterPlot(const std::string &path, const std::string &title, const std::s
                     cv::circle(img, {X(s.x[i]), Y(s.y[i])}, 4, c, -1, cv::LINE_AA);
         }
         if (!s.label.empty()) {
-            cv::circle(img, {W - R - 260, legendY - 5}, 5, c, -1, cv::LINE_AA);
-            cv::putText(img, s.label, {W - R - 248, legendY}, cv::FONT_HERSHEY_SIMPLEX, 0.5, black, 1, cv::LINE_AA);
+            cv::circle(img, {L + 15, legendY - 5}, 5, c, -1, cv::LINE_AA);
+            cv::putText(img, s.label, {L + 27, legendY}, cv::FONT_HERSHEY_SIMPLEX, 0.5, black, 1, cv::LINE_AA);
             legendY += 20;
         }
     }
