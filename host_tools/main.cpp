@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "calibrate_command.h"
+#include "ctl_command.h"
 #include "fe/fe_command.h"
 #include "loop/loop_command.h"
 #include "measure_command.h"
@@ -19,6 +20,7 @@ const char *kHelp =
     "  calibrate camera intrinsics, distortion and fixture pose from board photos\n"
     "  fe        CalculiX upsetting runs, sweeps and the μ model built from them\n"
     "  loop      residuals against measured records: rank causes, correct, report\n"
+    "  ctl       talk to the device over its serial line (status, trigger, settings, results)\n"
     "Run 'icacam <command> --help' for the options of one command.\n";
 }
 
@@ -33,6 +35,7 @@ int main(int argc, char **argv)
         if (cmd == "calibrate") return icacam::host::calibrateCommand(args);
         if (cmd == "fe") return icacam::host::feCommand(args);
         if (cmd == "loop") return icacam::host::loopCommand(args);
+        if (cmd == "ctl") return icacam::host::ctlCommand(args);
         if (cmd == "-h" || cmd == "--help" || cmd == "help") { std::cout << kHelp; return 0; }
         std::cerr << "icacam: unknown command '" << cmd << "'\n" << kHelp;
         return 2;
