@@ -245,6 +245,8 @@ Error V4l2Camera::capture(int timeoutMs, CapturedFrame *out)
     }
     const int64_t startNs = monotonicNs();
     const int64_t deadline = clock_.monotonicMs() + timeoutMs;
+    // Also bounded in real time: a test's manual clock does not move while poll() waits.
+    const int64_t realDeadlineNs = startNs + int64_t(timeoutMs) * 1000000;
     Error failure;
     if (Error e = requeueHeld(); !e.ok()) failure = e;
     while (failure.ok()) {
@@ -271,7 +273,9 @@ Error V4l2Camera::capture(int timeoutMs, CapturedFrame *out)
                                        : Error::make(Errc::Io, sysError("camera: DQBUF"));
             break;
         }
-        const int64_t left = deadline - clock_.monotonicMs();
+        int64_t left = deadline - clock_.monotonicMs();
+        const int64_t realLeft = (realDeadlineNs - monotonicNs()) / 1000000;
+        if (realLeft < left) left = realLeft;
         if (left <= 0) return Error::make(Errc::Timeout, "camera: no frame within " + std::to_string(timeoutMs) + " ms");
         pollfd p{fd_.get(), POLLIN, 0};
         const int pr = ::poll(&p, 1, int(left < 20 ? left : 20)); // short slices: the deadline rules

@@ -262,6 +262,15 @@ TEST_F(V4l2Mock, CaptureTimesOutWithoutBlocking)
     EXPECT_LT(took, 1000);
 }
 
+TEST_F(V4l2Mock, CaptureTimesOutEvenWithAManualClock)
+{
+    hal::ManualClock manual(5000); // does not move while the camera waits
+    hal::V4l2Camera cam(manual, {"/dev/video0", 2}, &mapper_);
+    ASSERT_TRUE(cam.configure({vision::PixelFormat::YUYV, 640, 480}).ok());
+    hal::CapturedFrame frame;
+    EXPECT_EQ(cam.capture(100, &frame).code, hal::Errc::Timeout);
+}
+
 TEST_F(V4l2Mock, UnplugIsAnErrorAndCaptureResumesAfterReplug)
 {
     hal::V4l2Camera cam(clock_, {"/dev/video0", 2}, &mapper_);
