@@ -18,7 +18,7 @@ struct CentreEstimate {
 
 class SpecimenLocator {
 public:
-    static constexpr int kMaxCells = 64; // decimated frame is at most 64 × 64
+    static constexpr int kMaxCells = 96; // decimated frame is at most 96 × 96
     // Working memory a locator needs (bytes), for the arena.
     static constexpr size_t kWorkBytes = size_t(kMaxCells) * kMaxCells * 5; // luma, |g|, votes
 
