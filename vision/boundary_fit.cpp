@@ -52,11 +52,10 @@ double medianOf(double *v, int n)
 
 } // namespace
 
-bool fitBoundary(const EdgeSample *points, const double *radiusPx, const bool *valid, int n,
+bool fitBoundary(const double *radiusPx, const bool *valid, int n,
                  double centreX, double centreY, const FitOptions &opt, BoundaryFit *out,
                  double *curveOut)
 {
-    (void)points;
     if (n > kMaxRays || n < 8) return false;
     // The rays are evenly spaced, so the least-squares Fourier fit with some rays missing is
     // found by imputation: fill the missing rays with the current curve and take the DFT

@@ -11,10 +11,10 @@ struct FitOptions {
     double minRejectPx = 0.75;    // never reject closer than this (sub-pixel noise)
 };
 
-// Fits the valid samples of `points` (n rays, evenly spaced from angle 0; n must divide
+// Fits the valid radii (n rays, evenly spaced from angle 0; n must divide
 // 256). Returns false when fewer than 8 points survive. Per boundary, not per pixel: double is fine here.
 // `curveOut`, when given, receives the fitted radius at each of the n rays.
-bool fitBoundary(const EdgeSample *points, const double *radiusPx, const bool *valid, int n,
+bool fitBoundary(const double *radiusPx, const bool *valid, int n,
                  double centreX, double centreY, const FitOptions &opt, BoundaryFit *out,
                  double *curveOut = nullptr);
 

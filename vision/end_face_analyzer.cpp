@@ -78,7 +78,7 @@ bool EndFaceAnalyzer::refineCentre(const LumaView &v, double r0Px, double *cx, d
         FitOptions opt;
         opt.maxHarmonics = 1;
         opt.minRejectPx = 2.0;
-        if (!fitBoundary(nullptr, radius, valid, rays, *cx, *cy, opt, &fit)) return false;
+        if (!fitBoundary(radius, valid, rays, *cx, *cy, opt, &fit)) return false;
         if (fit.coverage < 0.25) return false;
         *cx = fit.centreX;
         *cy = fit.centreY;

@@ -3,10 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#ifdef ICACAM_DEBUG
-#include <cstdio>
-#endif
-
 #include "boundary_fit.h"
 #include "edge_profile.h"
 #include "end_face_analyzer.h"
@@ -219,7 +215,7 @@ bool RingSearch::locateOnRays(int sign, const double *loPx, const double *hiPx, 
             row[j + reach] != kOutsideFrame)
             steps[nSteps++] = (double(row[j + reach]) - double(row[j - reach])) / 256.0;
     }
-    if (!fitBoundary(pts, radius, valid, kRays, cx, cy, FitOptions{}, fit, curveOut)) return false;
+    if (!fitBoundary(radius, valid, kRays, cx, cy, FitOptions{}, fit, curveOut)) return false;
     // Points the robust fit rejected are shown as such (overlays, diagnostics).
     const double keep = std::max(0.75, 3 * fit->scatterPx);
     for (int i = 0; i < kRays; ++i) pts[i].valid = pts[i].valid && std::fabs(radius[i] - curveOut[i]) <= keep;
@@ -277,7 +273,7 @@ double RingSearch::silhouetteFromRays(const double *outerR)
     FitOptions opt;
     opt.maxHarmonics = 2;
     opt.minRejectPx = 2.0;
-    if (!fitBoundary(nullptr, radius, valid, kCoarse, cx, cy, opt, &fit) || fit.coverage < 0.4) return 0;
+    if (!fitBoundary(radius, valid, kCoarse, cx, cy, opt, &fit) || fit.coverage < 0.4) return 0;
     return fit.rEqPx;
 }
 
@@ -369,11 +365,6 @@ ErrorCode RingSearch::run(Measurement *m)
     // Noise of the aligned derivative on the inner part of the window (mostly original
     // face: the ICA's turning marks would inflate it).
     const double noise = robustSigma(aD, 0, K / 2);
-#ifdef ICACAM_DEBUG
-    std::fprintf(stderr, "ro=%.1f rmax=%.1f K=%d noise=%.1f step=%.2f\n", me.rOuter, me.rMax, K, noise, step);
-    for (int k = -K; k <= M; ++k) std::fprintf(stderr, "%d:%d/%d ", k, aD[k + K], aP[k + K] / 256);
-    std::fprintf(stderr, "\n");
-#endif
     const double innerMin = std::max(3.0 * noise, 40.0);
     int bestK = 0, innerSign = 0;
     int32_t bestV = 0;

@@ -23,7 +23,7 @@ TEST(BoundaryFit, AreaOfAWobblyCurveMatchesAnalytic)
         valid[i] = true;
     }
     BoundaryFit f;
-    ASSERT_TRUE(fitBoundary(nullptr, r, valid, n, 100, 200, FitOptions{}, &f));
+    ASSERT_TRUE(fitBoundary(r, valid, n, 100, 200, FitOptions{}, &f));
     EXPECT_NEAR(f.rEqPx, R * std::sqrt(1 + 0.5 * (c2 * c2 + c3 * c3)), 0.08);
     EXPECT_NEAR(f.scatterPx, 0.3, 0.06);
     EXPECT_NEAR(f.ellipticity, 2 * c2 * R / (R + c2 * R), 0.002);
@@ -40,7 +40,7 @@ TEST(BoundaryFit, RejectsOutliersAndMissingRays)
         valid[i] = (i % 5) != 0;               // and a fifth of the rays without an edge
     }
     BoundaryFit f;
-    ASSERT_TRUE(fitBoundary(nullptr, r, valid, n, 0, 0, FitOptions{}, &f));
+    ASSERT_TRUE(fitBoundary(r, valid, n, 0, 0, FitOptions{}, &f));
     EXPECT_NEAR(f.rEqPx, 300, 0.01);
     EXPECT_NEAR(f.coverage, 0.75, 0.05);
 }
@@ -58,7 +58,7 @@ TEST(BoundaryFit, CentreOffsetIsTheFirstHarmonic)
         valid[i] = true;
     }
     BoundaryFit f;
-    ASSERT_TRUE(fitBoundary(nullptr, r, valid, n, 0, 0, FitOptions{}, &f));
+    ASSERT_TRUE(fitBoundary(r, valid, n, 0, 0, FitOptions{}, &f));
     EXPECT_NEAR(f.centreX, 13, 0.5);
     EXPECT_NEAR(f.centreY, -7, 0.5);
     EXPECT_NEAR(f.rEqPx, 200, 0.5); // area is independent of the polar origin
@@ -69,5 +69,5 @@ TEST(BoundaryFit, TooFewPointsIsAnError)
     double r[16] = {};
     bool valid[16] = {};
     BoundaryFit f;
-    EXPECT_FALSE(fitBoundary(nullptr, r, valid, 16, 0, 0, FitOptions{}, &f));
+    EXPECT_FALSE(fitBoundary(r, valid, 16, 0, 0, FitOptions{}, &f));
 }
