@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "angle_table.h"
+
 namespace icacam::vision {
 
 double BoundaryFit::radiusAt(double theta) const { return radiusAt(std::cos(theta), std::sin(theta)); }
@@ -25,24 +27,7 @@ namespace {
 
 constexpr int kMaxRays = 1024;
 
-// cos and sin of 2πj/256: every ray count the pipeline uses divides 256, so the harmonic
-// terms of the fit are table look-ups, not trigonometry.
-constexpr int kTable = 256;
-struct TrigTable {
-    double c[kTable], s[kTable];
-    TrigTable()
-    {
-        for (int j = 0; j < kTable; ++j) {
-            c[j] = std::cos(2.0 * std::numbers::pi * j / kTable);
-            s[j] = std::sin(2.0 * std::numbers::pi * j / kTable);
-        }
-    }
-};
-const TrigTable &trig()
-{
-    static const TrigTable t;
-    return t;
-}
+constexpr int kTable = AngleTable::kSize;
 
 double medianOf(double *v, int n)
 {
@@ -61,7 +46,7 @@ bool fitBoundary(const double *radiusPx, const bool *valid, int n,
     // found by imputation: fill the missing rays with the current curve and take the DFT
     // (an EM iteration that converges to the least-squares solution). O(n·K) per pass.
     if (kTable % n != 0) return false; // ray counts must divide the table (32, 64, 256 …)
-    const TrigTable &T = trig();
+    const AngleTable &T = angleTable();
     const int stride = kTable / n;
     double work[kMaxRays], filled[kMaxRays];
     bool keep[kMaxRays];
@@ -77,14 +62,17 @@ bool fitBoundary(const double *radiusPx, const bool *valid, int n,
     f.a0 = med;
     double curve[kMaxRays]; // the current curve at every ray
     for (int i = 0; i < n; ++i) curve[i] = med;
-    // r at ray i: a0 + Σ a_k cos(kθ_i) + b_k sin(kθ_i), with kθ_i looked up mod 2π.
-    auto curveAt = [&](int i) {
-        double r = f.a0;
+    // r at ray i: a0 + Σ a_k cos(kθ_i) + b_k sin(kθ_i), with kθ_i looked up mod 2π. Loops
+    // run over k outside and rays inside, with the table index stepped rather than
+    // multiplied; each sum still adds its terms in the same order.
+    auto updateCurve = [&]() {
+        for (int i = 0; i < n; ++i) curve[i] = f.a0;
         for (int k = 1; k <= f.harmonics; ++k) {
-            const int j = (k * i * stride) & (kTable - 1);
-            r += f.a[k] * T.c[j] + f.b[k] * T.s[j];
+            const double ak = f.a[k], bk = f.b[k];
+            const int dj = k * stride;
+            for (int i = 0, j = 0; i < n; ++i, j = (j + dj) & (kTable - 1))
+                curve[i] += ak * T.cos[j] + bk * T.sin[j];
         }
-        return r;
     };
     int used = 0;
     for (int pass = 0; pass < 3; ++pass) {
@@ -102,15 +90,18 @@ bool fitBoundary(const double *radiusPx, const bool *valid, int n,
             double sum = 0;
             for (int i = 0; i < n; ++i) sum += filled[i];
             g.a0 = sum / n;
-            for (int i = 0; i < n; ++i)
-                for (int k = 1; k <= K; ++k) {
-                    const int j = (k * i * stride) & (kTable - 1);
-                    g.a[k] += filled[i] * T.c[j];
-                    g.b[k] += filled[i] * T.s[j];
+            for (int k = 1; k <= K; ++k) {
+                double sa = 0, sb = 0;
+                const int dj = k * stride;
+                for (int i = 0, j = 0; i < n; ++i, j = (j + dj) & (kTable - 1)) {
+                    sa += filled[i] * T.cos[j];
+                    sb += filled[i] * T.sin[j];
                 }
-            for (int k = 1; k <= K; ++k) { g.a[k] *= 2.0 / n; g.b[k] *= 2.0 / n; }
+                g.a[k] = sa * (2.0 / n);
+                g.b[k] = sb * (2.0 / n);
+            }
             f = g;
-            for (int i = 0; i < n; ++i) curve[i] = curveAt(i);
+            updateCurve();
         }
         int m = 0;
         for (int i = 0; i < n; ++i)

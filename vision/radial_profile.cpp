@@ -4,6 +4,8 @@
 #include <numbers>
 #include <type_traits>
 
+#include "angle_table.h"
+
 namespace icacam::vision {
 
 uint16_t sampleBilinear(const LumaView &v, Q16_16 x, Q16_16 y)
@@ -59,9 +61,11 @@ int sampleRay(const LumaView &v, const RaySpec &ray, int count, uint16_t *out)
             const uint32_t fx = uint32_t(xq & 255), fy = uint32_t(yq & 255);
             const uint8_t *p = base + size_t(yq >> 8) * stride + size_t(xq >> 8) * pixelStep;
             const uint8_t *q = p + stride;
-            const uint32_t top = p[0] * (256 - fx) + p[pixelStep] * fx;
-            const uint32_t bot = q[0] * (256 - fx) + q[pixelStep] * fx;
-            out[i] = uint16_t((top * (256 - fy) + bot * fy + 128) >> 8);
+            // a(256 − f) + b·f = 256a + f(b − a): the same integers with one multiply
+            // fewer per blend (the identity is exact, so the result is bit-identical).
+            const int32_t top = (int32_t(p[0]) << 8) + (int32_t(p[pixelStep]) - int32_t(p[0])) * int32_t(fx);
+            const int32_t bot = (int32_t(q[0]) << 8) + (int32_t(q[pixelStep]) - int32_t(q[0])) * int32_t(fx);
+            out[i] = uint16_t(((top << 8) + (bot - top) * int32_t(fy) + 128) >> 8);
         }
     };
     // A compile-time pixel step of 1 (grey, NV12, YUV420) saves a multiply per sample.
@@ -72,6 +76,13 @@ int sampleRay(const LumaView &v, const RaySpec &ray, int count, uint16_t *out)
 
 void rayDirection(int i, int n, Q2_14 *cosT, Q2_14 *sinT)
 {
+    const AngleTable &a = angleTable();
+    if (n > 0 && AngleTable::kSize % n == 0 && i >= 0 && i < n) {
+        const int j = i * (AngleTable::kSize / n);
+        *cosT = a.cosQ[j];
+        *sinT = a.sinQ[j];
+        return;
+    }
     const double t = 2.0 * std::numbers::pi * double(i) / double(n);
     *cosT = Q2_14::fromDouble(std::cos(t));
     *sinT = Q2_14::fromDouble(std::sin(t));

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+
+#include "angle_table.h"
 #include "boundary_fit.h"
 #include "edge_profile.h"
 #include "end_face_analyzer.h"
@@ -11,7 +13,6 @@
 namespace icacam::vision {
 
 namespace {
-constexpr double kPi = std::numbers::pi;
 constexpr int kRays = EndFaceAnalyzer::kFineRays;
 constexpr int kMaxFine = EndFaceAnalyzer::kMaxFineSamples;
 constexpr int kMaxCoarse = EndFaceAnalyzer::kMaxCoarseSamples;
@@ -38,19 +39,33 @@ double robustSigma(const int32_t *d, int lo, int hi)
 // scratch lines) average out over a box wider than their period; a level change does not.
 void boxStep(const int32_t *t, int count, int w, bool allInside, int16_t *d)
 {
+    const int32_t scale = w * 32; // 4·256/32: out in 1/32 grey
+    if (allInside) {
+        // Every t[j] is usable: slide the two boxes (the same integer sums as the prefix
+        // path below, at a third of its work).
+        for (int j = 0; j < count; ++j) d[j] = 0;
+        if (count < 2 * w + 1) return;
+        int32_t in = 0, out = 0; // Σ t[j−w … j−1] and Σ t[j+1 … j+w], at most 12 × 261120
+        for (int m = 0; m < w; ++m) in += t[m];
+        for (int m = w + 1; m <= 2 * w; ++m) out += t[m];
+        for (int j = w;; ++j) {
+            d[j] = int16_t(std::clamp((out - in) / scale, -32767, 32767));
+            if (j + w + 1 >= count) break;
+            out += t[j + w + 1] - t[j + 1];
+            in += t[j] - t[j - w];
+        }
+        return;
+    }
     // Sums of at most 640 samples of 4×Q8 (≤ 261120) fit in 32 bits.
     int32_t prefix[kMaxFine + 1];
-    int16_t badCount[kMaxFine + 1]; // samples outside the frame up to j (only if any)
+    int16_t badCount[kMaxFine + 1]; // samples outside the frame up to j
     prefix[0] = 0;
     for (int j = 0; j < count; ++j) prefix[j + 1] = prefix[j] + (t[j] < 0 ? 0 : t[j]);
-    if (!allInside) {
-        badCount[0] = 0;
-        for (int j = 0; j < count; ++j) badCount[j + 1] = int16_t(badCount[j] + (t[j] < 0));
-    }
-    const int32_t scale = w * 32; // 4·256/32: out in 1/32 grey
+    badCount[0] = 0;
+    for (int j = 0; j < count; ++j) badCount[j + 1] = int16_t(badCount[j] + (t[j] < 0));
     for (int j = 0; j < count; ++j) {
         if (j < w || j + w >= count) { d[j] = 0; continue; }
-        if (!allInside && badCount[j + w + 1] != badCount[j - w]) { d[j] = 0; continue; }
+        if (badCount[j + w + 1] != badCount[j - w]) { d[j] = 0; continue; }
         const int32_t diff = (prefix[j + w + 1] - prefix[j + 1]) - (prefix[j] - prefix[j - w]);
         d[j] = int16_t(std::clamp(diff / scale, -32767, 32767));
     }
@@ -279,11 +294,12 @@ double RingSearch::silhouetteFromRays(const double *outerR)
 
 ErrorCode RingSearch::run(Measurement *m)
 {
-    for (int i = 0; i < kRays; ++i) {
-        rayCos_[i] = std::cos(2 * kPi * i / kRays);
-        raySin_[i] = std::sin(2 * kPi * i / kRays);
-        rayDirection(i, kRays, &rayCosQ_[i], &raySinQ_[i]);
-    }
+    static_assert(kRays == AngleTable::kSize, "fine ray i is table angle i");
+    const AngleTable &angles = angleTable();
+    rayCos_ = angles.cos;
+    raySin_ = angles.sin;
+    rayCosQ_ = angles.cosQ;
+    raySinQ_ = angles.sinQ;
     const MeanEdges me = meanProfileEdges();
     if (!me.found) return ErrorCode::OuterEdgeNotFound;
 

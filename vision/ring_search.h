@@ -47,10 +47,11 @@ struct RingSearch {
     double silhouetteFromRays(const double *outerR);
 
     double fineStart_[kMaxRayTable] = {}, fineStep_ = 1;
-    Q2_14 rayCosQ_[kMaxRayTable] = {}, raySinQ_[kMaxRayTable] = {};
+    // Fine ray i points along angle 2πi/256: directions come from the shared AngleTable.
+    const Q2_14 *rayCosQ_ = nullptr, *raySinQ_ = nullptr;
+    const double *rayCos_ = nullptr, *raySin_ = nullptr;
     uint32_t samplesInside_ = 0, samplesSaturated_ = 0;
     int fineCount_ = 0;
-    double rayCos_[kMaxRayTable] = {}, raySin_[kMaxRayTable] = {}; // per fine ray
 };
 
 } // namespace icacam::vision

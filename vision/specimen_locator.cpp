@@ -37,15 +37,17 @@ CentreEstimate SpecimenLocator::locate(const LumaView &v, double rMinPx, double 
     // Decimate: mean of a 2×2 block at the centre of each D×D cell.
     const int off = D >= 2 ? D / 2 - 1 : 0;
     const int step2 = D >= 2 ? 1 : 0;
-    for (int y = 0; y < H; ++y)
-        for (int x = 0; x < W; ++x) {
-            const int px = x * D + off, py = y * D + off;
-            const int px2 = std::min(px + step2, v.width - 1), py2 = std::min(py + step2, v.height - 1);
-            const uint8_t *r0 = v.data + size_t(py) * size_t(v.stride);
-            const uint8_t *r1 = v.data + size_t(py2) * size_t(v.stride);
-            const size_t a = size_t(px) * size_t(v.pixelStep), b = size_t(px2) * size_t(v.pixelStep);
-            dec[y * W + x] = uint8_t((r0[a] + r0[b] + r1[a] + r1[b] + 2) >> 2);
-        }
+    // For D ≥ 2 the second pixel of a block (+1) stays inside the frame (W·D ≤ width), so
+    // the loop needs no clamping; for D = 1 the "block" is the pixel itself.
+    const size_t ps = size_t(v.pixelStep);
+    const size_t colStep = size_t(D) * ps, pairStep = size_t(step2) * ps;
+    for (int y = 0; y < H; ++y) {
+        const uint8_t *r0 = v.data + size_t(y * D + off) * size_t(v.stride) + size_t(off) * ps;
+        const uint8_t *r1 = r0 + size_t(step2) * size_t(v.stride);
+        uint8_t *out = dec + y * W;
+        for (int x = 0; x < W; ++x, r0 += colStep, r1 += colStep)
+            out[x] = uint8_t((r0[0] + r0[pairStep] + r1[0] + r1[pairStep] + 2) >> 2);
+    }
 
     // Sobel gradients; threshold at the 96th percentile of the L1 magnitude so that the
     // voters are the strongest edges whatever the exposure (and at least 4 grey levels).
@@ -57,14 +59,17 @@ CentreEstimate SpecimenLocator::locate(const LumaView &v, double rMinPx, double 
         *gx = (p[-W + 1] + 2 * p[1] + p[W + 1]) - (p[-W - 1] + 2 * p[-1] + p[W - 1]);
         *gy = (p[W - 1] + 2 * p[W] + p[W + 1]) - (p[-W - 1] + 2 * p[-W] + p[-W + 1]);
     };
-    for (int y = 1; y < H - 1; ++y)
+    for (int y = 1; y < H - 1; ++y) {
+        // One row of magnitudes in a loop the compiler can vectorise, then its histogram.
+        const uint8_t *a = dec + (y - 1) * W, *b = dec + y * W, *c = dec + (y + 1) * W;
+        uint16_t *m = mag + y * W;
         for (int x = 1; x < W - 1; ++x) {
-            int gx, gy;
-            sobel(x, y, &gx, &gy);
-            const int g = std::min(1023, (std::abs(gx) + std::abs(gy)) >> 1);
-            mag[y * W + x] = uint16_t(g);
-            hist[g]++;
+            const int gx = (a[x + 1] + 2 * b[x + 1] + c[x + 1]) - (a[x - 1] + 2 * b[x - 1] + c[x - 1]);
+            const int gy = (c[x - 1] + 2 * c[x] + c[x + 1]) - (a[x - 1] + 2 * a[x] + a[x + 1]);
+            m[x] = uint16_t(std::min(1023, (std::abs(gx) + std::abs(gy)) >> 1));
         }
+        for (int x = 1; x < W - 1; ++x) hist[m[x]]++;
+    }
     const uint32_t total = uint32_t(W - 2) * uint32_t(H - 2);
     uint32_t above = 0;
     int thr = 1023;
@@ -84,11 +89,12 @@ CentreEstimate SpecimenLocator::locate(const LumaView &v, double rMinPx, double 
             const int ux = gx * 16384 / norm, uy = gy * 16384 / norm;
             for (int r = rLo; r <= rHi; ++r) {
                 const int dx = (r * ux + 8192) >> 14, dy = (r * uy + 8192) >> 14;
-                int cx = x + dx, cy = y + dy;
-                if (cx >= 0 && cy >= 0 && cx < W && cy < H && acc[cy * W + cx] < 65535) acc[cy * W + cx]++;
-                cx = x - dx;
-                cy = y - dy;
-                if (cx >= 0 && cy >= 0 && cx < W && cy < H && acc[cy * W + cx] < 65535) acc[cy * W + cx]++;
+                // One unsigned comparison covers both ends of each axis.
+                unsigned cx = unsigned(x + dx), cy = unsigned(y + dy);
+                if (cx < unsigned(W) && cy < unsigned(H) && acc[cy * W + cx] < 65535) acc[cy * W + cx]++;
+                cx = unsigned(x - dx);
+                cy = unsigned(y - dy);
+                if (cx < unsigned(W) && cy < unsigned(H) && acc[cy * W + cx] < 65535) acc[cy * W + cx]++;
             }
         }
 
