@@ -29,6 +29,8 @@ const KeyDef kKeys[] = {
      "strength coefficient K in MPa, 0 = unknown"},
     {"specimen.d0_mm", "d0_mm", &Config::d0Mm, nullptr, nullptr, 1, 200, nullptr, true, "initial diameter"},
     {"specimen.h0_mm", "h0_mm", &Config::h0Mm, nullptr, nullptr, 1, 300, nullptr, true, "initial height"},
+    {"specimen.h_final_mm", "h_final_mm", &Config::hFinalMm, nullptr, nullptr, 0, 300, nullptr, true,
+     "final height after upsetting, below h0_mm (0 = not given: the model's 50 % reduction)"},
     {"specimen.material", "material", nullptr, nullptr, &Config::material, 0, 32, nullptr, true,
      "material label, up to 32 characters"},
     {"calibration.mm_per_px", "mm_per_px", &Config::mmPerPx, nullptr, nullptr, 1e-5, 1, nullptr, true,
@@ -168,6 +170,14 @@ bool getConfigKey(const Config &cfg, std::string_view key, std::string *value, b
     return true;
 }
 
+std::string specimenIssue(const Config &cfg)
+{
+    if (cfg.hFinalMm > 0 && cfg.hFinalMm >= cfg.h0Mm)
+        return "specimen.h_final_mm (" + fmt(cfg.hFinalMm) + ") must be below specimen.h0_mm (" + fmt(cfg.h0Mm) +
+               "); 0 = not given";
+    return {};
+}
+
 std::vector<std::string> configKeys(bool liveOnly)
 {
     std::vector<std::string> out;
@@ -235,6 +245,7 @@ std::vector<ConfigIssue> parseConfig(std::string_view text, Config *cfg)
         seenJournal |= key == "journal.dir";
     }
     if (!seenN) issues.push_back({0, "specimen.n is required (the strain-hardening exponent)"});
+    if (std::string e = specimenIssue(*cfg); !e.empty()) issues.push_back({0, e});
     if (!seenScale) issues.push_back({0, "calibration.mm_per_px is required (the camera's scale)"});
     if (!seenJournal) issues.push_back({0, "journal.dir is required (where results are kept)"});
     if (cfg->cameraBackend == "file" && cfg->cameraFrames.empty())

@@ -15,6 +15,7 @@ struct Config {
     double n = 0;            // strain-hardening exponent (required)
     double kMpa = 0;         // strength coefficient, 0 = unknown
     double d0Mm = 10, h0Mm = 15;
+    double hFinalMm = 0;     // final height after upsetting; 0 = not given (50 % assumed)
     std::string material;
     // [calibration]
     double mmPerPx = 0;      // scale in the end-face plane (required)
@@ -67,6 +68,8 @@ std::string setConfigKey(Config *cfg, std::string_view key, std::string_view val
 bool getConfigKey(const Config &cfg, std::string_view key, std::string *value, bool *isNumber);
 // Names of keys; live: only those settable over serial.
 std::vector<std::string> configKeys(bool liveOnly);
+// What no single key can check: the specimen's keys against each other ("" when consistent).
+std::string specimenIssue(const Config &cfg);
 std::string configHelp();
 
 } // namespace icacam::fw

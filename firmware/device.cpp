@@ -170,7 +170,7 @@ void Device::handleCommand(const Command &c)
         j.str("type", "help")
             .str("commands", "status | trigger | get [KEY] | set KEY VALUE | results [N] | help; "
                              "as words or JSON {\"cmd\":\"set\",\"key\":\"n\",\"value\":0.2,\"id\":\"x\"}")
-            .str("keys", "n k_mpa d0_mm h0_mm material mm_per_px");
+            .str("keys", "n k_mpa d0_mm h0_mm h_final_mm material mm_per_px");
         break;
     case CommandKind::Status: {
         auto free = hal_.storage.freeBytes();
@@ -199,14 +199,16 @@ void Device::handleCommand(const Command &c)
             ++matched;
         }
         if (matched == 0) {
-            sendError("bad_argument", "unknown key (keys: n k_mpa d0_mm h0_mm material mm_per_px)", c.tag);
+            sendError("bad_argument", "unknown key (keys: n k_mpa d0_mm h0_mm h_final_mm material mm_per_px)", c.tag);
             return;
         }
         break;
     }
     case CommandKind::Set: {
         Config trial = cfg_;
-        if (std::string err = setConfigKey(&trial, c.key, c.value, true); !err.empty()) {
+        std::string err = setConfigKey(&trial, c.key, c.value, true);
+        if (err.empty()) err = specimenIssue(trial);
+        if (!err.empty()) {
             sendError("bad_argument", err, c.tag);
             return;
         }
@@ -271,7 +273,7 @@ void Device::measure(const char *origin, const std::string &tag)
         const vision::ErrorCode le = vision::lumaOf(frame.view, lumaScratch_.get(), lumaScratchBytes_, &luma);
         if (le != vision::ErrorCode::None) problem = std::string("frame: ") + vision::errorMessage(le);
         else {
-            const vision::SpecimenSpec spec{cfg_.n, cfg_.kMpa, cfg_.d0Mm, cfg_.h0Mm, cfg_.mmPerPx};
+            const vision::SpecimenSpec spec{cfg_.n, cfg_.kMpa, cfg_.d0Mm, cfg_.h0Mm, cfg_.mmPerPx, cfg_.hFinalMm};
             m = analyzer_.measure(luma, spec, model_);
         }
     }
@@ -317,11 +319,13 @@ void Device::buildRecord(long id, const char *origin, const std::string &tag, co
     if (value) {
         j.num("mu", m.mu, 5).num("mu_sigma", m.muSigma, 3).num("u_mm", m.uMm, 5);
         j.num("r_inner_mm", m.rInnerMm, 6).num("r_outer_mm", m.rOuterMm, 6);
+        if (m.reductionEst >= 0) j.num("reduction_est", m.reductionEst, 4);
     }
     j.str("flags", flags);
     j.str("message", !problem.empty() ? problem : m.hasValue() ? std::string_view() : vision::errorMessage(m.error));
     j.str("image", image).str("source", frame ? std::string_view(frame->source) : std::string_view());
     j.num("n", cfg_.n).num("k_mpa", cfg_.kMpa).num("mm_per_px", cfg_.mmPerPx, 8);
+    j.num("h_final_mm", cfg_.hFinalMm).str("model", model_.name());
     j.str("material", cfg_.material).str("trigger", origin).integer("ms", ms);
     if (!tag.empty()) j.str("tag", tag);
     j.end();

@@ -22,6 +22,7 @@
 #include "hal/file/png_display.h"
 #include "hal/file/pty_serial.h"
 #include "vision/paper_model.h"
+#include "vision/reduction_corrected_model.h"
 #ifdef ICACAM_HAVE_GPIOD
 #include "hal/gpiod/gpiod_lines.h"
 #endif
@@ -212,7 +213,10 @@ int main(int argc, char **argv)
     struct NoDisplay final : hal::Display {
         hal::Error show(const hal::MonoBitmap &) override { return {}; }
     } noDisplay;
-    vision::PaperModel model;
+    // The paper's fit, with u carried to 50 % reduction when specimen.h_final_mm is given
+    // (docs/loop.md); the same default as `icacam measure`.
+    vision::PaperModel paper;
+    vision::ReductionCorrectedModel model(paper, "paper_reduction");
     fw::Device device({*cameraUsed, *triggerUsed, *ledUsed, cfg.displayBackend == "none" ? static_cast<hal::Display &>(noDisplay) : *displayUsed,
                        *serialUsed, storage, clock},
                       cfg, model);

@@ -33,7 +33,8 @@ const char *shortFlag(int bit)
         "n outside 0.05-0.5", "K outside model", "mu below model", "mu above model",
         "u outside model",    "low contrast",    "edge coverage low", "edges scatter",
         "image blurred",      "saturated",       "specimen clipped",  "elliptical",
-        "not concentric",     "check scale",     "narrow ring",       "no silhouette"};
+        "not concentric",     "check scale",     "narrow ring",       "no silhouette",
+        "reduction outside", "radii inconsistent"};
     return bit >= 0 && bit < vision::kFlagCount ? kWords[bit] : "check";
 }
 

@@ -27,9 +27,12 @@ namespace {
 
 const char *kUsage =
     "usage: icacam measure --manifest FILE [--out FILE] [--format csv|jsonl]\n"
-    "                      [--overlay DIR] [--repeat N] [--model paper]\n"
+    "                      [--overlay DIR] [--repeat N] [--model paper_reduction]\n"
     "Measures every record of a manifest (columns id,image,n,mm_per_px; optional k_mpa,\n"
-    "d0_mm, h0_mm). One bad record never stops the batch: it gets status=error.\n"
+    "d0_mm, h0_mm, h_final_mm). One bad record never stops the batch: it gets status=error.\n"
+    "Models: paper_reduction (default: the paper's fit with u carried to 50 % reduction from\n"
+    "h_final_mm by the FE du/dr; without h_final_mm it is the paper's fit), paper (the\n"
+    "published reference, 50 % only), fe, fe_reduction (docs/loop.md, docs/fe.md).\n"
     "A 'calibration' column (a file from 'icacam calibrate', relative to the manifest) may\n"
     "stand beside or instead of mm_per_px; the end face is then taken at h_final_mm above\n"
     "the fixture, or h0_mm/2 when no final height is given (docs/calibration.md).\n";
@@ -69,7 +72,7 @@ void drawOverlay(const cv::Mat &luma, const Measurement &m, const std::string &p
 
 int measureCommand(const std::vector<std::string> &args)
 {
-    std::string manifestPath, outPath, format = "csv", overlayDir, modelName = "paper";
+    std::string manifestPath, outPath, format = "csv", overlayDir, modelName = kDefaultModel;
     long repeat = 1;
     for (size_t i = 0; i < args.size(); ++i) {
         auto value = [&]() -> std::string {
@@ -92,7 +95,7 @@ int measureCommand(const std::vector<std::string> &args)
     if (manifestPath.empty()) throw std::runtime_error(std::string("--manifest is required\n") + kUsage);
     if (format != "csv" && format != "jsonl") throw std::runtime_error("--format must be csv or jsonl");
     auto model = makeFrictionModel(modelName);
-    if (!model) throw std::runtime_error("unknown model '" + modelName + "' (known: paper)");
+    if (!model) throw std::runtime_error("unknown model '" + modelName + "' (known: " + kKnownModels + ")");
 
     Manifest manifest;
     std::string err;

@@ -14,7 +14,7 @@ std::vector<std::string> ResultWriter::columns()
             "centre_offset_px", "edge_width_px", "saturated_fraction", "inner_contrast",
             "outer_contrast", "inner_coverage", "outer_coverage", "inner_scatter_px",
             "outer_scatter_px", "inner_ellipticity", "outer_ellipticity", "inner_axis_deg",
-            "outer_axis_deg", "model"};
+            "outer_axis_deg", "model", "reduction_est", "r_max_z"};
 }
 
 std::string ResultWriter::flagList(uint32_t flags)
@@ -81,6 +81,8 @@ void ResultWriter::write(const ResultRow &r)
         v[21] = num(m->inner.scatterPx, 3); v[22] = num(m->outer.scatterPx, 3);
         v[23] = num(m->inner.ellipticity, 5); v[24] = num(m->outer.ellipticity, 5);
         v[25] = num(m->inner.axisDeg, 1); v[26] = num(m->outer.axisDeg, 1);
+        v[28] = m->reductionEst >= 0 ? num(m->reductionEst, 4) : "";
+        v[29] = m->rMaxPx > 0 ? num(m->rMaxZ, 2) : "";
     }
     const auto cols = columns();
     if (jsonl_) {

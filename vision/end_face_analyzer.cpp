@@ -7,6 +7,7 @@
 
 #include "boundary_fit.h"
 #include "radial_profile.h"
+#include "radii_consistency.h"
 #include "ring_search.h"
 
 namespace icacam::vision {
@@ -167,7 +168,7 @@ void EndFaceAnalyzer::finishResult(const SpecimenSpec &spec, const FrictionModel
                                    m->outer.rEqSigmaPx * m->outer.rEqSigmaPx + 2 * 0.1 * 0.1);
     m->uSigmaMm = sigPx * s;
 
-    const ModelEstimate est = model.estimate({m->uMm, spec.n, spec.kMpa, spec.d0Mm, spec.h0Mm});
+    const ModelEstimate est = model.estimate({m->uMm, spec.n, spec.kMpa, spec.d0Mm, spec.h0Mm, spec.hFinalMm});
     m->mu = est.mu;
     m->muSigma = std::sqrt(est.dMuDu * est.dMuDu * m->uSigmaMm * m->uSigmaMm +
                            est.modelSigma * est.modelSigma);
@@ -192,23 +193,29 @@ void EndFaceAnalyzer::finishResult(const SpecimenSpec &spec, const FrictionModel
     if (m->uPx < 3.0) f |= kFlagNarrowRing;
     if (m->edgeWidthPx > 2.6) f |= kFlagBlurred;
     if (m->saturatedFraction > 0.02) f |= kFlagSaturated;
-    // Scale check against volume constancy at the paper's 50 % reduction: the silhouette's
-    // equivalent radius is R0·√2 times a barrelling factor that grows with u (about
-    // 1.008 + 0.034·u at D0 = 10 mm; provisional, to be replaced by the FE model's R_max).
+    // Scale and reduction check: the silhouette against the FE's R_max at the measured μ and
+    // the declared n, at the declared final height, or at the model's 50 % when none is given
+    // (radii_consistency.h). Without a final height a mismatch means the scale or the 50 %
+    // is wrong (scale_suspect, with the reduction R_max implies as a diagnostic); with one,
+    // the declared scale, n and height cannot all be right (radii_inconsistent).
     if (m->rMaxPx > 0) {
-        const double uNorm = m->uMm * 10.0 / spec.d0Mm;
-        const double expected = 0.5 * spec.d0Mm * std::sqrt(2.0) * (1.008 + 0.034 * uNorm);
-        // The relation holds to 0.5 % on the reference renderings and R_max is measured to
-        // about 0.3 %: beyond 1.5 % the scale or the reduction is not what the model assumes
-        // (1.5 % of R_max is about 1.6 % of height reduction, 0.05–0.13 mm of u).
-        if (std::fabs(m->rMaxMm / expected - 1.0) > 0.015) f |= kFlagScaleSuspect;
+        const bool declared = spec.hFinalMm > 0 && spec.hFinalMm < spec.h0Mm;
+        const double r = declared ? 1.0 - spec.hFinalMm / spec.h0Mm : 0.5;
+        const RadiiCheck rc = checkRadii(m->rMaxMm, spec.n, est.mu, spec.d0Mm, r);
+        m->rMaxZ = rc.z;
+        m->reductionEst = rc.reductionEst;
+        if (rc.inconsistent()) f |= declared ? kFlagRadiiInconsistent : kFlagScaleSuspect;
     } else {
         f |= kFlagNoSilhouette;
     }
     // u grows by 0.03–0.08 mm per percent of height reduction near 50 % (FE issue facts):
-    // one percent off the model's 50 % already moves μ by more than its uncertainty.
-    if (spec.hFinalMm > 0 && spec.h0Mm > 0 && std::fabs(1.0 - spec.hFinalMm / spec.h0Mm - 0.5) > 0.01)
+    // one percent off the model's 50 % already moves μ by more than its uncertainty. A model
+    // that carries u to 50 % itself says where its FE data stop.
+    if (model.correctsReduction()) {
+        if (est.range & kModelReductionOutside) f |= kFlagReductionOutside;
+    } else if (spec.hFinalMm > 0 && spec.h0Mm > 0 && std::fabs(1.0 - spec.hFinalMm / spec.h0Mm - 0.5) > 0.01) {
         f |= kFlagReductionOutside;
+    }
     m->flags = f;
     m->status = f ? Status::Warn : Status::Ok;
     m->error = ErrorCode::None;

@@ -14,6 +14,7 @@ enum ModelRangeFlag : uint32_t {
     kModelMuBelow = 1u << 3,  // the result lies below the simulated μ range
     kModelMuAbove = 1u << 4,
     kModelUOutside = 1u << 5, // u outside the span the model's data covered at this n
+    kModelReductionOutside = 1u << 6, // declared height reduction outside what the data cover
 };
 
 struct ModelEstimate {
@@ -29,6 +30,7 @@ struct ModelInputs {
     double kMpa = 0;   // 0 when not given
     double d0Mm = 10;  // initial diameter; u scales with it by geometric similarity
     double h0Mm = 15;
+    double hFinalMm = 0; // final height when declared; 0: the model's own reduction (50 %)
 };
 
 class FrictionModel {
@@ -36,6 +38,9 @@ public:
     virtual ~FrictionModel() = default;
     virtual const char *name() const = 0;
     virtual ModelEstimate estimate(const ModelInputs &in) const = 0;
+    // True when the model accounts for a declared final height itself (then it, not the
+    // caller, says whether the reduction lies outside what it covers).
+    virtual bool correctsReduction() const { return false; }
 };
 
 } // namespace icacam::vision

@@ -26,12 +26,13 @@ enum MeasureFlag : uint32_t {
     kFlagSpecimenClipped = 1u << 10, // the specimen runs off the frame
     kFlagElliptical = 1u << 11,     // both boundaries share an ellipticity: tilt or lens
     kFlagCentreOffset = 1u << 12,   // the boundaries are not concentric
-    kFlagScaleSuspect = 1u << 13,   // R_max contradicts the declared scale and 50 % reduction
+    kFlagScaleSuspect = 1u << 13,   // no final height given: R_max contradicts the scale and 50 % reduction
     kFlagNarrowRing = 1u << 14,     // the ICA is only a few pixels wide
     kFlagNoSilhouette = 1u << 15,   // the barrel silhouette was not found: scale unchecked
-    kFlagReductionOutside = 1u << 16, // recorded final height is not the model's 50 % reduction
+    kFlagReductionOutside = 1u << 16, // recorded final height outside what the model covers
+    kFlagRadiiInconsistent = 1u << 17, // R_max contradicts the declared scale and final height
 };
-constexpr int kFlagCount = 17;
+constexpr int kFlagCount = 18;
 const char *flagName(int bit);
 
 // One located edge point on a ray, in pixel coordinates (Q16.16).
@@ -78,6 +79,10 @@ struct Measurement {
     double uPx = 0, uMm = 0, uSigmaMm = 0;
     double mu = 0, muSigma = 0;
     double centreOffsetPx = 0;
+    // The silhouette against the FE (radii_consistency.h): (R_max − FE R_max)/σ at the
+    // declared final height (or 50 % when none), and the reduction R_max implies (-1: none).
+    double rMaxZ = 0;
+    double reductionEst = -1;
 
     // Edge points of each boundary (one per ray, valid or not) for overlays and tests.
     const EdgeSample *innerPoints = nullptr;

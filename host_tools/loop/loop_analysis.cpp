@@ -324,6 +324,8 @@ bool ReductionSlope::load(const std::string &path, std::string *error)
     struct Case { double n = 0, mu = 0; std::vector<std::pair<double, double>> pts; };
     std::map<std::string, Case> cases;
     std::vector<std::string> cells;
+    std::vector<double> snapshots; // every reduction an ok run reached
+    bool anyCase = false;
     while (std::getline(f, line)) {
         if (!splitCsvLine(line, &cells) || cells.size() != header.size()) continue;
         ManifestRow row;
@@ -334,6 +336,10 @@ bool ReductionSlope::load(const std::string &path, std::string *error)
             !parseNumber(row.get("reduction"), &red) || !parseNumber(row.get("u_interp_mm"), &u))
             continue;
         if (parseNumber(row.get("corner_mm"), &corner) && corner > 0) continue; // graded mesh: another study
+        if (!anyCase) nMin_ = nMax_ = n, muMin_ = muMax_ = mu, anyCase = true;
+        nMin_ = std::min(nMin_, n), nMax_ = std::max(nMax_, n);
+        muMin_ = std::min(muMin_, mu), muMax_ = std::max(muMax_, mu);
+        snapshots.push_back(red);
         double d0 = 10;
         if (parseNumber(row.get("d0_mm"), &d0) && d0 > 0) u *= 10.0 / d0;
         if (red < 0.349 || u <= 0.02) continue; // before the ICA opens the slope is not u's
@@ -344,6 +350,8 @@ bool ReductionSlope::load(const std::string &path, std::string *error)
     }
     std::vector<double> ata(36, 0), atb(6, 0);
     cases_ = 0;
+    maxCurvature_ = 0;
+    double fitLo = 0.5;
     for (const auto &[name, c] : cases) {
         if (c.pts.size() < 3) continue;
         // u = a + b (r − 0.5) + c (r − 0.5)²: b is du/dr at the model's 50 % (u accelerates).
@@ -357,6 +365,8 @@ bool ReductionSlope::load(const std::string &path, std::string *error)
         }
         if (!solve(m3, v3, &q)) continue;
         const double s = q[1];
+        maxCurvature_ = std::max(maxCurvature_, std::fabs(q[2]));
+        for (auto [x, y] : c.pts) fitLo = std::min(fitLo, x);
         const double phi[6] = {1, c.n, c.mu, c.n * c.n, c.n * c.mu, c.mu * c.mu};
         for (int i = 0; i < 6; ++i) {
             atb[size_t(i)] += phi[i] * s;
@@ -369,6 +379,15 @@ bool ReductionSlope::load(const std::string &path, std::string *error)
         *error = "too few FE cases with an open ICA over reductions 0.35-0.5 in '" + path + "'";
         return false;
     }
+    // Coverage of the linear carry about 50 %: the snapshots' span plus half their spacing,
+    // cut where the largest curvature would make the neglected term exceed the u floor.
+    std::sort(snapshots.begin(), snapshots.end());
+    double spacing = 1;
+    for (size_t i = 1; i < snapshots.size(); ++i)
+        if (snapshots[i] - snapshots[i - 1] > 1e-3) spacing = std::min(spacing, snapshots[i] - snapshots[i - 1]);
+    const double halfWidth = maxCurvature_ > 0 ? std::sqrt(kFeUFloorMm / maxCurvature_) : 1.0;
+    reductionMin_ = std::max(fitLo, 0.5 - halfWidth);
+    reductionMax_ = std::min(snapshots.back() + 0.5 * spacing, 0.5 + halfWidth);
     return true;
 }
 
@@ -376,8 +395,8 @@ double ReductionSlope::slope(double n, double mu) const
 {
     if (coef_.size() != 6) return 0;
     // Evaluate inside the simulated box only: outside it the quadratic is not data.
-    n = std::clamp(n, 0.05, 0.5);
-    mu = std::clamp(mu, 0.05, 0.3);
+    n = std::clamp(n, nMin_, nMax_);
+    mu = std::clamp(mu, muMin_, muMax_);
     return coef_[0] + coef_[1] * n + coef_[2] * mu + coef_[3] * n * n + coef_[4] * n * mu + coef_[5] * mu * mu;
 }
 

@@ -164,3 +164,27 @@ TEST(Device, LongPressShowsSettingsAndBounceDoesNotMeasure)
     EXPECT_EQ(rig.serial.out.find("\"type\":\"result\""), std::string::npos);
     EXPECT_EQ(rig.led.switchCount(), 0);
 }
+
+TEST(Device, FinalHeightIsALiveJournaledKeyCheckedAgainstTheInitialHeight)
+{
+    // specimen.h_final_mm feeds the reduction-aware model (docs/loop.md): settable over
+    // serial, kept across restarts, and never above the initial height.
+    Rig rig("");
+    writeGrey(rig.dir + "/a.pgm", 64, 64, 0);
+    ASSERT_TRUE(rig.device->start().ok());
+    rig.serial.in = "set h_final_mm 7.3\nset h_final_mm 15\nget h_final_mm\n";
+    rig.device->tick();
+    EXPECT_NE(rig.serial.out.find("{\"type\":\"settings\",\"h_final_mm\":7.3}"), std::string::npos) << rig.serial.out;
+    EXPECT_NE(rig.serial.out.find("must be below specimen.h0_mm"), std::string::npos) << rig.serial.out;
+    EXPECT_DOUBLE_EQ(rig.device->config().hFinalMm, 7.3); // the bad value changed nothing
+    fw::Device again({rig.camera, rig.trigger, rig.led, rig.display, rig.serial, rig.storage, rig.clock},
+                     fw::Config{}, rig.model);
+    ASSERT_TRUE(again.start().ok());
+    EXPECT_DOUBLE_EQ(again.config().hFinalMm, 7.3);
+    // A result record names the final height it was measured with and the model.
+    rig.serial.out.clear();
+    rig.serial.in = "trigger\n";
+    rig.device->tick();
+    EXPECT_NE(rig.serial.out.find("\"h_final_mm\":7.3"), std::string::npos) << rig.serial.out;
+    EXPECT_NE(rig.serial.out.find("\"model\":\"paper\""), std::string::npos) << rig.serial.out;
+}

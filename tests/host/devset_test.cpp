@@ -1,5 +1,6 @@
 // The product's accuracy bar on the reference set (../shared/data/devset): every image
-// measured, median |μ − μ_true| ≤ 0.002, max ≤ 0.008 (PRODUCT.md §7), with the paper model.
+// measured, median |μ − μ_true| ≤ 0.002, max ≤ 0.008 (PRODUCT.md §7), with the paper model;
+// no consistency flag on any of them (docs/loop.md).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -30,6 +31,13 @@ TEST(Devset, AccuracyBar)
         const double e = std::fabs(std::stod(r["mu"]) - std::stod(t["mu"]));
         errs.push_back(e);
         EXPECT_LE(e, 0.008) << id;
+        // Every devset image is consistent (exact scale, 50 %): the silhouette check against
+        // the FE must stay quiet, and the reduction R_max implies must be near 50 % (it is
+        // good to about 0.01, 1 σ: docs/loop.md).
+        EXPECT_EQ(r["flags"].find("scale_suspect"), std::string::npos) << id << " r_max_z " << r["r_max_z"];
+        EXPECT_EQ(r["flags"].find("radii_inconsistent"), std::string::npos) << id;
+        ASSERT_FALSE(r["reduction_est"].empty()) << id;
+        EXPECT_NEAR(std::stod(r["reduction_est"]), 0.5, 0.03) << id;
     }
     std::sort(errs.begin(), errs.end());
     std::printf("devset: %zu images, median |dmu| %.4f, max %.4f\n", errs.size(), errs[errs.size() / 2], errs.back());

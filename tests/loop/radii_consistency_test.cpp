@@ -1,0 +1,124 @@
+// The silhouette check against the FE (vision/radii_consistency.h, docs/loop.md): consistent
+// records stay quiet, a scale error of 4 % fires, with and without a declared final
+// height, and the reduction R_max implies is recovered. On rendered images through the whole
+// pipeline as well as on the relation itself.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "end_face_renderer.h"
+#include "loop_analysis.h"
+#include "vision/end_face_analyzer.h"
+#include "vision/paper_model.h"
+#include "vision/radii_consistency.h"
+#include "vision/reduction_corrected_model.h"
+
+using namespace icacam;
+using vision::checkRadii;
+using vision::feRMaxAt;
+
+TEST(RadiiConsistency, FeSilhouetteGrowsWithReductionAndFriction)
+{
+    double a, b, c;
+    ASSERT_TRUE(feRMaxAt(0.25, 0.15, 0.45, &a));
+    ASSERT_TRUE(feRMaxAt(0.25, 0.15, 0.5, &b));
+    ASSERT_TRUE(feRMaxAt(0.25, 0.25, 0.5, &c));
+    EXPECT_GT(b, a + 0.1); // volume constancy: ≈ 0.35 mm per 0.05 of reduction
+    EXPECT_GT(c, b);       // barrelling grows with μ
+    // R0·√2 = 7.07 mm at 50 % without barrelling; the FE's barrel adds 1–5 %.
+    EXPECT_GT(b, 7.07);
+    EXPECT_LT(b, 7.07 * 1.05);
+    // Past one snapshot step beyond the data: no answer rather than a guess.
+    EXPECT_FALSE(feRMaxAt(0.25, 0.15, vision::radiiReductionMax() + 0.01, &a));
+}
+
+TEST(RadiiConsistency, ConsistentQuietScaleErrorFiresReductionRecovered)
+{
+    for (double n : {0.1, 0.3, 0.45})
+        for (double mu : {0.08, 0.15, 0.22})
+            for (double r : {0.47, 0.5, 0.52}) {
+                double fe;
+                ASSERT_TRUE(feRMaxAt(n, mu, r, &fe));
+                const auto ok = checkRadii(fe, n, mu, 10, r);
+                EXPECT_TRUE(ok.valid);
+                EXPECT_FALSE(ok.inconsistent());
+                EXPECT_NEAR(ok.reductionEst, r, 0.002) << n << " " << mu << " " << r;
+                for (double scale : {1.04, 0.96}) {
+                    const auto bad = checkRadii(fe * scale, n, mu, 10, r);
+                    EXPECT_TRUE(bad.inconsistent()) << "scale " << scale << " z " << bad.z;
+                }
+                // Geometric similarity: a 20 mm specimen scales R_max.
+                EXPECT_FALSE(checkRadii(2 * fe, n, mu, 20, r).inconsistent());
+            }
+}
+
+namespace {
+
+struct Rendered {
+    cv::Mat img;
+    host::EndFaceScene scene;
+};
+
+// A clean rendering of a specimen of hardening n and friction μ pressed to reduction r: the
+// ring's width from the paper's model carried by the FE slope, the silhouette from the FE.
+Rendered render(double n, double mu, double r)
+{
+    vision::PaperModel paper;
+    const double u = host::loop::uForMu(paper, mu, n) + vision::ReductionCorrectedModel::slopeAt(n, mu) * (r - 0.5);
+    Rendered out;
+    out.scene = host::nominalScene(u);
+    double fe = 0;
+    EXPECT_TRUE(feRMaxAt(n, mu, r, &fe));
+    out.scene.rMaxMm = fe;
+    out.img = host::renderEndFace(out.scene);
+    return out;
+}
+
+vision::Measurement measure(const Rendered &x, double n, double mmPerPx, double hFinal, const vision::FrictionModel &model)
+{
+    static vision::EndFaceAnalyzer analyzer;
+    analyzer.configure(x.img.cols, x.img.rows);
+    const vision::LumaView v{x.img.data, x.img.cols, x.img.rows, int(x.img.step[0]), 1};
+    vision::SpecimenSpec spec{n, 500, 10, 15, mmPerPx};
+    spec.hFinalMm = hFinal;
+    return analyzer.measure(v, spec, model);
+}
+
+} // namespace
+
+TEST(RadiiConsistency, ThroughThePipelineOnRenderedImages)
+{
+    vision::PaperModel paper;
+    vision::ReductionCorrectedModel model(paper, "paper_reduction");
+    const uint32_t kCheck = vision::kFlagScaleSuspect | vision::kFlagRadiiInconsistent;
+    for (double r : {0.5, 0.515}) {
+        const Rendered x = render(0.25, 0.15, r);
+        const double s = x.scene.mmPerPx;
+        // Declared final height, right scale: quiet; μ recovered by the corrected model.
+        auto m = measure(x, 0.25, s, 15 * (1 - r), model);
+        ASSERT_TRUE(m.hasValue());
+        EXPECT_FALSE(m.flags & kCheck) << "r " << r << " z " << m.rMaxZ;
+        EXPECT_NEAR(m.mu, 0.15, 0.006) << "r " << r;
+        // The lab's mm_per_px 4 % off: the silhouette contradicts scale and height.
+        for (double k : {1.04, 0.96}) {
+            m = measure(x, 0.25, s * k, 15 * (1 - r), model);
+            ASSERT_TRUE(m.hasValue());
+            EXPECT_TRUE(m.flags & vision::kFlagRadiiInconsistent) << "r " << r << " k " << k << " z " << m.rMaxZ;
+        }
+        // No final height given: the reduction is inferred from R_max.
+        m = measure(x, 0.25, s, 0, model);
+        ASSERT_TRUE(m.hasValue());
+        EXPECT_NEAR(m.reductionEst, r, 0.008) << "r " << r;
+        EXPECT_FALSE(m.flags & vision::kFlagRadiiInconsistent);
+        m = measure(x, 0.25, s * 1.04, 0, model);
+        EXPECT_TRUE(m.flags & vision::kFlagScaleSuspect) << "z " << m.rMaxZ;
+        // The implied reduction moves up by ≈ 0.04, or past what the FE snapshots span (-1).
+        EXPECT_TRUE(m.reductionEst < 0 || m.reductionEst > r + 0.025) << m.reductionEst;
+    }
+    // A specimen pressed to 54.5 % without saying so: the image tells (flag, estimate).
+    const Rendered far = render(0.25, 0.15, 0.545);
+    const auto m = measure(far, 0.25, far.scene.mmPerPx, 0, model);
+    ASSERT_TRUE(m.hasValue());
+    EXPECT_TRUE(m.flags & vision::kFlagScaleSuspect) << "z " << m.rMaxZ;
+    EXPECT_NEAR(m.reductionEst, 0.545, 0.008);
+}

@@ -1,0 +1,172 @@
+// The reduction-aware model in the product (vision/reduction_corrected_model.h, docs/loop.md):
+// its generated table is current with the FE sweep, its slope is the loop tool's, it carries a
+// forward reduction effect back, it is the base model at 50 %, and it flags reductions the FE
+// snapshots do not cover.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "friction_models.h"
+#include "loop_analysis.h"
+#include "reduction_table.h"
+#include "vision/paper_model.h"
+#include "vision/reduction_corrected_model.h"
+
+using namespace icacam::host::loop;
+using icacam::vision::ModelInputs;
+using icacam::vision::PaperModel;
+using icacam::vision::ReductionCorrectedModel;
+
+namespace {
+
+const std::string kSweep = std::string(ICACAM_SOURCE_DIR) + "/data/fe/sweep.csv";
+
+ModelInputs inputs(double u, double n, double hFinal, double d0 = 10, double h0 = 15)
+{
+    ModelInputs in;
+    in.uMm = u;
+    in.n = n;
+    in.d0Mm = d0;
+    in.h0Mm = h0;
+    in.hFinalMm = hFinal;
+    return in;
+}
+
+} // namespace
+
+TEST(ReductionTable, CommittedTableMatchesTheSweepItWasGeneratedFrom)
+{
+    std::string err;
+    const std::string fresh = reductionTableText(kSweep, "data/fe/sweep.csv", &err);
+    ASSERT_FALSE(fresh.empty()) << err;
+    std::ifstream f(std::string(ICACAM_SOURCE_DIR) + "/vision/reduction_table.h", std::ios::binary);
+    std::stringstream committed;
+    committed << f.rdbuf();
+    EXPECT_EQ(committed.str(), fresh)
+        << "stale table: rerun `icacam loop table --fe-sweep data/fe/sweep.csv --out vision/reduction_table.h`";
+}
+
+TEST(ReductionTable, GeneratorReadsColumnsByNameAndIgnoresAddedOnes)
+{
+    // A richer sweep (columns moved and added, as the FE engineer's next runs will be) gives
+    // the same table.
+    std::ifstream in(kSweep);
+    const std::string path = ::testing::TempDir() + "icacam_sweep_extra.csv";
+    std::ofstream out(path);
+    std::string line;
+    bool header = true;
+    while (std::getline(in, line)) {
+        out << (header ? "extra_a," : "1.5,") << line << (header ? ",extra_b\n" : ",x\n");
+        header = false;
+    }
+    out.close();
+    std::string err;
+    const std::string a = reductionTableText(kSweep, "data/fe/sweep.csv", &err);
+    const std::string b = reductionTableText(path, "data/fe/sweep.csv", &err);
+    ASSERT_FALSE(b.empty()) << err;
+    EXPECT_EQ(a, b);
+}
+
+TEST(ReductionTable, MissingSweepIsAClearError)
+{
+    std::string err;
+    EXPECT_TRUE(reductionTableText("/nonexistent/sweep.csv", "x", &err).empty());
+    EXPECT_NE(err.find("cannot read"), std::string::npos) << err;
+}
+
+TEST(ReductionCorrectedModel, SlopeIsTheLoopToolsSlope)
+{
+    ReductionSlope slope;
+    std::string err;
+    ASSERT_TRUE(slope.load(kSweep, &err)) << err;
+    for (double n : {0.05, 0.2, 0.35, 0.5})
+        for (double mu : {0.05, 0.1, 0.17, 0.3})
+            EXPECT_NEAR(ReductionCorrectedModel::slopeAt(n, mu), slope.slope(n, mu), 1e-6) << n << " " << mu;
+    EXPECT_NEAR(ReductionCorrectedModel::reductionMin(), slope.reductionMin(), 1e-6);
+    EXPECT_NEAR(ReductionCorrectedModel::reductionMax(), slope.reductionMax(), 1e-6);
+    // u widens with the reduction near 50 % (docs/fe.md: 3–5 mm per unit r).
+    EXPECT_GT(ReductionCorrectedModel::slopeAt(0.25, 0.15), 1.0);
+}
+
+TEST(ReductionCorrectedModel, IsTheBaseModelWithoutAFinalHeightAndAt50Percent)
+{
+    PaperModel paper;
+    ReductionCorrectedModel model(paper, "paper_reduction");
+    for (double u : {0.2, 0.5, 0.8}) {
+        const auto base = paper.estimate(inputs(u, 0.25, 0));
+        const auto none = model.estimate(inputs(u, 0.25, 0));
+        const auto half = model.estimate(inputs(u, 0.25, 7.5));
+        EXPECT_EQ(none.mu, base.mu);
+        EXPECT_EQ(none.range, base.range);
+        EXPECT_NEAR(half.mu, base.mu, 1e-12);
+        EXPECT_EQ(half.range, base.range);
+    }
+    EXPECT_STREQ(model.name(), "paper_reduction");
+    EXPECT_TRUE(model.correctsReduction());
+    EXPECT_FALSE(paper.correctsReduction());
+}
+
+TEST(ReductionCorrectedModel, CarriesAForwardReductionEffectBack)
+{
+    // A specimen with friction μ pressed to r shows u50 + du/dr(n, μ)(r − 0.5): the model must
+    // return μ, where the paper's reads more (r > 0.5) or less (r < 0.5) friction.
+    PaperModel paper;
+    ReductionCorrectedModel model(paper, "paper_reduction");
+    for (double n : {0.1, 0.25, 0.4})
+        for (double mu : {0.1, 0.15, 0.2})
+            for (double r : {0.47, 0.485, 0.515, 0.525}) {
+                const double u50 = uForMu(paper, mu, n);
+                const double u = u50 + ReductionCorrectedModel::slopeAt(n, mu) * (r - 0.5);
+                const auto e = model.estimate(inputs(u, n, 15 * (1 - r)));
+                EXPECT_NEAR(e.mu, mu, 2e-4) << "n " << n << " mu " << mu << " r " << r;
+                const double naive = paper.estimate(inputs(u, n, 0)).mu;
+                EXPECT_EQ(naive > mu, r > 0.5);
+                EXPECT_EQ(e.range & icacam::vision::kModelReductionOutside, 0u);
+                // The carry's own uncertainty adds to the model's.
+                EXPECT_GT(e.modelSigma, paper.estimate(inputs(u50, n, 0)).modelSigma);
+            }
+}
+
+TEST(ReductionCorrectedModel, ScalesWithTheSpecimenByGeometricSimilarity)
+{
+    PaperModel paper;
+    ReductionCorrectedModel model(paper, "paper_reduction");
+    const auto a = model.estimate(inputs(0.6, 0.2, 7.2, 10, 15));
+    const auto b = model.estimate(inputs(1.2, 0.2, 14.4, 20, 30));
+    EXPECT_NEAR(a.mu, b.mu, 1e-9);
+}
+
+TEST(ReductionCorrectedModel, FlagsReductionsTheFeSnapshotsDoNotCover)
+{
+    PaperModel paper;
+    ReductionCorrectedModel model(paper, "paper_reduction");
+    const double lo = ReductionCorrectedModel::reductionMin(), hi = ReductionCorrectedModel::reductionMax();
+    ASSERT_LT(lo, 0.5);
+    ASSERT_GT(hi, 0.5);
+    auto flagged = [&](double r) {
+        return (model.estimate(inputs(0.5, 0.25, 15 * (1 - r))).range & icacam::vision::kModelReductionOutside) != 0;
+    };
+    EXPECT_FALSE(flagged(0.5));
+    EXPECT_FALSE(flagged(lo + 0.002));
+    EXPECT_FALSE(flagged(hi - 0.002));
+    EXPECT_TRUE(flagged(lo - 0.01));
+    EXPECT_TRUE(flagged(hi + 0.01));
+    EXPECT_TRUE(flagged(0.7));
+    // Not an upset specimen at all: flagged, never a silent value.
+    EXPECT_TRUE(model.estimate(inputs(0.5, 0.25, 15)).range & icacam::vision::kModelReductionOutside);
+    EXPECT_TRUE(model.estimate(inputs(0.5, 0.25, 20)).range & icacam::vision::kModelReductionOutside);
+}
+
+TEST(FrictionModels, DefaultIsReductionAwareAndThePaperStaysSelectable)
+{
+    auto def = icacam::host::makeFrictionModel(icacam::host::kDefaultModel);
+    ASSERT_TRUE(def);
+    EXPECT_TRUE(def->correctsReduction());
+    auto paper = icacam::host::makeFrictionModel("paper");
+    ASSERT_TRUE(paper);
+    EXPECT_FALSE(paper->correctsReduction());
+    EXPECT_TRUE(icacam::host::makeFrictionModel("fe_reduction"));
+    EXPECT_FALSE(icacam::host::makeFrictionModel("nonsense"));
+}

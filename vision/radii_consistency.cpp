@@ -1,0 +1,95 @@
+#include "radii_consistency.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "reduction_table.h"
+
+namespace icacam::vision {
+
+namespace t = reduction_table;
+
+namespace {
+
+double snapStep() { return t::kRCount > 1 ? t::kR[t::kRCount - 1] - t::kR[t::kRCount - 2] : 0.05; }
+
+// One simulated (n, μ) point's R_max at reduction r: linear between the bracketing snapshots,
+// or continued from the last two. False if those snapshots are missing.
+bool atPoint(int ni, int mi, double r, double *v)
+{
+    if (t::kRCount < 2) return false;
+    int k = 0;
+    while (k < t::kRCount - 2 && r > t::kR[k + 1]) ++k;
+    const double a = t::kRmax[ni][mi][k], b = t::kRmax[ni][mi][k + 1];
+    if (a < 0 || b < 0) return false;
+    const double w = (r - t::kR[k]) / (t::kR[k + 1] - t::kR[k]);
+    if (w < 0) return false; // before the first snapshot: not covered
+    *v = a + w * (b - a);
+    return true;
+}
+
+// One n row at μ: linear between the nearest simulated μ with data, held beyond them.
+bool atRow(int ni, double mu, double r, double *v)
+{
+    int lo = -1, hi = -1;
+    double vlo = 0, vhi = 0, x;
+    for (int j = 0; j < t::kMuCount; ++j) {
+        if (!atPoint(ni, j, r, &x)) continue;
+        if (t::kMu[j] <= mu) lo = j, vlo = x;
+        else if (hi < 0) hi = j, vhi = x;
+    }
+    if (lo < 0 && hi < 0) return false;
+    if (lo < 0) { *v = vhi; return true; }
+    if (hi < 0) { *v = vlo; return true; }
+    *v = vlo + (mu - t::kMu[lo]) / (t::kMu[hi] - t::kMu[lo]) * (vhi - vlo);
+    return true;
+}
+
+} // namespace
+
+double radiiReductionMin() { return std::max(0.35, t::kR[0]); }
+double radiiReductionMax() { return t::kR[t::kRCount - 1] + snapStep(); }
+
+bool feRMaxAt(double n, double mu, double reduction, double *rMaxMm)
+{
+    if (reduction > radiiReductionMax() + 1e-9) return false;
+    n = std::clamp(n, t::kN[0], t::kN[t::kNCount - 1]);
+    int i = 0;
+    while (i < t::kNCount - 2 && n > t::kN[i + 1]) ++i;
+    const int i1 = std::min(i + 1, t::kNCount - 1);
+    const double w = i1 > i ? (n - t::kN[i]) / (t::kN[i1] - t::kN[i]) : 0;
+    double a, b;
+    const bool okA = atRow(i, mu, reduction, &a), okB = atRow(i1, mu, reduction, &b);
+    if (okA && okB) *rMaxMm = a + w * (b - a);
+    else if (okA && w < 0.5) *rMaxMm = a; // a row without data: the nearer one, only if it is the nearer
+    else if (okB && w >= 0.5) *rMaxMm = b;
+    else return false;
+    return true;
+}
+
+RadiiCheck checkRadii(double rMaxMm, double n, double mu, double d0Mm, double reduction)
+{
+    RadiiCheck c;
+    const double g = d0Mm > 0 ? d0Mm / t::kD0Mm : 1.0; // R_max scales with D0
+    double fe;
+    if (!(rMaxMm > 0) || !feRMaxAt(n, mu, reduction, &fe)) return c;
+    c.valid = true;
+    c.rMaxFeMm = fe * g;
+    const double sigma = c.rMaxFeMm * std::hypot(kFeRMaxRelSigma, kMeasuredRMaxRelSigma);
+    c.z = (rMaxMm - c.rMaxFeMm) / sigma;
+    // The reduction the silhouette implies: R_max rises with r (volume constancy), so bisect.
+    double lo = radiiReductionMin(), hi = radiiReductionMax(), vlo, vhi;
+    if (!feRMaxAt(n, mu, lo, &vlo) || !feRMaxAt(n, mu, hi, &vhi)) return c;
+    const double target = rMaxMm / g;
+    if (target < vlo || target > vhi) return c; // outside what the snapshots span
+    for (int it = 0; it < 40; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        double v;
+        if (!feRMaxAt(n, mu, mid, &v)) return c;
+        (v < target ? lo : hi) = mid;
+    }
+    c.reductionEst = 0.5 * (lo + hi);
+    return c;
+}
+
+} // namespace icacam::vision

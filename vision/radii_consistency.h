@@ -1,0 +1,51 @@
+#pragma once
+// Do the measured radii fit the physics? (docs/loop.md, "Consistency of the radii")
+//
+// The barrel silhouette R_max of an upset specimen is fixed by the height reduction r (volume
+// constancy) and, less, by the friction μ and the hardening n (barrelling). The FE snapshots
+// (vision/reduction_table.h, every 5 % of reduction) give R_max over (n, μ, r); R_max is the
+// FE's best-resolved radius (it moves by < 0.015 mm between meshes, docs/fe.md). With μ from
+// the measured u, R_max checks the declared scale and reduction: a scale error of a few percent
+// moves R_max by as much, a reduction off by 0.01 moves it by ≈ 1 %. Without a declared final
+// height the same relation, solved for r, gives the reduction the image implies.
+//
+// R_i and R_o are not used: our FE's contact edge is resolution-limited (0.2 mm elements)
+// and its ICA stays narrower than the paper's at high μ (u ≤ 0.85 mm at μ 0.3), so R_i and
+// R_o from it disagree with real specimens by up to 0.6 mm there. With converged FE runs they
+// would add the check of n (R_i against R_o), which R_max alone resolves only weakly.
+// Pure C++20: no heap, no OS calls, no exceptions.
+namespace icacam::vision {
+
+// FE R_max at (n, μ, r) for D0 = 10 mm: linear in r (extrapolated up to one snapshot step
+// past the last), linear in μ between the simulated μ of each n (μ held at the row's last
+// simulated value beyond it: R_max saturates at high μ), linear in n (clamped to the
+// simulated n). False when there is no data.
+bool feRMaxAt(double n, double mu, double reduction, double *rMaxMm);
+
+// The reductions the table can speak for: 0.35 (or the first snapshot) to one step past the last.
+double radiiReductionMin();
+double radiiReductionMax();
+
+// R_max's relative 1-σ errors: the FE against specimens (our FE's R_max is 0.0–1 % above the
+// development set's drawn silhouettes at the paper's μ; take 0.5 %) and the measurement
+// (the pipeline's silhouette radius scatters by 0.64 % about the drawn one on the
+// development set's photographs: stains, highlights and JPEG on the barrel; take 0.65 %).
+inline constexpr double kFeRMaxRelSigma = 0.005;
+inline constexpr double kMeasuredRMaxRelSigma = 0.0065;
+// |z| beyond which R_max contradicts the declared scale and reduction: 3.5 σ ≈ 2.9 % of
+// R_max, i.e. a scale error of about 3–4 % or a reduction off by about 0.03 (R_max grows by
+// ≈ 1 % per 0.01 of reduction near 50 %). Smaller errors hide in the silhouette's scatter.
+inline constexpr double kRadiiZLimit = 3.5;
+
+struct RadiiCheck {
+    bool valid = false;      // the FE had data at (n, μ)
+    double rMaxFeMm = 0;     // FE R_max at the declared (or assumed 50 %) reduction, scaled to D0
+    double z = 0;            // (measured − FE) / σ at that reduction
+    double reductionEst = -1; // the reduction R_max implies at this μ and n; -1 if none in range
+    bool inconsistent() const { return valid && (z > kRadiiZLimit || z < -kRadiiZLimit); }
+};
+
+// reduction: the declared one, or 0.5 when none was declared (the model's assumption).
+RadiiCheck checkRadii(double rMaxMm, double n, double mu, double d0Mm, double reduction);
+
+} // namespace icacam::vision
