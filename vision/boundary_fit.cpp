@@ -48,7 +48,7 @@ bool fitBoundary(const double *radiusPx, const bool *valid, int n,
     if (kTable % n != 0) return false; // ray counts must divide the table (32, 64, 256 …)
     const AngleTable &T = angleTable();
     const int stride = kTable / n;
-    double work[kMaxRays], filled[kMaxRays];
+    double work[kMaxRays], filled[kMaxRays], pairSum[kMaxRays / 2], pairDiff[kMaxRays / 2];
     bool keep[kMaxRays];
     int nValid = 0;
     for (int i = 0; i < n; ++i)
@@ -62,16 +62,23 @@ bool fitBoundary(const double *radiusPx, const bool *valid, int n,
     f.a0 = med;
     double curve[kMaxRays]; // the current curve at every ray
     for (int i = 0; i < n; ++i) curve[i] = med;
-    // r at ray i: a0 + Σ a_k cos(kθ_i) + b_k sin(kθ_i), with kθ_i looked up mod 2π. Loops
-    // run over k outside and rays inside, with the table index stepped rather than
-    // multiplied; each sum still adds its terms in the same order.
+    // r at ray i: a0 + Σ a_k cos(kθ_i) + b_k sin(kθ_i), with kθ_i looked up mod 2π. Rays i
+    // and n − i lie at ±θ (n is a power of two): they share cos kθ and have opposite
+    // sin kθ, so each table pair serves two rays.
+    const int half = n / 2;
     auto updateCurve = [&]() {
         for (int i = 0; i < n; ++i) curve[i] = f.a0;
         for (int k = 1; k <= f.harmonics; ++k) {
             const double ak = f.a[k], bk = f.b[k];
             const int dj = k * stride;
-            for (int i = 0, j = 0; i < n; ++i, j = (j + dj) & (kTable - 1))
-                curve[i] += ak * T.cos[j] + bk * T.sin[j];
+            curve[0] += ak * T.cos[0] + bk * T.sin[0];
+            const int jh = (half * dj) & (kTable - 1);
+            curve[half] += ak * T.cos[jh] + bk * T.sin[jh];
+            for (int i = 1, j = dj & (kTable - 1); i < half; ++i, j = (j + dj) & (kTable - 1)) {
+                const double c = ak * T.cos[j], sn = bk * T.sin[j];
+                curve[i] += c + sn;
+                curve[n - i] += c - sn;
+            }
         }
     };
     int used = 0;
@@ -90,12 +97,18 @@ bool fitBoundary(const double *radiusPx, const bool *valid, int n,
             double sum = 0;
             for (int i = 0; i < n; ++i) sum += filled[i];
             g.a0 = sum / n;
+            for (int i = 1; i < half; ++i) { // even and odd parts of the ±θ pairs
+                pairSum[i] = filled[i] + filled[n - i];
+                pairDiff[i] = filled[i] - filled[n - i];
+            }
             for (int k = 1; k <= K; ++k) {
-                double sa = 0, sb = 0;
                 const int dj = k * stride;
-                for (int i = 0, j = 0; i < n; ++i, j = (j + dj) & (kTable - 1)) {
-                    sa += filled[i] * T.cos[j];
-                    sb += filled[i] * T.sin[j];
+                const int jh = (half * dj) & (kTable - 1);
+                double sa = filled[0] * T.cos[0] + filled[half] * T.cos[jh];
+                double sb = filled[0] * T.sin[0] + filled[half] * T.sin[jh];
+                for (int i = 1, j = dj & (kTable - 1); i < half; ++i, j = (j + dj) & (kTable - 1)) {
+                    sa += pairSum[i] * T.cos[j];
+                    sb += pairDiff[i] * T.sin[j];
                 }
                 g.a[k] = sa * (2.0 / n);
                 g.b[k] = sb * (2.0 / n);

@@ -58,9 +58,14 @@ bool EndFaceAnalyzer::refineCentre(const LumaView &v, double r0Px, double *cx, d
     double radius[kCoarseRays];
     bool valid[kCoarseRays];
     const double rA = kCoarseStart * r0Px, rB = kCoarseEnd * r0Px;
-    {
+    // The Hough centre can be a cell or two off (a distractor circle in the fixture pulls
+    // the votes): while the fit still moves the centre by more than a few pixels, the
+    // rays are cast again from the moved centre (rarely more than once).
+    for (int iteration = 0; iteration < 3; ++iteration) {
         const int rays = kCoarseRays / 2;
-        const double step = std::max(2.0, (rB - rA) / kMaxCoarseSamples);
+        // Coarser than the kept pass: a centre, not a profile, is wanted (2–4 px, about
+        // 1.5 % of the radius, far below the edges' spacing).
+        const double step = std::max({2.0, std::min(4.0, 0.015 * r0Px), (rB - rA) / kMaxCoarseSamples});
         const int count = std::min(kMaxCoarseSamples, int((rB - rA) / step));
         for (int i = 0; i < rays; ++i) {
             RaySpec ray{Q16_16::fromDouble(*cx), Q16_16::fromDouble(*cy), {}, {},
@@ -81,8 +86,10 @@ bool EndFaceAnalyzer::refineCentre(const LumaView &v, double r0Px, double *cx, d
         opt.minRejectPx = 2.0;
         if (!fitBoundary(radius, valid, rays, *cx, *cy, opt, &fit)) return false;
         if (fit.coverage < 0.25) return false;
+        const double moved = std::hypot(fit.centreX - *cx, fit.centreY - *cy);
         *cx = fit.centreX;
         *cy = fit.centreY;
+        if (moved < std::max(3.0, 0.03 * r0Px)) break;
     }
     // Pass 2: 64 rays about the refined centre, kept for the mean profile and the
     // silhouette (the fine stage's contact-edge fit absorbs what offset remains).
@@ -118,8 +125,9 @@ Measurement EndFaceAnalyzer::measure(const LumaView &v, const SpecimenSpec &spec
     SpecimenLocator locator(locatorWork_);
     const CentreEstimate coarse = locator.locate(v, 0.8 * r0, 1.8 * r0);
     // A specimen's concentric edges stack hundreds of votes on one cell; a textured
-    // background spreads them evenly.
-    if (!coarse.found || coarse.votes * 100 < 12 * coarse.background || coarse.votes < 40)
+    // background spreads them evenly. (Each voter votes at every other radius: 20 votes
+    // here are 40 of a vote at every radius.)
+    if (!coarse.found || coarse.votes * 100 < 12 * coarse.background || coarse.votes < 20)
         return fail(ErrorCode::NoSpecimen);
     double cx = coarse.x, cy = coarse.y;
     if (!refineCentre(v, r0, &cx, &cy)) return fail(ErrorCode::NoSpecimen);

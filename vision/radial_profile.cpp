@@ -48,8 +48,10 @@ int sampleRay(const LumaView &v, const RaySpec &ray, int count, uint16_t *out)
     }
     // Fast path: the segment is inside (a convex frame contains it once both ends are),
     // so no bounds checks; same arithmetic as sampleBilinear (test-pinned equal).
-    int32_t x = x0.raw(), y = y0.raw();
-    const int32_t sx = dx.raw(), sy = dy.raw();
+    // Positions stay non-negative on this path, so they run as unsigned 64-bit values (no
+    // sign extension per sample); a negative step wraps modulo 2^64 to the same sums.
+    uint64_t x = uint64_t(int64_t(x0.raw())), y = uint64_t(int64_t(y0.raw()));
+    const uint64_t sx = uint64_t(int64_t(dx.raw())), sy = uint64_t(int64_t(dy.raw()));
     const uint8_t *base = v.data;
     const size_t stride = size_t(v.stride), step = size_t(v.pixelStep);
     // Rounding to 1/256 px is folded into the start position (+128 in Q16.16).
@@ -57,15 +59,14 @@ int sampleRay(const LumaView &v, const RaySpec &ray, int count, uint16_t *out)
     y += 128;
     auto loop = [&](auto pixelStep) {
         for (int i = 0; i < count; ++i, x += sx, y += sy) {
-            const int32_t xq = x >> 8, yq = y >> 8;
-            const uint32_t fx = uint32_t(xq & 255), fy = uint32_t(yq & 255);
-            const uint8_t *p = base + size_t(yq >> 8) * stride + size_t(xq >> 8) * pixelStep;
+            const int32_t fx = int32_t((x >> 8) & 255), fy = int32_t((y >> 8) & 255);
+            const uint8_t *p = base + (y >> 16) * stride + (x >> 16) * pixelStep;
             const uint8_t *q = p + stride;
             // a(256 − f) + b·f = 256a + f(b − a): the same integers with one multiply
             // fewer per blend (the identity is exact, so the result is bit-identical).
-            const int32_t top = (int32_t(p[0]) << 8) + (int32_t(p[pixelStep]) - int32_t(p[0])) * int32_t(fx);
-            const int32_t bot = (int32_t(q[0]) << 8) + (int32_t(q[pixelStep]) - int32_t(q[0])) * int32_t(fx);
-            out[i] = uint16_t(((top << 8) + (bot - top) * int32_t(fy) + 128) >> 8);
+            const int32_t top = (int32_t(p[0]) << 8) + (int32_t(p[pixelStep]) - int32_t(p[0])) * fx;
+            const int32_t bot = (int32_t(q[0]) << 8) + (int32_t(q[pixelStep]) - int32_t(q[0])) * fx;
+            out[i] = uint16_t(((top << 8) + (bot - top) * fy + 128) >> 8);
         }
     };
     // A compile-time pixel step of 1 (grey, NV12, YUV420) saves a multiply per sample.

@@ -220,6 +220,7 @@ bool RingSearch::locateOnRays(int sign, const double *loPx, const double *hiPx, 
         const EdgePeak p = strongestEdge(d, fineCount_, lo, hi, sign, interior);
         valid[i] = p.found && p.value >= minStrength;
         radius[i] = fineStart_[i] + p.position.toDouble() * fineStep_;
+        if (!pts) continue; // a first pass: only the curve is wanted
         pts[i] = {Q16_16::fromDouble(cx + radius[i] * rayCos_[i]),
                   Q16_16::fromDouble(cy + radius[i] * raySin_[i]), Q16_16::fromDouble(radius[i]),
                   p.value, valid[i]};
@@ -231,6 +232,7 @@ bool RingSearch::locateOnRays(int sign, const double *loPx, const double *hiPx, 
             steps[nSteps++] = (double(row[j + reach]) - double(row[j - reach])) / 256.0;
     }
     if (!fitBoundary(radius, valid, kRays, cx, cy, FitOptions{}, fit, curveOut)) return false;
+    if (!pts) return true;
     // Points the robust fit rejected are shown as such (overlays, diagnostics).
     const double keep = std::max(0.75, 3 * fit->scatterPx);
     for (int i = 0; i < kRays; ++i) pts[i].valid = pts[i].valid && std::fabs(radius[i] - curveOut[i]) <= keep;
@@ -323,7 +325,7 @@ ErrorCode RingSearch::run(Measurement *m)
         hi[i] = me.rOuter + outerHi;
     }
     const int32_t outerMin = std::max<int32_t>(8, int32_t(0.3 * me.strengthOuter));
-    if (!locateOnRays(me.signOuter, lo, hi, outerMin, outerPts, false, 3.0, &outer, outerR, &contrastOuter) ||
+    if (!locateOnRays(me.signOuter, lo, hi, outerMin, nullptr, false, 3.0, &outer, outerR, nullptr) ||
         outer.coverage < 0.3)
         return ErrorCode::OuterEdgeNotFound;
     // Pass 2: close to the fitted curve, so a stain edge nearby cannot win.
@@ -442,8 +444,8 @@ ErrorCode RingSearch::run(Measurement *m)
             lo[i] = c - h;
             hi[i] = std::min(c + h, ro - (W ? 1.0 + W : 2.0));
         }
-        if (!locateOnRays(innerSign, lo, hi, innerStrength, innerPts, true, reach, &inner, innerR,
-                          &contrastInner) ||
+        if (!locateOnRays(innerSign, lo, hi, innerStrength, pass == 0 ? nullptr : innerPts, true, reach,
+                          &inner, innerR, &contrastInner) ||
             inner.coverage < 0.25)
             return ErrorCode::InnerEdgeNotFound;
     }

@@ -34,11 +34,14 @@ CentreEstimate SpecimenLocator::locate(const LumaView &v, double rMinPx, double 
     uint16_t *acc = reinterpret_cast<uint16_t *>(work_ + size_t(kMaxCells) * kMaxCells * 3); // votes
     std::fill(acc, acc + size_t(W) * H, uint16_t(0));
 
-    // Decimate: mean of a 2×2 block at the centre of each D×D cell.
-    const int off = D >= 2 ? D / 2 - 1 : 0;
-    const int step2 = D >= 2 ? 1 : 0;
-    // For D ≥ 2 the second pixel of a block (+1) stays inside the frame (W·D ≤ width), so
-    // the loop needs no clamping; for D = 1 the "block" is the pixel itself.
+    // Decimate: mean of 4 pixels spread over each D×D cell, at a quarter and three
+    // quarters of its width and height. Spread (not a 2×2 block at the centre) so that an
+    // edge crossing the cell shades it in proportion: point samples would turn the circles
+    // into staircases whose Sobel directions scatter the votes by a cell or two.
+    const int off = D >= 2 ? D / 4 : 0;
+    const int step2 = D >= 2 ? D / 2 : 0;
+    // For D ≥ 2 the second pixel (off + D/2 < D) stays inside the cell and so inside the
+    // frame (W·D ≤ width): no clamping; for D = 1 the "block" is the pixel itself.
     const size_t ps = size_t(v.pixelStep);
     const size_t colStep = size_t(D) * ps, pairStep = size_t(step2) * ps;
     for (int y = 0; y < H; ++y) {
@@ -87,7 +90,10 @@ CentreEstimate SpecimenLocator::locate(const LumaView &v, double rMinPx, double 
             if (norm == 0) continue;
             // Unit vector in Q2.14; vote along both directions (either edge polarity).
             const int ux = gx * 16384 / norm, uy = gy * 16384 / norm;
-            for (int r = rLo; r <= rHi; ++r) {
+            // Every other radius, alternating with the cell's parity: a circle's votes still
+            // land within the 3×3 peak sum, and neighbouring voters cover the radii between,
+            // at half the votes.
+            for (int r = rLo + ((x + y) & 1); r <= rHi; r += 2) {
                 const int dx = (r * ux + 8192) >> 14, dy = (r * uy + 8192) >> 14;
                 // One unsigned comparison covers both ends of each axis.
                 unsigned cx = unsigned(x + dx), cy = unsigned(y + dy);
