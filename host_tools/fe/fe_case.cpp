@@ -22,7 +22,14 @@ std::string FeCase::label() const
     char b[200];
     std::snprintf(b, sizeof b, "K%g_n%g_mu%g_E%g_D%g_H%g_r%g_h%g_c%g_cs%g", kMpa, n, mu, eMpa / 1000,
                   d0Mm, h0Mm, reductionMax, elemMm, cornerMm, contactSlope);
-    return b;
+    // Settings added later only enter the label when they differ from the first sweeps'
+    // defaults, so the labels (the sweep's resume keys) of committed rows stay valid.
+    std::string s = b;
+    if (element != "CAX4R") s += "_" + element;
+    if (platenMm > 0) s += "_p" + fmt("%g", platenMm);
+    if (stickSlope != 1e4) s += "_st" + fmt("%g", stickSlope);
+    if (incMax != 0.01) s += "_im" + fmt("%g", incMax);
+    return s;
 }
 
 namespace {
@@ -55,12 +62,25 @@ std::vector<double> axisNodes(double len, double elem, double fine)
 
 FeMesh meshFor(const FeCase &c)
 {
+    if (c.element != "CAX4R" && c.element != "CAX8R")
+        throw std::invalid_argument("fe: element must be CAX4R or CAX8R, not " + c.element);
     FeMesh m;
+    m.q = c.element == "CAX8R" ? 2 : 1;
     m.r = axisNodes(c.d0Mm / 2, c.elemMm, c.cornerMm);
     m.z = axisNodes(c.h0Mm / 2, c.elemMm, c.cornerMm);
     m.nr = int(m.r.size()) - 1;
     m.nz = int(m.z.size()) - 1;
-    m.platenFirstNode = (m.nr + 1) * (m.nz + 1) + 1;
+    auto refine = [&](const std::vector<double> &x) {
+        std::vector<double> y;
+        for (size_t k = 0; k < x.size(); ++k) {
+            if (k > 0 && m.q == 2) y.push_back(0.5 * (x[k - 1] + x[k]));
+            y.push_back(x[k]);
+        }
+        return y;
+    };
+    m.rn = refine(m.r);
+    m.zn = refine(m.z);
+    m.platenFirstNode = m.cols() * m.rows() + 1;
     return m;
 }
 
@@ -71,27 +91,36 @@ std::string makeDeck(const FeCase &c)
         throw std::invalid_argument("fe: invalid case inputs");
     const FeMesh m = meshFor(c);
     const double r0 = c.d0Mm / 2, z0 = c.h0Mm / 2;
-    const double dr = c.cornerMm > 0 ? std::max(c.cornerMm, 0.5 * c.elemMm) : r0 / m.nr; // platen spacing
+    const double dr = c.platenMm > 0 ? c.platenMm
+                     : c.cornerMm > 0 ? std::max(c.cornerMm, 0.5 * c.elemMm) : r0 / m.nr; // platen spacing
     const double dz = m.z[1] - m.z[0];
     std::ostringstream o;
     o.precision(10);
     o << "** icacam fe: cylinder upsetting, axisymmetric quarter model (generated)\n"
       << "** " << c.label() << "\n*NODE,NSET=NALL\n";
-    for (int j = 0; j <= m.nz; ++j)
-        for (int i = 0; i <= m.nr; ++i)
-            o << m.node(i, j) << ", " << m.r[i] << ", " << m.z[j] << "\n";
+    const int q = m.q;
+    for (int j = 0; j < m.rows(); ++j)
+        for (int i = 0; i < m.cols(); ++i)
+            if (q == 1 || i % 2 == 0 || j % 2 == 0) // quadratic: no node at element centres
+                o << m.node(i, j) << ", " << m.rn[i] << ", " << m.zn[j] << "\n";
     // The platen: one row of elements from the axis to 2.2 R0, with the specimen's spacing.
     const int np = int(std::lround(2.2 * r0 / dr));
     const double tp = std::max(dz, 0.5);
     for (int j = 0; j <= 1; ++j)
         for (int i = 0; i <= np; ++i)
             o << m.platenFirstNode + i + j * (np + 1) << ", " << i * dr << ", " << z0 + j * tp << "\n";
-    o << "*ELEMENT,TYPE=CAX4R,ELSET=SPEC\n";
+    o << "*ELEMENT,TYPE=" << c.element << ",ELSET=SPEC\n";
     int e = 1;
     for (int j = 0; j < m.nz; ++j)
-        for (int i = 0; i < m.nr; ++i, ++e)
-            o << e << ", " << m.node(i, j) << ", " << m.node(i + 1, j) << ", "
-              << m.node(i + 1, j + 1) << ", " << m.node(i, j + 1) << "\n";
+        for (int i = 0; i < m.nr; ++i, ++e) {
+            const int a = q * i, b = q * j; // lower-left corner on the node grid
+            o << e << ", " << m.node(a, b) << ", " << m.node(a + q, b) << ", " << m.node(a + q, b + q)
+              << ", " << m.node(a, b + q);
+            if (q == 2) // mid-side nodes: bottom, right, top, left
+                o << ", " << m.node(a + 1, b) << ", " << m.node(a + 2, b + 1) << ", " << m.node(a + 1, b + 2)
+                  << ", " << m.node(a, b + 1);
+            o << "\n";
+        }
     const int firstPlatenElem = e;
     o << "*ELEMENT,TYPE=CAX4R,ELSET=PLATEN\n";
     for (int i = 0; i < np; ++i, ++e) {
@@ -101,9 +130,9 @@ std::string makeDeck(const FeCase &c)
     auto nset = [&](const char *name, auto pred) {
         o << "*NSET,NSET=" << name << "\n";
         int k = 0;
-        for (int j = 0; j <= m.nz; ++j)
-            for (int i = 0; i <= m.nr; ++i)
-                if (pred(i, j)) o << m.node(i, j) << (++k % 8 ? ", " : ",\n");
+        for (int j = 0; j < m.rows(); ++j)
+            for (int i = 0; i < m.cols(); ++i)
+                if ((q == 1 || i % 2 == 0 || j % 2 == 0) && pred(i, j)) o << m.node(i, j) << (++k % 8 ? ", " : ",\n");
         if (k % 8) o << "\n";
     };
     nset("AXIS", [](int i, int) { return i == 0; });
@@ -159,9 +188,10 @@ Radii computeRadii(const FeCase &c, const FeMesh &m, const NodeXY &coords, const
     r.roInterpMm = r.riMm;
     // Walk down the former lateral surface from the corner: the nodes still on the platen
     // form the immigrated contact area; the first node off it ends it.
-    int last = m.nz;
-    for (int j = m.nz - 1; j >= 0; --j) {
-        const auto p = pos(m.node(m.nr, j));
+    const int top = m.rows() - 1;
+    int last = top;
+    for (int j = top - 1; j >= 0; --j) {
+        const auto p = pos(m.lateralNode(j));
         if (zPlaten - p.second <= gapTolMm) { last = j; r.roMm = std::max(r.roMm, p.first); ++r.contactNodes; }
         else break;
     }
@@ -169,9 +199,9 @@ Radii computeRadii(const FeCase &c, const FeMesh &m, const NodeXY &coords, const
     // so sqrt(gap) is linear in r; extrapolate it to zero from the next two free nodes,
     // clamped to the segment between the last contact node and the first free one.
     if (last >= 2) {
-        const auto a = pos(m.node(m.nr, last));
-        const auto b = pos(m.node(m.nr, last - 1));
-        const auto cc = pos(m.node(m.nr, last - 2));
+        const auto a = pos(m.lateralNode(last));
+        const auto b = pos(m.lateralNode(last - 1));
+        const auto cc = pos(m.lateralNode(last - 2));
         const double gb = std::sqrt(std::max(0.0, zPlaten - b.second));
         const double gc = std::sqrt(std::max(0.0, zPlaten - cc.second));
         double edge = a.first;
@@ -184,7 +214,7 @@ Radii computeRadii(const FeCase &c, const FeMesh &m, const NodeXY &coords, const
         }
         r.roInterpMm = std::max(r.roMm, edge);
     }
-    for (int j = 0; j <= m.nz; ++j) r.rMaxMm = std::max(r.rMaxMm, pos(m.node(m.nr, j)).first);
+    for (int j = 0; j <= top; ++j) r.rMaxMm = std::max(r.rMaxMm, pos(m.lateralNode(j)).first);
     return r;
 }
 

@@ -22,19 +22,30 @@ struct FeCase {
     // > 0: graded mesh, cornerMm at the end-face corner, growing by 1.2 per element
     // towards the axis and the mid-plane until elemMm (the ICA is then resolved to cornerMm).
     double cornerMm = 0;
+    double platenMm = 0;                    // platen (master) segment length; 0: max(cornerMm, elemMm / 2)
+    // Specimen element: "CAX4R" (linear, reduced integration) or "CAX8R" (quadratic,
+    // reduced integration: follows the fold-over at high μ where CAX4R diverges).
+    std::string element = "CAX4R";
     double contactSlope = 1e5;              // N/mm³, linear pressure–overclosure
     double stickSlope = 1e4;                // N/mm³, friction stick slope (1e4 and 1e5 give the same u)
     double incInit = 0.005, incMin = 1e-7, incMax = 0.01; // of the step time 1
     std::string label() const;              // a file-safe name from the inputs
 };
 
-// Node numbering of the generated mesh (needed to post-process).
+// Node numbering of the generated mesh (needed to post-process). Nodes sit on a grid of
+// q·nr + 1 by q·nz + 1 points (q = 2 for quadratic elements: mid-side nodes; the element
+// centres of that grid are not written); i, j below index that node grid.
 struct FeMesh {
     int nr = 0, nz = 0;       // specimen elements radially / axially
-    std::vector<double> r, z; // node coordinates along the axes (nr + 1, nz + 1 values)
+    int q = 1;                // nodes per element edge minus one (1 linear, 2 quadratic)
+    std::vector<double> r, z; // element corner coordinates along the axes (nr + 1, nz + 1 values)
+    std::vector<double> rn, zn; // node-grid coordinates (q·nr + 1, q·nz + 1 values)
     int platenFirstNode = 0;  // first node id of the platen
-    int node(int i, int j) const { return 1 + i + j * (nr + 1); }
-    int cornerNode() const { return node(nr, nz); }
+    int cols() const { return q * nr + 1; }
+    int rows() const { return q * nz + 1; }
+    int node(int i, int j) const { return 1 + i + j * cols(); }
+    int cornerNode() const { return node(q * nr, q * nz); }
+    int lateralNode(int j) const { return node(q * nr, j); } // j = 0 … q·nz (mid-plane … corner)
 };
 
 FeMesh meshFor(const FeCase &c);

@@ -32,7 +32,7 @@ const char *kUsage =
     "  report  --in CSV --out DIR                             Table 1 / Fig. 3 comparison\n"
     "case options: --k 500 --n 0.25 --mu 0.2 --e 210000 --d0 10 --h0 15 --reduction 0.5\n"
     "              --elem 0.2 --corner 0 --contact-slope 1e5 --stick-slope 1e4 --fallback-stick-slope 1e3\n"
-    "              --inc-max 0.01\n"
+    "              --inc-max 0.01 --element CAX4R|CAX8R --platen 0 (master segment, mm)\n"
     "              --ccx ccx --timeout 3600 --work /tmp/icacam-fe\n";
 
 struct Parsed {
@@ -64,6 +64,7 @@ bool setCaseKey(FeCase &c, const std::string &key, double v)
     else if (key == "reduction" || key == "red") c.reductionMax = v;
     else if (key == "elem") c.elemMm = v;
     else if (key == "corner") c.cornerMm = v;
+    else if (key == "platen") c.platenMm = v;
     else if (key == "contact-slope") c.contactSlope = v;
     else if (key == "stick-slope") c.stickSlope = v;
     else if (key == "inc-max") c.incMax = v;
@@ -89,6 +90,7 @@ Parsed parse(const std::vector<std::string> &args, size_t from)
         else if (key == "fallback-stick-slope") p.run.fallbackStickSlope = toDouble(key, v);
         else if (key == "jobs") p.jobs = std::clamp(int(toDouble(key, v)), 1, 2);
         else if (key == "snapshot-reduction") p.reduction = toDouble(key, v);
+        else if (key == "element") p.c.element = v;
         else if (!setCaseKey(p.c, key, toDouble(key, v)))
             throw std::runtime_error("unknown option '" + a + "'\n" + kUsage);
     }

@@ -34,9 +34,19 @@ double d(const std::string &s) { return s.empty() ? 0.0 : std::strtod(s.c_str(),
 // the finest mesh present for each (n, μ), averaged over K.
 struct Point {
     double n = 0, mu = 0, u = 0, ri = 0, ro = 0, rMax = 0, force = 0, elem = 0;
+    std::string mesh;
     int count = 0;
     double kMin = 1e9, kMax = 0;
 };
+
+// A snapshot row at this reduction. A run that stopped later (status failed, e.g. at 57 %
+// of a run to 60 %) still reached it: its snapshots are converged states (the runner keeps
+// only snapshot times, never the diverged last block), so they are used too.
+bool reached(const FeRow &r, double reduction)
+{
+    return (r.status == "ok" || r.status == "failed") && std::fabs(r.reduction - reduction) < 1e-6 &&
+           r.reduction > 0;
+}
 
 std::map<std::pair<double, double>, Point> basePoints(const std::vector<std::string> &in, double reduction)
 {
@@ -45,28 +55,29 @@ std::map<std::pair<double, double>, Point> basePoints(const std::vector<std::str
         const auto r = readSweepCsv(path);
         rows.insert(rows.end(), r.begin(), r.end());
     }
-    // The mesh used for the base data: the most common element size at this reduction.
-    std::map<double, int> elemCount;
+    // The mesh used for the base data: the most common mesh (element type, size, corner
+    // refinement) at this reduction.
+    std::map<std::string, int> meshCount;
     for (const auto &r : rows)
-        if (r.status == "ok" && std::fabs(r.reduction - reduction) < 1e-6) ++elemCount[r.elem];
-    double elem = 0;
+        if (reached(r, reduction)) ++meshCount[meshKey(r)];
+    std::string mesh;
     int best = 0;
-    for (auto [e, c] : elemCount) if (c > best) { best = c; elem = e; }
+    for (const auto &[e, c] : meshCount) if (c > best) { best = c; mesh = e; }
     // And the base K: the most common one (the uniform mesh resolves u too coarsely for an
     // average over K to be monotone in μ; other K are the K-independence check, docs/fe.md).
     std::map<double, int> kCount;
     for (const auto &r : rows)
-        if (r.status == "ok" && std::fabs(r.reduction - reduction) < 1e-6 && r.elem == elem) ++kCount[r.kMpa];
+        if (reached(r, reduction) && meshKey(r) == mesh) ++kCount[r.kMpa];
     double kBase = 0;
     best = 0;
     for (auto [k, c] : kCount) if (c > best) { best = c; kBase = k; }
     std::map<std::pair<double, double>, Point> pts;
     for (const auto &r : rows) {
-        if (r.status != "ok" || std::fabs(r.reduction - reduction) > 1e-6 || r.elem != elem ||
+        if (!reached(r, reduction) || meshKey(r) != mesh ||
             r.eMpa != 210000 || r.d0 != 10 || r.h0 != 15 || r.kMpa != kBase)
             continue;
         Point &p = pts[{r.n, r.mu}];
-        p.n = r.n; p.mu = r.mu; p.elem = r.elem;
+        p.n = r.n; p.mu = r.mu; p.elem = r.elem; p.mesh = mesh;
         p.u += r.uInterp; p.ri += r.ri; p.ro += r.roInterp; p.rMax += r.rMax; p.force += r.force / r.kMpa;
         p.kMin = std::min(p.kMin, r.kMpa); p.kMax = std::max(p.kMax, r.kMpa);
         ++p.count;
@@ -90,6 +101,13 @@ std::string list(const std::vector<double> &v, const char *f = "%.6g")
 }
 } // namespace
 
+std::string meshKey(const FeRow &r)
+{
+    char b[80];
+    std::snprintf(b, sizeof b, "%s h%g c%g", r.element.c_str(), r.elem, r.cornerMm);
+    return b;
+}
+
 std::vector<FeRow> readSweepCsv(const std::string &path)
 {
     std::ifstream f(path);
@@ -112,6 +130,8 @@ std::vector<FeRow> readSweepCsv(const std::string &path)
         r.kMpa = d(get("k_mpa")); r.n = d(get("n")); r.mu = d(get("mu")); r.eMpa = d(get("e_mpa"));
         r.d0 = d(get("d0_mm")); r.h0 = d(get("h0_mm")); r.reductionMax = d(get("reduction_max"));
         r.reduction = d(get("reduction")); r.elem = d(get("elem_mm"));
+        if (col.count("element")) r.element = get("element");
+        if (col.count("corner_mm")) r.cornerMm = d(get("corner_mm"));
         r.ri = d(get("r_i_mm")); r.ro = d(get("r_o_mm")); r.roInterp = d(get("r_o_interp_mm"));
         r.rMax = d(get("r_max_mm")); r.u = d(get("u_mm")); r.uInterp = d(get("u_interp_mm"));
         r.force = d(get("force_kn")); r.wallS = d(get("wall_s"));
@@ -125,10 +145,11 @@ int fitCommand(const std::vector<std::string> &in, const std::string &out, doubl
     const auto pts = basePoints(in, reduction);
     if (pts.empty()) throw std::runtime_error("fit: no usable rows");
     std::set<double> ns, mus;
-    double kMin = 1e9, kMax = 0, elem = 0;
+    double kMin = 1e9, kMax = 0;
+    std::string mesh;
     for (const auto &[k, p] : pts) {
         ns.insert(p.n); mus.insert(p.mu);
-        kMin = std::min(kMin, p.kMin); kMax = std::max(kMax, p.kMax); elem = p.elem;
+        kMin = std::min(kMin, p.kMin); kMax = std::max(kMax, p.kMax); mesh = p.mesh;
     }
     const std::vector<double> nv(ns.begin(), ns.end()), mv(mus.begin(), mus.end());
     auto table = [&](auto get) {
@@ -148,9 +169,9 @@ int fitCommand(const std::vector<std::string> &in, const std::string &out, doubl
     std::ofstream f(out);
     f << "#pragma once\n"
       << "// GENERATED by `icacam fe fit" << inputs << " --out " << out << "` — do not edit.\n"
-      << "// Base data: CalculiX 2.20 CAX4R axisymmetric upsetting (host_tools/fe, docs/fe.md),\n"
-      << "// D0 = 10 mm, H0 = 15 mm, E = 210 GPa, reduction " << reduction << ", element " << elem
-      << " mm, the most common K (kKMinMpa).\n"
+      << "// Base data: CalculiX 2.20 axisymmetric upsetting (host_tools/fe, docs/fe.md),\n"
+      << "// D0 = 10 mm, H0 = 15 mm, E = 210 GPa, reduction " << reduction << ", mesh " << mesh
+      << " (element, far-field size, corner size in mm), the most common K (kKMinMpa).\n"
       << "// u is the interpolated contact edge (u_interp_mm); -1 marks a grid point without data.\n"
       << "namespace icacam::vision::fe_table {\n"
       << "inline constexpr const char *kProvenance = \"icacam fe fit" << inputs << "\";\n"

@@ -84,7 +84,13 @@ RunResult runOnce(FeCase c, const RunOptions &o)
     }
     const FrdResults frd = parseFrd(slurp(dir / "job.frd"));
     const auto forces = parseDatTotals(slurp(dir / "job.dat"));
-    for (const FrdStep &s : frd.steps) {
+    const bool finished = log.find("Job finished") != std::string::npos;
+    // A run that stopped on divergence writes its "best solution" (not converged) as the
+    // last block: never use it, even if its time happens to equal a snapshot's.
+    const bool bestSolution = log.find("best solution and residuals are in the frd file") != std::string::npos;
+    const size_t usable = !bestSolution || frd.steps.empty() ? frd.steps.size() : frd.steps.size() - 1;
+    for (size_t k = 0; k < usable; ++k) {
+        const FrdStep &s = frd.steps[k];
         const double red = s.time * c.reductionMax;
         // A run that stopped leaves its diverged "best solution" as a last block: keep the
         // snapshots only.
@@ -100,7 +106,6 @@ RunResult runOnce(FeCase c, const RunOptions &o)
         f.time *= c.reductionMax;
         res.force.push_back(f);
     }
-    const bool finished = log.find("Job finished") != std::string::npos;
     const bool complete = !res.radii.empty() && std::fabs(res.radii.back().reduction - c.reductionMax) < 1e-6;
     res.status = finished && complete ? "ok" : "failed";
     if (!finished) {
@@ -126,10 +131,10 @@ std::vector<std::string> csvRows(const FeCase &c, const RunResult &r)
     auto row = [&](const Radii *x, double force) {
         char b[1024];
         std::snprintf(b, sizeof b,
-                      "%s,%s,%g,%g,%g,%g,%g,%g,%g,%g,%.4f,%g,%g,CAX4R,node-to-surface penalty,%g,%g,%g,"
+                      "%s,%s,%g,%g,%g,%g,%g,%g,%g,%g,%.4f,%g,%g,%s,node-to-surface penalty,%g,%g,%g,"
                       "%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%d,%.3f,%.1f,CalculiX 2.20 OMP=1,%s",
                       c.label().c_str(), r.status.c_str(), c.kMpa, c.n, c.mu, c.eMpa, c.nu, c.d0Mm,
-                      c.h0Mm, c.reductionMax, x ? x->reduction : 0.0, c.elemMm, c.cornerMm, c.contactSlope,
+                      c.h0Mm, c.reductionMax, x ? x->reduction : 0.0, c.elemMm, c.cornerMm, c.element.c_str(), c.contactSlope,
                       c.stickSlope, c.incMax, x ? x->riMm : 0.0, x ? x->roMm : 0.0,
                       x ? x->roInterpMm : 0.0, x ? x->rMaxMm : 0.0, x ? x->uMm() : 0.0,
                       x ? x->uInterpMm() : 0.0, x ? x->contactNodes : 0, force, r.wallS,

@@ -97,3 +97,42 @@ TEST(FeDeck, GradedMeshResolvesTheCorner)
     const std::string deck = makeDeck(c);
     EXPECT_NE(deck.find("\n" + std::to_string(m.cornerNode()) + ", 5, 7.5\n"), std::string::npos);
 }
+
+TEST(FeDeck, LabelsOfTheFirstSweepsStayValid)
+{
+    // The sweep resumes by label: rows committed before new settings existed must keep theirs.
+    FeCase c;
+    c.mu = 0.05;
+    EXPECT_EQ(c.label(), "K500_n0.25_mu0.05_E210_D10_H15_r0.5_h0.2_c0_cs100000");
+    c.element = "CAX8R";
+    c.incMax = 0.02;
+    EXPECT_EQ(c.label(), "K500_n0.25_mu0.05_E210_D10_H15_r0.5_h0.2_c0_cs100000_CAX8R_im0.02");
+}
+
+TEST(FeDeck, QuadraticElementsHaveMidSideNodes)
+{
+    FeCase c;
+    c.elemMm = 0.5;
+    c.element = "CAX8R";
+    const FeMesh m = meshFor(c);
+    EXPECT_EQ(m.q, 2);
+    EXPECT_EQ(m.cols(), 21);
+    EXPECT_EQ(m.rows(), 31);
+    EXPECT_DOUBLE_EQ(m.rn[1], 0.25);
+    EXPECT_DOUBLE_EQ(m.zn.back(), 7.5);
+    const std::string deck = makeDeck(c);
+    // Node grid 21 × 31 without the 10 × 15 element centres, plus 2 rows of 23 platen nodes.
+    EXPECT_EQ(countLines(deck, "*NODE,NSET=NALL\n", "*ELEMENT"), 21 * 31 - 10 * 15 + 2 * 23);
+    EXPECT_EQ(countLines(deck, "*ELEMENT,TYPE=CAX8R,ELSET=SPEC\n", "*ELEMENT"), 150);
+    // First element: corners 1, 3, 45, 43 of the node grid, then bottom, right, top, left mid-sides.
+    EXPECT_NE(deck.find("*ELEMENT,TYPE=CAX8R,ELSET=SPEC\n1, 1, 3, 45, 43, 2, 24, 44, 22\n"), std::string::npos);
+    // The corner node is the last specimen node; the element centre (1, 1) is not written.
+    EXPECT_NE(deck.find("\n" + std::to_string(m.cornerNode()) + ", 5, 7.5\n"), std::string::npos);
+    const std::string nodes = deck.substr(0, deck.find("*ELEMENT"));
+    EXPECT_EQ(nodes.find("\n" + std::to_string(m.node(1, 1)) + ", "), std::string::npos);
+    EXPECT_NE(nodes.find("\n" + std::to_string(m.node(1, 0)) + ", 0.25, 0\n"), std::string::npos);
+    EXPECT_EQ(m.lateralNode(m.rows() - 1), m.cornerNode());
+    FeCase bad = c;
+    bad.element = "CAX4";
+    EXPECT_THROW(makeDeck(bad), std::invalid_argument);
+}
