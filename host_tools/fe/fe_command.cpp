@@ -23,13 +23,15 @@ using namespace icacam::host::fe;
 namespace {
 
 const char *kUsage =
-    "usage: icacam fe <run|sweep|fit|report|deck> [options]\n"
+    "usage: icacam fe <run|sweep|fit|report|compare|deck> [options]\n"
     "  deck    --k MPa --n N --mu MU [case options]           print the CalculiX deck\n"
     "  run     [case options] [--out CSV] [--work DIR]       one case: ccx, R_i R_o R_max u force\n"
     "  sweep   --grid 'k=500;n=0.25,0.05;mu=0.05,0.1' [case options] --out CSV [--jobs 1]\n"
     "          resumable: cases already in CSV are skipped; grid keys: k n mu e d0 h0 red elem\n"
     "  fit     --in CSV [--in CSV2] --out vision/fe_model_table.h [--reduction 0.5]\n"
     "  report  --in CSV --out DIR                             Table 1 / Fig. 3 comparison\n"
+    "  compare --in REF.csv --in OTHER.csv [--out MD] [--min-u 0.1] [--bar 0.05]\n"
+    "          u of the same cases on other meshes/solvers (mesh study, independent model)\n"
     "case options: --k 500 --n 0.25 --mu 0.2 --e 210000 --d0 10 --h0 15 --reduction 0.5\n"
     "              --elem 0.2 --corner 0 --contact-slope 1e5 --stick-slope 1e4 --fallback-stick-slope 1e3\n"
     "              --inc-max 0.01 --element CAX4R|CAX8R --platen 0 (master segment, mm)\n"
@@ -41,6 +43,7 @@ struct Parsed {
     std::vector<std::string> in;
     std::string out, grid;
     double reduction = 0.5;
+    double minU = 0.1, bar = 0.05; // compare: judged where u > minU mm, within bar (relative)
     int jobs = 1;
 };
 
@@ -91,6 +94,8 @@ Parsed parse(const std::vector<std::string> &args, size_t from)
         else if (key == "jobs") p.jobs = std::clamp(int(toDouble(key, v)), 1, 2);
         else if (key == "snapshot-reduction") p.reduction = toDouble(key, v);
         else if (key == "element") p.c.element = v;
+        else if (key == "min-u") p.minU = toDouble(key, v);
+        else if (key == "bar") p.bar = toDouble(key, v);
         else if (!setCaseKey(p.c, key, toDouble(key, v)))
             throw std::runtime_error("unknown option '" + a + "'\n" + kUsage);
     }
@@ -211,6 +216,7 @@ int feCommand(const std::vector<std::string> &args)
         if (p.in.empty() || p.out.empty()) throw std::runtime_error("fit needs --in and --out");
         return fitCommand(p.in, p.out, p.reduction);
     }
+    if (sub == "compare") return compareCommand(p.in, p.out, p.minU, p.bar);
     if (sub == "report") {
         if (p.in.empty() || p.out.empty()) throw std::runtime_error("report needs --in and --out");
         return reportCommand(p.in, p.out, p.reduction);

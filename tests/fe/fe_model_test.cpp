@@ -1,8 +1,11 @@
 // The generated model (vision/fe_model_table.h) against the committed FE data
-// (data/fe/sweep.csv): the table is current, and μ is reproduced within 1 % in range.
+// (the CSVs its provenance names): the table is current, and μ is reproduced within 1 % in range.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <sstream>
+#include <vector>
 #include <filesystem>
 #include <map>
 
@@ -14,28 +17,36 @@ using namespace icacam;
 namespace t = icacam::vision::fe_table;
 
 namespace {
-const std::string kCsv = std::string(ICACAM_SOURCE_DIR) + "/data/fe/sweep.csv";
+// The CSVs the table was generated from, as its provenance names them ("icacam fe fit --in A
+// --in B"), relative to the source tree.
+std::vector<std::string> tableInputs()
+{
+    std::vector<std::string> in;
+    std::istringstream s(t::kProvenance);
+    std::string word;
+    while (s >> word)
+        if (word == "--in" && s >> word) in.push_back(std::string(ICACAM_SOURCE_DIR) + "/" + word);
+    return in;
+}
 
-// (n, μ) → mean u over K of the base rows (as `icacam fe fit` takes them).
+// (n, μ) → u of the base data, selected exactly as `icacam fe fit` selects it.
 std::map<std::pair<double, double>, double> baseU()
 {
-    std::map<std::pair<double, double>, std::pair<double, int>> acc;
-    for (const auto &r : host::fe::readSweepCsv(kCsv))
-        if (r.status == "ok" && std::fabs(r.reduction - t::kReduction) < 1e-6 && r.eMpa == 210000 &&
-            r.d0 == 10 && r.h0 == 15 && r.kMpa >= t::kKMinMpa && r.kMpa <= t::kKMaxMpa) {
-            auto &a = acc[{r.n, r.mu}];
-            a.first += r.uInterp;
-            ++a.second;
-        }
     std::map<std::pair<double, double>, double> out;
-    for (auto &[k, a] : acc) out[k] = a.first / a.second;
+    for (const auto &[k, p] : host::fe::basePoints(tableInputs(), t::kReduction)) out[k] = p.u;
     return out;
+}
+
+bool haveInputs()
+{
+    const auto in = tableInputs();
+    return !in.empty() && std::all_of(in.begin(), in.end(), [](const std::string &p) { return std::filesystem::exists(p); });
 }
 } // namespace
 
 TEST(FeModel, TableMatchesCommittedData)
 {
-    if (!std::filesystem::exists(kCsv)) GTEST_SKIP() << "no " << kCsv;
+    ASSERT_TRUE(haveInputs()) << "the table's inputs are not in the tree: " << t::kProvenance;
     const auto base = baseU();
     int found = 0;
     for (int i = 0; i < t::kNCount; ++i)
@@ -51,7 +62,7 @@ TEST(FeModel, TableMatchesCommittedData)
 
 TEST(FeModel, ReproducesFeDataWithinOnePercent)
 {
-    if (!std::filesystem::exists(kCsv)) GTEST_SKIP() << "no " << kCsv;
+    ASSERT_TRUE(haveInputs()) << "the table's inputs are not in the tree: " << t::kProvenance;
     vision::FeModel model;
     int checked = 0;
     for (const auto &[key, u] : baseU()) {
