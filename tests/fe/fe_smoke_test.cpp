@@ -3,6 +3,9 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <string>
+
+#include <unistd.h>
 
 #include "fe_runner.h"
 
@@ -16,7 +19,8 @@ TEST(FeSmoke, CoarseCaseEndToEnd)
     c.mu = 0.3;
     c.elemMm = 0.5;
     RunOptions o;
-    o.workDir = (std::filesystem::temp_directory_path() / "icacam-fe-smoke").string();
+    // One directory per process: several worktrees (engineers) may run the suite at once.
+    o.workDir = (std::filesystem::temp_directory_path() / ("icacam-fe-smoke-" + std::to_string(getpid()))).string();
     o.timeoutS = 170;
     const RunResult r = runCase(c, o);
     ASSERT_EQ(r.status, "ok") << r.message << " in " << r.dir;
