@@ -10,6 +10,7 @@
 
 #include "end_face_renderer.h"
 #include "manifest.h"
+#include "synth_loop_set.h"
 #include "vision/paper_model.h"
 
 namespace icacam::host {
@@ -29,7 +30,7 @@ double uForMu(double mu, double n)
 
 int synthCommand(const std::vector<std::string> &args)
 {
-    std::string outDir;
+    std::string outDir, effect;
     double count = 10, seed = 1;
     bool hard = false;
     for (size_t i = 0; i < args.size(); ++i) {
@@ -41,13 +42,28 @@ int synthCommand(const std::vector<std::string> &args)
         else if (args[i] == "--count") { if (!parseNumber(value(), &count) || count < 1) throw std::runtime_error("bad --count"); }
         else if (args[i] == "--seed") { if (!parseNumber(value(), &seed)) throw std::runtime_error("bad --seed"); }
         else if (args[i] == "--hard") hard = true;
+        else if (args[i] == "--effect") effect = value();
         else if (args[i] == "-h" || args[i] == "--help") {
             std::cout << "usage: icacam synth --out DIR [--count N] [--seed S] [--hard]\n"
-                         "Writes DIR/images/*, DIR/manifest.csv and DIR/truth.csv.\n";
+                         "       icacam synth --out DIR --effect process|optical|null [--count N] [--seed S]\n"
+                         "Writes DIR/images/*, DIR/manifest.csv and DIR/truth.csv. With --effect: a record\n"
+                         "set for `icacam loop` (mu_ref and recorded columns) carrying that hidden effect\n"
+                         "(docs/loop.md).\n";
             return 0;
         } else throw std::runtime_error("unknown option '" + args[i] + "'");
     }
     if (outDir.empty()) throw std::runtime_error("--out is required");
+    if (!effect.empty()) {
+        LoopSetOptions opt;
+        if (!parseLoopEffect(effect, &opt.effect)) throw std::runtime_error("--effect: process, optical or null");
+        if (hard) throw std::runtime_error("--hard does not apply to --effect sets");
+        opt.count = int(count);
+        opt.seed = uint32_t(seed);
+        const std::string manifest = writeLoopSet(outDir, opt);
+        std::cerr << "icacam synth: wrote " << opt.count << " records with the " << effect << " effect: " << manifest
+                  << "\n";
+        return 0;
+    }
     fs::create_directories(fs::path(outDir) / "images");
     std::ofstream man(fs::path(outDir) / "manifest.csv"), truth(fs::path(outDir) / "truth.csv");
     man << "id,image,n,k_mpa,d0_mm,h0_mm,mm_per_px\n";

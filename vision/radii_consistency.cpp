@@ -13,14 +13,16 @@ namespace {
 
 double snapStep() { return t::kRCount > 1 ? t::kR[t::kRCount - 1] - t::kR[t::kRCount - 2] : 0.05; }
 
-// One simulated (n, μ) point's R_max at reduction r: linear between the bracketing snapshots,
-// or continued from the last two. False if those snapshots are missing.
-bool atPoint(int ni, int mi, double r, double *v)
+using Table = float[t::kNCount][t::kMuCount][t::kRCount];
+
+// One simulated (n, μ) point's radius at reduction r: linear between the bracketing
+// snapshots, or continued from the last two. False if those snapshots are missing.
+bool atPoint(const Table &tab, int ni, int mi, double r, double *v)
 {
     if (t::kRCount < 2) return false;
     int k = 0;
     while (k < t::kRCount - 2 && r > t::kR[k + 1]) ++k;
-    const double a = t::kRmax[ni][mi][k], b = t::kRmax[ni][mi][k + 1];
+    const double a = tab[ni][mi][k], b = tab[ni][mi][k + 1];
     if (a < 0 || b < 0) return false;
     const double w = (r - t::kR[k]) / (t::kR[k + 1] - t::kR[k]);
     if (w < 0) return false; // before the first snapshot: not covered
@@ -29,12 +31,12 @@ bool atPoint(int ni, int mi, double r, double *v)
 }
 
 // One n row at μ: linear between the nearest simulated μ with data, held beyond them.
-bool atRow(int ni, double mu, double r, double *v)
+bool atRow(const Table &tab, int ni, double mu, double r, double *v)
 {
     int lo = -1, hi = -1;
     double vlo = 0, vhi = 0, x;
     for (int j = 0; j < t::kMuCount; ++j) {
-        if (!atPoint(ni, j, r, &x)) continue;
+        if (!atPoint(tab, ni, j, r, &x)) continue;
         if (t::kMu[j] <= mu) lo = j, vlo = x;
         else if (hi < 0) hi = j, vhi = x;
     }
@@ -52,6 +54,12 @@ double radiiReductionMax() { return t::kR[t::kRCount - 1] + snapStep(); }
 
 bool feRMaxAt(double n, double mu, double reduction, double *rMaxMm)
 {
+    return feRadiusAt(FeRadius::Max, n, mu, reduction, rMaxMm);
+}
+
+bool feRadiusAt(FeRadius which, double n, double mu, double reduction, double *mm)
+{
+    const Table &tab = which == FeRadius::Inner ? t::kRi : which == FeRadius::Outer ? t::kRo : t::kRmax;
     if (reduction > radiiReductionMax() + 1e-9) return false;
     n = std::clamp(n, t::kN[0], t::kN[t::kNCount - 1]);
     int i = 0;
@@ -59,10 +67,10 @@ bool feRMaxAt(double n, double mu, double reduction, double *rMaxMm)
     const int i1 = std::min(i + 1, t::kNCount - 1);
     const double w = i1 > i ? (n - t::kN[i]) / (t::kN[i1] - t::kN[i]) : 0;
     double a, b;
-    const bool okA = atRow(i, mu, reduction, &a), okB = atRow(i1, mu, reduction, &b);
-    if (okA && okB) *rMaxMm = a + w * (b - a);
-    else if (okA && w < 0.5) *rMaxMm = a; // a row without data: the nearer one, only if it is the nearer
-    else if (okB && w >= 0.5) *rMaxMm = b;
+    const bool okA = atRow(tab, i, mu, reduction, &a), okB = atRow(tab, i1, mu, reduction, &b);
+    if (okA && okB) *mm = a + w * (b - a);
+    else if (okA && w < 0.5) *mm = a; // a row without data: the nearer one, only if it is the nearer
+    else if (okB && w >= 0.5) *mm = b;
     else return false;
     return true;
 }

@@ -22,6 +22,11 @@ namespace icacam::vision {
 // simulated n). False when there is no data.
 bool feRMaxAt(double n, double mu, double reduction, double *rMaxMm);
 
+// The same interpolation for any of the three radii (synthetic record sets place the contact
+// edge with it; the check itself uses R_max only, see above).
+enum class FeRadius { Inner, Outer, Max };
+bool feRadiusAt(FeRadius which, double n, double mu, double reduction, double *mm);
+
 // The reductions the table can speak for: 0.35 (or the first snapshot) to one step past the last.
 double radiiReductionMin();
 double radiiReductionMax();

@@ -259,24 +259,47 @@ std::vector<double> cvPredict(const Candidate &c, const std::vector<double> &res
 }
 
 std::vector<RankedCandidate> rankCandidates(const std::vector<Candidate> &candidates, const std::vector<double> &y,
-                                            const RankingOptions &opt, const std::vector<double> *scaleSensitivity)
+                                            const RankingOptions &opt, const std::vector<double> *scaleSensitivity,
+                                            const std::vector<double> *uSensitivity,
+                                            const std::map<std::string, std::vector<double>> *physicalForms)
 {
     std::vector<RankedCandidate> out;
     if (y.size() < 4) return out;
     const int folds = std::clamp(opt.folds, 2, int(y.size()));
     const std::vector<int> fold = foldAssignment(y.size(), folds, opt.seed);
-    const std::vector<double> e0mu = cvErrors(nullptr, y, fold, folds);
-    const std::vector<double> e0scale =
-        scaleSensitivity ? cvErrors(nullptr, y, fold, folds, scaleSensitivity) : e0mu;
-    const size_t forms = scaleSensitivity ? 2 : 1;
-    const double zCrit = normalUpperQuantile(opt.alpha / double(std::max<size_t>(candidates.size() * forms, 1)));
+    // The forms an effect can take: an offset in μ, a relative scale of u (optics), an
+    // additive shift of u (a process that widens the ring: Δμ = dμ/du · Δu).
+    struct Form { const char *name; const std::vector<double> *sens; std::vector<double> e0; };
+    std::vector<Form> formList;
+    formList.push_back({"mu", nullptr, cvErrors(nullptr, y, fold, folds)});
+    if (scaleSensitivity) formList.push_back({"scale", scaleSensitivity, cvErrors(nullptr, y, fold, folds, scaleSensitivity)});
+    if (uSensitivity) formList.push_back({"u", uSensitivity, cvErrors(nullptr, y, fold, folds, uSensitivity)});
+    const size_t forms = formList.size();
+    const size_t tries = candidates.size() * forms + (physicalForms ? physicalForms->size() : 0);
+    const double zCrit = normalUpperQuantile(opt.alpha / double(std::max<size_t>(tries, 1)));
+    std::vector<std::vector<double>> errors; // held-out errors per candidate, as in out
     for (const Candidate &c : candidates) {
         std::vector<double> e1 = cvErrors(&c, y, fold, folds);
-        const std::vector<double> *e0 = &e0mu;
+        const std::vector<double> *e0 = &formList[0].e0;
         std::string form = "mu";
-        if (scaleSensitivity) {
-            std::vector<double> e2 = cvErrors(&c, y, fold, folds, scaleSensitivity);
-            if (rms(e0scale) - rms(e2) > rms(e0mu) - rms(e1)) { e1 = std::move(e2); e0 = &e0scale; form = "scale"; }
+        for (size_t fi = 1; fi < formList.size(); ++fi) {
+            std::vector<double> e2 = cvErrors(&c, y, fold, folds, formList[fi].sens);
+            if (rms(formList[fi].e0) - rms(e2) > rms(*e0) - rms(e1)) {
+                e1 = std::move(e2);
+                e0 = &formList[fi].e0;
+                form = formList[fi].name;
+            }
+        }
+        if (physicalForms) {
+            const auto it = physicalForms->find(c.name);
+            if (it != physicalForms->end() && it->second.size() == y.size()) {
+                std::vector<double> e2 = cvErrors(nullptr, y, fold, folds, &it->second);
+                if (rms(formList[0].e0) - rms(e2) > rms(*e0) - rms(e1)) {
+                    e1 = std::move(e2);
+                    e0 = &formList[0].e0;
+                    form = "fe";
+                }
+            }
         }
         RankedCandidate r;
         r.name = c.name;
@@ -308,10 +331,38 @@ std::vector<RankedCandidate> rankCandidates(const std::vector<Candidate> &candid
         }
         r.significant = r.gain > 0 && r.z > zCrit && r.gain >= opt.minRelativeGain * r.cvRmsBefore;
         out.push_back(r);
+        errors.push_back(std::move(e1));
     }
-    std::stable_sort(out.begin(), out.end(),
-                     [](const RankedCandidate &a, const RankedCandidate &b) { return a.cvRmsAfter < b.cvRmsAfter; });
-    return out;
+    std::vector<size_t> order(out.size());
+    for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(),
+                     [&](size_t a, size_t b) { return out[a].cvRmsAfter < out[b].cvRmsAfter; });
+    // A symptom does not outrank a cause it cannot be told from: when the leader is an image
+    // diagnostic, the first significant recorded column whose held-out |errors| are not
+    // significantly larger than the leader's (paired z < 2) goes first.
+    if (!order.empty() && out[order[0]].kind == "diagnostic") {
+        const std::vector<double> &lead = errors[order[0]];
+        for (size_t k = 1; k < order.size(); ++k) {
+            const RankedCandidate &c = out[order[k]];
+            if (c.kind == "diagnostic" || !c.significant) continue;
+            std::vector<double> d(y.size());
+            for (size_t i = 0; i < y.size(); ++i) d[i] = std::fabs(errors[order[k]][i]) - std::fabs(lead[i]);
+            const double md = mean(d);
+            double v = 0;
+            for (double x : d) v += (x - md) * (x - md);
+            const double se = std::sqrt(v / double(d.size() - 1) / double(d.size()));
+            if (se > 0 && md / se < 2.0) {
+                out[order[k]].preferredOver = out[order[0]].name;
+                const size_t moved = order[k];
+                order.erase(order.begin() + long(k));
+                order.insert(order.begin(), moved);
+            }
+            break; // only the best recorded column is considered
+        }
+    }
+    std::vector<RankedCandidate> ranked;
+    for (size_t i : order) ranked.push_back(std::move(out[i]));
+    return ranked;
 }
 
 bool ReductionSlope::load(const std::string &path, std::string *error)

@@ -23,6 +23,7 @@ struct LoopRecord {
     double muModel = 0;   // the model's μ at the measured u
     double muRef = 0;     // reference μ (independent method)
     double scaleSens = 0; // dμ/du · u: μ's change per unit relative scale error of u
+    double uSens = 0;     // dμ/du: μ's change per mm of u
     double reduction = -1; // 1 - h_final/h0 when recorded, else -1
     bool usable = false;   // measured and with a reference
 };
@@ -47,6 +48,9 @@ struct RankedCandidate {
     double z = 0;           // paired z of the per-record squared-error reduction
     double correlation = 0; // numeric: Pearson r with the residual (for reading only)
     bool significant = false;
+    // Set on a recorded column moved ahead of the image diagnostic that ranked first by a
+    // margin within the noise (see rankCandidates): that diagnostic's name.
+    std::string preferredOver;
 };
 
 struct RankingOptions {
@@ -65,13 +69,23 @@ std::vector<int> foldAssignment(size_t count, int folds, uint32_t seed);
 std::vector<Candidate> buildCandidates(const std::vector<LoopRecord> &usable);
 
 // Ranks candidates by k-fold CV RMS of the residual (μ_model − μ_ref) after the candidate's
-// model, best first; significance is the gain over the form's own baseline. With
+// model, best first; significance is the gain over the form's own baseline. An image
+// diagnostic (a symptom: the radii answer to any cause that moves the geometry) does not
+// outrank a significant recorded column whose held-out errors are not significantly worse
+// (paired z < 2): the column moves to the front. With
 // scaleSensitivity (dμ/du · u per record) each candidate is tried in both forms (the better
 // one counts; the Bonferroni count doubles).
+// uSensitivity (dμ/du per record) adds the form "u": an additive shift of u linear in the
+// candidate (how a process that widens the ring acts).
 std::vector<RankedCandidate> rankCandidates(const std::vector<Candidate> &candidates,
                                             const std::vector<double> &residual,
                                             const RankingOptions &opt,
-                                            const std::vector<double> *scaleSensitivity = nullptr);
+                                            const std::vector<double> *scaleSensitivity = nullptr,
+                                            const std::vector<double> *uSensitivity = nullptr,
+                                            const std::map<std::string, std::vector<double>> *physicalForms = nullptr);
+// physicalForms: per candidate name, the change in μ a physical model of that candidate makes
+// per record (the reduction: μ(u) − μ(u carried to 50 % with the FE du/dr)); tried as the form
+// "fe": residual = a + b·change, a and b fitted per fold (b = 1: the physics as it is).
 
 // Cross-validated predictions of the residual by one candidate (for before/after plots).
 std::vector<double> cvPredict(const Candidate &c, const std::vector<double> &residual,

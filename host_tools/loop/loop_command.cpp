@@ -126,6 +126,7 @@ bool measureRecord(const ManifestRow &row, const Manifest &manifest, const Frict
     const ModelEstimate est = model.estimate(in);
     r->muModel = est.mu;
     r->scaleSens = est.dMuDu * r->uMm;
+    r->uSens = est.dMuDu;
     for (const std::string &c : manifest.columns) r->columns[c] = row.get(c);
     r->usable = true;
     return true;
@@ -179,13 +180,41 @@ LoopSummary runLoop(const std::string &manifestPath, const std::string &reportDi
     s.usable = int(usable.size());
     if (usable.size() < 6) throw std::runtime_error("fewer than 6 usable records (measured, with mu_ref)");
 
-    std::vector<double> res, sens;
-    for (const LoopRecord &r : usable) { res.push_back(r.muModel - r.muRef); sens.push_back(r.scaleSens); }
+    std::vector<double> res, sens, uSens;
+    for (const LoopRecord &r : usable) {
+        res.push_back(r.muModel - r.muRef);
+        sens.push_back(r.scaleSens);
+        uSens.push_back(r.uSens);
+    }
     s.rmsBefore = rms(res);
     const int folds = std::clamp(opt.folds, 2, int(usable.size()));
     const std::vector<int> fold = foldAssignment(usable.size(), folds, opt.seed);
     const std::vector<Candidate> cands = buildCandidates(usable);
-    s.ranking = rankCandidates(cands, res, opt, &sens);
+    // The recorded reduction is also ranked by its physics: the change in μ when u is carried
+    // to 50 % with the FE du/dr (form "fe"), not only by a linear patch.
+    ReductionSlope slope;
+    bool slopeLoaded = false;
+    std::map<std::string, std::vector<double>> physicalForms;
+    bool anyRecorded = false;
+    for (const LoopRecord &r : usable) anyRecorded = anyRecorded || r.reduction >= 0;
+    if (anyRecorded && !model->correctsReduction()) {
+        std::string e;
+        slopeLoaded = slope.load(fePath, &e);
+        if (!slopeLoaded) std::cerr << "icacam loop: no physical correction: " << e << "\n";
+        else {
+            std::vector<double> change(usable.size(), 0);
+            for (size_t i = 0; i < usable.size(); ++i) {
+                const LoopRecord &r = usable[i];
+                if (r.reduction < 0) continue;
+                ModelInputs in;
+                in.uMm = r.uMm, in.n = r.n, in.kMpa = r.kMpa, in.d0Mm = r.d0Mm, in.h0Mm = r.h0Mm;
+                in.uMm = uAtModelReduction(*model, slope, in, r.reduction);
+                change[i] = r.muModel - model->estimate(in).mu;
+            }
+            physicalForms["reduction"] = std::move(change);
+        }
+    }
+    s.ranking = rankCandidates(cands, res, opt, &sens, &uSens, &physicalForms);
     {
         std::vector<double> e(res.size());
         for (int k = 0; k < folds; ++k) {
@@ -208,11 +237,15 @@ LoopSummary runLoop(const std::string &manifestPath, const std::string &reportDi
     std::vector<double> muPhys(usable.size(), NAN);
     // A model that carries u to 50 % itself (paper_reduction) must not be corrected twice: a
     // reduction effect left in its residual is the FE slope's own error (reported below).
-    const bool reductionLeads = (s.chosen == "reduction" || s.chosen == "h_final_mm") && !model->correctsReduction();
-    ReductionSlope slope;
+    // The reduction leads when it is chosen as recorded or as the image measures it
+    // (diag_reduction_est, from the silhouette): the recorded value is used when there is
+    // one, the image's estimate otherwise.
+    const bool isReduction =
+        s.chosen == "reduction" || s.chosen == "h_final_mm" || s.chosen == "diag_reduction_est";
+    const bool reductionLeads = isReduction && !model->correctsReduction();
     if (reductionLeads) {
         std::string e;
-        if (!slope.load(fePath, &e)) std::cerr << "icacam loop: no physical correction: " << e << "\n";
+        if (!slopeLoaded && !slope.load(fePath, &e)) std::cerr << "icacam loop: no physical correction: " << e << "\n";
         else s.physical = true;
     }
     if (s.physical) {
@@ -225,7 +258,12 @@ LoopSummary runLoop(const std::string &manifestPath, const std::string &reportDi
             in.kMpa = r.kMpa;
             in.d0Mm = r.d0Mm;
             in.h0Mm = r.h0Mm;
-            in.uMm = uAtModelReduction(*model, slope, in, r.reduction);
+            double red = r.reduction;
+            if (red < 0) {
+                auto est = r.diagnostics.find("diag_reduction_est");
+                if (est != r.diagnostics.end()) red = est->second;
+            }
+            in.uMm = uAtModelReduction(*model, slope, in, red); // red < 0: left as measured
             muPhys[i] = model->estimate(in).mu;
             after[i] = muPhys[i] - r.muRef;
             delta[i] = r.muModel - muPhys[i]; // what the correction removed
@@ -299,7 +337,10 @@ LoopSummary runLoop(const std::string &manifestPath, const std::string &reportDi
             for (const Candidate &c : cands)
                 if (c.name == s.chosen) {
                     const std::vector<double> p =
-                        cvPredict(c, res, fold, folds, s.ranking.front().form == "scale" ? &sens : nullptr);
+                        cvPredict(c, res, fold, folds,
+                                  s.ranking.front().form == "scale" ? &sens
+                                  : s.ranking.front().form == "u"   ? &uSens
+                                                                    : nullptr);
                     for (size_t i = 0; i < usable.size(); ++i) {
                         after.x.push_back(usable[i].muRef);
                         after.y.push_back(usable[i].muModel - p[i]);
@@ -338,7 +379,8 @@ LoopSummary runLoop(const std::string &manifestPath, const std::string &reportDi
               << s.ranking.size() << " candidates, α = " << opt.alpha << ", and ≥ " << opt.minRelativeGain * 100
               << " % of the CV RMS). The model is left as it is.\n";
         } else if (s.physical) {
-            f << "`" << s.chosen << "`: the recorded final height says the specimens were not upset to the model's "
+            f << "`" << s.chosen << "`: the " << (s.chosen == "diag_reduction_est" ? "silhouette (R_max against the FE) says" : "recorded final height says")
+              << " the specimens were not upset to the model's "
                  "50 % height reduction. The ICA width u grows with the reduction (the contact edge keeps moving "
                  "out while the folded side becomes contact), so the model, which maps u to μ at 50 %, reads a "
                  "deeper upset as more friction. Correction: u50 = u − (du/dr)(r − 0.5), du/dr from the FE sweep "
@@ -350,7 +392,7 @@ LoopSummary runLoop(const std::string &manifestPath, const std::string &reportDi
                       : ": the data's effect differs from the FE slope by that factor; the FE sweep "
                         "(uniform 0.2 mm mesh, u in steps of the contact nodes, snapshots only up to 50 %) is "
                         "the weak part, and FE runs past 50 % on a finer corner mesh are the next step.\n");
-        } else if ((s.chosen == "reduction" || s.chosen == "h_final_mm") && model->correctsReduction()) {
+        } else if (isReduction && model->correctsReduction()) {
             f << "`" << s.chosen << "`: the model `" << model->name() << "` already carries u to 50 % with the FE "
                  "du/dr (vision/reduction_table.h). A reduction effect left in its residual means the FE slope "
                  "is off: the residual grows with the reduction when the FE du/dr is too small (run with "
@@ -363,6 +405,12 @@ LoopSummary runLoop(const std::string &manifestPath, const std::string &reportDi
                  "the model: a camera/lens column or an image diagnostic points to the scale (optics), a process "
                  "column to the upsetting.\n";
         }
+        if (!s.ranking.empty() && !s.ranking.front().preferredOver.empty())
+            f << "\n`" << s.ranking.front().name << "` is ranked ahead of the image diagnostic `"
+              << s.ranking.front().preferredOver
+              << "`, which had a slightly lower CV RMS: the diagnostic's held-out errors are not significantly "
+                 "smaller (paired z < 2), and a radius measured in the image answers to any cause that moves the "
+                 "geometry; the recorded column names the cause.\n";
         f << "\n## Ranking (best first; full list in ranking.csv)\n\n| # | candidate | kind | form | CV RMS before | "
              "CV RMS after | gain | z | r |\n|---|---|---|---|---|---|---|---|---|\n";
         for (size_t k = 0; k < s.ranking.size() && k < 15; ++k) {
