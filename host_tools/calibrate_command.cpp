@@ -11,7 +11,7 @@
 #include <opencv2/calib3d.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "calibration_file.h"
+#include "calibration/calibration_file.h"
 #include "image_file.h"
 #include "manifest.h"
 
@@ -31,7 +31,8 @@ const char *kUsage =
     "  --flat PHOTO   the photo with the board lying flat on the fixture (path, or a name\n"
     "                 in DIR): gives the fixture plane's pose\n"
     "  --board-thickness MM  the board's surface above the fixture (default 0)\n"
-    "  --max-blur PX  refuse views whose chessboard edges are wider than this (default 3)\n"
+    "  --max-blur PX  refuse views whose board edges (squares or dots) are wider than this\n"
+    "                 (default 3)\n"
     "  --free-k3      also fit k3 (default: fixed at 0, ill-determined in a narrow field)\n"
     "Needs at least 5 usable views. See docs/calibration.md.\n";
 
@@ -75,6 +76,45 @@ Board parseBoard(const std::string &spec)
     return b;
 }
 
+// Edge width of a circle grid's dots (pixels, about the 10–90 % rise like OpenCV's
+// chessboard sharpness): per dot, the step from the dot's centre to the paper around it
+// divided by the steepest slope on its edge; the median over the dots. A blurred dot
+// keeps its centroid but shifts it under perspective, so soft views are refused alike.
+double circleGridEdgeWidth(const cv::Mat &gray, const cv::Size &size, const std::vector<cv::Point2f> &pts)
+{
+    std::vector<double> pitches;
+    for (int j = 0; j < size.height; ++j)
+        for (int i = 0; i + 1 < size.width; ++i)
+            pitches.push_back(cv::norm(pts[size_t(j * size.width + i + 1)] - pts[size_t(j * size.width + i)]));
+    std::nth_element(pitches.begin(), pitches.begin() + long(pitches.size() / 2), pitches.end());
+    const double pitch = pitches[pitches.size() / 2];
+    const int half = std::max(3, int(0.48 * pitch));
+    std::vector<double> widths;
+    for (const cv::Point2f &p : pts) {
+        const cv::Rect box(int(std::lround(p.x)) - half, int(std::lround(p.y)) - half, 2 * half + 1, 2 * half + 1);
+        if ((box & cv::Rect(0, 0, gray.cols, gray.rows)) != box) continue;
+        cv::Mat win, gx, gy, mag;
+        gray(box).convertTo(win, CV_32F);
+        cv::Sobel(win, gx, CV_32F, 1, 0, 3);
+        cv::Sobel(win, gy, CV_32F, 0, 1, 3);
+        cv::magnitude(gx, gy, mag);
+        double maxGrad = 0;
+        cv::minMaxLoc(mag(cv::Rect(1, 1, win.cols - 2, win.rows - 2)), nullptr, &maxGrad);
+        // Dot level at the centre, paper level on the window's rim.
+        const float dot = win.at<float>(half, half);
+        std::vector<float> rim;
+        for (int k = 0; k < win.cols; ++k)
+            rim.insert(rim.end(), {win.at<float>(0, k), win.at<float>(win.rows - 1, k), win.at<float>(k, 0),
+                                   win.at<float>(k, win.cols - 1)});
+        std::nth_element(rim.begin(), rim.begin() + long(rim.size() / 2), rim.end());
+        const double contrast = double(rim[rim.size() / 2]) - double(dot);
+        if (maxGrad > 0 && contrast > 0) widths.push_back(contrast / (maxGrad / 8)); // Sobel gain 8
+    }
+    if (widths.empty()) return 1e9;
+    std::nth_element(widths.begin(), widths.begin() + long(widths.size() / 2), widths.end());
+    return widths[widths.size() / 2];
+}
+
 // Finds the board; returns an empty string or why the view is unusable.
 std::string detect(const cv::Mat &gray, const Board &b, double maxBlur, std::vector<cv::Point2f> *pts,
                    double *blur)
@@ -82,7 +122,14 @@ std::string detect(const cv::Mat &gray, const Board &b, double maxBlur, std::vec
     *blur = 0;
     if (b.circles) {
         if (!cv::findCirclesGrid(gray, b.size, *pts, cv::CALIB_CB_SYMMETRIC_GRID))
-            return "circle grid not found";
+            return "circle grid not found (blurred, cut off, or not " + std::to_string(b.size.width) + "x" +
+                   std::to_string(b.size.height) + " dots?)";
+        *blur = circleGridEdgeWidth(gray, b.size, *pts);
+        if (!(*blur <= maxBlur)) {
+            char msg[120];
+            std::snprintf(msg, sizeof msg, "blurred (dot edge width %.1f px > %.1f px)", *blur, maxBlur);
+            return msg;
+        }
         return "";
     }
     if (!cv::findChessboardCorners(gray, b.size, *pts,
@@ -205,7 +252,7 @@ int calibrateCommand(const std::vector<std::string> &args)
     for (size_t i = 0; i < obj.size(); ++i) flatErr += std::pow(cv::norm(reproj[i] - flatPts[i]), 2);
     flatErr = std::sqrt(flatErr / double(obj.size()));
 
-    CalibrationFile c;
+    calibration::CalibrationFile c;
     vision::PlaneCalibration &p = c.plane;
     p.fx = K.at<double>(0, 0), p.fy = K.at<double>(1, 1), p.cx = K.at<double>(0, 2), p.cy = K.at<double>(1, 2);
     p.k1 = D.at<double>(0), p.k2 = D.at<double>(1), p.p1 = D.at<double>(2), p.p2 = D.at<double>(3);
@@ -225,7 +272,7 @@ int calibrateCommand(const std::vector<std::string> &args)
     c.board = boardSpec;
     c.boardThicknessMm = thickness;
     if (!p.valid()) throw std::runtime_error("the calibration came out not physical; check the board geometry");
-    if (std::string e = writeCalibrationFile(outPath, c); !e.empty()) throw std::runtime_error(e);
+    if (std::string e = calibration::writeCalibrationFile(outPath, c); !e.empty()) throw std::runtime_error(e);
 
     const double tiltDeg = std::acos(std::min(1.0, std::fabs(normal[2]))) * 180 / M_PI;
     std::printf("icacam calibrate: %d views of %zu, RMS reprojection error %.3f px%s\n", c.views,

@@ -149,6 +149,55 @@ cv::Mat BoardPhotoRenderer::chessboard(const ChessboardSpec &b, const cv::Vec3d 
     return out;
 }
 
+cv::Mat BoardPhotoRenderer::circleGrid(const CircleGridSpec &g, const cv::Vec3d &rvec, const cv::Vec3d &tvec,
+                                       double blurPx, double noise, uint32_t seed) const
+{
+    cv::Mat X, Y, fp;
+    intersect(rotation(rvec), tvec, 0, &X, &Y, &fp);
+    const double dark = 35, white = 215, surround = 110;
+    const double s = g.spacingMm, r = 0.5 * g.dotDiameterMm;
+    cv::Mat f(cam_.height, cam_.width, CV_64F);
+    for (int y = 0; y < cam_.height; ++y)
+        for (int x = 0; x < cam_.width; ++x) {
+            const double bx = X.at<double>(y, x), by = Y.at<double>(y, x), w = fp.at<double>(y, x);
+            // The nearest dot: the grid is sparse (dots half a pitch wide), so only one
+            // dot can touch a pixel's footprint.
+            const double i = std::clamp(std::round(bx / s), 0.0, double(g.cols - 1));
+            const double j = std::clamp(std::round(by / s), 0.0, double(g.rows - 1));
+            const double d = std::hypot(bx - i * s, by - j * s);
+            const double ink = 1 - filteredStep(d, r, w); // 1 inside the dot, box-filtered edge
+            const double paperX = filteredStep(bx, -1.5 * s, w) * (1 - filteredStep(bx, (g.cols - 0.5) * s, w));
+            const double paperY = filteredStep(by, -1.5 * s, w) * (1 - filteredStep(by, (g.rows - 0.5) * s, w));
+            const double board = white + (dark - white) * ink;
+            f.at<double>(y, x) = surround + (board - surround) * paperX * paperY;
+        }
+    addNoise(f, blurPx, noise, seed);
+    cv::Mat out;
+    f.convertTo(out, CV_8U);
+    return out;
+}
+
+cv::Mat BoardPhotoRenderer::disc(double diameterMm, double xMm, double yMm, double heightMm, double discGrey,
+                                 double fixtureGrey, double blurPx, double noise, uint32_t seed) const
+{
+    const cv::Matx33d R = rotation(cam_.fixtureRvec);
+    const cv::Vec3d b = R.t() * cam_.fixtureTvec;
+    const double up = -b[2] >= 0 ? 1.0 : -1.0; // the camera's side of the fixture
+    cv::Mat X, Y, fp;
+    intersect(R, cam_.fixtureTvec, up * heightMm, &X, &Y, &fp);
+    cv::Mat f(cam_.height, cam_.width, CV_64F);
+    for (int y = 0; y < cam_.height; ++y)
+        for (int x = 0; x < cam_.width; ++x) {
+            const double d = std::hypot(X.at<double>(y, x) - xMm, Y.at<double>(y, x) - yMm);
+            const double inside = 1 - filteredStep(d, 0.5 * diameterMm, fp.at<double>(y, x));
+            f.at<double>(y, x) = fixtureGrey + (discGrey - fixtureGrey) * inside;
+        }
+    addNoise(f, blurPx, noise, seed);
+    cv::Mat out;
+    f.convertTo(out, CV_8U);
+    return out;
+}
+
 cv::Mat BoardPhotoRenderer::endFace(const EndFaceScene &scene, double xMm, double yMm,
                                     double heightMm, double blurPx, double noise,
                                     uint32_t seed) const

@@ -36,6 +36,17 @@ struct ChessboardSpec {
 // Inner-corner positions on the board (z = 0), row by row, first corner at the origin.
 std::vector<cv::Point3f> chessboardCorners(const ChessboardSpec &b);
 
+// A symmetric grid of dark dots on white paper (OpenCV's symmetric circle grid): dot
+// centres `spacingMm` apart, the first at the origin; the paper reaches 1.5 spacings
+// beyond the outer dots.
+struct CircleGridSpec {
+    int cols = 9, rows = 7;
+    double spacingMm = 1.4;
+    double dotDiameterMm = 0.7;
+    // The same outline for the pose generator (calibrationPoses keeps 2 pitches around).
+    ChessboardSpec extent() const { return {cols, rows, spacingMm}; }
+};
+
 // Renders views through one camera. The undistorted ray of every pixel is computed once.
 class BoardPhotoRenderer {
 public:
@@ -44,10 +55,17 @@ public:
     // then Gaussian blur (σ px) and sensor noise (σ grey levels).
     cv::Mat chessboard(const ChessboardSpec &b, const cv::Vec3d &rvec, const cv::Vec3d &tvec,
                        double blurPx, double noise, uint32_t seed) const;
+    // A circle grid at the pose, likewise.
+    cv::Mat circleGrid(const CircleGridSpec &g, const cv::Vec3d &rvec, const cv::Vec3d &tvec,
+                       double blurPx, double noise, uint32_t seed) const;
+    // A reference disc (grey level discGrey) of diameterMm lying on the fixture centred at
+    // (xMm, yMm), its top face heightMm above the fixture, on a fixture of grey fixtureGrey.
+    cv::Mat disc(double diameterMm, double xMm, double yMm, double heightMm, double discGrey,
+                 double fixtureGrey, double blurPx, double noise, uint32_t seed) const;
     // The end face of `scene` (its mm geometry; its pixel scale and position are ignored)
     // standing on the fixture at (xMm, yMm) with its end face heightMm above it. The top
-    // (face, ICA and contact edge) lies in the plane at heightMm; the barrel's silhouette
-    // is taken at half that height, where the barrel is widest.
+    // (face, ICA and contact edge) lies in the plane at heightMm; beyond the contact edge
+    // the barrel is seen at half that height, where it is widest (its silhouette).
     cv::Mat endFace(const EndFaceScene &scene, double xMm, double yMm, double heightMm,
                     double blurPx, double noise, uint32_t seed) const;
     const CameraModel &camera() const { return cam_; }

@@ -11,7 +11,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "calibration_file.h"
+#include "calibration/calibration_file.h"
 #include "friction_models.h"
 #include "image_file.h"
 #include "manifest.h"
@@ -113,7 +113,7 @@ int measureCommand(const std::vector<std::string> &args)
 
     EndFaceAnalyzer analyzer;
     analyzer.configure(16384, 16384); // working memory does not grow with the frame
-    std::map<std::string, std::pair<CalibrationFile, std::string>> calibrations; // by path
+    std::map<std::string, std::pair<calibration::CalibrationFile, std::string>> calibrations; // by path
     int nOk = 0, nWarn = 0, nErr = 0;
     for (const ManifestRow &row : manifest.rows) {
         ResultRow r;
@@ -156,11 +156,11 @@ int measureCommand(const std::vector<std::string> &args)
             if (p.is_relative()) p = fs::path(manifest.baseDir) / p;
             auto it = calibrations.find(p.string());
             if (it == calibrations.end()) {
-                CalibrationFile c;
-                const std::string e = readCalibrationFile(p.string(), &c);
+                calibration::CalibrationFile c;
+                const std::string e = calibration::readCalibrationFile(p.string(), &c);
                 it = calibrations.emplace(p.string(), std::make_pair(c, e)).first;
             }
-            const CalibrationFile &c = it->second.first;
+            const calibration::CalibrationFile &c = it->second.first;
             if (!it->second.second.empty()) r.message = it->second.second;
             else if (c.imageWidth != img.luma.cols || c.imageHeight != img.luma.rows)
                 r.message = "calibration is for " + std::to_string(c.imageWidth) + "x" +

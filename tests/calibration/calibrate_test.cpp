@@ -11,7 +11,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "calibrate_command.h"
-#include "calibration_file.h"
+#include "calibration/calibration_file.h"
 #include "calibration_renderer.h"
 #include "vision/plane_calibration.h"
 
@@ -51,10 +51,25 @@ fs::path renderSet(const std::string &name, const host::BoardPhotoRenderer &r, c
     return d;
 }
 
-std::string runCalibrate(const fs::path &dir, const std::string &out)
+// The same for a circle grid (poses from the same generator, over the grid's outline).
+fs::path renderCircleSet(const std::string &name, const host::BoardPhotoRenderer &r, const host::CircleGridSpec &g,
+                         int count, double blurPx)
+{
+    const fs::path d = freshDir(name);
+    const auto poses = host::calibrationPoses(r.camera(), g.extent(), count, 7);
+    for (size_t i = 0; i < poses.size(); ++i)
+        cv::imwrite((d / ("view" + std::to_string(10 + i) + ".png")).string(),
+                    r.circleGrid(g, poses[i].first, poses[i].second, blurPx, 2.0, uint32_t(100 + i)));
+    const auto flat = flatPose(r.camera(), g.extent());
+    cv::imwrite((d / "flat.png").string(), r.circleGrid(g, flat.first, flat.second, 0.8, 2.0, 99));
+    return d;
+}
+
+std::string runCalibrate(const fs::path &dir, const std::string &out,
+                         const std::string &board = "chessboard:9x7:1.4")
 {
     try {
-        host::calibrateCommand({"--images", dir.string(), "--board", "chessboard:9x7:1.4", "--flat",
+        host::calibrateCommand({"--images", dir.string(), "--board", board, "--flat",
                                 (dir / "flat.png").string(), "--out", out});
     } catch (const std::exception &e) {
         return e.what();
@@ -72,8 +87,8 @@ TEST(Calibrate, RecoversTheCameraAndTheFixturePlane)
     const fs::path d = renderSet("good", r, b, 14, 0.8);
     const std::string out = (d / "camera.cal").string();
     ASSERT_EQ(runCalibrate(d, out), "");
-    host::CalibrationFile c;
-    ASSERT_EQ(host::readCalibrationFile(out, &c), "");
+    calibration::CalibrationFile c;
+    ASSERT_EQ(calibration::readCalibrationFile(out, &c), "");
     const vision::PlaneCalibration &p = c.plane;
     std::printf("calibrate: rms %.3f px, fx %.1f (%.1f) fy %.1f (%.1f) cx %.1f (%.1f) cy %.1f (%.1f) "
                 "k1 %.4f (%.4f) k2 %.3f (%.3f)\n",
@@ -112,6 +127,86 @@ TEST(Calibrate, RecoversTheCameraAndTheFixturePlane)
     fs::remove_all(d);
 }
 
+// What the measurement needs from a calibration: distances in the end-face plane (7.5 mm
+// above the fixture) over the specimen's area, and the local scale at the image centre.
+// Returns the worst distance error (mm) and sets *scaleRatio (recovered / true).
+double planeError(const host::CameraModel &cam, const vision::PlaneCalibration &p, double *scaleRatio)
+{
+    vision::PlaneCalibration truth = host::toPlaneCalibration(cam);
+    truth.heightMm = 7.5;
+    vision::PlaneCalibration got = p;
+    got.heightMm = 7.5;
+    double worst = 0;
+    const auto a0 = vision::pixelToPlane(truth, 741, 531), g0 = vision::pixelToPlane(got, 741, 531);
+    for (double y = 150; y <= 950; y += 100)
+        for (double x = 250; x <= 1250; x += 100) {
+            const auto a = vision::pixelToPlane(truth, x, y), g = vision::pixelToPlane(got, x, y);
+            if (!a.valid || !g.valid) return 1e9;
+            // Positions are relative to the board origin: compare distances from the centre.
+            worst = std::max(worst, std::fabs(std::hypot((a.x - a0.x).toDouble(), (a.y - a0.y).toDouble()) -
+                                              std::hypot((g.x - g0.x).toDouble(), (g.y - g0.y).toDouble())));
+        }
+    *scaleRatio = vision::planeScaleAt(got, 741, 531) / vision::planeScaleAt(truth, 741, 531);
+    return worst;
+}
+
+// A circle grid (symmetric, dark dots) instead of a chessboard: the same camera back within
+// the same stated tolerances, except the principal point (blob centroids are shifted by
+// perspective, which the principal point and tilt absorb: 12 px instead of 8).
+TEST(Calibrate, CircleGridRecoversTheCameraAndTheFixturePlane)
+{
+    const host::CameraModel cam = host::exampleTiltedCamera();
+    const host::BoardPhotoRenderer r(cam);
+    const host::CircleGridSpec g;
+    const fs::path d = renderCircleSet("circles", r, g, 14, 0.8);
+    const std::string out = (d / "camera.cal").string();
+    ASSERT_EQ(runCalibrate(d, out, "circles:9x7:1.4"), "");
+    calibration::CalibrationFile c;
+    ASSERT_EQ(calibration::readCalibrationFile(out, &c), "");
+    const vision::PlaneCalibration &p = c.plane;
+    double scale = 0;
+    const double worst = planeError(cam, p, &scale);
+    std::printf("calibrate circles: %d views, rms %.3f px, fx %.1f (%.1f) fy %.1f (%.1f) cx %.1f (%.1f) cy %.1f "
+                "(%.1f) k1 %.4f (%.4f) k2 %.3f (%.3f); worst distance error %.4f mm, scale %.3f %%\n",
+                c.views, c.rmsPx, p.fx, cam.fx, p.fy, cam.fy, p.cx, cam.cx, p.cy, cam.cy, p.k1, cam.k1, p.k2, cam.k2,
+                worst, 100 * (scale - 1));
+    EXPECT_EQ(c.views, 15);
+    EXPECT_EQ(c.board, "circles:9x7:1.4");
+    EXPECT_LT(c.rmsPx, 0.15);
+    EXPECT_NEAR(p.fx / cam.fx, 1, 0.005);
+    EXPECT_NEAR(p.fy / cam.fy, 1, 0.005);
+    EXPECT_NEAR(p.cx, cam.cx, 12);
+    EXPECT_NEAR(p.cy, cam.cy, 12);
+    EXPECT_NEAR(p.k1, cam.k1, 0.05);
+    EXPECT_LT(worst, 0.004);
+    EXPECT_NEAR(scale, 1, 0.001);
+    fs::remove_all(d);
+}
+
+TEST(Calibrate, CircleGridRefusesTooFewOrBlurredViews)
+{
+    const host::BoardPhotoRenderer r(host::exampleTiltedCamera());
+    {
+        const fs::path d = renderCircleSet("circles-few", r, host::CircleGridSpec{}, 3, 0.8); // 3 + flat = 4
+        const std::string e = runCalibrate(d, (d / "camera.cal").string(), "circles:9x7:1.4");
+        EXPECT_NE(e.find("only 4 usable views"), std::string::npos) << e;
+        EXPECT_FALSE(fs::exists(d / "camera.cal"));
+        fs::remove_all(d);
+    }
+    {
+        const fs::path d = renderCircleSet("circles-blurred", r, host::CircleGridSpec{}, 8, 3.0); // 8 soft + flat
+        testing::internal::CaptureStderr();
+        const std::string e = runCalibrate(d, (d / "camera.cal").string(), "circles:9x7:1.4");
+        const std::string why = testing::internal::GetCapturedStderr();
+        EXPECT_NE(e.find("only 1 usable view"), std::string::npos) << e;
+        // Each soft view is named with the reason: too soft to find, or found and refused.
+        EXPECT_NE(why.find("view10.png: "), std::string::npos) << why;
+        EXPECT_NE(why.find("blurred (dot edge width"), std::string::npos) << why;
+        EXPECT_FALSE(fs::exists(d / "camera.cal"));
+        fs::remove_all(d);
+    }
+}
+
 TEST(Calibrate, RefusesTooFewViews)
 {
     const host::BoardPhotoRenderer r(host::exampleTiltedCamera());
@@ -135,25 +230,25 @@ TEST(Calibrate, RefusesBlurredViews)
 
 TEST(CalibrationFile, RoundTripsAndNamesBadLines)
 {
-    host::CalibrationFile c;
+    calibration::CalibrationFile c;
     c.plane = host::toPlaneCalibration(host::exampleTiltedCamera());
     c.imageWidth = 1456, c.imageHeight = 1088, c.rmsPx = 0.05, c.views = 12, c.board = "chessboard:9x7:1.4";
     const fs::path d = freshDir("file");
-    ASSERT_EQ(host::writeCalibrationFile((d / "a.cal").string(), c), "");
-    host::CalibrationFile back;
-    ASSERT_EQ(host::readCalibrationFile((d / "a.cal").string(), &back), "");
+    ASSERT_EQ(calibration::writeCalibrationFile((d / "a.cal").string(), c), "");
+    calibration::CalibrationFile back;
+    ASSERT_EQ(calibration::readCalibrationFile((d / "a.cal").string(), &back), "");
     EXPECT_EQ(back.plane.fx, c.plane.fx);
     EXPECT_EQ(back.plane.k2, c.plane.k2);
     for (int i = 0; i < 9; ++i) EXPECT_EQ(back.plane.r[i], c.plane.r[i]);
     EXPECT_EQ(back.imageWidth, 1456);
     EXPECT_EQ(back.board, c.board);
-    host::CalibrationFile x;
-    EXPECT_NE(host::parseCalibrationText("fx = 1\n", &x).find("missing 'format'"), std::string::npos);
-    EXPECT_NE(host::parseCalibrationText("format = icacam-calibration-1\nfx 1\n", &x).find("line 2"),
+    calibration::CalibrationFile x;
+    EXPECT_NE(calibration::parseCalibrationText("fx = 1\n", &x).find("missing 'format'"), std::string::npos);
+    EXPECT_NE(calibration::parseCalibrationText("format = icacam-calibration-1\nfx 1\n", &x).find("line 2"),
               std::string::npos);
-    EXPECT_NE(host::parseCalibrationText("format = icacam-calibration-1\nimage_size = 10\n", &x)
+    EXPECT_NE(calibration::parseCalibrationText("format = icacam-calibration-1\nimage_size = 10\n", &x)
                   .find("image_size needs 2 numbers"),
               std::string::npos);
-    EXPECT_NE(host::readCalibrationFile((d / "missing.cal").string(), &x).find("cannot read"), std::string::npos);
+    EXPECT_NE(calibration::readCalibrationFile((d / "missing.cal").string(), &x).find("cannot read"), std::string::npos);
     fs::remove_all(d);
 }

@@ -16,7 +16,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "calibrate_command.h"
-#include "calibration_file.h"
+#include "calibration/calibration_file.h"
 #include "calibration_renderer.h"
 #include "manifest.h"
 #include "measure_command.h"
@@ -30,7 +30,7 @@ namespace fs = std::filesystem;
 namespace {
 
 // Calibration photos through `cam` and `icacam calibrate` on them.
-host::CalibrationFile calibrate(const host::BoardPhotoRenderer &r)
+calibration::CalibrationFile calibrate(const host::BoardPhotoRenderer &r)
 {
     const fs::path d = fs::temp_directory_path() / ("icacam-calmeasure-" + std::to_string(::getpid()));
     fs::remove_all(d);
@@ -47,8 +47,8 @@ host::CalibrationFile calibrate(const host::BoardPhotoRenderer &r)
                 r.chessboard(b, r.camera().fixtureRvec, r.camera().fixtureTvec + R * offset, 0.8, 2.0, 9));
     host::calibrateCommand({"--images", d.string(), "--board", "chessboard:9x7:1.4", "--flat",
                             (d / "flat.png").string(), "--out", (d / "cam.cal").string()});
-    host::CalibrationFile c;
-    EXPECT_EQ(host::readCalibrationFile((d / "cam.cal").string(), &c), "");
+    calibration::CalibrationFile c;
+    EXPECT_EQ(calibration::readCalibrationFile((d / "cam.cal").string(), &c), "");
     fs::remove_all(d);
     return c;
 }
@@ -59,7 +59,7 @@ TEST(CalibratedMeasure, MuThroughATiltedDistortingCamera)
 {
     const host::CameraModel cam = host::exampleTiltedCamera();
     const host::BoardPhotoRenderer r(cam);
-    const host::CalibrationFile cal = calibrate(r);
+    const calibration::CalibrationFile cal = calibrate(r);
     ASSERT_GT(cal.views, 5);
     vision::EndFaceAnalyzer analyzer;
     ASSERT_EQ(analyzer.configure(cam.width, cam.height), vision::ErrorCode::None);
@@ -128,10 +128,10 @@ TEST(CalibratedMeasure, ManifestCalibrationColumn)
     const fs::path d = fs::temp_directory_path() / ("icacam-calmanifest-" + std::to_string(::getpid()));
     fs::remove_all(d);
     fs::create_directories(d / "cal");
-    host::CalibrationFile c;
+    calibration::CalibrationFile c;
     c.plane = host::toPlaneCalibration(cam);
     c.imageWidth = cam.width, c.imageHeight = cam.height;
-    ASSERT_EQ(host::writeCalibrationFile((d / "cal" / "cam.cal").string(), c), "");
+    ASSERT_EQ(calibration::writeCalibrationFile((d / "cal" / "cam.cal").string(), c), "");
     host::EndFaceScene s;
     const double n = 0.2, u = host::uForMu(0.15, n);
     s.rOuterMm = 6.85 - 0.95 * u, s.rInnerMm = s.rOuterMm - u;

@@ -1,11 +1,13 @@
 #pragma once
 // The camera calibration file written by `icacam calibrate` and read by `icacam measure`
-// and the device: plain text, one `key = value` a line, '#' comments (docs/calibration.md).
+// and the device (icacam-fw): plain text, one `key = value` a line, '#' comments
+// (docs/calibration.md). One parser for both, outside vision/ because it reads files;
+// it throws nothing, so the firmware (built without exceptions) links it as is.
 #include <string>
 
 #include "vision/plane_calibration.h"
 
-namespace icacam::host {
+namespace icacam::calibration {
 
 struct CalibrationFile {
     vision::PlaneCalibration plane; // heightMm is per specimen: 0 in the file
@@ -22,4 +24,4 @@ std::string writeCalibrationFile(const std::string &path, const CalibrationFile 
 std::string parseCalibrationText(const std::string &text, CalibrationFile *out);
 std::string readCalibrationFile(const std::string &path, CalibrationFile *out);
 
-} // namespace icacam::host
+} // namespace icacam::calibration

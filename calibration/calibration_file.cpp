@@ -1,15 +1,15 @@
-#include "calibration_file.h"
+#include "calibration/calibration_file.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <sstream>
 #include <vector>
 
-#include "manifest.h"
-
-namespace icacam::host {
+namespace icacam::calibration {
 
 namespace {
 
@@ -19,6 +19,17 @@ std::string trim(const std::string &s)
 {
     const size_t a = s.find_first_not_of(" \t\r"), b = s.find_last_not_of(" \t\r");
     return a == std::string::npos ? "" : s.substr(a, b - a + 1);
+}
+
+// A whole word as a finite number (strtod, nothing left over).
+bool parseNumber(const std::string &s, double *out)
+{
+    if (s.empty() || s.size() > 64) return false;
+    char *end = nullptr;
+    const double v = std::strtod(s.c_str(), &end);
+    if (end != s.c_str() + s.size() || !std::isfinite(v)) return false;
+    *out = v;
+    return true;
 }
 
 std::string numbers(const double *v, int n)
@@ -133,4 +144,4 @@ std::string readCalibrationFile(const std::string &path, CalibrationFile *out)
     return e.empty() ? "" : "calibration '" + path + "': " + e;
 }
 
-} // namespace icacam::host
+} // namespace icacam::calibration
