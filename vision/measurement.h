@@ -55,8 +55,10 @@ struct BoundaryFit {
     double scatterPx = 0;   // robust RMS of the edge points about the curve
     double coverage = 0;    // fraction of rays with an accepted edge point
     double contrast = 0;    // median step height across the edge, grey levels (signed)
-    double ellipticity = 0; // 1 - b/a of the curve's second harmonic
-    double axisDeg = 0;     // direction of the long axis
+    // 1 - b/a of the curve's second harmonic and the long axis's direction, in the image;
+    // with a calibration the analyzer replaces both by the end-face plane's (PlaneOutline).
+    double ellipticity = 0;
+    double axisDeg = 0;
     double centreX = 0, centreY = 0; // centre of the curve (first harmonic), pixels
     int used = 0;           // edge points kept by the robust fit
 
@@ -78,7 +80,7 @@ struct Measurement {
     double rInnerMm = 0, rOuterMm = 0, rMaxMm = 0;
     double uPx = 0, uMm = 0, uSigmaMm = 0;
     double mu = 0, muSigma = 0;
-    double centreOffsetPx = 0;
+    double centreOffsetPx = 0; // between the boundaries' centres (in the plane, with a calibration)
     // The silhouette against the FE (radii_consistency.h): (R_max − FE R_max)/σ at the
     // declared final height (or 50 % when none), and the reduction R_max implies (-1: none).
     double rMaxZ = 0;

@@ -155,23 +155,26 @@ double planeScaleAt(const PlaneCalibration &cal, double px, double py)
     return std::sqrt(std::fabs(jxx * jyy - jxy * jyx)) / (2 * h);
 }
 
-double equivalentRadiusMm(const BoundaryFit &fit, double centreX, double centreY,
+PlaneOutline planeOutline(const BoundaryFit &fit, double centreX, double centreY,
                           const PlaneCalibration &cal)
 {
+    PlaneOutline out;
     const PlaneMapper m(cal);
-    if (!m.valid()) return 0;
+    if (!m.valid()) return out;
     // cos, sin of the sample angles by the rotation recurrence (no trigonometry per point).
     const double step = 2.0 * std::numbers::pi / kEquivalentRadiusSamples;
     const double cs = std::cos(step), sn = std::sin(step);
     double c = 1, s = 0;
-    // Shoelace sum about the first point keeps the terms small (Q32.32 → double exact).
-    double area2 = 0, x0 = 0, y0 = 0, xPrev = 0, yPrev = 0;
+    // Shoelace sums about the first point keep the terms small (Q32.32 → double exact):
+    // area, first moments and second moments of the polygon (Green's theorem).
+    double area2 = 0, mx = 0, my = 0, mxx = 0, myy = 0, mxy = 0;
+    double x0 = 0, y0 = 0, xPrev = 0, yPrev = 0;
     for (int i = 0; i <= kEquivalentRadiusSamples; ++i) {
         double x, y;
         if (i < kEquivalentRadiusSamples) {
             const double r = fit.radiusAt(c, s);
             const PlanePoint p = m.map(Q16_16::fromDouble(centreX + r * c), Q16_16::fromDouble(centreY + r * s));
-            if (!p.valid) return 0;
+            if (!p.valid) return out;
             x = p.x.toDouble(), y = p.y.toDouble();
             const double cn = c * cs - s * sn;
             s = s * cs + c * sn;
@@ -179,12 +182,41 @@ double equivalentRadiusMm(const BoundaryFit &fit, double centreX, double centreY
         } else {
             x = x0, y = y0; // close the polygon
         }
-        if (i == 0) x0 = x, y0 = y;
-        else area2 += (xPrev - x0) * (y - y0) - (x - x0) * (yPrev - y0);
+        if (i == 0) {
+            x0 = x, y0 = y;
+        } else {
+            const double ax = xPrev - x0, ay = yPrev - y0, bx = x - x0, by = y - y0;
+            const double cross = ax * by - bx * ay;
+            area2 += cross;
+            mx += (ax + bx) * cross;
+            my += (ay + by) * cross;
+            mxx += (ax * ax + ax * bx + bx * bx) * cross;
+            myy += (ay * ay + ay * by + by * by) * cross;
+            mxy += (2 * ax * ay + ax * by + bx * ay + 2 * bx * by) * cross;
+        }
         xPrev = x, yPrev = y;
     }
+    if (!(std::fabs(area2) > 0)) return out;
     // An inscribed N-gon has sin(δ)/δ of its circle's area (δ = 2π/N): undo that bias.
-    return std::sqrt(std::fabs(area2) * 0.5 * (step / sn) / std::numbers::pi);
+    out.rEqMm = std::sqrt(std::fabs(area2) * 0.5 * (step / sn) / std::numbers::pi);
+    // Centroid and central second moments (the common factors cancel in the ratios).
+    const double gx = mx / (3 * area2), gy = my / (3 * area2);
+    const double sxx = mxx / (6 * area2) - gx * gx, syy = myy / (6 * area2) - gy * gy;
+    const double sxy = mxy / (12 * area2) - gx * gy;
+    out.centroidX = x0 + gx, out.centroidY = y0 + gy;
+    const double mean = 0.5 * (sxx + syy), dev = std::hypot(0.5 * (sxx - syy), sxy);
+    if (!(mean - dev > 0)) return out;
+    out.ellipticity = 1 - std::sqrt((mean - dev) / (mean + dev));
+    out.axisDeg = 0.5 * std::atan2(2 * sxy, sxx - syy) * 180.0 / std::numbers::pi;
+    out.valid = true;
+    return out;
+}
+
+double equivalentRadiusMm(const BoundaryFit &fit, double centreX, double centreY,
+                          const PlaneCalibration &cal)
+{
+    const PlaneOutline o = planeOutline(fit, centreX, centreY, cal);
+    return o.valid ? o.rEqMm : 0;
 }
 
 } // namespace icacam::vision

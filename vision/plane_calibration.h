@@ -74,4 +74,18 @@ constexpr int kEquivalentRadiusSamples = 512;
 double equivalentRadiusMm(const BoundaryFit &fit, double centreX, double centreY,
                           const PlaneCalibration &cal);
 
+// A fitted boundary as it lies in the end-face plane: what the pixel fit's ellipticity,
+// axis and centre say, with tilt, perspective and distortion taken out. The shape comes
+// from the mapped polygon's second area moments (an ellipse of axes a ≥ b has moments in
+// the ratio a²:b²), so a circle on the end face reads 0 however the camera looks at it.
+struct PlaneOutline {
+    bool valid = false;
+    double rEqMm = 0;              // sqrt(A/π), as equivalentRadiusMm
+    double centroidX = 0, centroidY = 0; // mm, fixture axes
+    double ellipticity = 0;        // 1 − b/a of the moment-equivalent ellipse
+    double axisDeg = 0;            // its long axis, degrees from the fixture's x axis
+};
+PlaneOutline planeOutline(const BoundaryFit &fit, double centreX, double centreY,
+                          const PlaneCalibration &cal);
+
 } // namespace icacam::vision

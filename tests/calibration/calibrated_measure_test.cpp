@@ -1,7 +1,9 @@
 // μ through a tilted, distorting camera (issue 7's bar): end faces rendered through the
 // example camera are measured with the calibration that `icacam calibrate` recovers from
 // rendered board photos, and without it (one mm/px number). Both errors are printed; the
-// calibrated one must meet the devset bound (max 0.008).
+// calibrated one must meet the devset bounds (median 0.002, max 0.008) with status ok (the
+// calibration already corrects the tilt the pixel checks would flag), and an uncalibrated
+// result with a large error must never be a silent ok.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,6 +12,8 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <string>
+#include <vector>
 #include <random>
 
 #include <opencv2/calib3d.hpp>
@@ -68,8 +72,18 @@ TEST(CalibratedMeasure, MuThroughATiltedDistortingCamera)
 
     std::mt19937 rng(7001);
     std::uniform_real_distribution<double> U(0, 1);
-    double worstCal = 0, worstRuler = 0, worstLocal = 0;
-    const int cases = 4;
+    auto flagNames = [](uint32_t f) {
+        std::string out;
+        for (int b = 0; b < vision::kFlagCount; ++b)
+            if (f & (1u << b)) out += std::string(out.empty() ? "" : "|") + vision::flagName(b);
+        return out.empty() ? std::string("-") : out;
+    };
+    // Bounds of the devset acceptance (README): median and max |Δμ|.
+    constexpr double kMedianBound = 0.002, kMaxBound = 0.008;
+    std::vector<double> errCal;
+    int degradedCases = 0;
+    double worstRuler = 0, worstLocal = 0;
+    const int cases = 8;
     for (int i = 0; i < cases; ++i) {
         const double n = 0.08 + 0.35 * U(rng), mu = 0.08 + 0.2 * U(rng);
         const double hFinal = 7.5; // 50 % of H0 = 15
@@ -80,7 +94,8 @@ TEST(CalibratedMeasure, MuThroughATiltedDistortingCamera)
         s.rMaxMm = 5.0 * std::sqrt(2.0) * (1.008 + 0.034 * u);
         s.ica = 150 + 40 * U(rng), s.face = s.ica + (U(rng) < 0.5 ? -30 : 30), s.background = 60;
         s.seed = uint32_t(1000 + i);
-        const double xMm = 1.5 * (U(rng) - 0.5), yMm = 1.5 * (U(rng) - 0.5);
+        // Small offsets: the 14.4 mm barrel nearly fills this camera's 14.9 mm high field.
+        const double xMm = 0.4 * (U(rng) - 0.5), yMm = 0.3 * (U(rng) - 0.5);
         const cv::Mat img = r.endFace(s, xMm, yMm, hFinal, 0.9, 2.0, uint32_t(77 + i));
         const vision::LumaView v{img.data, img.cols, img.rows, int(img.step[0]), 1};
         const double muTrue = model.estimate({s.rOuterEqMm() - s.rInnerEqMm(), n}).mu;
@@ -106,17 +121,45 @@ TEST(CalibratedMeasure, MuThroughATiltedDistortingCamera)
         ASSERT_TRUE(ml.hasValue());
         const double eCal = std::fabs(mc.mu - muTrue), eRuler = std::fabs(mr.mu - muTrue),
                      eLocal = std::fabs(ml.mu - muTrue);
-        std::printf("case %d: n %.3f mu_true %.4f u %.4f mm | calibrated mu %.4f (err %.4f, %s flags 0x%x) | "
-                    "fixture ruler mu %.4f (err %.4f) | local scale mu %.4f (err %.4f) | ellipticity %.4f\n",
-                    i, n, muTrue, s.rOuterEqMm() - s.rInnerEqMm(), mc.mu, eCal, vision::statusName(mc.status), unsigned(mc.flags),
-                    mr.mu, eRuler, ml.mu, eLocal, mr.outer.ellipticity);
-        worstCal = std::max(worstCal, eCal);
+        std::printf("case %d: n %.3f mu_true %.4f u %.4f mm | calibrated mu %.4f (err %.4f, %s %s, ellipticity "
+                    "%.4f/%.4f) | fixture ruler mu %.4f (err %.4f, %s %s) | local scale mu %.4f (err %.4f, %s %s, "
+                    "ellipticity %.4f/%.4f)\n",
+                    i, n, muTrue, s.rOuterEqMm() - s.rInnerEqMm(), mc.mu, eCal, vision::statusName(mc.status),
+                    flagNames(mc.flags).c_str(), mc.inner.ellipticity, mc.outer.ellipticity, mr.mu, eRuler,
+                    vision::statusName(mr.status), flagNames(mr.flags).c_str(), ml.mu, eLocal,
+                    vision::statusName(ml.status), flagNames(ml.flags).c_str(), ml.inner.ellipticity,
+                    ml.outer.ellipticity);
+        // Calibrated: nothing left for the shape checks to see (the end face is round and
+        // concentric in its plane) and the scale is the calibration's. Only a fit the
+        // pipeline itself reports as degraded (edges found on too few rays, scattered) may
+        // carry flags, and then a degraded fit's shape is no evidence of tilt.
+        const uint32_t degraded = vision::kFlagLowCoverage | vision::kFlagHighScatter;
+        if (mc.flags & degraded) {
+            ++degradedCases;
+        } else {
+            EXPECT_EQ(mc.status, vision::Status::Ok) << "case " << i << ": " << flagNames(mc.flags);
+            EXPECT_LT(std::max(mc.inner.ellipticity, mc.outer.ellipticity), 0.006) << "case " << i;
+        }
+        // Uncalibrated: a μ outside the devset bound must carry a flag.
+        for (const vision::Measurement *plain : {&mr, &ml}) {
+            if (std::fabs(plain->mu - muTrue) > kMaxBound) {
+                EXPECT_NE(plain->status, vision::Status::Ok)
+                    << "case " << i << ": uncalibrated mu off by " << std::fabs(plain->mu - muTrue) << " reported ok";
+            }
+        }
+        errCal.push_back(eCal);
         worstRuler = std::max(worstRuler, eRuler);
         worstLocal = std::max(worstLocal, eLocal);
     }
-    std::printf("mu error, max over %d cases: calibrated %.4f, fixture ruler %.4f, local scale %.4f\n", cases,
-                worstCal, worstRuler, worstLocal);
-    EXPECT_LE(worstCal, 0.008);
+    std::sort(errCal.begin(), errCal.end());
+    const double medianCal = 0.5 * (errCal[(cases - 1) / 2] + errCal[cases / 2]), worstCal = errCal.back();
+    std::printf("mu error over %d cases: calibrated median %.4f max %.4f; fixture ruler max %.4f; local scale max "
+                "%.4f\n",
+                cases, medianCal, worstCal, worstRuler, worstLocal);
+    std::printf("calibrated: %d of %d cases with a degraded fit (low coverage or scatter)\n", degradedCases, cases);
+    EXPECT_LE(degradedCases, 1);
+    EXPECT_LE(medianCal, kMedianBound);
+    EXPECT_LE(worstCal, kMaxBound);
 }
 
 // `icacam measure` with a `calibration` column instead of mm_per_px: the end face is taken
