@@ -1,6 +1,7 @@
 #include "firmware/command.h"
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 
 namespace icacam::fw {
@@ -20,6 +21,7 @@ bool kindOf(std::string_view name, CommandKind *k)
     static const struct { const char *name; CommandKind kind; } kNames[] = {
         {"help", CommandKind::Help}, {"status", CommandKind::Status}, {"trigger", CommandKind::Trigger},
         {"get", CommandKind::Get},   {"set", CommandKind::Set},       {"results", CommandKind::Results},
+        {"scalecheck", CommandKind::ScaleCheck},
     };
     for (const auto &n : kNames)
         if (name == n.name) { *k = n.kind; return true; }
@@ -39,6 +41,29 @@ bool parseCount(double v, int *count)
     *count = int(v);
     return true;
 }
+
+// One number of a scale check, within its range; "" or the refusal.
+std::string scaleNumber(const char *name, double v, double lo, double hi, double *out)
+{
+    if (!(v >= lo && v <= hi)) {
+        char b[96];
+        std::snprintf(b, sizeof b, "scalecheck: %s must be between %g and %g", name, lo, hi);
+        return b;
+    }
+    *out = v;
+    return "";
+}
+
+bool wordNumber(std::string_view w, double *v)
+{
+    if (w.empty() || w.size() > 24) return false;
+    const std::string s(w);
+    char *end = nullptr;
+    *v = std::strtod(s.c_str(), &end);
+    return end == s.c_str() + s.size() && std::isfinite(*v);
+}
+
+constexpr const char *kScaleUsage = "usage: scalecheck DIAMETER_MM [TOLERANCE_PCT [THICKNESS_MM]]";
 
 } // namespace
 
@@ -73,6 +98,22 @@ CommandParse parseCommand(std::string_view line)
                 return fail("bad_argument", "\"n\" must be a whole number from 1 to 1000");
         }
         if (p.cmd.kind == CommandKind::Set && p.cmd.key.empty()) return fail("bad_argument", "set needs \"key\"");
+        if (p.cmd.kind == CommandKind::ScaleCheck) {
+            const struct { const char *key; double lo, hi; double *dst; bool required; } fields[] = {
+                {"diameter_mm", 1, 300, &p.cmd.diameterMm, true},
+                {"tolerance_pct", 0.01, 20, &p.cmd.tolerancePct, false},
+                {"thickness_mm", 0, 50, &p.cmd.thicknessMm, false},
+            };
+            for (const auto &f : fields) {
+                const JsonField *v = obj.find(f.key);
+                if (!v) {
+                    if (f.required) return fail("bad_argument", "scalecheck needs \"diameter_mm\"");
+                    continue;
+                }
+                if (v->type != JsonField::Type::Number) return fail("bad_argument", std::string("\"") + f.key + "\" must be a number");
+                if (std::string e = scaleNumber(f.key, v->number, f.lo, f.hi, f.dst); !e.empty()) return fail("bad_argument", e);
+            }
+        }
         p.ok = true;
         return p;
     }
@@ -83,14 +124,26 @@ CommandParse parseCommand(std::string_view line)
     while (i < line.size()) {
         while (i < line.size() && line[i] == ' ') ++i;
         if (i >= line.size()) break;
-        if (nw == 3) return fail("bad_argument", "too many words");
+        if (nw == 4) return fail("bad_argument", "too many words");
         const size_t b = i;
         while (i < line.size() && line[i] != ' ') ++i;
         words[nw++] = line.substr(b, i - b);
     }
     if (!kindOf(words[0], &p.cmd.kind))
         return fail("unknown_command", "unknown command '" + printable(words[0]) + "' (try help)");
-    if (p.cmd.kind == CommandKind::Set) {
+    if (nw == 4 && p.cmd.kind != CommandKind::ScaleCheck) return fail("bad_argument", "too many words");
+    if (p.cmd.kind == CommandKind::ScaleCheck) {
+        if (nw < 2) return fail("bad_argument", kScaleUsage);
+        const char *names[] = {"DIAMETER_MM", "TOLERANCE_PCT", "THICKNESS_MM"};
+        const double lo[] = {1, 0.01, 0}, hi[] = {300, 20, 50};
+        double *dst[] = {&p.cmd.diameterMm, &p.cmd.tolerancePct, &p.cmd.thicknessMm};
+        for (int k = 1; k < nw; ++k) {
+            double v = 0;
+            if (!wordNumber(words[k], &v)) return fail("bad_argument", std::string(kScaleUsage) + " (" + names[k - 1] + " is not a number)");
+            if (std::string e = scaleNumber(names[k - 1], v, lo[k - 1], hi[k - 1], dst[k - 1]); !e.empty())
+                return fail("bad_argument", e);
+        }
+    } else if (p.cmd.kind == CommandKind::Set) {
         if (nw != 3) return fail("bad_argument", "usage: set KEY VALUE");
         p.cmd.key = std::string(words[1]);
         p.cmd.value = std::string(words[2]);

@@ -10,13 +10,16 @@
 
 namespace icacam::fw {
 
-enum class CommandKind { Help, Status, Trigger, Get, Set, Results };
+enum class CommandKind { Help, Status, Trigger, Get, Set, Results, ScaleCheck };
 
 struct Command {
     CommandKind kind = CommandKind::Help;
     std::string key;   // get / set
     std::string value; // set (numbers keep their literal text)
     int count = 10;    // results
+    // scalecheck: the reference disc's declared diameter, the tolerance (percent) and the
+    // disc's thickness (its edge is measured in its top face)
+    double diameterMm = 0, tolerancePct = 0.5, thicknessMm = 0;
     std::string tag;   // the request's "id", echoed in the answer
 };
 

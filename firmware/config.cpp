@@ -34,7 +34,10 @@ const KeyDef kKeys[] = {
     {"specimen.material", "material", nullptr, nullptr, &Config::material, 0, 32, nullptr, true,
      "material label, up to 32 characters"},
     {"calibration.mm_per_px", "mm_per_px", &Config::mmPerPx, nullptr, nullptr, 1e-5, 1, nullptr, true,
-     "scale in the end-face plane (required)"},
+     "scale in the end-face plane (this or calibration.file is required; with a file it only sizes the search)"},
+    {"calibration.file", "calibration_file", nullptr, nullptr, &Config::calibrationFile, 0, 4096, nullptr, true,
+     "camera calibration from `icacam calibrate`: maps each boundary into the end-face plane at "
+     "h_final_mm (else h0_mm / 2) above the fixture"},
     {"camera.backend", nullptr, nullptr, nullptr, &Config::cameraBackend, 0, 0, "file|libcamera|v4l2", false,
      "camera driver"},
     {"camera.frames", nullptr, nullptr, nullptr, &Config::cameraFrames, 0, 4096, nullptr, false,
@@ -186,6 +189,12 @@ std::vector<std::string> configKeys(bool liveOnly)
     return out;
 }
 
+std::string liveKeyName(std::string_view key)
+{
+    const KeyDef *k = findKey(key, true);
+    return k && k->live ? k->alias : "";
+}
+
 std::string configHelp()
 {
     std::string out;
@@ -241,12 +250,13 @@ std::vector<ConfigIssue> parseConfig(std::string_view text, Config *cfg)
             continue;
         }
         seenN |= key == "specimen.n";
-        seenScale |= key == "calibration.mm_per_px";
+        seenScale |= key == "calibration.mm_per_px" || (key == "calibration.file" && !value.empty());
         seenJournal |= key == "journal.dir";
     }
     if (!seenN) issues.push_back({0, "specimen.n is required (the strain-hardening exponent)"});
     if (std::string e = specimenIssue(*cfg); !e.empty()) issues.push_back({0, e});
-    if (!seenScale) issues.push_back({0, "calibration.mm_per_px is required (the camera's scale)"});
+    if (!seenScale)
+        issues.push_back({0, "calibration.mm_per_px or calibration.file is required (the camera's scale)"});
     if (!seenJournal) issues.push_back({0, "journal.dir is required (where results are kept)"});
     if (cfg->cameraBackend == "file" && cfg->cameraFrames.empty())
         issues.push_back({0, "camera.frames is required with camera.backend = file"});

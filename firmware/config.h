@@ -17,8 +17,9 @@ struct Config {
     double d0Mm = 10, h0Mm = 15;
     double hFinalMm = 0;     // final height after upsetting; 0 = not given (50 % assumed)
     std::string material;
-    // [calibration]
-    double mmPerPx = 0;      // scale in the end-face plane (required)
+    // [calibration] one of the two is required
+    double mmPerPx = 0;      // scale in the end-face plane (with a file: only sizes the search)
+    std::string calibrationFile; // from `icacam calibrate` (docs/calibration.md)
     // [camera]
     std::string cameraBackend = "file";
     std::string cameraFrames;            // file backend: folder or list file
@@ -51,6 +52,9 @@ struct Config {
     std::string journalImages = "pgm";   // pgm | none
     int journalQuotaMb = 0;              // 0 = the card's free space
     int journalMemory = 64;              // results kept in RAM for `results`
+    // Not a key: the config file's folder, against which relative paths set over serial
+    // (calibration.file) are resolved.
+    std::string baseDir;
 };
 
 struct ConfigIssue {
@@ -70,6 +74,8 @@ bool getConfigKey(const Config &cfg, std::string_view key, std::string *value, b
 std::vector<std::string> configKeys(bool liveOnly);
 // What no single key can check: the specimen's keys against each other ("" when consistent).
 std::string specimenIssue(const Config &cfg);
+// The serial name of a live key given by its full name or serial name ("" if none).
+std::string liveKeyName(std::string_view key);
 std::string configHelp();
 
 } // namespace icacam::fw

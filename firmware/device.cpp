@@ -4,8 +4,10 @@
 #include <cstdio>
 #include <ctime>
 
+#include "firmware/scale_check.h"
 #include "firmware/screen.h"
 #include "vision/paper_model.h"
+#include "vision/reference_disc.h"
 
 namespace icacam::fw {
 
@@ -36,6 +38,14 @@ void flagList(uint32_t flags, char (&b)[512])
 }
 
 constexpr const char *kSettingsFile = "settings.conf";
+
+// The keys settable over serial, for help and refusals.
+std::string liveKeyList()
+{
+    std::string out;
+    for (const std::string &k : configKeys(true)) out += (out.empty() ? "" : " ") + k;
+    return out;
+}
 
 } // namespace
 
@@ -69,6 +79,10 @@ hal::Error Device::start()
     if (lumaScratchBytes_ > 0) lumaScratch_ = std::make_unique<uint8_t[]>(lumaScratchBytes_);
     if (cfg_.journalImages == "pgm") image_.reserve(size_t(cfg_.cameraMaxWidth) * size_t(cfg_.cameraMaxHeight) + 64);
     if (hal::Error e = hal_.camera.configure({fmt, cfg_.cameraMaxWidth, cfg_.cameraMaxHeight}); !e.ok()) return e;
+    // icacam-fw --check reports a bad calibration file first; a device started without
+    // that check refuses it here.
+    if (std::string e = loadDeviceCalibration(cfg_, &cal_); !e.empty()) return hal::Error::make(hal::Errc::Invalid, e);
+    discWork_ = std::make_unique<uint8_t[]>(vision::ReferenceDiscFinder::kWorkBytes);
     if (hal::Error e = hal_.led.set(false); !e.ok()) return e;
 
     JournalRecovery rec;
@@ -87,8 +101,15 @@ hal::Error Device::start()
             if (eq == std::string_view::npos) continue;
             if (!setConfigKey(&trial, line.substr(0, eq), line.substr(eq + 3), true).empty()) note = "saved setting bad";
         }
+        // A saved calibration that can no longer be read leaves the configured one in place.
+        if (trial.calibrationFile != cfg_.calibrationFile && !setCalibrationFile(&trial).empty()) {
+            trial.calibrationFile = cfg_.calibrationFile;
+            note = "saved setting bad";
+        }
         cfg_ = trial;
     }
+    if (!cal_.present && !(cfg_.mmPerPx > 0))
+        return hal::Error::make(hal::Errc::Invalid, "no scale: calibration.mm_per_px or calibration.file is required");
     out_.clear();
     JsonBuilder(&out_)
         .str("type", "hello")
@@ -168,9 +189,10 @@ void Device::handleCommand(const Command &c)
     switch (c.kind) {
     case CommandKind::Help:
         j.str("type", "help")
-            .str("commands", "status | trigger | get [KEY] | set KEY VALUE | results [N] | help; "
+            .str("commands", "status | trigger | get [KEY] | set KEY VALUE | results [N] | "
+                             "scalecheck DIAMETER_MM [TOLERANCE_PCT [THICKNESS_MM]] | help; "
                              "as words or JSON {\"cmd\":\"set\",\"key\":\"n\",\"value\":0.2,\"id\":\"x\"}")
-            .str("keys", "n k_mpa d0_mm h0_mm h_final_mm material mm_per_px");
+            .str("keys", liveKeyList());
         break;
     case CommandKind::Status: {
         auto free = hal_.storage.freeBytes();
@@ -191,7 +213,7 @@ void Device::handleCommand(const Command &c)
         j.str("type", "settings");
         int matched = 0;
         for (const std::string &k : configKeys(true)) {
-            if (!c.key.empty() && c.key != k && c.key != "specimen." + k && c.key != "calibration." + k) continue;
+            if (!c.key.empty() && liveKeyName(c.key) != k) continue;
             std::string v;
             bool num = false;
             getConfigKey(cfg_, k, &v, &num);
@@ -199,7 +221,7 @@ void Device::handleCommand(const Command &c)
             ++matched;
         }
         if (matched == 0) {
-            sendError("bad_argument", "unknown key (keys: n k_mpa d0_mm h0_mm h_final_mm material mm_per_px)", c.tag);
+            sendError("bad_argument", "unknown key (keys: " + liveKeyList() + ")", c.tag);
             return;
         }
         break;
@@ -208,6 +230,7 @@ void Device::handleCommand(const Command &c)
         Config trial = cfg_;
         std::string err = setConfigKey(&trial, c.key, c.value, true);
         if (err.empty()) err = specimenIssue(trial);
+        if (err.empty() && liveKeyName(c.key) == "calibration_file") err = setCalibrationFile(&trial);
         if (!err.empty()) {
             sendError("bad_argument", err, c.tag);
             return;
@@ -230,13 +253,22 @@ void Device::handleCommand(const Command &c)
         j.end();
         send(out_);
         for (size_t i = have - n; i < have; ++i) {
-            out_.assign("{\"type\":\"record\"");
-            out_.append(journal_.recent(i).substr(std::string_view("{\"type\":\"result\"").size()));
+            // Measurements come back as records; scale checks as they were sent.
+            const std::string_view line = journal_.recent(i), result = "{\"type\":\"result\"";
+            if (line.substr(0, result.size()) == result) {
+                out_.assign("{\"type\":\"record\"");
+                out_.append(line.substr(result.size()));
+            } else {
+                out_.assign(line);
+            }
             out_.push_back('\n');
             send(out_);
         }
         return;
     }
+    case CommandKind::ScaleCheck:
+        scaleCheck(c);
+        return;
     }
     if (!c.tag.empty()) j.str("tag", c.tag);
     j.end();
@@ -252,30 +284,21 @@ void Device::measure(const char *origin, const std::string &tag)
     Measurement m;
     std::string problem;
     hal::CapturedFrame frame;
-    bool captured = false;
-
-    state_ = State::LedOn;
-    if (hal::Error e = hal_.led.set(true); !e.ok()) problem = "LED: " + e.message;
-    hal_.clock.sleepMs(cfg_.ledSettleMs);
-    state_ = State::Capture;
-    if (problem.empty()) {
-        if (hal::Error e = hal_.camera.capture(cfg_.captureTimeoutMs, &frame); !e.ok())
-            problem = std::string("camera ") + hal::errcName(e.code) + ": " + e.message;
-        else
-            captured = true;
-    }
-    state_ = State::LedOff;
-    if (hal::Error e = hal_.led.set(false); !e.ok() && problem.empty()) problem = "LED: " + e.message;
-
-    state_ = State::Measure;
     vision::LumaView luma;
-    if (captured) {
-        const vision::ErrorCode le = vision::lumaOf(frame.view, lumaScratch_.get(), lumaScratchBytes_, &luma);
-        if (le != vision::ErrorCode::None) problem = std::string("frame: ") + vision::errorMessage(le);
-        else {
-            const vision::SpecimenSpec spec{cfg_.n, cfg_.kMpa, cfg_.d0Mm, cfg_.h0Mm, cfg_.mmPerPx, cfg_.hFinalMm};
-            m = analyzer_.measure(luma, spec, model_);
+    const bool captured = captureFrame(&frame, &luma, &problem);
+    if (captured && problem.empty()) {
+        vision::SpecimenSpec spec{cfg_.n, cfg_.kMpa, cfg_.d0Mm, cfg_.h0Mm, cfg_.mmPerPx, cfg_.hFinalMm};
+        if (cal_.present) {
+            // The end face's plane: the specimen's final height above the fixture when
+            // given, else the model's 50 % reduction (docs/calibration.md).
+            problem = frameSizeIssue(cal_, luma.width, luma.height);
+            plane_ = cal_.file.plane;
+            plane_.heightMm = endFaceHeightMm();
+            spec.calibration = &plane_;
+            if (!(spec.mmPerPx > 0))
+                spec.mmPerPx = vision::planeScaleAt(plane_, 0.5 * (luma.width - 1), 0.5 * (luma.height - 1));
         }
+        if (problem.empty()) m = analyzer_.measure(luma, spec, model_);
     }
 
     state_ = State::Report;
@@ -305,6 +328,95 @@ void Device::measure(const char *origin, const std::string &tag)
     state_ = State::Idle;
 }
 
+bool Device::captureFrame(hal::CapturedFrame *frame, vision::LumaView *luma, std::string *problem)
+{
+    bool captured = false;
+    state_ = State::LedOn;
+    if (hal::Error e = hal_.led.set(true); !e.ok()) *problem = "LED: " + e.message;
+    hal_.clock.sleepMs(cfg_.ledSettleMs);
+    state_ = State::Capture;
+    if (problem->empty()) {
+        if (hal::Error e = hal_.camera.capture(cfg_.captureTimeoutMs, frame); !e.ok())
+            *problem = std::string("camera ") + hal::errcName(e.code) + ": " + e.message;
+        else
+            captured = true;
+    }
+    state_ = State::LedOff;
+    if (hal::Error e = hal_.led.set(false); !e.ok() && problem->empty()) *problem = "LED: " + e.message;
+
+    state_ = State::Measure;
+    if (captured) {
+        const vision::ErrorCode le = vision::lumaOf(frame->view, lumaScratch_.get(), lumaScratchBytes_, luma);
+        if (le != vision::ErrorCode::None) *problem = std::string("frame: ") + vision::errorMessage(le);
+    }
+    return captured;
+}
+
+double Device::endFaceHeightMm() const { return cfg_.hFinalMm > 0 ? cfg_.hFinalMm : 0.5 * cfg_.h0Mm; }
+
+std::string Device::setCalibrationFile(Config *trial)
+{
+    if (trial->calibrationFile == "none") trial->calibrationFile.clear();
+    if (trial->calibrationFile.empty() && !(trial->mmPerPx > 0))
+        return "no scale would be left: set mm_per_px before removing calibration_file";
+    DeviceCalibration d;
+    if (std::string e = loadDeviceCalibration(*trial, &d); !e.empty()) return e;
+    cal_ = d;
+    return "";
+}
+
+void Device::scaleCheck(const Command &c)
+{
+    const int64_t t0 = hal_.clock.monotonicMs();
+    const long id = lastId_ + 1;
+    drawBusy(&screen_, id);
+    showOrLog(screen_);
+    std::string problem;
+    hal::CapturedFrame frame;
+    vision::LumaView luma;
+    const bool captured = captureFrame(&frame, &luma, &problem);
+    ScaleCheckResult r;
+    if (captured && problem.empty())
+        r = checkScale(luma, {c.diameterMm, c.tolerancePct, c.thicknessMm}, cal_, cfg_.mmPerPx, discWork_.get());
+
+    state_ = State::Report;
+    lastId_ = id;
+    std::string imageName, storageProblem;
+    if (captured && problem.empty() && cfg_.journalImages == "pgm") {
+        char name[32];
+        std::snprintf(name, sizeof name, "img-%06ld.pgm", id);
+        if (hal::Error e = saveImage(name, luma); e.ok()) imageName = name;
+        else storageProblem = e.code == hal::Errc::Full ? "storage full: image not saved" : "image not saved: " + e.message;
+    }
+    out_.clear();
+    JsonBuilder j(&out_);
+    char when[96];
+    isoTime(hal_.clock.wallMs(), when);
+    const char *status = !problem.empty() || !r.measured ? "error" : r.pass ? "pass" : "fail";
+    j.str("type", "scalecheck").integer("id", id).str("time", when).str("status", status);
+    j.num("diameter_mm", c.diameterMm, 4);
+    if (r.measured) j.num("measured_mm", r.measuredMm, 7).num("ratio", r.ratio, 7);
+    j.num("tolerance_pct", c.tolerancePct, 3).num("thickness_mm", c.thicknessMm, 3);
+    j.str("message", !problem.empty() ? problem : r.message);
+    j.str("calibration", cal_.present ? cal_.name : "").num("mm_per_px", cfg_.mmPerPx, 8);
+    j.str("image", imageName).str("source", captured ? std::string_view(frame.source) : std::string_view());
+    j.str("trigger", "serial").integer("ms", long(hal_.clock.monotonicMs() - t0));
+    if (!c.tag.empty()) j.str("tag", c.tag);
+    j.end();
+    if (hal::Error e = journal_.append(out_); !e.ok())
+        storageProblem = e.code == hal::Errc::Full ? "storage full: result not journaled" : "journal: " + e.message;
+    send(out_);
+    if (!problem.empty()) sendError("measurement_failed", problem, c.tag);
+    if (!storageProblem.empty()) sendError("storage", storageProblem, c.tag);
+
+    char title[48], words[64];
+    std::snprintf(title, sizeof title, "#%ld scale %s", id, status);
+    if (r.measured) std::snprintf(words, sizeof words, "ratio %.4f (tol %.2f %%)", r.ratio, c.tolerancePct);
+    drawProblem(&screen_, title, r.measured ? std::string_view(words) : std::string_view(problem.empty() ? r.message : problem));
+    showOrLog(screen_);
+    state_ = State::Idle;
+}
+
 void Device::buildRecord(long id, const char *origin, const std::string &tag, const Measurement &m,
                          std::string_view problem, const hal::CapturedFrame *frame, std::string_view image, long ms)
 {
@@ -326,6 +438,9 @@ void Device::buildRecord(long id, const char *origin, const std::string &tag, co
     j.str("image", image).str("source", frame ? std::string_view(frame->source) : std::string_view());
     j.num("n", cfg_.n).num("k_mpa", cfg_.kMpa).num("mm_per_px", cfg_.mmPerPx, 8);
     j.num("h_final_mm", cfg_.hFinalMm).str("model", model_.name());
+    // Which calibration mapped the boundaries, and the plane it mapped them into.
+    j.str("calibration", cal_.present ? cal_.name : "");
+    if (cal_.present) j.num("plane_height_mm", endFaceHeightMm(), 4);
     j.str("material", cfg_.material).str("trigger", origin).integer("ms", ms);
     if (!tag.empty()) j.str("tag", tag);
     j.end();
@@ -349,6 +464,7 @@ void Device::persistSettings()
 {
     std::string text;
     for (const std::string &k : configKeys(true)) {
+        if (k == "mm_per_px" && cfg_.mmPerPx == 0) continue; // not given: a calibration file scales
         std::string v;
         bool num = false;
         getConfigKey(cfg_, k, &v, &num);

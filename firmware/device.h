@@ -11,6 +11,7 @@
 #include "firmware/command.h"
 #include "firmware/config.h"
 #include "firmware/debouncer.h"
+#include "firmware/device_calibration.h"
 #include "firmware/journal.h"
 #include "hal/camera.h"
 #include "hal/clock.h"
@@ -56,6 +57,12 @@ private:
     void handleLine(std::string_view line);
     void handleCommand(const Command &c);
     void measure(const char *origin, const std::string &tag);
+    void scaleCheck(const Command &c);
+    // LED on, capture, LED off: the frame as luma, or the problem in words.
+    bool captureFrame(hal::CapturedFrame *frame, vision::LumaView *luma, std::string *problem);
+    // Loads trial's calibration.file into cal_ ("none" clears it); "" or why not.
+    std::string setCalibrationFile(Config *trial);
+    double endFaceHeightMm() const;
     void sendError(const char *code, std::string_view message, std::string_view tag);
     void send(std::string_view line);
     void showIdle(std::string_view note);
@@ -80,6 +87,9 @@ private:
     std::string out_, image_;
     hal::MonoBitmap screen_;
     std::string lastProblem_;
+    DeviceCalibration cal_;             // calibration.file, read at start and on `set`
+    vision::PlaneCalibration plane_;    // cal_ at the current specimen's end-face height
+    std::unique_ptr<uint8_t[]> discWork_; // the scale check's disc finder
 };
 
 } // namespace icacam::fw

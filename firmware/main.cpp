@@ -14,6 +14,7 @@
 
 #include "firmware/config.h"
 #include "firmware/device.h"
+#include "firmware/device_calibration.h"
 #include "hal/file/clocks.h"
 #include "hal/file/file_camera.h"
 #include "hal/file/file_led.h"
@@ -135,10 +136,18 @@ int main(int argc, char **argv)
 #endif
     ok = (cfg.displayBackend == "none" || built("display.backend", cfg.displayBackend, "ssd1306", kSsd1306)) && ok;
     ok = ((kTermios && cfg.serialBackend == "uart") || onlyFile("serial.backend", cfg.serialBackend, "pty")) && ok;
+    const std::string base = std::filesystem::path(configPath).parent_path().string();
+    cfg.baseDir = base;
+    // The calibration file is part of the configuration: unreadable, of another format or
+    // for larger frames than the camera's is a configuration mistake (exit 78).
+    if (fw::DeviceCalibration cal; issues.empty())
+        if (std::string e = fw::loadDeviceCalibration(cfg, &cal); !e.empty()) {
+            std::fprintf(stderr, "%s: %s\n", configPath.c_str(), e.c_str());
+            ok = false;
+        }
     if (!ok) return kExitConfig;
     if (checkOnly) { std::printf("%s: ok\n", configPath.c_str()); return 0; }
 
-    const std::string base = std::filesystem::path(configPath).parent_path().string();
     hal::SystemClock clock;
     hal::FileCamera camera(clock, {resolve(base, cfg.cameraFrames), cfg.cameraStrideAlign, cfg.cameraLoop != 0, 0});
     hal::FileTrigger fileTrigger(clock);

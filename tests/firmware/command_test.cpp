@@ -46,6 +46,15 @@ TEST(Command, RefusalsCarryACodeAndWords)
         {"status please", "bad_argument"},
         {R"({"cmd":"status","a":1,"a":2})", "malformed"},
         {R"({"cmd":"st\u0000atus"})", "unknown_command"},
+        {"scalecheck", "bad_argument"},
+        {"scalecheck ten", "bad_argument"},
+        {"scalecheck 0.2", "bad_argument"},
+        {"scalecheck 20 50", "bad_argument"},
+        {"scalecheck 20 0.5 1 9", "bad_argument"},
+        {"set n 0.2 0.3", "bad_argument"},
+        {R"({"cmd":"scalecheck"})", "bad_argument"},
+        {R"({"cmd":"scalecheck","diameter_mm":"20"})", "bad_argument"},
+        {R"({"cmd":"scalecheck","diameter_mm":20,"thickness_mm":-1})", "bad_argument"},
     };
     for (const auto &c : cases) {
         auto p = parseCommand(c.line);
@@ -53,6 +62,25 @@ TEST(Command, RefusalsCarryACodeAndWords)
         EXPECT_STREQ(p.code, c.code) << c.line;
         EXPECT_FALSE(p.message.empty()) << c.line;
     }
+}
+
+TEST(Command, ScaleCheckAsWordsAndJson)
+{
+    auto w = parseCommand("scalecheck 20 0.25 1.5");
+    ASSERT_TRUE(w.ok) << w.message;
+    EXPECT_EQ(w.cmd.kind, CommandKind::ScaleCheck);
+    EXPECT_DOUBLE_EQ(w.cmd.diameterMm, 20);
+    EXPECT_DOUBLE_EQ(w.cmd.tolerancePct, 0.25);
+    EXPECT_DOUBLE_EQ(w.cmd.thicknessMm, 1.5);
+    auto d = parseCommand("scalecheck 12");
+    ASSERT_TRUE(d.ok);
+    EXPECT_DOUBLE_EQ(d.cmd.tolerancePct, 0.5); // the default
+    EXPECT_DOUBLE_EQ(d.cmd.thicknessMm, 0);
+    auto j = parseCommand(R"({"cmd":"scalecheck","diameter_mm":12.5,"tolerance_pct":1,"id":"k"})");
+    ASSERT_TRUE(j.ok) << j.message;
+    EXPECT_DOUBLE_EQ(j.cmd.diameterMm, 12.5);
+    EXPECT_DOUBLE_EQ(j.cmd.tolerancePct, 1);
+    EXPECT_EQ(j.cmd.tag, "k");
 }
 
 TEST(Command, RandomBytesNeverParseSilently)

@@ -46,7 +46,7 @@ TEST(Config, EveryMistakeIsReportedWithItsLine)
     bool mentionsRange = false, missingScale = false;
     for (auto &i : issues) {
         mentionsRange |= i.message.find("between") != std::string::npos;
-        missingScale |= i.message.find("mm_per_px is required") != std::string::npos;
+        missingScale |= i.message.find("mm_per_px or calibration.file is required") != std::string::npos;
     }
     EXPECT_TRUE(mentionsRange);
     EXPECT_TRUE(missingScale);
@@ -82,4 +82,25 @@ TEST(Config, FinalHeightMustBeBelowTheInitialHeight)
     EXPECT_EQ(specimenIssue(ok), "");
     EXPECT_DOUBLE_EQ(ok.hFinalMm, 7.4);
     EXPECT_NE(setConfigKey(&ok, "h_final_mm", "-1", true), "");
+}
+
+TEST(Config, ACalibrationFileMayStandInsteadOfMmPerPx)
+{
+    std::string text = kGood;
+    text.replace(text.find("mm_per_px = 0.0125"), 18, "file = cam.cal");
+    Config c;
+    auto issues = parseConfig(text, &c);
+    EXPECT_TRUE(issues.empty()) << issues[0].message;
+    EXPECT_EQ(c.calibrationFile, "cam.cal");
+    EXPECT_EQ(c.mmPerPx, 0.0);
+    // Over serial by its short name; the final height too.
+    EXPECT_EQ(setConfigKey(&c, "calibration_file", "/etc/icacam/other.cal", true), "");
+    EXPECT_EQ(setConfigKey(&c, "h_final_mm", "7.4", true), "");
+    EXPECT_EQ(liveKeyName("calibration.file"), "calibration_file");
+    EXPECT_EQ(liveKeyName("journal.dir"), "");
+    // Neither: the scale is missing.
+    text.replace(text.find("file = cam.cal"), 14, "");
+    issues = parseConfig(text, &c);
+    ASSERT_EQ(issues.size(), 1u);
+    EXPECT_NE(issues[0].message.find("calibration.mm_per_px or calibration.file is required"), std::string::npos);
 }
