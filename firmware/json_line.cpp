@@ -91,7 +91,8 @@ std::string parseFlatObject(std::string_view text, FlatObject *out)
     if (!c.eat('{')) return "expected '{'" + c.at();
     if (c.eat('}')) { c.ws(); return c.i == text.size() ? "" : "text after the object" + c.at(); }
     for (;;) {
-        if (out->count >= FlatObject::kMaxFields) return "too many fields (at most 24)";
+        if (out->count >= FlatObject::kMaxFields)
+            return "too many fields (at most " + std::to_string(FlatObject::kMaxFields) + ")";
         JsonField &f = out->fields[out->count];
         c.ws();
         if (std::string e = parseString(c, &f.key); !e.empty()) return e;

@@ -16,7 +16,8 @@ struct JsonField {
 };
 
 struct FlatObject {
-    static constexpr int kMaxFields = 24;
+    // A journal record has about 25 fields (result, diagnostics, settings, calibration).
+    static constexpr int kMaxFields = 40;
     JsonField fields[kMaxFields];
     int count = 0;
     const JsonField *find(std::string_view key) const;

@@ -163,7 +163,7 @@ TEST(DeviceCalibration, MeasuresInTheEndFacePlaneAndJournalsWhichCalibration)
     rig.cfg.calibrationFile = "cam.cal"; // no mm_per_px: the calibration scales
     rig.cfg.h0Mm = 15;                   // end face at h0/2 = 7.5 mm
     ASSERT_TRUE(rig.start());
-    rig.say("trigger");
+    rig.say("{\"cmd\":\"trigger\",\"id\":\"t1\"}"); // the longest record: a value, a calibration, a tag
     const fw::FlatObject a = rig.serial.last("result");
     ASSERT_EQ(text(a, "status"), "ok") << rig.serial.out;
     const double muTrue = vision::PaperModel().estimate({s.rOuterEqMm() - s.rInnerEqMm(), n}).mu;
@@ -174,9 +174,14 @@ TEST(DeviceCalibration, MeasuresInTheEndFacePlaneAndJournalsWhichCalibration)
     const fw::FlatObject b = rig.serial.last("result");
     EXPECT_EQ(text(b, "status"), "error");
     EXPECT_EQ(text(b, "message"), "frame is 800x600 but calibration 'cam.cal' is for 1456x1088 images");
-    // Both are in the journal with the calibration's name.
+    // Both are in the journal with the calibration's name, and recovery can read them back.
     const std::string journal = rig.storage.read(fw::Journal::kFile).value;
     EXPECT_EQ(fw::Journal::checkLine(journal.substr(0, journal.find('\n'))), 1);
+    fw::Journal again(rig.storage, 8);
+    fw::JournalRecovery rec;
+    ASSERT_TRUE(again.recover(&rec).ok());
+    EXPECT_EQ(rec.records, 2);
+    EXPECT_EQ(rec.cutBytes, 0u);
     EXPECT_NE(journal.find("\"calibration\":\"cam.cal\",\"plane_height_mm\":7.5"), std::string::npos) << journal;
 }
 
