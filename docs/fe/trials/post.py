@@ -1,6 +1,6 @@
 import sys
 p=sys.argv[1]; red_max=float(sys.argv[2]) if len(sys.argv)>2 else 0.5
-R0=5.0; H=7.5
+R0=5.0; H=7.5  # the default specimen (D0 10, H0 15 mm)
 lines=open(p).read().split('\n')
 coords={}; blocks=[]; cur=None; mode=None
 for l in lines:
