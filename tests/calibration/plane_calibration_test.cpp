@@ -10,6 +10,7 @@
 #include <opencv2/calib3d.hpp>
 
 #include "calibration_renderer.h"
+#include "vision/boundary_fit.h"
 #include "vision/plane_calibration.h"
 
 using namespace icacam;
@@ -159,4 +160,68 @@ TEST(PlaneCalibration, EquivalentRadiusMatchesADenseDoublePolygon)
     vision::PlaneCalibration broken = c;
     broken.fx = 0;
     EXPECT_EQ(vision::equivalentRadiusMm(f, cx, cy, broken), 0.0);
+}
+
+// The shape in the plane (what the calibrated elliptical and centre_offset checks use):
+// through an untilted pinhole the plane is the image scaled, so the outline's ellipticity
+// and axis must be the pixel fit's and its centroid the first harmonic's offset; through a
+// tilted camera, a circle in the plane must come back round.
+TEST(PlaneCalibration, OutlineShapeInThePlane)
+{
+    PlaneCalibration c;
+    c.fx = c.fy = 4000;
+    c.cx = 700, c.cy = 500;
+    c.t[2] = 100;
+    c.heightMm = 20; // 0.02 mm/px
+    vision::BoundaryFit f;
+    f.harmonics = 2;
+    f.a0 = 400, f.a[1] = 3;
+    const double c2 = 4, axis = 30 * std::numbers::pi / 180;
+    f.a[2] = c2 * std::cos(2 * axis), f.b[2] = c2 * std::sin(2 * axis);
+    const vision::PlaneOutline o = vision::planeOutline(f, 700, 500, c);
+    ASSERT_TRUE(o.valid);
+    const double pixelEllipticity = 2 * c2 / (f.a0 + c2); // boundary_fit's definition
+    std::printf("outline: ellipticity %.6f (pixel fit %.6f), axis %.3f deg, centroid %.5f %.5f mm\n", o.ellipticity,
+                pixelEllipticity, o.axisDeg, o.centroidX, o.centroidY);
+    EXPECT_NEAR(o.ellipticity, pixelEllipticity, 2e-4);
+    EXPECT_NEAR(o.axisDeg, 30, 0.05);
+    // The first harmonic is the centroid to first order; the cross term a1·c2/a0 (0.03 px
+    // here) separates them.
+    EXPECT_NEAR(o.centroidX, 3 * 0.02, 1e-3);
+    EXPECT_NEAR(o.centroidY, 0, 1e-3);
+    EXPECT_NEAR(o.rEqMm, vision::equivalentRadiusMm(f, 700, 500, c), 1e-12);
+
+    // A 6 mm circle on the end face of the tilted camera, traced in pixels (OpenCV's
+    // projection) and fitted with harmonics as the pipeline does: round in the plane.
+    const PlaneCalibration t = tiltedCamera(7.5);
+    const int n = 256;
+    double radius[n];
+    bool valid[n];
+    std::vector<cv::Point2d> px;
+    for (int i = 0; i < 720; ++i) {
+        const double a = 2 * std::numbers::pi * i / 720;
+        px.push_back(project(t, 6 * std::cos(a), 6 * std::sin(a)));
+    }
+    double mx = 0, my = 0;
+    for (const auto &p : px) mx += p.x / double(px.size()), my += p.y / double(px.size());
+    // Radius of the projected curve on n rays about its mean point (nearest sample in angle).
+    for (int i = 0; i < n; ++i) {
+        const double a = 2 * std::numbers::pi * i / n;
+        double best = 1e9, r = 0;
+        for (const auto &p : px) {
+            const double d = std::fabs(std::remainder(std::atan2(p.y - my, p.x - mx) - a, 2 * std::numbers::pi));
+            if (d < best) best = d, r = std::hypot(p.x - mx, p.y - my);
+        }
+        radius[i] = r, valid[i] = true;
+    }
+    vision::BoundaryFit g;
+    vision::FitOptions opt;
+    opt.maxHarmonics = 8;
+    ASSERT_TRUE(vision::fitBoundary(radius, valid, n, mx, my, opt, &g));
+    const vision::PlaneOutline round = vision::planeOutline(g, mx, my, t);
+    std::printf("tilted camera: pixel ellipticity %.4f, in the plane %.5f, r %.4f mm\n", g.ellipticity,
+                round.ellipticity, round.rEqMm);
+    EXPECT_GT(g.ellipticity, 0.005); // the camera does make it elliptical in the image
+    EXPECT_LT(round.ellipticity, 0.0005);
+    EXPECT_NEAR(round.rEqMm, 6, 0.002);
 }
