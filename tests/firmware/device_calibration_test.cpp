@@ -252,6 +252,26 @@ TEST(ScaleCheck, ReferenceDiscPassesAtTheRightScaleAndFailsAtAWrongOne)
         EXPECT_FALSE(c.find("ratio"));
         EXPECT_NE(text(c, "message").find("no reference disc in view"), std::string::npos) << text(c, "message");
     }
+    // A 1 mm thick disc: its edge is in its top face, 1 mm nearer the camera. Declared, it
+    // passes; measured as if it lay in the fixture's plane, it reads 1.6 % large.
+    {
+        Rig rig;
+        const host::CameraModel cam = host::exampleTiltedCamera();
+        const host::BoardPhotoRenderer r(cam);
+        ASSERT_EQ(calibration::writeCalibrationFile((rig.dir / "cam.cal").string(), fileFor(cam)), "");
+        for (int i = 0; i < 2; ++i) rig.frame("thick" + std::to_string(i) + ".png", r.disc(10, -0.6, 0.3, 1.0, 45, 190, 0.9, 2.0, uint32_t(20 + i)));
+        rig.cfg.calibrationFile = "cam.cal";
+        ASSERT_TRUE(rig.start());
+        rig.say("scalecheck 10 0.5 1");
+        const fw::FlatObject a = rig.serial.last("scalecheck");
+        EXPECT_EQ(text(a, "status"), "pass") << rig.serial.out;
+        rig.say("scalecheck 10 0.5");
+        const fw::FlatObject b = rig.serial.last("scalecheck");
+        std::printf("scale check, 1 mm disc: ratio %.7f with its thickness, %.7f without\n", number(a, "ratio"),
+                    number(b, "ratio"));
+        EXPECT_EQ(text(b, "status"), "fail");
+        EXPECT_NE(text(b, "message").find("scale off by +1."), std::string::npos) << text(b, "message");
+    }
     // Without a calibration: mm_per_px right, then 2 % wrong; a bright disc this time.
     {
         Rig rig;
