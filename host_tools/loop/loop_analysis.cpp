@@ -7,6 +7,7 @@
 #include <random>
 #include <set>
 
+#include "fe_base_data.h"
 #include "manifest.h"
 
 namespace icacam::host::loop {
@@ -367,34 +368,20 @@ std::vector<RankedCandidate> rankCandidates(const std::vector<Candidate> &candid
 
 bool ReductionSlope::load(const std::string &path, std::string *error)
 {
-    std::ifstream f(path);
-    if (!f) { *error = "cannot read '" + path + "'"; return false; }
-    std::string line;
-    std::vector<std::string> header;
-    if (!std::getline(f, line) || !splitCsvLine(line, &header)) { *error = "no header in '" + path + "'"; return false; }
+    FeBaseData base;
+    if (!readFeBaseData(path, &base, error)) return false;
     struct Case { double n = 0, mu = 0; std::vector<std::pair<double, double>> pts; };
-    std::map<std::string, Case> cases;
-    std::vector<std::string> cells;
-    std::vector<double> snapshots; // every reduction an ok run reached
+    std::map<std::pair<long, long>, Case> cases; // by (n, μ): duplicates of a point average out in the fit
+    std::vector<double> snapshots;               // every reduction a base run reached
     bool anyCase = false;
-    while (std::getline(f, line)) {
-        if (!splitCsvLine(line, &cells) || cells.size() != header.size()) continue;
-        ManifestRow row;
-        for (size_t i = 0; i < header.size(); ++i) row.cells[header[i]] = cells[i];
-        double n, mu, red, u, corner = 0;
-        if (row.get("status") != "ok") continue;
-        if (!parseNumber(row.get("n"), &n) || !parseNumber(row.get("mu"), &mu) ||
-            !parseNumber(row.get("reduction"), &red) || !parseNumber(row.get("u_interp_mm"), &u))
-            continue;
-        if (parseNumber(row.get("corner_mm"), &corner) && corner > 0) continue; // graded mesh: another study
+    for (const FeSnapshot &row : base.rows) {
+        const double n = row.n, mu = row.mu, red = row.reduction, u = row.uMm;
         if (!anyCase) nMin_ = nMax_ = n, muMin_ = muMax_ = mu, anyCase = true;
         nMin_ = std::min(nMin_, n), nMax_ = std::max(nMax_, n);
         muMin_ = std::min(muMin_, mu), muMax_ = std::max(muMax_, mu);
         snapshots.push_back(red);
-        double d0 = 10;
-        if (parseNumber(row.get("d0_mm"), &d0) && d0 > 0) u *= 10.0 / d0;
-        if (red < 0.349 || u <= 0.02) continue; // before the ICA opens the slope is not u's
-        Case &c = cases[row.get("case")];
+        if (red < 0.349 || u <= kFeUFloorMm) continue; // before the ICA opens the slope is not u's
+        Case &c = cases[{std::lround(n * 1e4), std::lround(mu * 1e4)}];
         c.n = n;
         c.mu = mu;
         c.pts.emplace_back(red, u);

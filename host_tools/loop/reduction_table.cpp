@@ -11,6 +11,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "fe_base_data.h"
 #include "loop_analysis.h"
 #include "manifest.h"
 
@@ -25,57 +26,13 @@ std::string fmt(const char *f, double v)
     return b;
 }
 
-// One FE snapshot's radii, scaled to D0 = 10 mm by geometric similarity.
+// One grid point's radii (D0 = 10 mm): the mean over the base runs that reached it.
 struct Snapshot {
-    double ri = -1, ro = -1, rMax = -1;
-    double mesh = 1e9; // effective element size at the corner: the finest run wins
+    double ri = 0, ro = 0, rMax = 0;
+    int count = 0;
 };
 
 long key(double v) { return std::lround(v * 1e4); } // axis values as read, to 1e-4
-
-// The snapshot grid: ok runs at the most common K, every (n, μ, reduction) they reached.
-bool readSnapshots(const std::string &path, std::map<long, std::map<long, std::map<long, Snapshot>>> *grid,
-                   double *kMpa, std::string *error)
-{
-    std::ifstream f(path);
-    if (!f) { *error = "cannot read '" + path + "'"; return false; }
-    std::string line;
-    std::vector<std::string> header, cells;
-    if (!std::getline(f, line) || !splitCsvLine(line, &header)) { *error = "no header in '" + path + "'"; return false; }
-    std::vector<ManifestRow> rows;
-    std::map<long, int> kCount;
-    while (std::getline(f, line)) {
-        if (!splitCsvLine(line, &cells) || cells.size() != header.size()) continue;
-        ManifestRow row;
-        for (size_t i = 0; i < header.size(); ++i) row.cells[header[i]] = cells[i];
-        double k;
-        if (row.get("status") != "ok" || !parseNumber(row.get("k_mpa"), &k)) continue;
-        ++kCount[std::lround(k)];
-        rows.push_back(std::move(row));
-    }
-    if (kCount.empty()) { *error = "no ok rows in '" + path + "'"; return false; }
-    long bestK = 0;
-    int best = -1;
-    for (auto [k, c] : kCount)
-        if (c > best) best = c, bestK = k; // ties: the smaller K, deterministically
-    *kMpa = double(bestK);
-    for (const ManifestRow &row : rows) {
-        double k, n, mu, red, ri, ro, rMax, d0 = 10, elem = 0, corner = 0;
-        if (!parseNumber(row.get("k_mpa"), &k) || std::lround(k) != bestK) continue;
-        if (!parseNumber(row.get("n"), &n) || !parseNumber(row.get("mu"), &mu) ||
-            !parseNumber(row.get("reduction"), &red) || !parseNumber(row.get("r_i_mm"), &ri) ||
-            !parseNumber(row.get("r_o_interp_mm"), &ro) || !parseNumber(row.get("r_max_mm"), &rMax))
-            continue;
-        if (parseNumber(row.get("d0_mm"), &d0) && !(d0 > 0)) continue;
-        parseNumber(row.get("elem_mm"), &elem);
-        const double mesh = parseNumber(row.get("corner_mm"), &corner) && corner > 0 ? corner : elem;
-        Snapshot &s = (*grid)[key(n)][key(mu)][key(red)];
-        if (mesh >= s.mesh) continue;
-        const double g = 10.0 / d0;
-        s = {ri * g, ro * g, rMax * g, mesh};
-    }
-    return true;
-}
 
 } // namespace
 
@@ -83,9 +40,16 @@ std::string reductionTableText(const std::string &sweepCsv, const std::string &s
 {
     ReductionSlope slope;
     if (!slope.load(sweepCsv, error)) return {};
+    FeBaseData base;
+    if (!readFeBaseData(sweepCsv, &base, error)) return {};
     std::map<long, std::map<long, std::map<long, Snapshot>>> grid;
-    double kMpa = 0;
-    if (!readSnapshots(sweepCsv, &grid, &kMpa, error)) return {};
+    for (const FeSnapshot &r : base.rows) {
+        Snapshot &p = grid[key(r.n)][key(r.mu)][key(r.reduction)];
+        p.ri += r.riMm, p.ro += r.roMm, p.rMax += r.rMaxMm, ++p.count;
+    }
+    for (auto &[n, byMu] : grid)
+        for (auto &[mu, byR] : byMu)
+            for (auto &[r, p] : byR) p.ri /= p.count, p.ro /= p.count, p.rMax /= p.count;
     std::set<long> ns, mus, rs;
     for (auto &[n, byMu] : grid) {
         ns.insert(n);
@@ -104,8 +68,10 @@ std::string reductionTableText(const std::string &sweepCsv, const std::string &s
     o += "//   then a quadratic surface c0 + c1 n + c2 μ + c3 n² + c4 nμ + c5 μ² through those slopes\n";
     o += "//   (the same fit as `icacam loop`, host_tools/loop/loop_analysis.cpp, ReductionSlope);\n";
     o += "// - the reductions the linear carry covers (kReductionMin..kReductionMax);\n";
-    o += "// - R_i, R_o (r_o_interp_mm), R_max at every snapshot of the ok runs at the most common K,\n";
-    o += "//   scaled to D0 = 10 mm; -1 marks a point without data.\n";
+    o += "// - R_i, R_o (r_o_interp_mm), R_max at every snapshot, scaled to D0 = 10 mm; -1 marks a point\n";
+    o += "//   without data.\n";
+    o += "// Base data (host_tools/loop/fe_base_data.h, chosen as `icacam fe fit` does): mesh " + base.mesh +
+         ",\n// K " + fmt("%g", base.kMpa) + " MPa, E 210 GPa, D0 10, H0 15 mm; ok runs and the snapshots later-stopped runs reached.\n";
     o += "namespace icacam::vision::reduction_table {\n";
     o += "inline constexpr const char *kProvenance = \"icacam loop table --fe-sweep " + sweepName + "\";\n";
     o += "inline constexpr double kBaseReduction = 0.5;\n";
@@ -121,7 +87,7 @@ std::string reductionTableText(const std::string &sweepCsv, const std::string &s
     o += "inline constexpr double kMaxCurvatureMm = " + fmt("%.6g", slope.maxCurvature()) + ";\n";
     o += "inline constexpr double kReductionMin = " + fmt("%.6g", slope.reductionMin()) + ", kReductionMax = " +
          fmt("%.6g", slope.reductionMax()) + ";\n";
-    o += "inline constexpr double kSnapshotKMpa = " + fmt("%.6g", kMpa) + ";\n";
+    o += "inline constexpr double kSnapshotKMpa = " + fmt("%.6g", base.kMpa) + ";\n";
     o += "inline constexpr int kNCount = " + std::to_string(ns.size()) + ", kMuCount = " + std::to_string(mus.size()) +
          ", kRCount = " + std::to_string(rs.size()) + ";\n";
     auto axis = [&](const char *name, const char *count, const std::set<long> &v) {
@@ -147,7 +113,7 @@ std::string reductionTableText(const std::string &sweepCsv, const std::string &s
                         auto b = a->second.find(mu);
                         if (b != a->second.end()) {
                             auto c = b->second.find(r);
-                            if (c != b->second.end()) v = c->second.*field;
+                            if (c != b->second.end() && c->second.count > 0) v = c->second.*field;
                         }
                     }
                     o += (first ? "" : ", ") + fmt("%.4f", v) + "f";

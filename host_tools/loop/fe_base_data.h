@@ -1,0 +1,26 @@
+#pragma once
+// The FE snapshots the loop's du/dr and the generated reduction table stand on: one mesh and
+// one K out of data/fe/*.csv, chosen as `icacam fe fit` chooses its base data (host_tools/fe/
+// fe_fit.cpp): the most common mesh (element, element size, corner size) among the rows at
+// 50 % reduction, then the most common K on it; E 210 GPa, D0 10, H0 15 mm. Rows of runs that
+// stopped later (status failed) count for the snapshots they reached: those are converged
+// states. Columns are read by name; added columns are ignored.
+#include <string>
+#include <vector>
+
+namespace icacam::host::loop {
+
+struct FeSnapshot {
+    double n = 0, mu = 0, reduction = 0;
+    double uMm = 0, riMm = 0, roMm = 0, rMaxMm = 0; // scaled to D0 = 10 mm
+};
+
+struct FeBaseData {
+    std::string mesh; // "CAX4R h0.2 c0": element, size, corner
+    double kMpa = 0;
+    std::vector<FeSnapshot> rows;
+};
+
+bool readFeBaseData(const std::string &path, FeBaseData *out, std::string *error);
+
+} // namespace icacam::host::loop
