@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <string>
 
+#include <unistd.h>
+
 #include "loop_command.h"
 #include "synth_loop_set.h"
 
@@ -20,7 +22,8 @@ const std::string kSweep = std::string(ICACAM_SOURCE_DIR) + "/data/fe/sweep.csv"
 
 LoopSummary runSet(const std::string &name, LoopEffect effect, uint32_t seed)
 {
-    const fs::path dir = fs::temp_directory_path() / ("icacam_loop_images_" + name);
+    // One directory per process: other worktrees run the same suite at the same time.
+    const fs::path dir = fs::temp_directory_path() / ("icacam_loop_images_" + name + "_" + std::to_string(::getpid()));
     fs::remove_all(dir);
     LoopSetOptions opt;
     opt.effect = effect;

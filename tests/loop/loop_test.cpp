@@ -10,6 +10,8 @@
 #include <random>
 #include <string>
 
+#include <unistd.h>
+
 #include "loop_analysis.h"
 #include "loop_command.h"
 #include "vision/paper_model.h"
@@ -26,7 +28,8 @@ const std::string kSweep = std::string(ICACAM_SOURCE_DIR) + "/data/fe/sweep.csv"
 // Writes a manifest of `count` radii-only records and returns its path.
 std::string makeSet(const std::string &name, Effect effect, int count, uint32_t seed)
 {
-    const fs::path dir = fs::temp_directory_path() / ("icacam_loop_test_" + name);
+    // One directory per process: other worktrees run the same suite at the same time.
+    const fs::path dir = fs::temp_directory_path() / ("icacam_loop_test_" + name + "_" + std::to_string(::getpid()));
     fs::create_directories(dir);
     const std::string path = (dir / "manifest.csv").string();
     std::ofstream f(path);
@@ -74,6 +77,7 @@ LoopSummary run(const std::string &name, Effect effect, uint32_t seed)
     EXPECT_TRUE(fs::exists(fs::path(report) / "ranking.csv"));
     EXPECT_TRUE(fs::exists(fs::path(report) / "report.md"));
     EXPECT_TRUE(fs::exists(fs::path(report) / "before_after.png"));
+    fs::remove_all(fs::path(manifest).parent_path());
     return s;
 }
 

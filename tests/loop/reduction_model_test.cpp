@@ -4,9 +4,12 @@
 // snapshots do not cover.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <string>
+
+#include <unistd.h>
 
 #include "friction_models.h"
 #include "loop_analysis.h"
@@ -53,7 +56,7 @@ TEST(ReductionTable, GeneratorReadsColumnsByNameAndIgnoresAddedOnes)
     // A richer sweep (columns moved and added, as the FE engineer's next runs will be) gives
     // the same table.
     std::ifstream in(kSweep);
-    const std::string path = ::testing::TempDir() + "icacam_sweep_extra.csv";
+    const std::string path = ::testing::TempDir() + "icacam_sweep_extra_" + std::to_string(::getpid()) + ".csv";
     std::ofstream out(path);
     std::string line;
     bool header = true;
@@ -65,6 +68,7 @@ TEST(ReductionTable, GeneratorReadsColumnsByNameAndIgnoresAddedOnes)
     std::string err;
     const std::string a = reductionTableText(kSweep, "data/fe/sweep.csv", &err);
     const std::string b = reductionTableText(path, "data/fe/sweep.csv", &err);
+    std::remove(path.c_str());
     ASSERT_FALSE(b.empty()) << err;
     EXPECT_EQ(a, b);
 }
