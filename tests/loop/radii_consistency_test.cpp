@@ -117,8 +117,18 @@ TEST(RadiiConsistency, ThroughThePipelineOnRenderedImages)
     }
     // A specimen pressed to 54.5 % without saying so: the image tells (flag, estimate).
     const Rendered far = render(0.25, 0.15, 0.545);
-    const auto m = measure(far, 0.25, far.scene.mmPerPx, 0, model);
+    auto m = measure(far, 0.25, far.scene.mmPerPx, 0, model);
     ASSERT_TRUE(m.hasValue());
     EXPECT_TRUE(m.flags & vision::kFlagScaleSuspect) << "z " << m.rMaxZ;
     EXPECT_NEAR(m.reductionEst, 0.545, 0.008);
+    // Declared, inside or outside what the model's FE data cover: the model's range flag
+    // reaches the measurement (never a silent value).
+    m = measure(far, 0.25, far.scene.mmPerPx, 15 * (1 - 0.545), model);
+    ASSERT_TRUE(m.hasValue());
+    EXPECT_EQ((m.flags & vision::kFlagReductionOutside) != 0, 0.545 > vision::ReductionCorrectedModel::reductionMax());
+    EXPECT_FALSE(m.flags & vision::kFlagRadiiInconsistent) << "z " << m.rMaxZ;
+    if (m.flags & vision::kFlagReductionOutside) EXPECT_EQ(m.status, vision::Status::Warn);
+    const Rendered mid = render(0.25, 0.15, 0.515);
+    m = measure(mid, 0.25, mid.scene.mmPerPx, 15 * (1 - 0.515), model);
+    EXPECT_FALSE(m.flags & vision::kFlagReductionOutside);
 }

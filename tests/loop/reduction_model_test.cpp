@@ -118,9 +118,11 @@ TEST(ReductionCorrectedModel, CarriesAForwardReductionEffectBack)
     // return μ, where the paper's reads more (r > 0.5) or less (r < 0.5) friction.
     PaperModel paper;
     ReductionCorrectedModel model(paper, "paper_reduction");
+    // Reductions across what the table covers (it widens when the FE runs to 60 % land).
+    const double lo = ReductionCorrectedModel::reductionMin(), hi = ReductionCorrectedModel::reductionMax();
     for (double n : {0.1, 0.25, 0.4})
         for (double mu : {0.1, 0.15, 0.2})
-            for (double r : {0.47, 0.485, 0.515, 0.525}) {
+            for (double r : {lo + 0.05 * (hi - lo), 0.5 - 0.3 * (0.5 - lo), 0.5 + 0.3 * (hi - 0.5), hi - 0.001}) {
                 const double u50 = uForMu(paper, mu, n);
                 const double u = u50 + ReductionCorrectedModel::slopeAt(n, mu) * (r - 0.5);
                 const auto e = model.estimate(inputs(u, n, 15 * (1 - r)));
