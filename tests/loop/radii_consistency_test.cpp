@@ -127,7 +127,9 @@ TEST(RadiiConsistency, ThroughThePipelineOnRenderedImages)
     ASSERT_TRUE(m.hasValue());
     EXPECT_EQ((m.flags & vision::kFlagReductionOutside) != 0, 0.545 > vision::ReductionCorrectedModel::reductionMax());
     EXPECT_FALSE(m.flags & vision::kFlagRadiiInconsistent) << "z " << m.rMaxZ;
-    if (m.flags & vision::kFlagReductionOutside) EXPECT_EQ(m.status, vision::Status::Warn);
+    if (m.flags & vision::kFlagReductionOutside) {
+        EXPECT_EQ(m.status, vision::Status::Warn);
+    }
     const Rendered mid = render(0.25, 0.15, 0.515);
     m = measure(mid, 0.25, mid.scene.mmPerPx, 15 * (1 - 0.515), model);
     EXPECT_FALSE(m.flags & vision::kFlagReductionOutside);
