@@ -217,6 +217,31 @@ int reportCommand(const std::vector<std::string> &in, const std::string &outDir,
                       paper.estimate(mi).mu, p.ri, p.ro, p.rMax, p.force);
         md << b;
     }
+    // Beyond the paper: u over the reduction range the snapshots cover (30–60 %).
+    std::vector<double> reds;
+    std::map<std::pair<double, double>, std::map<double, double>> uByRed;
+    for (int k = 6; k <= 12; ++k) {
+        const double red = k * 0.05;
+        const auto at = basePoints(in, red);
+        if (at.empty()) continue;
+        reds.push_back(red);
+        for (const auto &[key, p] : at) uByRed[key][red] = p.u;
+    }
+    md << "\n## u (mm) over the height reduction\n\n| n | μ |";
+    for (double r : reds) md << " " << std::lround(100 * r) << " % |";
+    md << "\n|---|---|";
+    for (size_t k = 0; k < reds.size(); ++k) md << "---|";
+    md << "\n";
+    for (const auto &[key, byRed] : uByRed) {
+        md << "| " << key.first << " | " << key.second << " |";
+        for (double r : reds) {
+            const auto it = byRed.find(r);
+            char b[32] = " – |";
+            if (it != byRed.end()) std::snprintf(b, sizeof b, " %.3f |", it->second);
+            md << b;
+        }
+        md << "\n";
+    }
     // Fig. 3-like plot: μ over u, one colour per n, FE points and the paper's curves.
     std::ofstream svg(fs::path(outDir) / "mu_vs_u.svg");
     const double W = 640, H = 420, x0 = 60, y0 = 380, sx = 500 / 1.4, sy = 340 / 0.35;
