@@ -29,12 +29,13 @@ std::string FeCase::label() const
     if (platenMm > 0) s += "_p" + fmt("%g", platenMm);
     if (stickSlope != 1e4) s += "_st" + fmt("%g", stickSlope);
     if (incMax != 0.01) s += "_im" + fmt("%g", incMax);
+    if (foldZoneMm > 0) s += "_fz" + fmt("%g", foldZoneMm);
     return s;
 }
 
 namespace {
 // Node positions on [0, len]: uniform `elem`, or graded from `fine` at len to `elem`.
-std::vector<double> axisNodes(double len, double elem, double fine)
+std::vector<double> axisNodes(double len, double elem, double fine, double zone = 0)
 {
     std::vector<double> x;
     if (fine <= 0 || fine >= elem) {
@@ -47,7 +48,7 @@ std::vector<double> axisNodes(double len, double elem, double fine)
     while (sum + h < len - 1e-9) {
         sizes.push_back(h);
         sum += h;
-        h = std::min(elem, h * 1.2);
+        if (sum >= zone - 1e-9) h = std::min(elem, h * 1.2);
     }
     // Spread the remainder over the coarse elements so the sizes sum to len.
     const double rest = len - sum;
@@ -67,7 +68,7 @@ FeMesh meshFor(const FeCase &c)
     FeMesh m;
     m.q = c.element == "CAX8R" ? 2 : 1;
     m.r = axisNodes(c.d0Mm / 2, c.elemMm, c.cornerMm);
-    m.z = axisNodes(c.h0Mm / 2, c.elemMm, c.cornerMm);
+    m.z = axisNodes(c.h0Mm / 2, c.elemMm, c.cornerMm, c.foldZoneMm);
     m.nr = int(m.r.size()) - 1;
     m.nz = int(m.z.size()) - 1;
     auto refine = [&](const std::vector<double> &x) {

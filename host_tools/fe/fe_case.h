@@ -22,6 +22,10 @@ struct FeCase {
     // > 0: graded mesh, cornerMm at the end-face corner, growing by 1.2 per element
     // towards the axis and the mid-plane until elemMm (the ICA is then resolved to cornerMm).
     double cornerMm = 0;
+    // > 0 (with cornerMm): the lateral surface keeps cornerMm elements over this length below
+    // the corner before the grading starts, so the nodes that fold onto the platen (the ICA,
+    // ≈ u × 1.3 of former side at 50 %) are evenly spaced instead of ×1.2 sparser per node.
+    double foldZoneMm = 0;
     double platenMm = 0;                    // platen (master) segment length; 0: max(cornerMm, elemMm / 2)
     // Specimen element: "CAX4R" (linear, reduced integration) or "CAX8R" (quadratic,
     // reduced integration: follows the fold-over at high μ where CAX4R diverges).

@@ -35,6 +35,7 @@ const char *kUsage =
     "case options: --k 500 --n 0.25 --mu 0.2 --e 210000 --d0 10 --h0 15 --reduction 0.5\n"
     "              --elem 0.2 --corner 0 --contact-slope 1e5 --stick-slope 1e4 --fallback-stick-slope 1e3\n"
     "              --inc-max 0.01 --element CAX4R|CAX8R --platen 0 (master segment, mm)\n"
+    "              --fold-zone 0 (mm of side kept at the corner size)\n"
     "              --ccx ccx --timeout 3600 --work /tmp/icacam-fe\n";
 
 struct Parsed {
@@ -68,6 +69,7 @@ bool setCaseKey(FeCase &c, const std::string &key, double v)
     else if (key == "elem") c.elemMm = v;
     else if (key == "corner") c.cornerMm = v;
     else if (key == "platen") c.platenMm = v;
+    else if (key == "fold-zone") c.foldZoneMm = v;
     else if (key == "contact-slope") c.contactSlope = v;
     else if (key == "stick-slope") c.stickSlope = v;
     else if (key == "inc-max") c.incMax = v;

@@ -136,3 +136,17 @@ TEST(FeDeck, QuadraticElementsHaveMidSideNodes)
     bad.element = "CAX4";
     EXPECT_THROW(makeDeck(bad), std::invalid_argument);
 }
+
+TEST(FeDeck, FoldZoneKeepsTheSideFine)
+{
+    FeCase c;
+    c.elemMm = 0.5;
+    c.cornerMm = 0.1;
+    c.foldZoneMm = 1.5;
+    const FeMesh m = meshFor(c);
+    // The top 1.5 mm of the side in 0.1 mm elements, then graded; the radius is graded as before.
+    for (int j = m.nz; j > m.nz - 15; --j) EXPECT_NEAR(m.z[j] - m.z[j - 1], 0.1, 1e-9) << j;
+    EXPECT_GT(m.z[m.nz - 15] - m.z[m.nz - 16], 0.1 + 1e-6);
+    EXPECT_NEAR(m.r[m.nr - 1] - m.r[m.nr - 2], 0.12, 1e-9);
+    EXPECT_NE(c.label().find("_fz1.5"), std::string::npos);
+}
