@@ -13,6 +13,8 @@
 // K 500 MPa, E 210 GPa, D0 10, H0 15 mm; ok runs and the snapshots later-stopped runs reached.
 namespace icacam::vision::reduction_table {
 inline constexpr const char *kProvenance = "icacam loop table --fe-sweep data/fe/sweep.csv";
+// The sweep CSVs (repository paths, space-separated): `icacam loop` reads the same by default.
+inline constexpr const char *kFeSources = "data/fe/sweep.csv";
 inline constexpr double kBaseReduction = 0.5;
 inline constexpr double kD0Mm = 10;
 inline constexpr int kSlopeCases = 19;

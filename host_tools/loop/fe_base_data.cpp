@@ -9,15 +9,22 @@
 
 namespace icacam::host::loop {
 
-bool readFeBaseData(const std::string &path, FeBaseData *out, std::string *error)
+namespace {
+
+struct Row {
+    std::string mesh;
+    FeSnapshot s;
+    double k = 0;
+};
+
+// Every snapshot row of one sweep CSV with the columns the base data need, by name.
+bool readRows(const std::string &path, std::vector<Row> *rows, std::string *error)
 {
     std::ifstream f(path);
     if (!f) { *error = "cannot read '" + path + "'"; return false; }
     std::string line;
     std::vector<std::string> header, cells;
     if (!std::getline(f, line) || !splitCsvLine(line, &header)) { *error = "no header in '" + path + "'"; return false; }
-    struct Row { std::string mesh; FeSnapshot s; double k = 0; };
-    std::vector<Row> rows;
     while (std::getline(f, line)) {
         if (!splitCsvLine(line, &cells) || cells.size() != header.size()) continue;
         ManifestRow row;
@@ -40,12 +47,23 @@ bool readFeBaseData(const std::string &path, FeBaseData *out, std::string *error
         char key[96];
         std::snprintf(key, sizeof key, "%s h%g c%g", row.get("element", "CAX4R").c_str(), elem, corner);
         r.mesh = key;
-        rows.push_back(std::move(r));
+        rows->push_back(std::move(r));
     }
+    return true;
+}
+
+} // namespace
+
+bool readFeBaseData(const std::vector<std::string> &paths, FeBaseData *out, std::string *error)
+{
+    if (paths.empty()) { *error = "no FE sweep CSV given"; return false; }
+    std::vector<Row> rows;
+    for (const std::string &path : paths)
+        if (!readRows(path, &rows, error)) return false;
     std::map<std::string, int> meshCount;
     for (const Row &r : rows)
         if (std::fabs(r.s.reduction - 0.5) < 1e-6) ++meshCount[r.mesh];
-    if (meshCount.empty()) { *error = "no FE run reached 50 % reduction in '" + path + "'"; return false; }
+    if (meshCount.empty()) { *error = "no FE run reached 50 % reduction in the sweep CSV(s) given"; return false; }
     int best = 0;
     for (const auto &[m, c] : meshCount)
         if (c > best) best = c, out->mesh = m;

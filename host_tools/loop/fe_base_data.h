@@ -21,6 +21,8 @@ struct FeBaseData {
     std::vector<FeSnapshot> rows;
 };
 
-bool readFeBaseData(const std::string &path, FeBaseData *out, std::string *error);
+// paths: one or more sweep CSVs (e.g. data/fe/sweep.csv and a newer sweep_*.csv); the base
+// mesh and K are chosen over all of them together.
+bool readFeBaseData(const std::vector<std::string> &paths, FeBaseData *out, std::string *error);
 
 } // namespace icacam::host::loop

@@ -366,10 +366,10 @@ std::vector<RankedCandidate> rankCandidates(const std::vector<Candidate> &candid
     return ranked;
 }
 
-bool ReductionSlope::load(const std::string &path, std::string *error)
+bool ReductionSlope::load(const std::vector<std::string> &paths, std::string *error)
 {
     FeBaseData base;
-    if (!readFeBaseData(path, &base, error)) return false;
+    if (!readFeBaseData(paths, &base, error)) return false;
     struct Case { double n = 0, mu = 0; std::vector<std::pair<double, double>> pts; };
     std::map<std::pair<long, long>, Case> cases; // by (n, μ): duplicates of a point average out in the fit
     std::vector<double> snapshots;               // every reduction a base run reached
@@ -414,7 +414,7 @@ bool ReductionSlope::load(const std::string &path, std::string *error)
     }
     for (int i = 0; i < 6; ++i) ata[size_t(i * 6 + i)] += 1e-9; // keeps a thin grid solvable
     if (cases_ < 6 || !solve(ata, atb, &coef_)) {
-        *error = "too few FE cases with an open ICA over reductions 0.35-0.5 in '" + path + "'";
+        *error = "too few FE cases (" + std::to_string(cases_) + " of the 6 needed) with an open ICA over reductions >= 0.35 in the base data (" + base.mesh + ")";
         return false;
     }
     // Coverage of the linear carry about 50 %: the snapshots' span plus half their spacing,

@@ -97,7 +97,9 @@ std::vector<double> cvPredict(const Candidate &c, const std::vector<double> &res
 // (n, μ) through those slopes. Built from data/fe/sweep.csv.
 class ReductionSlope {
 public:
-    bool load(const std::string &sweepCsv, std::string *error);
+    bool load(const std::string &sweepCsv, std::string *error) { return load(std::vector<std::string>{sweepCsv}, error); }
+    // One or more sweep CSVs: the base data are chosen over all of them (fe_base_data.h).
+    bool load(const std::vector<std::string> &sweepCsvs, std::string *error);
     // Direct construction (tests): slope = c0 + c1 n + c2 μ + c3 n² + c4 nμ + c5 μ².
     void setCoefficients(const std::vector<double> &c) { coef_ = c; }
     double slope(double n, double mu) const;

@@ -15,8 +15,10 @@
 #include "reduction_table.h"
 #include "vision/end_face_analyzer.h"
 
-#ifndef ICACAM_LOOP_DEFAULT_SWEEP
-#define ICACAM_LOOP_DEFAULT_SWEEP "data/fe/sweep.csv"
+#include "vision/reduction_table.h"
+
+#ifndef ICACAM_LOOP_SOURCE_DIR
+#define ICACAM_LOOP_SOURCE_DIR "."
 #endif
 
 namespace icacam::host {
@@ -28,7 +30,7 @@ namespace {
 
 const char *kUsage =
     "usage: icacam loop --manifest FILE --report DIR [--model paper] [--folds 5] [--seed S]\n"
-    "                   [--fe-sweep CSV] [--alpha 0.05]\n"
+    "                   [--fe-sweep CSV]... [--alpha 0.05]\n"
     "Measures every record (image + mm_per_px, or r_inner_mm + r_outer_mm), takes the residual\n"
     "μ_model − mu_ref, ranks every recorded column and every pipeline diagnostic by the k-fold\n"
     "cross-validated gain of a one-candidate model of the residual, and corrects the leading\n"
@@ -37,6 +39,20 @@ const char *kUsage =
     "report.md, records.csv and PNG plots to DIR (docs/loop.md).\n"
     "       icacam loop table [--fe-sweep CSV] [--out vision/reduction_table.h]\n"
     "Writes the generated table (FE du/dr and snapshot radii) the device's models read.\n";
+
+// A repository file: under the source tree this tool was built from, else relative to here.
+std::string repoFile(const std::string &name)
+{
+    const fs::path p = fs::path(ICACAM_LOOP_SOURCE_DIR) / name;
+    return fs::exists(p) ? p.string() : name;
+}
+
+std::string joined(const std::vector<std::string> &v)
+{
+    std::string s;
+    for (const std::string &x : v) s += (s.empty() ? "" : ", ") + x;
+    return s;
+}
 
 std::string f4(double v, const char *fmt = "%.4f")
 {
@@ -155,7 +171,7 @@ void plotCandidate(const std::string &path, const Candidate &c, const std::vecto
 } // namespace
 
 LoopSummary runLoop(const std::string &manifestPath, const std::string &reportDir, const std::string &modelName,
-                    const RankingOptions &opt, const std::string &fePath)
+                    const RankingOptions &opt, const std::vector<std::string> &feSweeps)
 {
     auto model = makeFrictionModel(modelName);
     if (!model) throw std::runtime_error("unknown model '" + modelName + "' (known: " + kKnownModels + ")");
@@ -199,7 +215,7 @@ LoopSummary runLoop(const std::string &manifestPath, const std::string &reportDi
     for (const LoopRecord &r : usable) anyRecorded = anyRecorded || r.reduction >= 0;
     if (anyRecorded && !model->correctsReduction()) {
         std::string e;
-        slopeLoaded = slope.load(fePath, &e);
+        slopeLoaded = slope.load(feSweeps, &e);
         if (!slopeLoaded) std::cerr << "icacam loop: no physical correction: " << e << "\n";
         else {
             std::vector<double> change(usable.size(), 0);
@@ -245,7 +261,7 @@ LoopSummary runLoop(const std::string &manifestPath, const std::string &reportDi
     const bool reductionLeads = isReduction && !model->correctsReduction();
     if (reductionLeads) {
         std::string e;
-        if (!slopeLoaded && !slope.load(fePath, &e)) std::cerr << "icacam loop: no physical correction: " << e << "\n";
+        if (!slopeLoaded && !slope.load(feSweeps, &e)) std::cerr << "icacam loop: no physical correction: " << e << "\n";
         else s.physical = true;
     }
     if (s.physical) {
@@ -384,7 +400,7 @@ LoopSummary runLoop(const std::string &manifestPath, const std::string &reportDi
                  "50 % height reduction. The ICA width u grows with the reduction (the contact edge keeps moving "
                  "out while the folded side becomes contact), so the model, which maps u to μ at 50 %, reads a "
                  "deeper upset as more friction. Correction: u50 = u − (du/dr)(r − 0.5), du/dr from the FE sweep "
-                 "(`" << fePath << "`, " << slope.cases() << " cases, quadratic in n and μ), then μ = model(u50, n). "
+                 "(`" << joined(feSweeps) << "`, " << slope.cases() << " cases, quadratic in n and μ), then μ = model(u50, n). "
                  "Check of the FE slope: the least-squares scale of the FE du/dr on these records is "
               << f4(s.slopeScale, "%.3f")
               << (std::fabs(s.slopeScale - 1) <= 0.15
@@ -425,16 +441,28 @@ LoopSummary runLoop(const std::string &manifestPath, const std::string &reportDi
     return s;
 }
 
+std::vector<std::string> splitSources(const std::string &sources)
+{
+    std::vector<std::string> out;
+    size_t at = 0;
+    while (at < sources.size()) {
+        const size_t end = sources.find(' ', at);
+        const std::string part = sources.substr(at, end == std::string::npos ? std::string::npos : end - at);
+        if (!part.empty()) out.push_back(part);
+        if (end == std::string::npos) break;
+        at = end + 1;
+    }
+    return out;
+}
+
 } // namespace loop
 
 int loopCommand(const std::vector<std::string> &args)
 {
-    if (!args.empty() && args[0] == "table") {
-        std::string sweep = ICACAM_LOOP_DEFAULT_SWEEP;
-        if (!fs::exists(sweep) && fs::exists("data/fe/sweep.csv")) sweep = "data/fe/sweep.csv";
-        return loop::loopTableCommand({args.begin() + 1, args.end()}, sweep);
-    }
-    std::string manifestPath, reportDir, modelName = "paper", fePath = ICACAM_LOOP_DEFAULT_SWEEP;
+    if (!args.empty() && args[0] == "table")
+        return loop::loopTableCommand({args.begin() + 1, args.end()}, repoFile("data/fe/sweep.csv"));
+    std::string manifestPath, reportDir, modelName = "paper";
+    std::vector<std::string> feSweeps;
     loop::RankingOptions opt;
     for (size_t i = 0; i < args.size(); ++i) {
         auto value = [&]() -> std::string {
@@ -445,7 +473,7 @@ int loopCommand(const std::vector<std::string> &args)
         if (args[i] == "--manifest") manifestPath = value();
         else if (args[i] == "--report") reportDir = value();
         else if (args[i] == "--model") modelName = value();
-        else if (args[i] == "--fe-sweep") fePath = value();
+        else if (args[i] == "--fe-sweep") feSweeps.push_back(value());
         else if (args[i] == "--folds") {
             if (!parseNumber(value(), &v) || v < 2 || v > 1000) throw std::runtime_error("--folds: 2 to 1000");
             opt.folds = int(v);
@@ -460,8 +488,11 @@ int loopCommand(const std::vector<std::string> &args)
     }
     if (manifestPath.empty() || reportDir.empty())
         throw std::runtime_error(std::string("--manifest and --report are required\n") + kUsage);
-    if (!fs::exists(fePath) && fs::exists("data/fe/sweep.csv")) fePath = "data/fe/sweep.csv";
-    const loop::LoopSummary s = loop::runLoop(manifestPath, reportDir, modelName, opt, fePath);
+    // By default the FE data the product's table was generated from (its kFeSources).
+    if (feSweeps.empty())
+        for (const std::string &name : loop::splitSources(vision::reduction_table::kFeSources))
+            feSweeps.push_back(repoFile(name));
+    const loop::LoopSummary s = loop::runLoop(manifestPath, reportDir, modelName, opt, feSweeps);
     std::cout << "records " << s.records << " usable " << s.usable << "\n"
               << "rms_before " << f4(s.rmsBefore) << "\ncv_rms_offset " << f4(s.cvRmsOffset) << "\n"
               << "top " << (s.ranking.empty() ? "-" : s.ranking.front().name) << "\n"

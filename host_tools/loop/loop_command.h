@@ -24,8 +24,12 @@ struct LoopSummary {
     double cvRmsPhysicalScaled = 0; // k-fold with that scale fitted per fold
 };
 
-// Runs the whole analysis on a manifest and writes the report folder. fePath: FE sweep CSV.
+// Runs the whole analysis on a manifest and writes the report folder. feSweeps: the FE sweep
+// CSV(s) for du/dr (base data chosen over all of them, fe_base_data.h).
 LoopSummary runLoop(const std::string &manifestPath, const std::string &reportDir, const std::string &modelName,
-                    const RankingOptions &opt, const std::string &fePath);
+                    const RankingOptions &opt, const std::vector<std::string> &feSweeps);
+
+// The space-separated repository paths of a table's kFeSources.
+std::vector<std::string> splitSources(const std::string &sources);
 
 } // namespace icacam::host::loop

@@ -8,10 +8,12 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <vector>
 
 #include <unistd.h>
 
 #include "loop_command.h"
+#include "vision/reduction_table.h"
 #include "manifest.h"
 #include "measure_command.h"
 #include "synth_loop_set.h"
@@ -22,7 +24,15 @@ using namespace icacam::host::loop;
 
 namespace {
 
-const std::string kSweep = std::string(ICACAM_SOURCE_DIR) + "/data/fe/sweep.csv";
+// The FE sweep(s) the product's table was generated from (its kFeSources).
+std::vector<std::string> sweeps()
+{
+    std::vector<std::string> v;
+    for (const std::string &name : splitSources(icacam::vision::reduction_table::kFeSources))
+        v.push_back(std::string(ICACAM_SOURCE_DIR) + "/" + name);
+    return v;
+}
+const std::vector<std::string> kSweep = sweeps();
 
 LoopSummary runSet(const std::string &name, LoopEffect effect, uint32_t seed)
 {

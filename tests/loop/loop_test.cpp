@@ -9,11 +9,13 @@
 #include <fstream>
 #include <random>
 #include <string>
+#include <vector>
 
 #include <unistd.h>
 
 #include "loop_analysis.h"
 #include "loop_command.h"
+#include "vision/reduction_table.h"
 #include "vision/paper_model.h"
 
 namespace fs = std::filesystem;
@@ -23,7 +25,15 @@ namespace {
 
 enum class Effect { Process, Optical, Null };
 
-const std::string kSweep = std::string(ICACAM_SOURCE_DIR) + "/data/fe/sweep.csv";
+// The FE sweep(s) the product's table was generated from (its kFeSources).
+std::vector<std::string> sweeps()
+{
+    std::vector<std::string> v;
+    for (const std::string &name : splitSources(icacam::vision::reduction_table::kFeSources))
+        v.push_back(std::string(ICACAM_SOURCE_DIR) + "/" + name);
+    return v;
+}
+const std::vector<std::string> kSweep = sweeps();
 
 // Writes a manifest of `count` radii-only records and returns its path.
 std::string makeSet(const std::string &name, Effect effect, int count, uint32_t seed)

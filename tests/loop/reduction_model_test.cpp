@@ -8,11 +8,14 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <unistd.h>
 
 #include "friction_models.h"
 #include "loop_analysis.h"
+#include "loop_command.h"
+#include "vision/reduction_table.h"
 #include "reduction_table.h"
 #include "vision/paper_model.h"
 #include "vision/reduction_corrected_model.h"
@@ -24,7 +27,16 @@ using icacam::vision::ReductionCorrectedModel;
 
 namespace {
 
-const std::string kSweep = std::string(ICACAM_SOURCE_DIR) + "/data/fe/sweep.csv";
+// The FE sweep(s) the committed table names as its sources, as the repository names them and
+// as files under the source tree.
+const std::vector<std::string> kNames = splitSources(icacam::vision::reduction_table::kFeSources);
+std::vector<std::string> files()
+{
+    std::vector<std::string> v;
+    for (const std::string &n : kNames) v.push_back(std::string(ICACAM_SOURCE_DIR) + "/" + n);
+    return v;
+}
+const std::vector<std::string> kSweep = files();
 
 ModelInputs inputs(double u, double n, double hFinal, double d0 = 10, double h0 = 15)
 {
@@ -42,33 +54,38 @@ ModelInputs inputs(double u, double n, double hFinal, double d0 = 10, double h0 
 TEST(ReductionTable, CommittedTableMatchesTheSweepItWasGeneratedFrom)
 {
     std::string err;
-    const std::string fresh = reductionTableText(kSweep, "data/fe/sweep.csv", &err);
+    ASSERT_FALSE(kNames.empty());
+    const std::string fresh = reductionTableText(kSweep, kNames, &err);
     ASSERT_FALSE(fresh.empty()) << err;
     std::ifstream f(std::string(ICACAM_SOURCE_DIR) + "/vision/reduction_table.h", std::ios::binary);
     std::stringstream committed;
     committed << f.rdbuf();
     EXPECT_EQ(committed.str(), fresh)
-        << "stale table: rerun `icacam loop table --fe-sweep data/fe/sweep.csv --out vision/reduction_table.h`";
+        << "stale table: rerun `" << icacam::vision::reduction_table::kProvenance << " --out vision/reduction_table.h`";
 }
 
 TEST(ReductionTable, GeneratorReadsColumnsByNameAndIgnoresAddedOnes)
 {
     // A richer sweep (columns moved and added, as the FE engineer's next runs will be) gives
     // the same table.
-    std::ifstream in(kSweep);
-    const std::string path = ::testing::TempDir() + "icacam_sweep_extra_" + std::to_string(::getpid()) + ".csv";
-    std::ofstream out(path);
-    std::string line;
-    bool header = true;
-    while (std::getline(in, line)) {
-        out << (header ? "extra_a," : "1.5,") << line << (header ? ",extra_b\n" : ",x\n");
-        header = false;
+    std::vector<std::string> widened;
+    for (size_t k = 0; k < kSweep.size(); ++k) {
+        std::ifstream in(kSweep[k]);
+        const std::string path = ::testing::TempDir() + "icacam_sweep_extra_" + std::to_string(::getpid()) + "_" +
+                                 std::to_string(k) + ".csv";
+        std::ofstream out(path);
+        std::string line;
+        bool header = true;
+        while (std::getline(in, line)) {
+            out << (header ? "extra_a," : "1.5,") << line << (header ? ",extra_b\n" : ",x\n");
+            header = false;
+        }
+        widened.push_back(path);
     }
-    out.close();
     std::string err;
-    const std::string a = reductionTableText(kSweep, "data/fe/sweep.csv", &err);
-    const std::string b = reductionTableText(path, "data/fe/sweep.csv", &err);
-    std::remove(path.c_str());
+    const std::string a = reductionTableText(kSweep, kNames, &err);
+    const std::string b = reductionTableText(widened, kNames, &err);
+    for (const std::string &p : widened) std::remove(p.c_str());
     ASSERT_FALSE(b.empty()) << err;
     EXPECT_EQ(a, b);
 }
@@ -76,7 +93,7 @@ TEST(ReductionTable, GeneratorReadsColumnsByNameAndIgnoresAddedOnes)
 TEST(ReductionTable, MissingSweepIsAClearError)
 {
     std::string err;
-    EXPECT_TRUE(reductionTableText("/nonexistent/sweep.csv", "x", &err).empty());
+    EXPECT_TRUE(reductionTableText({"/nonexistent/sweep.csv"}, {"x"}, &err).empty());
     EXPECT_NE(err.find("cannot read"), std::string::npos) << err;
 }
 
