@@ -59,7 +59,7 @@ bool EndFaceAnalyzer::refineCentre(const LumaView &v, double r0Px, double *cx, d
     bool valid[kCoarseRays];
     const double rA = kCoarseStart * r0Px, rB = kCoarseEnd * r0Px;
     // The Hough centre can be a cell or two off (a distractor circle in the fixture pulls
-    // the votes): while the fit still moves the centre by more than a few pixels, the
+    // the votes): while the fit still moves the centre by more than 6 % of the radius, the
     // rays are cast again from the moved centre (rarely more than once).
     for (int iteration = 0; iteration < 3; ++iteration) {
         const int rays = kCoarseRays / 2;
@@ -89,7 +89,7 @@ bool EndFaceAnalyzer::refineCentre(const LumaView &v, double r0Px, double *cx, d
         const double moved = std::hypot(fit.centreX - *cx, fit.centreY - *cy);
         *cx = fit.centreX;
         *cy = fit.centreY;
-        if (moved < std::max(3.0, 0.03 * r0Px)) break;
+        if (moved < std::max(3.0, 0.06 * r0Px)) break;
     }
     // Pass 2: 64 rays about the refined centre, kept for the mean profile and the
     // silhouette (the fine stage's contact-edge fit absorbs what offset remains).

@@ -213,6 +213,22 @@ bool RingSearch::locateOnRays(int sign, const double *loPx, const double *hiPx, 
     bool valid[kRays];
     int nSteps = 0;
     const int reach = std::max(1, int(reachPx / fineStep_ + 0.5));
+    if (!pts) {
+        // A first pass only places the second pass's narrow windows: every other ray (128,
+        // still far more than the curve's 9 coefficients need), then the curve at all rays.
+        constexpr int kHalf = kRays / 2;
+        for (int h = 0; h < kHalf; ++h) {
+            const int i = 2 * h;
+            const int lo = int(std::floor((loPx[i] - fineStart_[i]) / fineStep_));
+            const int hi = int(std::ceil((hiPx[i] - fineStart_[i]) / fineStep_));
+            const EdgePeak p = strongestEdge(deriv + size_t(i) * kMaxFine, fineCount_, lo, hi, sign, interior);
+            valid[h] = p.found && p.value >= minStrength;
+            radius[h] = fineStart_[i] + p.position.toDouble() * fineStep_;
+        }
+        if (!fitBoundary(radius, valid, kHalf, cx, cy, FitOptions{}, fit)) return false;
+        for (int i = 0; i < kRays; ++i) curveOut[i] = fit->radiusAt(rayCos_[i], raySin_[i]);
+        return true;
+    }
     for (int i = 0; i < kRays; ++i) {
         const int lo = int(std::floor((loPx[i] - fineStart_[i]) / fineStep_));
         const int hi = int(std::ceil((hiPx[i] - fineStart_[i]) / fineStep_));
@@ -220,7 +236,6 @@ bool RingSearch::locateOnRays(int sign, const double *loPx, const double *hiPx, 
         const EdgePeak p = strongestEdge(d, fineCount_, lo, hi, sign, interior);
         valid[i] = p.found && p.value >= minStrength;
         radius[i] = fineStart_[i] + p.position.toDouble() * fineStep_;
-        if (!pts) continue; // a first pass: only the curve is wanted
         pts[i] = {Q16_16::fromDouble(cx + radius[i] * rayCos_[i]),
                   Q16_16::fromDouble(cy + radius[i] * raySin_[i]), Q16_16::fromDouble(radius[i]),
                   p.value, valid[i]};
@@ -232,7 +247,6 @@ bool RingSearch::locateOnRays(int sign, const double *loPx, const double *hiPx, 
             steps[nSteps++] = (double(row[j + reach]) - double(row[j - reach])) / 256.0;
     }
     if (!fitBoundary(radius, valid, kRays, cx, cy, FitOptions{}, fit, curveOut)) return false;
-    if (!pts) return true;
     // Points the robust fit rejected are shown as such (overlays, diagnostics).
     const double keep = std::max(0.75, 3 * fit->scatterPx);
     for (int i = 0; i < kRays; ++i) pts[i].valid = pts[i].valid && std::fabs(radius[i] - curveOut[i]) <= keep;
@@ -256,20 +270,21 @@ double RingSearch::silhouetteFromRays(const double *outerR)
     for (int i = 0; i < kCoarse; ++i) {
         valid[i] = false;
         const uint16_t *row = coarse + size_t(i) * kMaxCoarse;
-        prefix[0] = 0;
-        bool inside = true;
-        for (int j = 0; j < count; ++j) {
-            inside = inside && row[j] != kOutsideFrame;
-            prefix[j + 1] = prefix[j] + (row[j] == kOutsideFrame ? 0 : row[j]);
-        }
-        if (!inside) continue;
-        // Step across r: mean of the w samples outside minus the w samples inside (Q8).
-        auto stepAt = [&](int j) { return (prefix[j + 1 + w] - prefix[j + 1]) - (prefix[j] - prefix[j - w]); };
+        bool outside = false; // a ray leaving the frame is not used (a vectorisable scan)
+        for (int j = 0; j < count; ++j) outside |= row[j] == kOutsideFrame;
+        if (outside) continue;
         const int fineIdx = i * (kRays / kCoarse);
         const double ro = outerR[fineIdx];
         const int lo = std::max(w, int((ro + 0.04 * r0 - rA) / step));
         const int hi = count - w - 2;
         if (hi - lo < 2 * w) continue;
+        // Running sums from the first sample the detector reads (lo − w): prefix[k] holds
+        // Σ row[base … k − 1], so differences are the same as from sample 0.
+        const int base = lo - w;
+        prefix[base] = 0;
+        for (int j = base; j <= hi + w; ++j) prefix[j + 1] = prefix[j] + row[j];
+        // Step across r: mean of the w samples outside minus the w samples inside (Q8).
+        auto stepAt = [&](int j) { return (prefix[j + 1 + w] - prefix[j + 1]) - (prefix[j] - prefix[j - w]); };
         // Noise: the step detector's spread over the outer quarter (background, mostly).
         int32_t tmp[kMaxCoarse];
         int nt = 0;

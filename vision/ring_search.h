@@ -37,7 +37,8 @@ struct RingSearch {
     };
     MeanEdges meanProfileEdges();
     // Per ray, the strongest edge of `sign` between loPx[i] and hiPx[i]; then the fit.
-    // pts == nullptr: a first pass, only the fitted curve (pts and contrast left alone).
+    // pts == nullptr: a first pass on every other ray, only the fitted curve at every ray
+    // (pts and contrast left alone).
     bool locateOnRays(int sign, const double *loPx, const double *hiPx, int32_t minStrength,
                       EdgeSample *pts, bool interior, double reachPx, BoundaryFit *fit,
                       double *curveOut, double *contrastOut);
