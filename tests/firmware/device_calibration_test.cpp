@@ -14,6 +14,7 @@
 #include "firmware/device.h"
 #include "firmware/device_calibration.h"
 #include "firmware/json_line.h"
+#include "tests/firmware/recording_serial.h"
 #include "hal/file/clocks.h"
 #include "hal/file/file_camera.h"
 #include "hal/file/file_led.h"
@@ -24,38 +25,10 @@
 
 using namespace icacam;
 namespace fs = std::filesystem;
+using test::RecordingSerial;
 
 namespace {
 
-struct RecordingSerial final : hal::SerialPort {
-    std::string in, out;
-    hal::Result<size_t> read(char *buf, size_t cap) override
-    {
-        const size_t n = std::min(cap, in.size());
-        in.copy(buf, n);
-        in.erase(0, n);
-        return {n, {}};
-    }
-    hal::Error write(std::string_view d) override
-    {
-        out.append(d);
-        return {};
-    }
-    // The last line of the given type, parsed ("" type when none).
-    fw::FlatObject last(const std::string &type) const
-    {
-        fw::FlatObject found;
-        size_t at = 0;
-        while (at < out.size()) {
-            const size_t nl = out.find('\n', at);
-            const std::string line = out.substr(at, nl - at);
-            at = nl == std::string::npos ? out.size() : nl + 1;
-            fw::FlatObject o;
-            if (fw::parseFlatObject(line, &o).empty() && o.find("type") && o.find("type")->text == type) found = o;
-        }
-        return found;
-    }
-};
 
 struct NullDisplay final : hal::Display {
     hal::Error show(const hal::MonoBitmap &) override { return {}; }

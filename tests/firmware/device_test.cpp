@@ -7,6 +7,7 @@
 
 #include "firmware/device.h"
 #include "firmware/font5x7.h"
+#include "tests/firmware/recording_serial.h"
 #include "hal/file/clocks.h"
 #include "hal/file/file_camera.h"
 #include "hal/file/file_led.h"
@@ -16,26 +17,11 @@
 
 using namespace icacam;
 namespace fs = std::filesystem;
+using test::RecordingSerial;
 
 namespace {
 
-// Serial and display stand-ins that record what the device sent and showed.
-struct RecordingSerial final : hal::SerialPort {
-    std::string in, out;
-    hal::Result<size_t> read(char *buf, size_t cap) override
-    {
-        const size_t n = std::min(cap, in.size());
-        in.copy(buf, n);
-        in.erase(0, n);
-        return {n, {}};
-    }
-    hal::Error write(std::string_view d) override
-    {
-        out.append(d);
-        return {};
-    }
-};
-
+// A display stand-in that records what the device showed.
 struct RecordingDisplay final : hal::Display {
     hal::MonoBitmap last;
     hal::Error show(const hal::MonoBitmap &p) override

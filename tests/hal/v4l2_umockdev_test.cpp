@@ -21,6 +21,7 @@
 #include "hal/file/clocks.h"
 #include "hal/file/folder_storage.h"
 #include "vision/paper_model.h"
+#include "tests/firmware/recording_serial.h"
 #include "hal/v4l2/v4l2_camera.h"
 
 namespace {
@@ -317,17 +318,7 @@ struct PlainLed final : hal::LedRing {
     hal::Error set(bool v) override { on = v; return {}; }
     bool isOn() const override { return on; }
 };
-struct RecordingSerial final : hal::SerialPort {
-    std::string in, out;
-    hal::Result<size_t> read(char *buf, size_t cap) override
-    {
-        const size_t n = std::min(cap, in.size());
-        in.copy(buf, n);
-        in.erase(0, n);
-        return {n, {}};
-    }
-    hal::Error write(std::string_view d) override { out.append(d); return {}; }
-};
+using test::RecordingSerial;
 struct RecordingDisplay final : hal::Display {
     hal::MonoBitmap last;
     hal::Error show(const hal::MonoBitmap &p) override { last = p; return {}; }
