@@ -8,28 +8,36 @@ inline constexpr const char *kProvenance = "icacam fe fit --in data/fe/sweep_cax
 inline constexpr double kReduction = 0.5;
 inline constexpr double kD0Mm = 10, kH0Mm = 15;
 inline constexpr double kKMinMpa = 500, kKMaxMpa = 500;
-inline constexpr int kNCount = 3, kMuCount = 4;
-inline constexpr double kN[kNCount] = {0.05, 0.25, 0.5};
+inline constexpr int kNCount = 5, kMuCount = 4;
+inline constexpr double kN[kNCount] = {0.05, 0.125, 0.25, 0.375, 0.5};
 inline constexpr double kMu[kMuCount] = {0.05, 0.1, 0.2, 0.3};
 // [n][μ] in mm
 inline constexpr double kU[kNCount][kMuCount] = {
     {0.10561, 0.54370, 0.98591, 1.07005},
+    {-1.00000, 0.42015, -1.00000, -1.00000},
     {0.02033, 0.32841, 0.79527, 1.06610},
+    {-1.00000, 0.24411, -1.00000, -1.00000},
     {0.00120, 0.18674, 0.58382, 0.92667},
 };
 inline constexpr double kRi[kNCount][kMuCount] = {
     {6.55620, 5.89232, 5.22272, 5.08296},
+    {-1.00000, 6.08697, -1.00000, -1.00000},
     {6.74723, 6.26367, 5.55925, 5.17708},
+    {-1.00000, 6.37305, -1.00000, -1.00000},
     {6.82493, 6.44245, 5.78267, 5.30942},
 };
 inline constexpr double kRo[kNCount][kMuCount] = {
     {6.66181, 6.43602, 6.20863, 6.15301},
+    {-1.00000, 6.50712, -1.00000, -1.00000},
     {6.76756, 6.59208, 6.35452, 6.24318},
+    {-1.00000, 6.61716, -1.00000, -1.00000},
     {6.82613, 6.62919, 6.36648, 6.23609},
 };
 inline constexpr double kRmax[kNCount][kMuCount] = {
     {7.24941, 7.36071, 7.43565, 7.44442},
+    {-1.00000, 7.30178, -1.00000, -1.00000},
     {7.16797, 7.24836, 7.33891, 7.37010},
+    {-1.00000, 7.21742, -1.00000, -1.00000},
     {7.13649, 7.19881, 7.28338, 7.32533},
 };
 } // namespace icacam::vision::fe_table
