@@ -1,4 +1,5 @@
 #include "fe_case.h"
+#include "host_tools/number_text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,15 +8,6 @@
 #include <stdexcept>
 
 namespace icacam::host::fe {
-
-namespace {
-std::string fmt(const char *f, double v)
-{
-    char b[64];
-    std::snprintf(b, sizeof b, f, v);
-    return b;
-}
-} // namespace
 
 std::string FeCase::label() const
 {
@@ -26,10 +18,10 @@ std::string FeCase::label() const
     // defaults, so the labels (the sweep's resume keys) of committed rows stay valid.
     std::string s = b;
     if (element != "CAX4R") s += "_" + element;
-    if (platenMm > 0) s += "_p" + fmt("%g", platenMm);
-    if (stickSlope != 1e4) s += "_st" + fmt("%g", stickSlope);
-    if (incMax != 0.01) s += "_im" + fmt("%g", incMax);
-    if (foldZoneMm > 0) s += "_fz" + fmt("%g", foldZoneMm);
+    if (platenMm > 0) s += "_p" + numberText("%g", platenMm);
+    if (stickSlope != 1e4) s += "_st" + numberText("%g", stickSlope);
+    if (incMax != 0.01) s += "_im" + numberText("%g", incMax);
+    if (foldZoneMm > 0) s += "_fz" + numberText("%g", foldZoneMm);
     return s;
 }
 
@@ -160,7 +152,7 @@ std::string makeDeck(const FeCase &c)
       << "*BOUNDARY\nAXIS, 1, 1\nMID, 2, 2\nPLATENN, 1, 2\n"
       << "*TIME POINTS,NAME=SNAP\n";
     for (double r : c.reductions)
-        if (r <= c.reductionMax + 1e-12) o << fmt("%.10g", r / c.reductionMax) << "\n";
+        if (r <= c.reductionMax + 1e-12) o << numberText("%.10g", r / c.reductionMax) << "\n";
     const double stroke = z0 * 2 * c.reductionMax / 2; // quarter model: half the stroke
     o << "*STEP,NLGEOM,INC=100000\n*STATIC\n"
       << c.incInit << ", 1.0, " << c.incMin << ", " << c.incMax << "\n"

@@ -14,17 +14,11 @@
 #include "fe_base_data.h"
 #include "loop_analysis.h"
 #include "manifest.h"
+#include "host_tools/number_text.h"
 
 namespace icacam::host::loop {
 
 namespace {
-
-std::string fmt(const char *f, double v)
-{
-    char b[64];
-    std::snprintf(b, sizeof b, f, v);
-    return b;
-}
 
 // One grid point's radii (D0 = 10 mm): the mean over the base runs that reached it.
 struct Snapshot {
@@ -77,7 +71,7 @@ std::string reductionTableText(const std::vector<std::string> &csvs, const std::
     o += "// - R_i, R_o (r_o_interp_mm), R_max at every snapshot, scaled to D0 = 10 mm; -1 marks a point\n";
     o += "//   without data.\n";
     o += "// Base data (host_tools/loop/fe_base_data.h, chosen as `icacam fe fit` does): mesh " + base.mesh +
-         ",\n// K " + fmt("%g", base.kMpa) + " MPa, E 210 GPa, D0 10, H0 15 mm; ok runs and the snapshots later-stopped runs reached.\n";
+         ",\n// K " + numberText("%g", base.kMpa) + " MPa, E 210 GPa, D0 10, H0 15 mm; ok runs and the snapshots later-stopped runs reached.\n";
     o += "namespace icacam::vision::reduction_table {\n";
     o += "inline constexpr const char *kProvenance = \"icacam loop table" + args + "\";\n";
     o += "// The sweep CSVs (repository paths, space-separated): `icacam loop` reads the same by default.\n";
@@ -86,22 +80,22 @@ std::string reductionTableText(const std::vector<std::string> &csvs, const std::
     o += "inline constexpr double kD0Mm = 10;\n";
     o += "inline constexpr int kSlopeCases = " + std::to_string(slope.cases()) + ";\n";
     o += "inline constexpr double kSlope[6] = {";
-    for (size_t i = 0; i < 6; ++i) o += (i ? ", " : "") + fmt("%.9g", slope.coefficients()[i]);
+    for (size_t i = 0; i < 6; ++i) o += (i ? ", " : "") + numberText("%.9g", slope.coefficients()[i]);
     o += "};\n";
-    o += "inline constexpr double kSlopeNMin = " + fmt("%.6g", slope.nMin()) + ", kSlopeNMax = " +
-         fmt("%.6g", slope.nMax()) + ";\n";
-    o += "inline constexpr double kSlopeMuMin = " + fmt("%.6g", slope.muMin()) + ", kSlopeMuMax = " +
-         fmt("%.6g", slope.muMax()) + ";\n";
-    o += "inline constexpr double kMaxCurvatureMm = " + fmt("%.6g", slope.maxCurvature()) + ";\n";
-    o += "inline constexpr double kReductionMin = " + fmt("%.6g", slope.reductionMin()) + ", kReductionMax = " +
-         fmt("%.6g", slope.reductionMax()) + ";\n";
-    o += "inline constexpr double kSnapshotKMpa = " + fmt("%.6g", base.kMpa) + ";\n";
+    o += "inline constexpr double kSlopeNMin = " + numberText("%.6g", slope.nMin()) + ", kSlopeNMax = " +
+         numberText("%.6g", slope.nMax()) + ";\n";
+    o += "inline constexpr double kSlopeMuMin = " + numberText("%.6g", slope.muMin()) + ", kSlopeMuMax = " +
+         numberText("%.6g", slope.muMax()) + ";\n";
+    o += "inline constexpr double kMaxCurvatureMm = " + numberText("%.6g", slope.maxCurvature()) + ";\n";
+    o += "inline constexpr double kReductionMin = " + numberText("%.6g", slope.reductionMin()) + ", kReductionMax = " +
+         numberText("%.6g", slope.reductionMax()) + ";\n";
+    o += "inline constexpr double kSnapshotKMpa = " + numberText("%.6g", base.kMpa) + ";\n";
     o += "inline constexpr int kNCount = " + std::to_string(ns.size()) + ", kMuCount = " + std::to_string(mus.size()) +
          ", kRCount = " + std::to_string(rs.size()) + ";\n";
     auto axis = [&](const char *name, const char *count, const std::set<long> &v) {
         o += std::string("inline constexpr double ") + name + "[" + count + "] = {";
         bool first = true;
-        for (long x : v) { o += (first ? "" : ", ") + fmt("%.6g", double(x) * 1e-4); first = false; }
+        for (long x : v) { o += (first ? "" : ", ") + numberText("%.6g", double(x) * 1e-4); first = false; }
         o += "};\n";
     };
     axis("kN", "kNCount", ns);
@@ -124,7 +118,7 @@ std::string reductionTableText(const std::vector<std::string> &csvs, const std::
                             if (c != b->second.end() && c->second.count > 0) v = c->second.*field;
                         }
                     }
-                    o += (first ? "" : ", ") + fmt("%.4f", v) + "f";
+                    o += (first ? "" : ", ") + numberText("%.4f", v) + "f";
                     first = false;
                 }
                 o += "},\n";

@@ -21,6 +21,7 @@
 
 #include "hal/file/clocks.h"
 #include "hal/gpiod/gpiod_lines.h"
+#include "tests/hal/umockdev_ioctl.h"
 
 namespace {
 
@@ -42,14 +43,6 @@ struct FakeChip {
 
 // The ioctl's argument is a pointer into the caller: resolve() fetches the struct it points
 // at; changes to it are copied back when the call completes.
-template <typename T> T *argOf(UMockdevIoctlClient *client)
-{
-    UMockdevIoctlData *arg = umockdev_ioctl_client_get_arg(client);
-    if (!arg) return nullptr;
-    UMockdevIoctlData *d = umockdev_ioctl_data_resolve(arg, 0, sizeof(T), nullptr);
-    return d && size_t(d->data_len) >= sizeof(T) ? reinterpret_cast<T *>(d->data) : nullptr;
-}
-
 gboolean onIoctl(UMockdevIoctlBase *, UMockdevIoctlClient *client, gpointer user)
 {
     auto *chip = static_cast<FakeChip *>(user);
@@ -59,7 +52,7 @@ gboolean onIoctl(UMockdevIoctlBase *, UMockdevIoctlClient *client, gpointer user
     auto fail = [&](int err) { umockdev_ioctl_client_complete(client, -1, err); return TRUE; };
     switch (req) {
     case GPIO_GET_CHIPINFO_IOCTL: {
-        auto *info = argOf<gpiochip_info>(client);
+        auto *info = test::ioctlArg<gpiochip_info>(client);
         if (!info) return fail(EFAULT);
         std::snprintf(info->name, sizeof info->name, "gpiochip0");
         std::snprintf(info->label, sizeof info->label, "icacam-mock");
@@ -67,7 +60,7 @@ gboolean onIoctl(UMockdevIoctlBase *, UMockdevIoctlClient *client, gpointer user
         break;
     }
     case GPIO_GET_LINEINFO_IOCTL: {
-        auto *info = argOf<gpioline_info>(client);
+        auto *info = test::ioctlArg<gpioline_info>(client);
         if (!info || info->line_offset >= kLines) return fail(EINVAL);
         const uint32_t off = info->line_offset;
         std::snprintf(info->name, sizeof info->name, "GPIO%u", off);
@@ -75,7 +68,7 @@ gboolean onIoctl(UMockdevIoctlBase *, UMockdevIoctlClient *client, gpointer user
         break;
     }
     case GPIO_GET_LINEHANDLE_IOCTL: {
-        auto *r = argOf<gpiohandle_request>(client);
+        auto *r = test::ioctlArg<gpiohandle_request>(client);
         if (!r || r->lines != 1 || r->lineoffsets[0] >= kLines) return fail(EINVAL);
         if (chip->busy[r->lineoffsets[0]] || chip->handleFd < 0) return fail(EBUSY);
         chip->busy[r->lineoffsets[0]] = true;
@@ -85,7 +78,7 @@ gboolean onIoctl(UMockdevIoctlBase *, UMockdevIoctlClient *client, gpointer user
         break;
     }
     case GPIO_GET_LINEEVENT_IOCTL: {
-        auto *r = argOf<gpioevent_request>(client);
+        auto *r = test::ioctlArg<gpioevent_request>(client);
         if (!r || r->lineoffset >= kLines) return fail(EINVAL);
         if (chip->busy[r->lineoffset] || chip->eventFd < 0) return fail(EBUSY);
         chip->busy[r->lineoffset] = true;
@@ -95,7 +88,7 @@ gboolean onIoctl(UMockdevIoctlBase *, UMockdevIoctlClient *client, gpointer user
         break;
     }
     case GPIOHANDLE_SET_LINE_VALUES_IOCTL: {
-        auto *v = argOf<gpiohandle_data>(client);
+        auto *v = test::ioctlArg<gpiohandle_data>(client);
         if (!v) return fail(EFAULT);
         chip->setValues.push_back(v->values[0]);
         break;

@@ -21,8 +21,9 @@
 #include "hal/file/clocks.h"
 #include "hal/file/folder_storage.h"
 #include "vision/paper_model.h"
-#include "tests/firmware/recording_serial.h"
 #include "hal/v4l2/v4l2_camera.h"
+#include "tests/firmware/recording_serial.h"
+#include "tests/hal/umockdev_ioctl.h"
 
 namespace {
 
@@ -51,13 +52,6 @@ struct FakeVideo {
     std::vector<unsigned long> seen; // request codes, in order
 };
 
-template <typename T> T *argOf(UMockdevIoctlClient *client)
-{
-    UMockdevIoctlData *arg = umockdev_ioctl_client_get_arg(client);
-    UMockdevIoctlData *d = arg ? umockdev_ioctl_data_resolve(arg, 0, sizeof(T), nullptr) : nullptr;
-    return d && size_t(d->data_len) >= sizeof(T) ? reinterpret_cast<T *>(d->data) : nullptr;
-}
-
 gboolean onIoctl(UMockdevIoctlBase *, UMockdevIoctlClient *client, gpointer user)
 {
     auto *v = static_cast<FakeVideo *>(user);
@@ -71,7 +65,7 @@ gboolean onIoctl(UMockdevIoctlBase *, UMockdevIoctlClient *client, gpointer user
     if (v->unplugged) return done(ENODEV);
     switch (req) {
     case VIDIOC_QUERYCAP: {
-        auto *c = argOf<v4l2_capability>(client);
+        auto *c = test::ioctlArg<v4l2_capability>(client);
         if (!c) return done(EFAULT);
         *c = {};
         std::snprintf(reinterpret_cast<char *>(c->driver), sizeof c->driver, "uvcvideo");
@@ -80,7 +74,7 @@ gboolean onIoctl(UMockdevIoctlBase *, UMockdevIoctlClient *client, gpointer user
         return done(0);
     }
     case VIDIOC_S_FMT: {
-        auto *f = argOf<v4l2_format>(client);
+        auto *f = test::ioctlArg<v4l2_format>(client);
         if (!f || f->type != V4L2_BUF_TYPE_VIDEO_CAPTURE) return done(EINVAL);
         bool ok = false;
         for (uint32_t cc : v->formats) ok = ok || cc == f->fmt.pix.pixelformat;
@@ -95,7 +89,7 @@ gboolean onIoctl(UMockdevIoctlBase *, UMockdevIoctlClient *client, gpointer user
         return done(0);
     }
     case VIDIOC_REQBUFS: {
-        auto *r = argOf<v4l2_requestbuffers>(client);
+        auto *r = test::ioctlArg<v4l2_requestbuffers>(client);
         if (!r || r->memory != V4L2_MEMORY_MMAP) return done(EINVAL);
         if (v->streaming) return done(EBUSY);
         v->memory.assign(r->count, std::vector<uint8_t>(size_t(v->width) * v->height * 2));
@@ -104,7 +98,7 @@ gboolean onIoctl(UMockdevIoctlBase *, UMockdevIoctlClient *client, gpointer user
     }
     case VIDIOC_QUERYBUF:
     case VIDIOC_QBUF: {
-        auto *b = argOf<v4l2_buffer>(client);
+        auto *b = test::ioctlArg<v4l2_buffer>(client);
         if (!b || b->index >= v->memory.size()) return done(EINVAL);
         if (req == VIDIOC_QUERYBUF) {
             b->length = uint32_t(v->memory[b->index].size());
@@ -121,7 +115,7 @@ gboolean onIoctl(UMockdevIoctlBase *, UMockdevIoctlClient *client, gpointer user
         v->queued.assign(v->queued.size(), false);
         return done(0);
     case VIDIOC_DQBUF: {
-        auto *b = argOf<v4l2_buffer>(client);
+        auto *b = test::ioctlArg<v4l2_buffer>(client);
         if (!b) return done(EFAULT);
         if (!v->streaming) return done(EINVAL);
         size_t i = 0;
