@@ -22,6 +22,7 @@ std::string FeCase::label() const
     if (stickSlope != 1e4) s += "_st" + numberText("%g", stickSlope);
     if (incMax != 0.01) s += "_im" + numberText("%g", incMax);
     if (foldZoneMm > 0) s += "_fz" + numberText("%g", foldZoneMm);
+    if (trackStep > 0) s += "_tr" + numberText("%g", trackStep);
     return s;
 }
 
@@ -151,8 +152,7 @@ std::string makeDeck(const FeCase &c)
       << "*CONTACT PAIR,INTERACTION=SI,TYPE=NODE TO SURFACE\nSLAVE, MASTER\n"
       << "*BOUNDARY\nAXIS, 1, 1\nMID, 2, 2\nPLATENN, 1, 2\n"
       << "*TIME POINTS,NAME=SNAP\n";
-    for (double r : c.reductions)
-        if (r <= c.reductionMax + 1e-12) o << numberText("%.10g", r / c.reductionMax) << "\n";
+    for (double r : outputReductions(c)) o << numberText("%.10g", r / c.reductionMax) << "\n";
     const double stroke = z0 * 2 * c.reductionMax / 2; // quarter model: half the stroke
     o << "*STEP,NLGEOM,INC=100000\n*STATIC\n"
       << c.incInit << ", 1.0, " << c.incMin << ", " << c.incMax << "\n"
@@ -161,6 +161,18 @@ std::string makeDeck(const FeCase &c)
       << "*NODE PRINT,NSET=PLATENN,TOTALS=ONLY\nRF\n"
       << "*END STEP\n";
     return o.str();
+}
+
+std::vector<double> outputReductions(const FeCase &c)
+{
+    std::vector<double> r;
+    for (double x : c.reductions)
+        if (x <= c.reductionMax + 1e-12) r.push_back(x);
+    if (c.trackStep > 0)
+        for (int k = 1; k * c.trackStep <= c.reductionMax + 1e-9; ++k) r.push_back(std::round(k * c.trackStep * 1e6) / 1e6);
+    std::sort(r.begin(), r.end());
+    r.erase(std::unique(r.begin(), r.end(), [](double a, double b) { return std::fabs(a - b) < 1e-9; }), r.end());
+    return r;
 }
 
 Radii computeRadii(const FeCase &c, const FeMesh &m, const NodeXY &coords, const NodeXY &disp,

@@ -33,6 +33,9 @@ struct FeCase {
     double contactSlope = 1e5;              // N/mm³, linear pressure–overclosure
     double stickSlope = 1e4;                // N/mm³, friction stick slope (1e4 and 1e5 give the same u)
     double incInit = 0.005, incMin = 1e-7, incMax = 0.01; // of the step time 1
+    // > 0: extra output frames every trackStep of reduction, so the contact edge can be
+    // tracked between the nodes' touchdowns (fe_contact_track.h); 0: the 5 % snapshots only.
+    double trackStep = 0;
     std::string label() const;              // a file-safe name from the inputs
 };
 
@@ -64,12 +67,20 @@ struct Radii {
     double uMm() const { return roMm - riMm; }
     double uInterpMm() const { return roInterpMm - riMm; }
     int contactNodes = 0; // former lateral nodes in contact
+    double roTrackMm = -1;  // R_o tracked between touchdowns (fe_contact_track.h); -1: no frames
+    double uTrackMm() const { return roTrackMm < 0 ? -1 : roTrackMm - riMm; }
 };
 
 // Node coordinates (x = r, y = z) and one displacement field.
 using NodeXY = std::map<int, std::pair<double, double>>;
 
+// A lateral node with a gap up to this is on the platen (the penalty contact lets it sink in).
+constexpr double kGapTolMm = 1e-4;
+
+// The output reductions of the deck: the snapshots and, with trackStep, the tracking frames.
+std::vector<double> outputReductions(const FeCase &c);
+
 Radii computeRadii(const FeCase &c, const FeMesh &m, const NodeXY &coords, const NodeXY &disp,
-                   double reduction, double gapTolMm = 1e-4);
+                   double reduction, double gapTolMm = kGapTolMm);
 
 } // namespace icacam::host::fe

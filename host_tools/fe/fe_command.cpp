@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <iterator>
 #include <mutex>
 #include <set>
 #include <sstream>
@@ -30,12 +31,13 @@ const char *kUsage =
     "          resumable: cases already in CSV are skipped; grid keys: k n mu e d0 h0 red elem\n"
     "  fit     --in CSV [--in CSV2] --out vision/fe_model_table.h [--reduction 0.5]\n"
     "  report  --in CSV --out DIR                             Table 1 / Fig. 3 comparison\n"
-    "  compare --in REF.csv --in OTHER.csv [--out MD] [--min-u 0.1] [--bar 0.05]\n"
+    "  compare --in REF.csv --in OTHER.csv [--out MD] [--min-u 0.1] [--bar 0.05] [--edge interp|track]\n"
     "          u of the same cases on other meshes/solvers (mesh study, independent model)\n"
     "case options: --k 500 --n 0.25 --mu 0.2 --e 210000 --d0 10 --h0 15 --reduction 0.5\n"
     "              --elem 0.2 --corner 0 --contact-slope 1e5 --stick-slope 1e4 --fallback-stick-slope 1e3\n"
     "              --inc-max 0.01 --element CAX4R|CAX8R --platen 0 (master segment, mm)\n"
     "              --fold-zone 0 (mm of side kept at the corner size)\n"
+    "              --track-step 0 (reduction between frames that track the contact edge, e.g. 0.01)\n"
     "              --ccx ccx --timeout 3600 --work /tmp/icacam-fe\n";
 
 struct Parsed {
@@ -45,6 +47,7 @@ struct Parsed {
     std::string out, grid;
     double reduction = 0.5;
     double minU = 0.1, bar = 0.05; // compare: judged where u > minU mm, within bar (relative)
+    std::string edge = "interp";   // compare: which contact edge (interp | track)
     int jobs = 1;
 };
 
@@ -73,6 +76,7 @@ bool setCaseKey(FeCase &c, const std::string &key, double v)
     else if (key == "contact-slope") c.contactSlope = v;
     else if (key == "stick-slope") c.stickSlope = v;
     else if (key == "inc-max") c.incMax = v;
+    else if (key == "track-step") c.trackStep = v;
     else return false;
     return true;
 }
@@ -98,6 +102,10 @@ Parsed parse(const std::vector<std::string> &args, size_t from)
         else if (key == "element") p.c.element = v;
         else if (key == "min-u") p.minU = toDouble(key, v);
         else if (key == "bar") p.bar = toDouble(key, v);
+        else if (key == "edge") {
+            if (v != "interp" && v != "track") throw std::runtime_error("--edge: interp or track, not '" + v + "'");
+            p.edge = v;
+        }
         else if (!setCaseKey(p.c, key, toDouble(key, v)))
             throw std::runtime_error("unknown option '" + a + "'\n" + kUsage);
     }
@@ -120,6 +128,22 @@ void appendRows(const std::string &csv, const std::vector<std::string> &rows)
 {
     const bool fresh = !fs::exists(csv) || fs::file_size(csv) == 0;
     if (fs::path(csv).has_parent_path()) fs::create_directories(fs::path(csv).parent_path());
+    if (!fresh) {
+        // A file from before columns were added (they only ever are, at the end): extend its
+        // header so the new rows' columns have names; its old rows simply lack them.
+        std::ifstream in(csv);
+        std::string head;
+        std::getline(in, head);
+        const std::string now = csvHeader();
+        if (head != now && now.compare(0, head.size(), head) == 0 && now[head.size()] == ',') {
+            std::string rest((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+            in.close();
+            std::ofstream rewrite(csv, std::ios::trunc);
+            rewrite << now << "\n" << rest;
+            if (!rewrite) throw std::runtime_error("cannot write " + csv);
+        } else if (head != now)
+            throw std::runtime_error(csv + ": its header is not this version's (nor a prefix of it); write to a new file");
+    }
     std::ofstream f(csv, std::ios::app);
     if (fresh) f << csvHeader() << "\n";
     for (const auto &r : rows) f << r << "\n";
@@ -132,8 +156,8 @@ void printResult(const FeCase &c, const RunResult &r)
     for (const Radii &x : r.radii) {
         double f = 0;
         for (const auto &p : r.force) if (std::fabs(p.time - x.reduction) < 1e-6) f = p.fy;
-        std::printf("  reduction %.3f  R_i %.4f  R_o %.4f  R_max %.4f  u %.4f (interp %.4f)  F %.2f kN\n",
-                    x.reduction, x.riMm, x.roMm, x.rMaxMm, x.uMm(), x.uInterpMm(), f);
+        std::printf("  reduction %.3f  R_i %.4f  R_o %.4f  R_max %.4f  u %.4f (interp %.4f, tracked %.4f)  F %.2f kN\n",
+                    x.reduction, x.riMm, x.roMm, x.rMaxMm, x.uMm(), x.uInterpMm(), x.uTrackMm(), f);
     }
     std::fflush(stdout);
 }
@@ -218,7 +242,7 @@ int feCommand(const std::vector<std::string> &args)
         if (p.in.empty() || p.out.empty()) throw std::runtime_error("fit needs --in and --out");
         return fitCommand(p.in, p.out, p.reduction);
     }
-    if (sub == "compare") return compareCommand(p.in, p.out, p.minU, p.bar);
+    if (sub == "compare") return compareCommand(p.in, p.out, p.minU, p.bar, p.edge == "track");
     if (sub == "report") {
         if (p.in.empty() || p.out.empty()) throw std::runtime_error("report needs --in and --out");
         return reportCommand(p.in, p.out, p.reduction);

@@ -13,6 +13,7 @@ struct FeRow {
     double stickSlope = 0, nu = 0.3;
     double kMpa = 0, n = 0, mu = 0, eMpa = 0, d0 = 0, h0 = 0, reductionMax = 0, reduction = 0, elem = 0;
     double ri = 0, ro = 0, roInterp = 0, rMax = 0, u = 0, uInterp = 0, force = 0, wallS = 0;
+    double uTrack = -1; // tracked contact edge (runs with --track-step); -1: not tracked
 };
 std::vector<FeRow> readSweepCsv(const std::string &path);
 
@@ -34,7 +35,9 @@ int fitCommand(const std::vector<std::string> &in, const std::string &out, doubl
 // Rows of the other files against the first (same K, n, μ, E, ν, D0, H0 and reduction,
 // any mesh or solver setting): a markdown table of Δu and how many are within `bar`
 // (relative) where the reference u > minU. For the mesh study and the independent model.
-int compareCommand(const std::vector<std::string> &in, const std::string &out, double minU, double bar);
+// tracked: compare u of the tracked contact edge (rows without it are skipped).
+int compareCommand(const std::vector<std::string> &in, const std::string &out, double minU, double bar,
+                   bool tracked = false);
 int reportCommand(const std::vector<std::string> &in, const std::string &outDir, double reduction);
 
 } // namespace icacam::host::fe

@@ -1,5 +1,7 @@
 #include "fe_runner.h"
 
+#include "fe_contact_track.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -20,6 +22,22 @@ std::string slurp(const fs::path &p)
     std::ostringstream s;
     s << f.rdbuf();
     return s.str();
+}
+// The former lateral nodes of one frame (mid-plane … corner): gap to the platen and radius.
+SideFrame sideFrame(const FeCase &c, const FeMesh &m, const NodeXY &coords, const NodeXY &disp, double reduction)
+{
+    SideFrame f;
+    f.reduction = reduction;
+    const double zPlaten = c.h0Mm / 2 * (1 - reduction);
+    for (int j = 0; j < m.rows(); ++j) {
+        const int id = m.lateralNode(j);
+        const auto ci = coords.find(id);
+        const auto di = disp.find(id);
+        if (ci == coords.end() || di == disp.end()) throw std::runtime_error("fe: node missing in results");
+        f.gapMm.push_back(zPlaten - (ci->second.second + di->second.second));
+        f.rMm.push_back(ci->second.first + di->second.first);
+    }
+    return f;
 }
 std::string shellQuote(const std::string &s)
 {
@@ -89,15 +107,23 @@ RunResult runOnce(FeCase c, const RunOptions &o)
     // last block: never use it, even if its time happens to equal a snapshot's.
     const bool bestSolution = log.find("best solution and residuals are in the frd file") != std::string::npos;
     const size_t usable = !bestSolution || frd.steps.empty() ? frd.steps.size() : frd.steps.size() - 1;
+    std::vector<SideFrame> frames;
+    std::vector<size_t> snapshotFrame;
     for (size_t k = 0; k < usable; ++k) {
         const FrdStep &s = frd.steps[k];
         const double red = s.time * c.reductionMax;
-        // A run that stopped leaves its diverged "best solution" as a last block: keep the
-        // snapshots only.
+        if (c.trackStep > 0) frames.push_back(sideFrame(c, mesh, frd.coords, s.disp, red));
+        // Rows only for the snapshots; the tracking frames in between feed roTrackMm.
         const bool snapshot = std::any_of(c.reductions.begin(), c.reductions.end(),
                                           [&](double x) { return std::fabs(x - red) < 1e-6; });
         if (!snapshot) continue;
         res.radii.push_back(computeRadii(c, mesh, frd.coords, s.disp, red));
+        snapshotFrame.push_back(frames.size() - 1);
+    }
+    if (c.trackStep > 0) {
+        const auto touchdown = touchdownReductions(frames, kGapTolMm);
+        for (size_t i = 0; i < res.radii.size(); ++i)
+            res.radii[i].roTrackMm = std::max(res.radii[i].riMm, trackedContactEdge(frames, touchdown, snapshotFrame[i]));
     }
     for (ForcePoint f : forces) {
         // Axisymmetric elements: CalculiX reports forces for a 2° segment.
@@ -122,7 +148,7 @@ std::string csvHeader()
 {
     return "case,status,k_mpa,n,mu,e_mpa,nu,d0_mm,h0_mm,reduction_max,reduction,elem_mm,corner_mm,element,"
            "contact,contact_slope,stick_slope,inc_max,r_i_mm,r_o_mm,r_o_interp_mm,r_max_mm,u_mm,"
-           "u_interp_mm,contact_nodes,force_kn,wall_s,solver,message";
+           "u_interp_mm,contact_nodes,force_kn,wall_s,solver,message,track_step,r_o_track_mm,u_track_mm";
 }
 
 std::vector<std::string> csvRows(const FeCase &c, const RunResult &r)
@@ -132,13 +158,13 @@ std::vector<std::string> csvRows(const FeCase &c, const RunResult &r)
         char b[1024];
         std::snprintf(b, sizeof b,
                       "%s,%s,%g,%g,%g,%g,%g,%g,%g,%g,%.4f,%g,%g,%s,node-to-surface penalty,%g,%g,%g,"
-                      "%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%d,%.3f,%.1f,CalculiX 2.20 OMP=1,%s",
+                      "%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%d,%.3f,%.1f,CalculiX 2.20 OMP=1,%s,%g,%.5f,%.5f",
                       c.label().c_str(), r.status.c_str(), c.kMpa, c.n, c.mu, c.eMpa, c.nu, c.d0Mm,
                       c.h0Mm, c.reductionMax, x ? x->reduction : 0.0, c.elemMm, c.cornerMm, c.element.c_str(), c.contactSlope,
                       c.stickSlope, c.incMax, x ? x->riMm : 0.0, x ? x->roMm : 0.0,
                       x ? x->roInterpMm : 0.0, x ? x->rMaxMm : 0.0, x ? x->uMm() : 0.0,
                       x ? x->uInterpMm() : 0.0, x ? x->contactNodes : 0, force, r.wallS,
-                      r.message.c_str());
+                      r.message.c_str(), c.trackStep, x ? x->roTrackMm : -1.0, x ? x->uTrackMm() : -1.0);
         rows.emplace_back(b);
     };
     for (const Radii &x : r.radii) {

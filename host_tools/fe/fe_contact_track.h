@@ -1,0 +1,36 @@
+#pragma once
+// The contact edge between the nodes, tracked through the run (issue 5, docs/fe.md).
+//
+// At one snapshot the contact edge R_o is only known to one node spacing of the former
+// lateral surface: the outermost node on the platen. Along the run, though, every node's
+// touchdown is an exact event of the FE solution. Between two touchdowns the edge moves from
+// one node's material position to the next one's, so with the frames of a dense output
+// (every 1 % of reduction) the edge's material position is interpolated in reduction between
+// the events and mapped to the deformed side: u then grows smoothly instead of in steps of
+// one node, which is what the mesh study and the independent model compare.
+#include <cstddef>
+#include <vector>
+
+namespace icacam::host::fe {
+
+// One output frame: the former lateral nodes from the mid-plane (index 0) to the corner
+// (last index), their gap to the platen and their deformed radius.
+struct SideFrame {
+    double reduction = 0;
+    std::vector<double> gapMm; // platen height − node height (≤ tol: on the platen)
+    std::vector<double> rMm;
+};
+
+// The reduction at which each node joins the contact zone that grows from the corner (its
+// gap, linear between two frames, reaches tol), or -1 when it never does within the frames;
+// made non-decreasing from the corner down (a node below cannot roll on before one above).
+std::vector<double> touchdownReductions(const std::vector<SideFrame> &frames, double tolMm);
+
+// R_o of frame k with the edge tracked between touchdowns: the edge's material position runs
+// from node a (the last one down) to node b (the next) linearly in reduction between their
+// touchdowns, and its radius is taken at that fraction of the deformed segment a–b. Before the first side node touches down the edge is the corner
+// (u = 0, as with the node count). After the last event the next node's touchdown is
+// extrapolated from its gap's rate over the last two frames.
+double trackedContactEdge(const std::vector<SideFrame> &frames, const std::vector<double> &touchdown, std::size_t k);
+
+} // namespace icacam::host::fe
