@@ -34,7 +34,7 @@ const char *shortFlag(int bit)
         "u outside model",    "low contrast",    "edge coverage low", "edges scatter",
         "image blurred",      "saturated",       "specimen clipped",  "elliptical",
         "not concentric",     "check scale",     "narrow ring",       "no silhouette",
-        "reduction outside", "radii inconsistent"};
+        "reduction outside", "radii inconsistent", "H0/D0 outside"};
     return bit >= 0 && bit < vision::kFlagCount ? kWords[bit] : "check";
 }
 

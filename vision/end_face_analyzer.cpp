@@ -201,6 +201,7 @@ void EndFaceAnalyzer::finishResult(const SpecimenSpec &spec, const FrictionModel
     if (est.range & kModelMuBelow) f |= kFlagMuBelowRange;
     if (est.range & kModelMuAbove) f |= kFlagMuAboveRange;
     if (est.range & kModelUOutside) f |= kFlagUOutsideModel;
+    if (est.range & kModelAspectOutside) f |= kFlagAspectOutside;
 
     const double r0 = 0.5 * spec.d0Mm / s;
     if (std::min(m->inner.coverage, m->outer.coverage) < 0.6) f |= kFlagLowCoverage;

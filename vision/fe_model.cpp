@@ -100,6 +100,8 @@ ModelEstimate FeModel::estimate(const ModelInputs &in) const
     if (in.n < t::kN[0] - 1e-9) e.range |= kModelNBelow;
     if (in.n > t::kN[t::kNCount - 1] + 1e-9) e.range |= kModelNAbove;
     if (in.kMpa > 0 && (in.kMpa < t::kKMinMpa - 1e-9 || in.kMpa > t::kKMaxMpa + 1e-9)) e.range |= kModelKOutside;
+    if (in.d0Mm > 0 && in.h0Mm > 0 && std::fabs(in.h0Mm / in.d0Mm - t::kH0Mm / t::kD0Mm) > kAspectTolerance)
+        e.range |= kModelAspectOutside;
     int i = 0;
     double w = 0;
     bracket(t::kN, t::kNCount, in.n, i, w);

@@ -15,7 +15,11 @@ enum ModelRangeFlag : uint32_t {
     kModelMuAbove = 1u << 4,
     kModelUOutside = 1u << 5, // u outside the span the model's data covered at this n
     kModelReductionOutside = 1u << 6, // declared height reduction outside what the data cover
+    kModelAspectOutside = 1u << 7, // H0/D0 outside what the data cover (the paper: 1.5 only)
 };
+
+// H0/D0 within this of a model's simulated slenderness counts as that slenderness (1 %).
+inline constexpr double kAspectTolerance = 0.015;
 
 struct ModelEstimate {
     double mu = 0;

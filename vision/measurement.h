@@ -31,8 +31,9 @@ enum MeasureFlag : uint32_t {
     kFlagNoSilhouette = 1u << 15,   // the barrel silhouette was not found: scale unchecked
     kFlagReductionOutside = 1u << 16, // recorded final height outside what the model covers
     kFlagRadiiInconsistent = 1u << 17, // R_max contradicts the declared scale and final height
+    kFlagAspectOutside = 1u << 18,  // the specimen's H0/D0 lies outside what the model covers
 };
-constexpr int kFlagCount = 18;
+constexpr int kFlagCount = 19;
 const char *flagName(int bit);
 
 // One located edge point on a ray, in pixel coordinates (Q16.16).

@@ -41,6 +41,8 @@ ModelEstimate PaperModel::estimate(const ModelInputs &in) const
     if (e.mu > 0.3 + 0.0025) e.range |= kModelMuAbove;
     // Beyond u ≈ 1.25 mm the cubic turns over at low n: the fit has no data there.
     if (u < 0 || u > 1.25 || e.dMuDu <= 0) e.range |= kModelUOutside;
+    // The paper simulated one slenderness, H0/D0 = 1.5; u depends on it (docs/fe.md).
+    if (in.d0Mm > 0 && in.h0Mm > 0 && std::fabs(in.h0Mm / in.d0Mm - 1.5) > kAspectTolerance) e.range |= kModelAspectOutside;
     return e;
 }
 

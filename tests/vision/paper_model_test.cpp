@@ -45,6 +45,11 @@ TEST(PaperModel, FlagsOutsideTheStudiedRange)
     EXPECT_TRUE(m.estimate({0.5, 0.25, 2000}).range & kModelKOutside);
     EXPECT_TRUE(m.estimate({0.005, 0.5, 500}).range & kModelMuBelow);
     EXPECT_TRUE(m.estimate({1.6, 0.05, 500}).range & kModelUOutside);
+    // One slenderness only: 10 x 15 (and 20 x 30) are the paper's; 10 x 10 and 10 x 20 are not.
+    EXPECT_FALSE(m.estimate({0.5, 0.25, 500, 10, 15}).range & kModelAspectOutside);
+    EXPECT_FALSE(m.estimate({1.0, 0.25, 500, 20, 30}).range & kModelAspectOutside);
+    EXPECT_TRUE(m.estimate({0.5, 0.25, 500, 10, 10}).range & kModelAspectOutside);
+    EXPECT_TRUE(m.estimate({0.5, 0.25, 500, 10, 20}).range & kModelAspectOutside);
 }
 
 TEST(PaperModel, SlopeMatchesFiniteDifference)
