@@ -38,7 +38,8 @@ const char *kUsage =
     "              --inc-max 0.01 --element CAX4R|CAX8R --platen 0 (master segment, mm)\n"
     "              --fold-zone 0 (mm of side kept at the corner size)\n"
     "              --track-step 0 (reduction between frames that track the contact edge, e.g. 0.01)\n"
-    "              --ccx ccx --timeout 3600 --work /tmp/icacam-fe\n";
+    "              --ccx ccx --timeout 3600 --work /tmp/icacam-fe\n"
+    "              --reuse 1 (post-process the work directory's results of the same deck again)\n";
 
 struct Parsed {
     FeCase c;
@@ -97,6 +98,7 @@ Parsed parse(const std::vector<std::string> &args, size_t from)
         else if (key == "ccx") p.run.ccx = v;
         else if (key == "timeout") p.run.timeoutS = int(toDouble(key, v));
         else if (key == "fallback-stick-slope") p.run.fallbackStickSlope = toDouble(key, v);
+        else if (key == "reuse") p.run.reuse = toDouble(key, v) != 0;
         else if (key == "jobs") p.jobs = std::clamp(int(toDouble(key, v)), 1, 2);
         else if (key == "snapshot-reduction") p.reduction = toDouble(key, v);
         else if (key == "element") p.c.element = v;

@@ -84,16 +84,25 @@ RunResult runOnce(FeCase c, const RunOptions &o)
     const fs::path dir = fs::path(o.workDir) / c.label();
     res.dir = dir.string();
     fs::create_directories(dir);
-    {
-        std::ofstream deck(dir / "job.inp");
-        deck << makeDeck(c);
+    const std::string deckText = makeDeck(c);
+    const bool reuse = o.reuse && fs::exists(dir / "job.frd") && fs::exists(dir / "ccx.log") &&
+                       fs::exists(dir / "wall_s") && slurp(dir / "job.inp") == deckText;
+    int rc = 0;
+    if (reuse) {
+        res.wallS = std::strtod(slurp(dir / "wall_s").c_str(), nullptr);
+    } else {
+        {
+            std::ofstream deck(dir / "job.inp");
+            deck << deckText;
+        }
+        for (const char *ext : {".frd", ".dat", ".sta", ".cvg"}) fs::remove(dir / (std::string("job") + ext));
+        const std::string cmd = "cd " + shellQuote(dir.string()) + " && OMP_NUM_THREADS=1 CCX_NPROC_EQUATION_SOLVER=1 timeout " +
+                                std::to_string(o.timeoutS) + " " + o.ccx + " -i job > ccx.log 2>&1";
+        const auto t0 = std::chrono::steady_clock::now();
+        rc = std::system(cmd.c_str());
+        res.wallS = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        std::ofstream(dir / "wall_s") << res.wallS << "\n"; // for a later --reuse
     }
-    for (const char *ext : {".frd", ".dat", ".sta", ".cvg"}) fs::remove(dir / (std::string("job") + ext));
-    const std::string cmd = "cd " + shellQuote(dir.string()) + " && OMP_NUM_THREADS=1 CCX_NPROC_EQUATION_SOLVER=1 timeout " +
-                            std::to_string(o.timeoutS) + " " + o.ccx + " -i job > ccx.log 2>&1";
-    const auto t0 = std::chrono::steady_clock::now();
-    const int rc = std::system(cmd.c_str());
-    res.wallS = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const std::string log = slurp(dir / "ccx.log");
     if (!fs::exists(dir / "job.frd")) {
         res.status = "error";

@@ -16,6 +16,9 @@ struct RunOptions {
     // When ccx stops early (too many cutbacks: the folding corner with a stiff stick
     // slope), the case is rerun with this stick slope; 0 = no retry. The row records it.
     double fallbackStickSlope = 1e3;
+    // Post-process the results already in the work directory instead of running ccx again,
+    // when they were made from the same deck (new post-processing, no new FE solution).
+    bool reuse = false;
 };
 
 struct RunResult {
