@@ -22,6 +22,7 @@
 #include "hal/file/folder_storage.h"
 #include "hal/file/png_display.h"
 #include "hal/file/pty_serial.h"
+#include "vision/aspect_corrected_model.h"
 #include "vision/paper_model.h"
 #include "vision/reduction_corrected_model.h"
 #ifdef ICACAM_HAVE_GPIOD
@@ -223,9 +224,11 @@ int main(int argc, char **argv)
         hal::Error show(const hal::MonoBitmap &) override { return {}; }
     } noDisplay;
     // The paper's fit, with u carried to 50 % reduction when specimen.h_final_mm is given
-    // (docs/loop.md); the same default as `icacam measure`.
+    // (docs/loop.md) and to the paper's H0/D0 1.5 from another slenderness (docs/fe.md); the
+    // same default as `icacam measure`.
     vision::PaperModel paper;
-    vision::ReductionCorrectedModel model(paper, "paper_reduction");
+    vision::ReductionCorrectedModel carry(paper, "paper_reduction");
+    vision::AspectCorrectedModel model(carry);
     fw::Device device({*cameraUsed, *triggerUsed, *ledUsed, cfg.displayBackend == "none" ? static_cast<hal::Display &>(noDisplay) : *displayUsed,
                        *serialUsed, storage, clock},
                       cfg, model);

@@ -1,5 +1,6 @@
 #include "friction_models.h"
 
+#include "vision/aspect_corrected_model.h"
 #include "vision/fe_model.h"
 #include "vision/paper_model.h"
 #include "vision/reduction_corrected_model.h"
@@ -12,8 +13,11 @@ std::unique_ptr<vision::FrictionModel> makeFrictionModel(const std::string &name
     static const vision::FeModel fe;
     if (name == "paper") return std::make_unique<vision::PaperModel>();
     if (name == "fe") return std::make_unique<vision::FeModel>(); // generated: docs/fe.md
-    if (name == "paper_reduction") return std::make_unique<vision::ReductionCorrectedModel>(paper, "paper_reduction");
-    if (name == "fe_reduction") return std::make_unique<vision::ReductionCorrectedModel>(fe, "fe_reduction");
+    // The carried models also take other slenderness (H0/D0 1.0–2.0) to the paper's 1.5.
+    static const vision::ReductionCorrectedModel paperCarry(paper, "paper_reduction");
+    static const vision::ReductionCorrectedModel feCarry(fe, "fe_reduction");
+    if (name == "paper_reduction") return std::make_unique<vision::AspectCorrectedModel>(paperCarry);
+    if (name == "fe_reduction") return std::make_unique<vision::AspectCorrectedModel>(feCarry);
     return nullptr;
 }
 } // namespace icacam::host

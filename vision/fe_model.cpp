@@ -85,9 +85,17 @@ double lerp2(const double (&tab)[t::kNCount][t::kMuCount], double n, double mu)
         b = b < t::kMuCount ? b : t::kMuCount - 1;
         return tab[a][b];
     };
-    const double v00 = at(i, j), v01 = at(i, j + 1), v10 = at(i + 1, j), v11 = at(i + 1, j + 1);
-    if (v00 < 0 || v01 < 0 || v10 < 0 || v11 < 0) return -1;
-    return (1 - wn) * ((1 - wm) * v00 + wm * v01) + wn * ((1 - wm) * v10 + wm * v11);
+    // A grid point without data (-1) only matters when it carries weight: on a simulated
+    // (n, μ) the neighbours' holes do not.
+    const double w[4] = {(1 - wn) * (1 - wm), (1 - wn) * wm, wn * (1 - wm), wn * wm};
+    const double v[4] = {at(i, j), at(i, j + 1), at(i + 1, j), at(i + 1, j + 1)};
+    double sum = 0;
+    for (int k = 0; k < 4; ++k) {
+        if (w[k] == 0) continue;
+        if (v[k] < 0) return -1;
+        sum += w[k] * v[k];
+    }
+    return sum;
 }
 
 } // namespace

@@ -13,6 +13,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "fe_aspect.h"
 #include "fe_fit.h"
 #include "fe_runner.h"
 
@@ -24,13 +25,14 @@ using namespace icacam::host::fe;
 namespace {
 
 const char *kUsage =
-    "usage: icacam fe <run|sweep|fit|report|compare|deck> [options]\n"
+    "usage: icacam fe <run|sweep|fit|aspect|report|compare|deck> [options]\n"
     "  deck    --k MPa --n N --mu MU [case options]           print the CalculiX deck\n"
     "  run     [case options] [--out CSV] [--work DIR]       one case: ccx, R_i R_o R_max u force\n"
     "  sweep   --grid 'k=500;n=0.25,0.05;mu=0.05,0.1' [case options] --out CSV [--jobs 1]\n"
     "          resumable: cases already in CSV are skipped; grid keys: k n mu e d0 h0 red elem\n"
     "  fit     --in CSV [--in CSV2] --out vision/fe_model_table.h [--reduction 0.5]\n"
     "  report  --in CSV --out DIR                             Table 1 / Fig. 3 comparison\n"
+    "  aspect  --in ASPECT.csv --in BASE.csv --out vision/aspect_table.h   u(H0/D0)/u(1.5) table\n"
     "  compare --in REF.csv --in OTHER.csv [--out MD] [--min-u 0.1] [--bar 0.05] [--edge interp|track]\n"
     "          u of the same cases on other meshes/solvers (mesh study, independent model)\n"
     "case options: --k 500 --n 0.25 --mu 0.2 --e 210000 --d0 10 --h0 15 --reduction 0.5\n"
@@ -243,6 +245,10 @@ int feCommand(const std::vector<std::string> &args)
     if (sub == "fit") {
         if (p.in.empty() || p.out.empty()) throw std::runtime_error("fit needs --in and --out");
         return fitCommand(p.in, p.out, p.reduction);
+    }
+    if (sub == "aspect") {
+        if (p.in.empty() || p.out.empty()) throw std::runtime_error("aspect needs --in CSV (other H0 and the base) and --out FILE");
+        return aspectCommand(p.in, p.out);
     }
     if (sub == "compare") return compareCommand(p.in, p.out, p.minU, p.bar, p.edge == "track");
     if (sub == "report") {

@@ -1,0 +1,145 @@
+#include "fe_aspect.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <set>
+#include <stdexcept>
+
+#include "fe_fit.h"
+
+namespace icacam::host::fe {
+
+namespace {
+constexpr double kBaseAspect = 1.5;
+double aspectOf(const FeRow &r) { return std::round(r.h0 / r.d0 * 1000) / 1000; }
+bool usable(const FeRow &r) { return (r.status == "ok" || r.status == "failed") && r.reduction >= 0.3 - 1e-9; }
+std::string list(const std::vector<double> &v)
+{
+    std::string s;
+    for (size_t i = 0; i < v.size(); ++i) {
+        char b[40];
+        std::snprintf(b, sizeof b, "%.6g", v[i]);
+        s += (i ? ", " : "") + std::string(b);
+    }
+    return s;
+}
+} // namespace
+
+AspectRatios aspectRatios(const std::vector<std::string> &in, double minU)
+{
+    std::vector<FeRow> rows;
+    for (const auto &p : in) {
+        const auto r = readSweepCsv(p);
+        rows.insert(rows.end(), r.begin(), r.end());
+    }
+    AspectRatios out;
+    // The mesh and K of the other-aspect runs decide which base rows they are compared with.
+    std::map<std::string, int> meshCount;
+    for (const auto &r : rows)
+        if (usable(r) && std::fabs(aspectOf(r) - kBaseAspect) > 1e-6) ++meshCount[meshKey(r)];
+    int best = 0;
+    for (const auto &[m, c] : meshCount) if (c > best) { best = c; out.mesh = m; }
+    auto key = [](const FeRow &r) { return std::make_tuple(r.kMpa, r.n, r.mu, r.eMpa, std::round(r.reduction * 1e4) / 1e4); };
+    // Both sides tracked, or neither: the tracked edge when every selected row has it.
+    out.tracked = true;
+    for (const auto &r : rows)
+        if (usable(r) && meshKey(r) == out.mesh && r.uTrack < 0) out.tracked = false;
+    auto u = [&](const FeRow &r) { return out.tracked ? r.uTrack : r.uInterp; };
+    std::map<std::tuple<double, double, double, double, double>, double> base;
+    for (const auto &r : rows)
+        if (usable(r) && meshKey(r) == out.mesh && std::fabs(aspectOf(r) - kBaseAspect) < 1e-6 && r.d0 == 10)
+            base[key(r)] = u(r);
+    for (const auto &r : rows) {
+        if (!usable(r) || meshKey(r) != out.mesh || std::fabs(aspectOf(r) - kBaseAspect) < 1e-6 || r.d0 != 10) continue;
+        const auto it = base.find(key(r));
+        if (it == base.end() || it->second <= minU) continue;
+        out.ratio[{aspectOf(r), r.n, std::round(r.reduction * 1e4) / 1e4, r.mu}] = u(r) / it->second;
+    }
+    return out;
+}
+
+int aspectCommand(const std::vector<std::string> &in, const std::string &out)
+{
+    const AspectRatios ar = aspectRatios(in);
+    if (ar.ratio.empty()) throw std::runtime_error("aspect: no run at another H0/D0 with a base run to compare");
+    std::set<double> as{kBaseAspect}, ns, rs, ms;
+    for (const auto &[k, v] : ar.ratio) {
+        as.insert(std::get<0>(k)); ns.insert(std::get<1>(k)); rs.insert(std::get<2>(k)); ms.insert(std::get<3>(k));
+    }
+    const std::vector<double> av(as.begin(), as.end()), nv(ns.begin(), ns.end()), rv(rs.begin(), rs.end()),
+        mv(ms.begin(), ms.end());
+    // A full table for the device's multilinear lookup: a point not simulated takes the
+    // nearest simulated one of the same slenderness (distance in μ, reduction and n, each
+    // over its span in the paper's study); the base slenderness is 1 by definition.
+    auto fillValue = [&](double a, double n, double r, double mu) {
+        if (std::fabs(a - kBaseAspect) < 1e-6) return 1.0;
+        double best = 1e9, value = 1.0;
+        for (const auto &[k, v] : ar.ratio) {
+            if (std::fabs(std::get<0>(k) - a) > 1e-6) continue;
+            const double dist = std::fabs(std::get<1>(k) - n) / 0.45 + std::fabs(std::get<2>(k) - r) / 0.3 +
+                                std::fabs(std::get<3>(k) - mu) / 0.25;
+            if (dist < best) { best = dist; value = v; }
+        }
+        return value;
+    };
+    std::string values, simulated;
+    int count = 0;
+    for (double a : av) {
+        values += "    {\n";
+        simulated += "    {\n";
+        for (double n : nv) {
+            values += "        {\n";
+            simulated += "        {\n";
+            for (double r : rv) {
+                std::string line = "            {", sline = "            {";
+                for (size_t mi = 0; mi < mv.size(); ++mi) {
+                    const bool sim = ar.ratio.count({a, n, r, mv[mi]}) > 0;
+                    char b[32];
+                    std::snprintf(b, sizeof b, "%s%.5f", mi ? ", " : "", fillValue(a, n, r, mv[mi]));
+                    line += b;
+                    sline += std::string(mi ? ", " : "") + (sim ? "1" : "0");
+                    count += sim;
+                }
+                values += line + "},\n";
+                simulated += sline + "},\n";
+            }
+            values += "        },\n";
+            simulated += "        },\n";
+        }
+        values += "    },\n";
+        simulated += "    },\n";
+    }
+    std::string inputs;
+    for (const auto &p : in) inputs += " --in " + p;
+    std::ofstream f(out);
+    f << "#pragma once\n"
+      << "// GENERATED by `icacam fe aspect" << inputs << " --out " << out << "` — do not edit.\n"
+      << "// u(H0/D0) / u(1.5): how much wider the ICA of another slenderness is than the paper's\n"
+      << "// 10 x 15 mm specimen's at the same n, μ and height reduction (D0 10 mm; CalculiX runs,\n"
+      << "// mesh " << ar.mesh << ", u from the " << (ar.tracked ? "tracked" : "interpolated")
+      << " contact edge; host_tools/fe/fe_aspect.cpp, docs/fe.md).\n"
+      << "// Only where u(1.5) > 0.1 mm; points not simulated (kSimulated 0) copy the nearest simulated\n"
+      << "// point of the same slenderness (distance in n, reduction and μ over 0.45, 0.3 and 0.25).\n"
+      << "namespace icacam::vision::aspect_table {\n"
+      << "inline constexpr const char *kProvenance = \"icacam fe aspect" << inputs << "\";\n"
+      << "inline constexpr double kBaseAspect = " << kBaseAspect << ";\n"
+      << "inline constexpr int kACount = " << av.size() << ", kNCount = " << nv.size() << ", kRCount = " << rv.size()
+      << ", kMuCount = " << mv.size() << ";\n"
+      << "inline constexpr double kAspect[kACount] = {" << list(av) << "};\n"
+      << "inline constexpr double kN[kNCount] = {" << list(nv) << "};\n"
+      << "inline constexpr double kR[kRCount] = {" << list(rv) << "};\n"
+      << "inline constexpr double kMu[kMuCount] = {" << list(mv) << "};\n"
+      << "// [aspect][n][reduction][μ]\n"
+      << "inline constexpr double kURatio[kACount][kNCount][kRCount][kMuCount] = {\n" << values << "};\n"
+      << "inline constexpr unsigned char kSimulated[kACount][kNCount][kRCount][kMuCount] = {\n" << simulated << "};\n"
+      << "} // namespace icacam::vision::aspect_table\n";
+    if (!f) throw std::runtime_error("cannot write " + out);
+    std::cout << "aspect: " << count << " simulated ratios, H0/D0 " << list(av) << ", n " << list(nv) << ", mu "
+              << list(mv) << " -> " << out << "\n";
+    return 0;
+}
+
+} // namespace icacam::host::fe

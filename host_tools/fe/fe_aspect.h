@@ -1,0 +1,24 @@
+#pragma once
+// The slenderness carry (issue 5, "beyond the paper": H0/D0 1.0–2.0): how much wider the ICA
+// of a specimen of another H0/D0 is than that of the paper's 10 x 15 mm one at the same n, μ
+// and height reduction, from FE runs at other H0 (docs/fe.md). `icacam fe aspect` writes it as
+// vision/aspect_table.h for vision/aspect_corrected_model.h.
+#include <map>
+#include <string>
+#include <tuple>
+#include <vector>
+
+namespace icacam::host::fe {
+
+// u(H0/D0) / u(1.5) at (H0/D0, n, reduction, μ), where both runs exist on the base mesh and
+// K and u(1.5) > minU (a ratio of two small widths is noise). Key: (aspect, n, reduction, μ).
+struct AspectRatios {
+    std::map<std::tuple<double, double, double, double>, double> ratio;
+    std::string mesh;
+    bool tracked = false; // from the tracked contact edge (else the interpolated one)
+};
+AspectRatios aspectRatios(const std::vector<std::string> &in, double minU = 0.1);
+
+int aspectCommand(const std::vector<std::string> &in, const std::string &out);
+
+} // namespace icacam::host::fe

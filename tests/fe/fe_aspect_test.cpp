@@ -1,0 +1,111 @@
+// The slenderness carry (vision/aspect_corrected_model.h) and its generated table
+// (vision/aspect_table.h) against the committed FE runs its provenance names.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+
+#include "fe_aspect.h"
+#include "fe_fit.h"
+#include "vision/aspect_corrected_model.h"
+#include "vision/aspect_table.h"
+#include "vision/fe_model.h"
+#include "vision/paper_model.h"
+
+using namespace icacam;
+namespace t = icacam::vision::aspect_table;
+
+namespace {
+std::vector<std::string> tableInputs()
+{
+    std::vector<std::string> in;
+    std::istringstream s(t::kProvenance);
+    std::string word;
+    while (s >> word)
+        if (word == "--in" && s >> word) in.push_back(std::string(ICACAM_SOURCE_DIR) + "/" + word);
+    return in;
+}
+int index(const double *axis, int count, double x)
+{
+    for (int i = 0; i < count; ++i)
+        if (std::fabs(axis[i] - x) < 1e-9) return i;
+    return -1;
+}
+} // namespace
+
+TEST(AspectTable, MatchesCommittedData)
+{
+    const auto in = tableInputs();
+    ASSERT_FALSE(in.empty());
+    for (const auto &p : in) ASSERT_TRUE(std::filesystem::exists(p)) << p << " (named by " << t::kProvenance << ")";
+    const auto ar = host::fe::aspectRatios(in);
+    int simulated = 0;
+    for (int a = 0; a < t::kACount; ++a)
+        for (int n = 0; n < t::kNCount; ++n)
+            for (int r = 0; r < t::kRCount; ++r)
+                for (int m = 0; m < t::kMuCount; ++m) simulated += t::kSimulated[a][n][r][m];
+    EXPECT_EQ(size_t(simulated), ar.ratio.size()) << "stale table: rerun icacam fe aspect";
+    for (const auto &[k, v] : ar.ratio) {
+        const auto [a, n, r, mu] = k;
+        const int ia = index(t::kAspect, t::kACount, a), in_ = index(t::kN, t::kNCount, n),
+                  ir = index(t::kR, t::kRCount, r), im = index(t::kMu, t::kMuCount, mu);
+        ASSERT_TRUE(ia >= 0 && in_ >= 0 && ir >= 0 && im >= 0) << "run not in the table: rerun icacam fe aspect";
+        EXPECT_TRUE(t::kSimulated[ia][in_][ir][im]);
+        EXPECT_NEAR(t::kURatio[ia][in_][ir][im], v, 2e-5) << "stale table: rerun icacam fe aspect";
+        // The lookup returns the simulated ratio at a simulated point.
+        EXPECT_NEAR(vision::AspectCorrectedModel::uRatio(a, n, r, mu), v, 2e-5);
+    }
+}
+
+TEST(AspectCorrectedModel, IsTheBaseModelAtThePapersSlenderness)
+{
+    vision::PaperModel paper;
+    vision::AspectCorrectedModel model(paper);
+    for (double u : {0.2, 0.6, 1.0}) {
+        const vision::ModelInputs in{u, 0.25, 500, 10, 15};
+        EXPECT_EQ(model.estimate(in).mu, paper.estimate(in).mu);
+        const vision::ModelInputs big{2 * u, 0.25, 500, 20, 30};
+        EXPECT_EQ(model.estimate(big).mu, paper.estimate(big).mu);
+    }
+}
+
+TEST(AspectCorrectedModel, CarriesTheSimulatedRunsBackToTheirMu)
+{
+    // A run at H0/D0 ≠ 1.5 at 50 %: its u, read through the carry and the FE model at 50 %,
+    // gives the run's μ back (the ratio comes from the same runs, so this checks the lookup,
+    // the fixed point and the composition, not the FE).
+    vision::FeModel fe;
+    vision::AspectCorrectedModel model(fe);
+    const auto ar = host::fe::aspectRatios(tableInputs());
+    int checked = 0;
+    for (const auto &[k, ratio] : ar.ratio) {
+        const auto [a, n, r, mu] = k;
+        if (std::fabs(r - 0.5) > 1e-9) continue;
+        const double u15 = fe.uAt(n, mu);
+        if (!(u15 > 0.1)) continue;
+        vision::ModelInputs in{u15 * ratio, n, 500, 10, 10 * a};
+        const auto e = model.estimate(in);
+        EXPECT_NEAR(e.mu, mu, 0.02 * mu) << "H0/D0 " << a << " n " << n << " mu " << mu;
+        EXPECT_FALSE(e.range & vision::kModelAspectOutside);
+        // Without the carry the same u reads a clearly different μ (the test can fail).
+        vision::ModelInputs plain = in;
+        plain.h0Mm = 15;
+        EXPECT_GT(std::fabs(fe.estimate(plain).mu - mu), 0.02 * mu) << "H0/D0 " << a;
+        ++checked;
+    }
+    EXPECT_GE(checked, 1);
+}
+
+TEST(AspectCorrectedModel, FlagsSlendernessOutsideTheRuns)
+{
+    vision::PaperModel paper;
+    vision::AspectCorrectedModel model(paper);
+    const double lo = vision::AspectCorrectedModel::aspectMin(), hi = vision::AspectCorrectedModel::aspectMax();
+    EXPECT_FALSE(model.estimate({0.4, 0.25, 500, 10, 10 * lo}).range & vision::kModelAspectOutside);
+    EXPECT_FALSE(model.estimate({0.4, 0.25, 500, 10, 10 * hi}).range & vision::kModelAspectOutside);
+    EXPECT_TRUE(model.estimate({0.4, 0.25, 500, 10, 10 * lo - 1}).range & vision::kModelAspectOutside);
+    EXPECT_TRUE(model.estimate({0.4, 0.25, 500, 10, 10 * hi + 1}).range & vision::kModelAspectOutside);
+    // A squat specimen's narrower ring means more friction than the paper's model says.
+    EXPECT_GT(model.estimate({0.3, 0.25, 500, 10, 10}).mu, paper.estimate({0.3, 0.25, 500, 10, 15}).mu);
+}

@@ -1,0 +1,79 @@
+#include "aspect_corrected_model.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "aspect_table.h"
+
+namespace icacam::vision {
+
+namespace t = aspect_table;
+
+namespace {
+// Index and weight of x between axis[i] and axis[i + 1], clamped to the axis.
+void bracket(const double *axis, int count, double x, int &i, double &w)
+{
+    if (count == 1 || x <= axis[0]) { i = 0; w = 0; return; }
+    if (x >= axis[count - 1]) { i = count - 2; w = 1; return; }
+    i = 0;
+    while (i < count - 2 && x > axis[i + 1]) ++i;
+    w = (x - axis[i]) / (axis[i + 1] - axis[i]);
+}
+} // namespace
+
+double AspectCorrectedModel::aspectMin() { return t::kAspect[0]; }
+double AspectCorrectedModel::aspectMax() { return t::kAspect[t::kACount - 1]; }
+
+double AspectCorrectedModel::uRatio(double aspect, double n, double reduction, double mu)
+{
+    int ia, in, ir, im;
+    double wa, wn, wr, wm;
+    bracket(t::kAspect, t::kACount, aspect, ia, wa);
+    bracket(t::kN, t::kNCount, n, in, wn);
+    bracket(t::kR, t::kRCount, reduction, ir, wr);
+    bracket(t::kMu, t::kMuCount, mu, im, wm);
+    double sum = 0;
+    for (int da = 0; da < 2; ++da)
+        for (int dn = 0; dn < 2; ++dn)
+            for (int dr = 0; dr < 2; ++dr)
+                for (int dm = 0; dm < 2; ++dm) {
+                    const double w = (da ? wa : 1 - wa) * (dn ? wn : 1 - wn) * (dr ? wr : 1 - wr) * (dm ? wm : 1 - wm);
+                    if (w == 0) continue;
+                    sum += w * t::kURatio[std::min(ia + da, t::kACount - 1)][std::min(in + dn, t::kNCount - 1)]
+                                         [std::min(ir + dr, t::kRCount - 1)][std::min(im + dm, t::kMuCount - 1)];
+                }
+    return sum;
+}
+
+ModelEstimate AspectCorrectedModel::estimate(const ModelInputs &in) const
+{
+    if (!(in.d0Mm > 0) || !(in.h0Mm > 0)) return base_.estimate(in);
+    const double aspect = in.h0Mm / in.d0Mm;
+    if (std::fabs(aspect - t::kBaseAspect) <= kAspectTolerance) return base_.estimate(in);
+    // The same specimen as the base model knows it: 1.5 slender, same D0 and reduction.
+    ModelInputs m = in;
+    m.h0Mm = t::kBaseAspect * in.d0Mm;
+    if (in.hFinalMm > 0) m.hFinalMm = in.hFinalMm * m.h0Mm / in.h0Mm;
+    const double reduction = in.hFinalMm > 0 && in.hFinalMm < in.h0Mm ? 1.0 - in.hFinalMm / in.h0Mm : 0.5;
+    ModelEstimate e = base_.estimate(m);
+    double ratio = 1;
+    // μ enters the ratio only weakly: a few damped steps settle it.
+    for (int it = 0; it < 8; ++it) {
+        const double next = uRatio(aspect, in.n, reduction, e.mu);
+        if (!(next > 0)) break;
+        ratio = it == 0 ? next : 0.5 * (ratio + next);
+        m.uMm = in.uMm / ratio;
+        e = base_.estimate(m);
+        if (std::fabs(uRatio(aspect, in.n, reduction, e.mu) - ratio) < 1e-6) break;
+    }
+    e.dMuDu /= ratio;
+    // The carry's own error: a quarter of the correction in u (the ratio's spread with n and
+    // mesh, docs/fe.md), carried through the slope.
+    const double carrySigmaU = 0.25 * std::fabs(in.uMm - m.uMm);
+    e.modelSigma = std::hypot(e.modelSigma, e.dMuDu * carrySigmaU);
+    if (aspect < t::kAspect[0] - kAspectTolerance || aspect > t::kAspect[t::kACount - 1] + kAspectTolerance)
+        e.range |= kModelAspectOutside;
+    return e;
+}
+
+} // namespace icacam::vision
