@@ -8,61 +8,61 @@
 namespace icacam::vision::aspect_table {
 inline constexpr const char *kProvenance = "icacam fe aspect --in data/fe/aspect_cax8r.csv --in data/fe/sweep_cax8r_tracked.csv";
 inline constexpr double kBaseAspect = 1.5;
-inline constexpr int kACount = 3, kNCount = 1, kRCount = 4, kMuCount = 1;
+inline constexpr int kACount = 3, kNCount = 1, kRCount = 4, kMuCount = 2;
 inline constexpr double kAspect[kACount] = {1, 1.5, 2};
 inline constexpr double kN[kNCount] = {0.25};
 inline constexpr double kR[kRCount] = {0.45, 0.5, 0.55, 0.6};
-inline constexpr double kMu[kMuCount] = {0.1};
+inline constexpr double kMu[kMuCount] = {0.05, 0.1};
 // [aspect][n][reduction][μ]
 inline constexpr double kURatio[kACount][kNCount][kRCount][kMuCount] = {
     {
         {
-            {0.70072},
-            {0.69112},
-            {0.72081},
-            {0.73256},
+            {0.70072, 0.70072},
+            {0.69112, 0.69112},
+            {0.58938, 0.72081},
+            {0.58938, 0.73256},
         },
     },
     {
         {
-            {1.00000},
-            {1.00000},
-            {1.00000},
-            {1.00000},
+            {1.00000, 1.00000},
+            {1.00000, 1.00000},
+            {1.00000, 1.00000},
+            {1.00000, 1.00000},
         },
     },
     {
         {
-            {1.09295},
-            {1.07370},
-            {1.07050},
-            {1.17436},
+            {1.09295, 1.09295},
+            {1.07370, 1.07370},
+            {1.32490, 1.07050},
+            {1.32490, 1.17436},
         },
     },
 };
 inline constexpr unsigned char kSimulated[kACount][kNCount][kRCount][kMuCount] = {
     {
         {
-            {1},
-            {1},
-            {1},
-            {1},
+            {0, 1},
+            {0, 1},
+            {0, 1},
+            {1, 1},
         },
     },
     {
         {
-            {0},
-            {0},
-            {0},
-            {0},
+            {0, 0},
+            {0, 0},
+            {0, 0},
+            {0, 0},
         },
     },
     {
         {
-            {1},
-            {1},
-            {1},
-            {1},
+            {0, 1},
+            {0, 1},
+            {0, 1},
+            {1, 1},
         },
     },
 };

@@ -17,11 +17,11 @@ struct Row {
     int count = 0;
 };
 
-Row rowAt(int ni)
+Row rowAt(int ri, int ni)
 {
     Row r;
     for (int j = 0; j < t::kMuCount; ++j) {
-        const double u = t::kU[ni][j];
+        const double u = t::kU[ri][ni][j];
         if (u < 0) continue;
         if (r.count > 0 && u <= r.u[r.count - 1] + 1e-6) {
             // u did not grow (no fold-over yet at this μ): u cannot tell these μ apart; keep
@@ -98,6 +98,40 @@ double lerp2(const double (&tab)[t::kNCount][t::kMuCount], double n, double mu)
     return sum;
 }
 
+using Table = double[t::kRCount][t::kNCount][t::kMuCount];
+
+// Bilinear in (n, μ) at the two snapshot reductions around r, linear between them.
+double lerp3(const Table &tab, double n, double mu, double r)
+{
+    int k = 0;
+    double w = 0;
+    bracket(t::kR, t::kRCount, r, k, w);
+    const double a = lerp2(tab[k], n, mu);
+    if (w == 0 || t::kRCount == 1) return a;
+    const double b = lerp2(tab[k + 1], n, mu);
+    if (w == 1) return b;
+    return a < 0 || b < 0 ? -1 : (1 - w) * a + w * b;
+}
+
+// μ from u at snapshot reduction index ri: PCHIP along the two simulated n around n.
+ModelEstimate atReduction(int ri, double n, double u, double scale)
+{
+    ModelEstimate e;
+    int i = 0;
+    double w = 0;
+    bracket(t::kN, t::kNCount, n, i, w);
+    const int i1 = t::kNCount > 1 ? i + 1 : i;
+    double mu0 = 0, d0 = 0, mu1 = 0, d1 = 0;
+    bool out0 = false, out1 = false;
+    const Row r0 = rowAt(ri, i), r1 = rowAt(ri, i1);
+    pchip(r0, u, mu0, d0, out0);
+    pchip(r1, u, mu1, d1, out1);
+    e.mu = (1 - w) * mu0 + w * mu1;
+    e.dMuDu = ((1 - w) * d0 + w * d1) * scale;
+    if ((w < 1 && out0) || (w > 0 && out1)) e.range |= kModelUOutside;
+    return e;
+}
+
 } // namespace
 
 ModelEstimate FeModel::estimate(const ModelInputs &in) const
@@ -110,18 +144,22 @@ ModelEstimate FeModel::estimate(const ModelInputs &in) const
     if (in.kMpa > 0 && (in.kMpa < t::kKMinMpa - 1e-9 || in.kMpa > t::kKMaxMpa + 1e-9)) e.range |= kModelKOutside;
     if (in.d0Mm > 0 && in.h0Mm > 0 && std::fabs(in.h0Mm / in.d0Mm - t::kH0Mm / t::kD0Mm) > kAspectTolerance)
         e.range |= kModelAspectOutside;
-    int i = 0;
-    double w = 0;
-    bracket(t::kN, t::kNCount, in.n, i, w);
-    const int i1 = t::kNCount > 1 ? i + 1 : i;
-    double mu0 = 0, d0 = 0, mu1 = 0, d1 = 0;
-    bool out0 = false, out1 = false;
-    const Row r0 = rowAt(i), r1 = rowAt(i1);
-    pchip(r0, u, mu0, d0, out0);
-    pchip(r1, u, mu1, d1, out1);
-    e.mu = (1 - w) * mu0 + w * mu1;
-    e.dMuDu = ((1 - w) * d0 + w * d1) * scale;
-    if ((w < 1 && out0) || (w > 0 && out1)) e.range |= kModelUOutside;
+    // The reduction: the declared final height's, else the model's own (50 %).
+    double red = t::kReduction;
+    if (in.hFinalMm > 0) {
+        if (in.h0Mm > 0 && in.hFinalMm < in.h0Mm) red = 1.0 - in.hFinalMm / in.h0Mm;
+        else e.range |= kModelReductionOutside;
+    }
+    if (red < t::kR[0] - 1e-9 || red > t::kR[t::kRCount - 1] + 1e-9) e.range |= kModelReductionOutside;
+    int k = 0;
+    double wr = 0;
+    bracket(t::kR, t::kRCount, red, k, wr);
+    const ModelEstimate a = atReduction(k, in.n, u, scale);
+    const ModelEstimate b = t::kRCount > 1 ? atReduction(k + 1, in.n, u, scale) : a;
+    e.mu = (1 - wr) * a.mu + wr * b.mu;
+    e.dMuDu = (1 - wr) * a.dMuDu + wr * b.dMuDu;
+    if (wr < 1) e.range |= a.range;
+    if (wr > 0) e.range |= b.range;
     const double muLo = t::kMu[0], muHi = t::kMu[t::kMuCount - 1];
     if (e.mu < muLo - 1e-9 || (u <= 0 && muLo > 0)) e.range |= kModelMuBelow;
     if (e.mu > muHi + 1e-9) e.range |= kModelMuAbove;
@@ -132,15 +170,20 @@ ModelEstimate FeModel::estimate(const ModelInputs &in) const
     return e;
 }
 
-double FeModel::uAt(double n, double mu) const { return lerp2(t::kU, n, mu); }
+double FeModel::uAt(double n, double mu, double reduction) const
+{
+    return lerp3(t::kU, n, mu, reduction > 0 ? reduction : t::kReduction);
+}
 
-FeRadii FeModel::radii(double n, double mu, double d0Mm) const
+FeRadii FeModel::radii(double n, double mu, double d0Mm, double reduction) const
 {
     FeRadii r;
     const double s = d0Mm / t::kD0Mm;
-    r.riMm = lerp2(t::kRi, n, mu) * s;
-    r.roMm = lerp2(t::kRo, n, mu) * s;
-    r.rMaxMm = lerp2(t::kRmax, n, mu) * s;
+    const double red = reduction > 0 ? reduction : t::kReduction;
+    r.riMm = lerp3(t::kRi, n, mu, red) * s;
+    r.roMm = lerp3(t::kRo, n, mu, red) * s;
+    r.rMaxMm = lerp3(t::kRmax, n, mu, red) * s;
+    if (red < t::kR[0] - 1e-9 || red > t::kR[t::kRCount - 1] + 1e-9) r.range |= kModelReductionOutside;
     if (n < t::kN[0] - 1e-9) r.range |= kModelNBelow;
     if (n > t::kN[t::kNCount - 1] + 1e-9) r.range |= kModelNAbove;
     if (mu < t::kMu[0] - 1e-9) r.range |= kModelMuBelow;

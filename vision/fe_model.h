@@ -15,12 +15,14 @@ class FeModel final : public FrictionModel {
 public:
     const char *name() const override { return "fe"; }
     // μ from u (scaled to D0 = 10 mm by geometric similarity) and n: monotone cubic (PCHIP)
-    // in u along each simulated n, linear between the simulated n.
+    // in u along each simulated n, linear between the simulated n, at the declared final
+    // height's reduction (snapshots 30-60 %, linear between them), else at 50 %.
     ModelEstimate estimate(const ModelInputs &in) const override;
-    // The FE's u at (n, μ) (D0 = 10 mm), linear in μ and n between grid points.
-    double uAt(double n, double mu) const;
-    // The radii the FE predicts at (n, μ), scaled to d0Mm.
-    FeRadii radii(double n, double mu, double d0Mm = 10) const;
+    bool correctsReduction() const override { return true; }
+    // The FE's u at (n, μ, reduction; 0: 50 %) (D0 = 10 mm), linear between grid points.
+    double uAt(double n, double mu, double reduction = 0) const;
+    // The radii the FE predicts at (n, μ, reduction; 0: 50 %), scaled to d0Mm.
+    FeRadii radii(double n, double mu, double d0Mm = 10, double reduction = 0) const;
 };
 
 } // namespace icacam::vision

@@ -27,6 +27,7 @@ struct Point {
     double n = 0, mu = 0, u = 0, ri = 0, ro = 0, rMax = 0, force = 0, elem = 0;
     std::string mesh;
     int count = 0;
+    int tracked = 0; // rows with the tracked contact edge (u is theirs)
     double kMin = 1e9, kMax = 0;
 };
 std::map<std::pair<double, double>, Point> basePoints(const std::vector<std::string> &in, double reduction);

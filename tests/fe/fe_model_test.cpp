@@ -29,11 +29,11 @@ std::vector<std::string> tableInputs()
     return in;
 }
 
-// (n, μ) → u of the base data, selected exactly as `icacam fe fit` selects it.
-std::map<std::pair<double, double>, double> baseU()
+// (n, μ) → u of the base data at one reduction, selected exactly as `icacam fe fit` selects it.
+std::map<std::pair<double, double>, double> baseU(double reduction)
 {
     std::map<std::pair<double, double>, double> out;
-    for (const auto &[k, p] : host::fe::basePoints(tableInputs(), t::kReduction)) out[k] = p.u;
+    for (const auto &[k, p] : host::fe::basePoints(tableInputs(), reduction)) out[k] = p.u;
     return out;
 }
 
@@ -47,16 +47,22 @@ bool haveInputs()
 TEST(FeModel, TableMatchesCommittedData)
 {
     ASSERT_TRUE(haveInputs()) << "the table's inputs are not in the tree: " << t::kProvenance;
-    const auto base = baseU();
     int found = 0;
-    for (int i = 0; i < t::kNCount; ++i)
-        for (int j = 0; j < t::kMuCount; ++j) {
-            if (t::kU[i][j] < 0) continue;
-            const auto it = base.find({t::kN[i], t::kMu[j]});
-            ASSERT_NE(it, base.end()) << "table point n=" << t::kN[i] << " mu=" << t::kMu[j] << " not in CSV";
-            EXPECT_NEAR(t::kU[i][j], it->second, 2e-5) << "stale table: rerun icacam fe fit";
-            ++found;
-        }
+    for (int r = 0; r < t::kRCount; ++r) {
+        const auto base = baseU(t::kR[r]);
+        size_t inTable = 0;
+        for (int i = 0; i < t::kNCount; ++i)
+            for (int j = 0; j < t::kMuCount; ++j) {
+                if (t::kU[r][i][j] < 0) continue;
+                const auto it = base.find({t::kN[i], t::kMu[j]});
+                ASSERT_NE(it, base.end()) << "table point n=" << t::kN[i] << " mu=" << t::kMu[j] << " r=" << t::kR[r]
+                                          << " not in CSV";
+                EXPECT_NEAR(t::kU[r][i][j], it->second, 2e-5) << "stale table: rerun icacam fe fit";
+                ++found;
+                ++inTable;
+            }
+        EXPECT_EQ(inTable, base.size()) << "the CSV has points the table lacks at r=" << t::kR[r] << ": rerun icacam fe fit";
+    }
     EXPECT_GE(found, 1);
 }
 
@@ -65,17 +71,19 @@ TEST(FeModel, ReproducesFeDataWithinOnePercent)
     ASSERT_TRUE(haveInputs()) << "the table's inputs are not in the tree: " << t::kProvenance;
     vision::FeModel model;
     int checked = 0;
-    for (const auto &[key, u] : baseU()) {
-        vision::ModelInputs in;
-        in.n = key.first;
-        in.uMm = u;
-        const auto e = model.estimate(in);
-        if (e.range != vision::kModelInRange) continue; // e.g. u = 0: no fold-over, μ unresolved
-        EXPECT_NEAR(e.mu, key.second, 0.01 * key.second) << "n=" << key.first << " u=" << u;
-        EXPECT_GT(e.dMuDu, 0);
-        ++checked;
-    }
-    EXPECT_GE(checked, 1);
+    for (int r = 0; r < t::kRCount; ++r)
+        for (const auto &[key, u] : baseU(t::kR[r])) {
+            vision::ModelInputs in;
+            in.n = key.first;
+            in.uMm = u;
+            in.hFinalMm = in.h0Mm * (1 - t::kR[r]);
+            const auto e = model.estimate(in);
+            if (e.range != vision::kModelInRange) continue; // e.g. u = 0: no fold-over, μ unresolved
+            EXPECT_NEAR(e.mu, key.second, 0.01 * key.second) << "n=" << key.first << " u=" << u << " r=" << t::kR[r];
+            EXPECT_GT(e.dMuDu, 0);
+            ++checked;
+        }
+    EXPECT_GE(checked, 10);
 }
 
 TEST(FeModel, FlagsOutsideTheRange)
@@ -93,6 +101,17 @@ TEST(FeModel, FlagsOutsideTheRange)
     in.uMm = 0.5;
     in.kMpa = 5000;
     EXPECT_TRUE(model.estimate(in).range & vision::kModelKOutside);
+    in.kMpa = 0;
+    // Height reduction: inside the snapshots no flag, outside (or no upset at all) a flag.
+    in.hFinalMm = 15 * (1 - 0.5 * (t::kR[0] + t::kR[t::kRCount - 1]));
+    EXPECT_FALSE(model.estimate(in).range & vision::kModelReductionOutside);
+    in.hFinalMm = 15 * (1 - t::kR[t::kRCount - 1] - 0.03);
+    EXPECT_TRUE(model.estimate(in).range & vision::kModelReductionOutside);
+    in.hFinalMm = 15 * (1 - t::kR[0] + 0.03);
+    EXPECT_TRUE(model.estimate(in).range & vision::kModelReductionOutside);
+    in.hFinalMm = 16;
+    EXPECT_TRUE(model.estimate(in).range & vision::kModelReductionOutside);
+    in.hFinalMm = 0;
     // Geometric similarity: u at D0 = 20 mm is twice u at 10 mm for the same μ.
     vision::ModelInputs a, b;
     a.n = b.n = t::kN[0];
