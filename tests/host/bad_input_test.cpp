@@ -92,3 +92,40 @@ TEST(BadInput, EachGetsAnErrorAndTheBatchGoesOn)
     EXPECT_NE(rows["bad-n"]["message"].find("n"), std::string::npos);
     fs::remove_all(dir);
 }
+
+TEST(BadInput, SlendernessOutsideTheModelIsFlaggedNeverSilent)
+{
+    const fs::path dir = test::tempDir("aspect");
+    std::vector<uint8_t> png;
+    cv::imencode(".png", host::renderEndFace(host::nominalScene(0.6)), png);
+    writeBytes(dir / "good.png", png);
+    std::ofstream man(dir / "manifest.csv");
+    man << "id,image,n,mm_per_px,d0_mm,h0_mm\n"
+           "paper,good.png,0.25,0.0135,10,15\n"
+           "squat,good.png,0.25,0.0135,10,10\n"
+           "slender,good.png,0.25,0.0135,10,20\n"
+           "too-slender,good.png,0.25,0.0135,10,25\n";
+    man.close();
+    auto run = [&](const char *model) {
+        const std::string out = (dir / (std::string(model) + ".csv")).string();
+        EXPECT_EQ(host::measureCommand({"--manifest", (dir / "manifest.csv").string(), "--out", out, "--model", model}), 0);
+        return test::readCsvById(out);
+    };
+    auto flagged = [](std::map<std::string, std::string> &r) { return r["flags"].find("aspect_outside_model") != std::string::npos; };
+    // The paper's fit knows 10 x 15 only: every other slenderness says so.
+    auto paper = run("paper");
+    EXPECT_FALSE(flagged(paper["paper"]));
+    for (const char *id : {"squat", "slender", "too-slender"}) {
+        EXPECT_TRUE(flagged(paper[id])) << id;
+        EXPECT_EQ(paper[id]["status"], "warn") << id;
+    }
+    // The default model carries 1.0-2.0 to 1.5 with the FE ratio (a squat specimen's ring is
+    // narrower for the same friction, so the same ring means more friction) and flags beyond.
+    auto carried = run("paper_reduction");
+    EXPECT_FALSE(flagged(carried["paper"]));
+    EXPECT_FALSE(flagged(carried["squat"]));
+    EXPECT_FALSE(flagged(carried["slender"]));
+    EXPECT_TRUE(flagged(carried["too-slender"]));
+    EXPECT_GT(std::stod(carried["squat"]["mu"]), std::stod(carried["paper"]["mu"]) + 0.01);
+    EXPECT_LT(std::stod(carried["slender"]["mu"]), std::stod(carried["paper"]["mu"]));
+}
