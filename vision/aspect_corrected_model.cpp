@@ -4,22 +4,11 @@
 #include <cmath>
 
 #include "aspect_table.h"
+#include "table_axis.h"
 
 namespace icacam::vision {
 
 namespace t = aspect_table;
-
-namespace {
-// Index and weight of x between axis[i] and axis[i + 1], clamped to the axis.
-void bracket(const double *axis, int count, double x, int &i, double &w)
-{
-    if (count == 1 || x <= axis[0]) { i = 0; w = 0; return; }
-    if (x >= axis[count - 1]) { i = count - 2; w = 1; return; }
-    i = 0;
-    while (i < count - 2 && x > axis[i + 1]) ++i;
-    w = (x - axis[i]) / (axis[i + 1] - axis[i]);
-}
-} // namespace
 
 double AspectCorrectedModel::aspectMin() { return t::kAspect[0]; }
 double AspectCorrectedModel::aspectMax() { return t::kAspect[t::kACount - 1]; }
@@ -28,10 +17,10 @@ double AspectCorrectedModel::uRatio(double aspect, double n, double reduction, d
 {
     int ia, in, ir, im;
     double wa, wn, wr, wm;
-    bracket(t::kAspect, t::kACount, aspect, ia, wa);
-    bracket(t::kN, t::kNCount, n, in, wn);
-    bracket(t::kR, t::kRCount, reduction, ir, wr);
-    bracket(t::kMu, t::kMuCount, mu, im, wm);
+    bracketAxis(t::kAspect, t::kACount, aspect, ia, wa);
+    bracketAxis(t::kN, t::kNCount, n, in, wn);
+    bracketAxis(t::kR, t::kRCount, reduction, ir, wr);
+    bracketAxis(t::kMu, t::kMuCount, mu, im, wm);
     double sum = 0;
     for (int da = 0; da < 2; ++da)
         for (int dn = 0; dn < 2; ++dn)

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "fe_model_table.h"
+#include "table_axis.h"
 
 namespace icacam::vision {
 
@@ -64,22 +65,13 @@ void pchip(const Row &r, double x, double &y, double &dy, bool &outside)
           (3 * s2 - 2 * s) * m1) / h;
 }
 
-// Bracket x in a sorted axis: index i and weight w for axis[i], axis[i+1].
-void bracket(const double *axis, int count, double x, int &i, double &w)
-{
-    if (count == 1 || x <= axis[0]) { i = 0; w = 0; return; }
-    if (x >= axis[count - 1]) { i = count - 2; w = 1; return; }
-    i = 0;
-    while (i < count - 2 && x > axis[i + 1]) ++i;
-    w = (x - axis[i]) / (axis[i + 1] - axis[i]);
-}
 
 double lerp2(const double (&tab)[t::kNCount][t::kMuCount], double n, double mu)
 {
     int i = 0, j = 0;
     double wn = 0, wm = 0;
-    bracket(t::kN, t::kNCount, n, i, wn);
-    bracket(t::kMu, t::kMuCount, mu, j, wm);
+    bracketAxis(t::kN, t::kNCount, n, i, wn);
+    bracketAxis(t::kMu, t::kMuCount, mu, j, wm);
     auto at = [&](int a, int b) {
         a = a < t::kNCount ? a : t::kNCount - 1;
         b = b < t::kMuCount ? b : t::kMuCount - 1;
@@ -105,7 +97,7 @@ double lerp3(const Table &tab, double n, double mu, double r)
 {
     int k = 0;
     double w = 0;
-    bracket(t::kR, t::kRCount, r, k, w);
+    bracketAxis(t::kR, t::kRCount, r, k, w);
     const double a = lerp2(tab[k], n, mu);
     if (w == 0 || t::kRCount == 1) return a;
     const double b = lerp2(tab[k + 1], n, mu);
@@ -119,7 +111,7 @@ ModelEstimate atReduction(int ri, double n, double u, double scale)
     ModelEstimate e;
     int i = 0;
     double w = 0;
-    bracket(t::kN, t::kNCount, n, i, w);
+    bracketAxis(t::kN, t::kNCount, n, i, w);
     const int i1 = t::kNCount > 1 ? i + 1 : i;
     double mu0 = 0, d0 = 0, mu1 = 0, d1 = 0;
     bool out0 = false, out1 = false;
@@ -153,7 +145,7 @@ ModelEstimate FeModel::estimate(const ModelInputs &in) const
     if (red < t::kR[0] - 1e-9 || red > t::kR[t::kRCount - 1] + 1e-9) e.range |= kModelReductionOutside;
     int k = 0;
     double wr = 0;
-    bracket(t::kR, t::kRCount, red, k, wr);
+    bracketAxis(t::kR, t::kRCount, red, k, wr);
     const ModelEstimate a = atReduction(k, in.n, u, scale);
     const ModelEstimate b = t::kRCount > 1 ? atReduction(k + 1, in.n, u, scale) : a;
     e.mu = (1 - wr) * a.mu + wr * b.mu;

@@ -8,6 +8,7 @@
 
 #include "fe_aspect.h"
 #include "fe_fit.h"
+#include "table_inputs.h"
 #include "vision/aspect_corrected_model.h"
 #include "vision/aspect_table.h"
 #include "vision/fe_model.h"
@@ -17,15 +18,7 @@ using namespace icacam;
 namespace t = icacam::vision::aspect_table;
 
 namespace {
-std::vector<std::string> tableInputs()
-{
-    std::vector<std::string> in;
-    std::istringstream s(t::kProvenance);
-    std::string word;
-    while (s >> word)
-        if (word == "--in" && s >> word) in.push_back(std::string(ICACAM_SOURCE_DIR) + "/" + word);
-    return in;
-}
+std::vector<std::string> tableInputs() { return test::provenanceInputs(t::kProvenance); }
 int index(const double *axis, int count, double x)
 {
     for (int i = 0; i < count; ++i)

@@ -10,6 +10,7 @@
 #include <map>
 
 #include "fe_fit.h"
+#include "table_inputs.h"
 #include "vision/fe_model.h"
 #include "vision/fe_model_table.h"
 
@@ -17,17 +18,7 @@ using namespace icacam;
 namespace t = icacam::vision::fe_table;
 
 namespace {
-// The CSVs the table was generated from, as its provenance names them ("icacam fe fit --in A
-// --in B"), relative to the source tree.
-std::vector<std::string> tableInputs()
-{
-    std::vector<std::string> in;
-    std::istringstream s(t::kProvenance);
-    std::string word;
-    while (s >> word)
-        if (word == "--in" && s >> word) in.push_back(std::string(ICACAM_SOURCE_DIR) + "/" + word);
-    return in;
-}
+std::vector<std::string> tableInputs() { return test::provenanceInputs(t::kProvenance); }
 
 // (n, μ) → u of the base data at one reduction, selected exactly as `icacam fe fit` selects it.
 std::map<std::pair<double, double>, double> baseU(double reduction)
