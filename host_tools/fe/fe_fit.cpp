@@ -11,6 +11,7 @@
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <tuple>
 
 #include "vision/paper_model.h"
 
@@ -512,6 +513,7 @@ int compareCommand(const std::vector<std::string> &in, const std::string &out, d
        << "|---|---|---|---|---|---|---|---|---|---|\n";
     double worst = 0;
     int counted = 0, within = 0;
+    std::map<long, std::tuple<int, int, double>> perReduction; // % → (judged, within, worst)
     for (size_t f = 1; f < in.size(); ++f)
         for (const FeRow &o : readSweepCsv(in[f])) {
             if (!reached(o, o.reduction) || o.reduction < 0.3 - 1e-9 || uOf(o) < 0) continue;
@@ -524,6 +526,10 @@ int compareCommand(const std::vector<std::string> &in, const std::string &out, d
                 ++counted;
                 worst = std::max(worst, std::fabs(rel));
                 if (std::fabs(rel) <= bar) ++within;
+                auto &[c, w, mx] = perReduction[std::lround(100 * r.reduction)];
+                ++c;
+                w += std::fabs(rel) <= bar;
+                mx = std::max(mx, std::fabs(rel));
             }
             char delta[32] = "–";
             if (uOf(r) > 0) std::snprintf(delta, sizeof delta, "%+.1f", 100 * rel);
@@ -538,6 +544,14 @@ int compareCommand(const std::vector<std::string> &in, const std::string &out, d
     std::snprintf(sum, sizeof sum, "\n%d of %d comparisons with u > %g mm within %g %%; largest |Δu| %.1f %%.\n",
                   within, counted, minU, 100 * bar, 100 * worst);
     md << sum;
+    if (!perReduction.empty()) {
+        md << "\n| reduction | judged | within bar | largest \\|Δu\\| % |\n|---|---|---|---|\n";
+        for (const auto &[pct, v] : perReduction) {
+            char b[120];
+            std::snprintf(b, sizeof b, "| %ld %% | %d | %d | %.1f |\n", pct, std::get<0>(v), std::get<1>(v), 100 * std::get<2>(v));
+            md << b;
+        }
+    }
     if (out.empty()) std::cout << md.str();
     else {
         std::ofstream f(out);
