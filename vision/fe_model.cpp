@@ -156,9 +156,12 @@ ModelEstimate FeModel::estimate(const ModelInputs &in) const
     if (e.mu < muLo - 1e-9 || (u <= 0 && muLo > 0)) e.range |= kModelMuBelow;
     if (e.mu > muHi + 1e-9) e.range |= kModelMuAbove;
     if (e.dMuDu <= 0) e.range |= kModelUOutside;
-    // The model's own error: the mesh study's spread in u carried through the slope, plus
-    // the interpolation between simulated n (docs/fe.md).
-    e.modelSigma = 0.02 * std::fabs(e.mu) + 0.005;
+    // The model's own error: the FE's own spread in u (independent model and mesh study,
+    // docs/fe.md: a few per cent where the side has rolled far, tens of per cent near the
+    // fold-over's onset), 0.03 u + 0.02 mm at D0 = 10, through the slope; plus 0.003 for the
+    // interpolation between simulated n and μ.
+    const double sigmaU10 = 0.03 * u + 0.02;
+    e.modelSigma = std::hypot(std::fabs(e.dMuDu / scale) * sigmaU10, 0.003);
     return e;
 }
 
