@@ -26,7 +26,9 @@ bool readRows(const std::string &path, std::vector<Row> *rows, std::string *erro
     std::vector<std::string> header, cells;
     if (!std::getline(f, line) || !splitCsvLine(line, &header)) { *error = "no header in '" + path + "'"; return false; }
     while (std::getline(f, line)) {
-        if (!splitCsvLine(line, &cells) || cells.size() != header.size()) continue;
+        // Rows written before columns were added at the end have fewer cells: those are empty.
+        if (!splitCsvLine(line, &cells) || cells.size() > header.size()) continue;
+        cells.resize(header.size());
         ManifestRow row;
         for (size_t i = 0; i < header.size(); ++i) row.cells[header[i]] = cells[i];
         const std::string status = row.get("status");
@@ -38,6 +40,11 @@ bool readRows(const std::string &path, std::vector<Row> *rows, std::string *erro
             !parseNumber(row.get("u_interp_mm"), &r.s.uMm) || !parseNumber(row.get("r_i_mm"), &r.s.riMm) ||
             !parseNumber(row.get("r_o_interp_mm"), &r.s.roMm) || !parseNumber(row.get("r_max_mm"), &r.s.rMaxMm))
             continue;
+        // The contact edge tracked between the nodes' touchdowns, where the run has it (docs/fe.md).
+        if (double ut = -1; parseNumber(row.get("u_track_mm"), &ut) && ut >= 0) {
+            r.s.uMm = ut;
+            r.s.roMm = r.s.riMm + ut;
+        }
         if (!(r.s.reduction > 0)) continue;
         if (row.has("e_mpa") && parseNumber(row.get("e_mpa"), &e) && std::fabs(e - 210000) > 1) continue;
         if (row.has("d0_mm") && parseNumber(row.get("d0_mm"), &d0) && std::fabs(d0 - 10) > 1e-9) continue;

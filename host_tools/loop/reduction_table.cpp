@@ -64,11 +64,12 @@ std::string reductionTableText(const std::vector<std::string> &csvs, const std::
     o += "// (host_tools/loop/reduction_table.cpp) — do not edit; tests/loop guard that it matches the CSV.\n";
     o += "// The FE snapshots of the upsetting runs (docs/fe.md) as the device needs them:\n";
     o += "// - du/dr at 50 % reduction (mm per unit reduction, D0 = 10 mm): per (n, μ) run a least-squares\n";
-    o += "//   quadratic of u_interp_mm over the reductions >= 0.35 where u > 0.02 mm, its slope at 0.5,\n";
+    o += "//   quadratic of u (u_track_mm where the runs have it, else u_interp_mm) over the reductions\n";
+    o += "//   >= 0.35 where u > 0.02 mm, its slope at 0.5,\n";
     o += "//   then a quadratic surface c0 + c1 n + c2 μ + c3 n² + c4 nμ + c5 μ² through those slopes\n";
     o += "//   (the same fit as `icacam loop`, host_tools/loop/loop_analysis.cpp, ReductionSlope);\n";
     o += "// - the reductions the linear carry covers (kReductionMin..kReductionMax);\n";
-    o += "// - R_i, R_o (r_o_interp_mm), R_max at every snapshot, scaled to D0 = 10 mm; -1 marks a point\n";
+    o += "// - R_i, R_o (R_i + u), R_max at every snapshot, scaled to D0 = 10 mm; -1 marks a point\n";
     o += "//   without data.\n";
     o += "// Base data (host_tools/loop/fe_base_data.h, chosen as `icacam fe fit` does): mesh " + base.mesh +
          ",\n// K " + numberText("%g", base.kMpa) + " MPa, E 210 GPa, D0 10, H0 15 mm; ok runs and the snapshots later-stopped runs reached.\n";
