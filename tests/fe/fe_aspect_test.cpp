@@ -81,10 +81,13 @@ TEST(AspectCorrectedModel, CarriesTheSimulatedRunsBackToTheirMu)
         const auto e = model.estimate(in);
         EXPECT_NEAR(e.mu, mu, 0.02 * mu) << "H0/D0 " << a << " n " << n << " mu " << mu;
         EXPECT_FALSE(e.range & vision::kModelAspectOutside);
-        // Without the carry the same u reads a clearly different μ (the test can fail).
+        // Where the slenderness moves u by more than 10 %, the same u read without the carry
+        // gives a clearly different μ (so this test can fail).
         vision::ModelInputs plain = in;
         plain.h0Mm = 15;
-        EXPECT_GT(std::fabs(fe.estimate(plain).mu - mu), 0.02 * mu) << "H0/D0 " << a;
+        if (std::fabs(ratio - 1) > 0.1) {
+            EXPECT_GT(std::fabs(fe.estimate(plain).mu - mu), 0.02 * mu) << "H0/D0 " << a;
+        }
         ++checked;
     }
     EXPECT_GE(checked, 1);
