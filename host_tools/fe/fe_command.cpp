@@ -41,7 +41,8 @@ const char *kUsage =
     "              --fold-zone 0 (mm of side kept at the corner size)\n"
     "              --track-step 0 (reduction between frames that track the contact edge, e.g. 0.01)\n"
     "              --ccx ccx --timeout 3600 --work /tmp/icacam-fe\n"
-    "              --reuse 1 (post-process the work directory's results of the same deck again)\n";
+    "              --reuse 1|only (post-process the work directory's results of the same deck again;\n"
+    "              only: cases without such results are left out, never run)\n";
 
 struct Parsed {
     FeCase c;
@@ -100,7 +101,10 @@ Parsed parse(const std::vector<std::string> &args, size_t from)
         else if (key == "ccx") p.run.ccx = v;
         else if (key == "timeout") p.run.timeoutS = int(toDouble(key, v));
         else if (key == "fallback-stick-slope") p.run.fallbackStickSlope = toDouble(key, v);
-        else if (key == "reuse") p.run.reuse = toDouble(key, v) != 0;
+        else if (key == "reuse") {
+            p.run.reuse = v != "0";
+            p.run.reuseOnly = v == "only";
+        }
         else if (key == "jobs") p.jobs = std::clamp(int(toDouble(key, v)), 1, 2);
         else if (key == "snapshot-reduction") p.reduction = toDouble(key, v);
         else if (key == "element") p.c.element = v;
@@ -200,7 +204,7 @@ int sweep(const Parsed &p)
     const auto done = casesIn(p.out);
     std::vector<FeCase> todo;
     for (const FeCase &c : cases)
-        if (!done.count(c.label())) todo.push_back(c);
+        if (!done.count(c.label()) && (!p.run.reuseOnly || hasReusableResults(c, p.run))) todo.push_back(c);
     std::cout << "sweep: " << cases.size() << " cases, " << cases.size() - todo.size()
               << " already in " << p.out << ", " << todo.size() << " to run\n";
     std::mutex m;

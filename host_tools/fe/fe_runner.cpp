@@ -61,6 +61,15 @@ std::vector<double> snapshotReductions(const FeCase &c)
 
 RunResult runOnce(FeCase c, const RunOptions &o);
 
+bool hasReusableResults(const FeCase &caseIn, const RunOptions &o)
+{
+    FeCase c = caseIn;
+    c.reductions = snapshotReductions(c);
+    const fs::path dir = fs::path(o.workDir) / c.label();
+    return fs::exists(dir / "job.frd") && fs::exists(dir / "ccx.log") && fs::exists(dir / "wall_s") &&
+           slurp(dir / "job.inp") == makeDeck(c);
+}
+
 RunResult runCase(FeCase &c, const RunOptions &o)
 {
     RunResult r = runOnce(c, o);
@@ -85,8 +94,7 @@ RunResult runOnce(FeCase c, const RunOptions &o)
     res.dir = dir.string();
     fs::create_directories(dir);
     const std::string deckText = makeDeck(c);
-    const bool reuse = o.reuse && fs::exists(dir / "job.frd") && fs::exists(dir / "ccx.log") &&
-                       fs::exists(dir / "wall_s") && slurp(dir / "job.inp") == deckText;
+    const bool reuse = o.reuse && hasReusableResults(c, o);
     int rc = 0;
     if (reuse) {
         res.wallS = std::strtod(slurp(dir / "wall_s").c_str(), nullptr);

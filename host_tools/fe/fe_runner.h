@@ -19,6 +19,9 @@ struct RunOptions {
     // Post-process the results already in the work directory instead of running ccx again,
     // when they were made from the same deck (new post-processing, no new FE solution).
     bool reuse = false;
+    // With reuse: a case without such results is left out instead of run (a sweep then only
+    // re-post-processes what was solved).
+    bool reuseOnly = false;
 };
 
 struct RunResult {
@@ -35,6 +38,9 @@ std::vector<double> snapshotReductions(const FeCase &c);
 
 // Runs c (retrying with the fallback stick slope, which is then written into c).
 RunResult runCase(FeCase &c, const RunOptions &o);
+
+// True when the work directory holds results of c's deck that `reuse` would post-process.
+bool hasReusableResults(const FeCase &c, const RunOptions &o);
 
 // The CSV header and rows of a result (one row per snapshot).
 std::string csvHeader();
