@@ -203,10 +203,16 @@ int sweep(const Parsed &p)
     const auto cases = expandGrid(p.c, p.grid);
     const auto done = casesIn(p.out);
     std::vector<FeCase> todo;
-    for (const FeCase &c : cases)
-        if (!done.count(c.label()) && (!p.run.reuseOnly || hasReusableResults(c, p.run))) todo.push_back(c);
-    std::cout << "sweep: " << cases.size() << " cases, " << cases.size() - todo.size()
-              << " already in " << p.out << ", " << todo.size() << " to run\n";
+    size_t unsolved = 0;
+    for (const FeCase &c : cases) {
+        if (done.count(c.label())) continue;
+        if (p.run.reuseOnly && !hasReusableResults(c, p.run)) { ++unsolved; continue; }
+        todo.push_back(c);
+    }
+    std::cout << "sweep: " << cases.size() << " cases, " << cases.size() - todo.size() - unsolved << " already in "
+              << p.out << ", " << todo.size() << " to run";
+    if (p.run.reuseOnly) std::cout << " (post-processing only; " << unsolved << " without results left out)";
+    std::cout << "\n";
     std::mutex m;
     size_t next = 0;
     auto worker = [&] {
