@@ -34,6 +34,7 @@ const char *kUsage =
     "  report  --in CSV --out DIR                             Table 1 / Fig. 3 comparison\n"
     "  aspect  --in ASPECT.csv --in BASE.csv --out vision/aspect_table.h   u(H0/D0)/u(1.5) table\n"
     "  compare --in REF.csv --in OTHER.csv [--out MD] [--min-u 0.1] [--bar 0.05] [--edge interp|track]\n"
+    "          [--across-material 1] (K and E left out of the match: the independence checks)\n"
     "          u of the same cases on other meshes/solvers (mesh study, independent model)\n"
     "case options: --k 500 --n 0.25 --mu 0.2 --e 210000 --d0 10 --h0 15 --reduction 0.5\n"
     "              --elem 0.2 --corner 0 --contact-slope 1e5 --stick-slope 1e4 --fallback-stick-slope 1e3\n"
@@ -52,6 +53,7 @@ struct Parsed {
     double reduction = 0.5;
     double minU = 0.1, bar = 0.05; // compare: judged where u > minU mm, within bar (relative)
     std::string edge = "interp";   // compare: which contact edge (interp | track)
+    bool acrossMaterial = false;   // compare: match regardless of K and E
     int jobs = 1;
 };
 
@@ -110,6 +112,7 @@ Parsed parse(const std::vector<std::string> &args, size_t from)
         else if (key == "element") p.c.element = v;
         else if (key == "min-u") p.minU = toDouble(key, v);
         else if (key == "bar") p.bar = toDouble(key, v);
+        else if (key == "across-material") p.acrossMaterial = v != "0";
         else if (key == "edge") {
             if (v != "interp" && v != "track") throw std::runtime_error("--edge: interp or track, not '" + v + "'");
             p.edge = v;
@@ -260,7 +263,7 @@ int feCommand(const std::vector<std::string> &args)
         if (p.in.empty() || p.out.empty()) throw std::runtime_error("aspect needs --in CSV (other H0 and the base) and --out FILE");
         return aspectCommand(p.in, p.out);
     }
-    if (sub == "compare") return compareCommand(p.in, p.out, p.minU, p.bar, p.edge == "track");
+    if (sub == "compare") return compareCommand(p.in, p.out, p.minU, p.bar, p.edge == "track", p.acrossMaterial);
     if (sub == "report") {
         if (p.in.empty() || p.out.empty()) throw std::runtime_error("report needs --in and --out");
         return reportCommand(p.in, p.out, p.reduction);
