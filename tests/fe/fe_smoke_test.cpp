@@ -18,6 +18,7 @@ TEST(FeSmoke, CoarseCaseEndToEnd)
     c.n = 0.25;
     c.mu = 0.3;
     c.elemMm = 0.5;
+    c.trackStep = 0.025; // tracking frames between the snapshots
     RunOptions o;
     // One directory per process: several worktrees (engineers) may run the suite at once.
     o.workDir = (std::filesystem::temp_directory_path() / ("icacam-fe-smoke-" + std::to_string(getpid()))).string();
@@ -35,5 +36,23 @@ TEST(FeSmoke, CoarseCaseEndToEnd)
     // Force at 50 %: the prototype measured 78–88 kN for K = 500 MPa.
     EXPECT_GT(r.force.back().fy, 60);
     EXPECT_LT(r.force.back().fy, 100);
+    for (const Radii &x : r.radii) {
+        EXPECT_GE(x.roTrackMm, x.roMm - 1e-9) << "the tracked edge is at or past the last node on the platen";
+        EXPECT_LE(x.roTrackMm, x.rMaxMm);
+    }
+    // Post-processing again from the same results: no new solution (the .frd is untouched),
+    // the same rows, the solve's wall time kept.
+    const auto frd = std::filesystem::path(r.dir) / "job.frd";
+    const auto stamp = std::filesystem::last_write_time(frd);
+    RunOptions again = o;
+    again.reuse = true;
+    ASSERT_TRUE(hasReusableResults(c, again));
+    FeCase same = c;
+    const RunResult r2 = runCase(same, again);
+    EXPECT_EQ(std::filesystem::last_write_time(frd), stamp);
+    EXPECT_EQ(csvRows(c, r2), csvRows(c, r)) << "re-post-processing changed the rows";
+    FeCase other = c;
+    other.mu = 0.2;
+    EXPECT_FALSE(hasReusableResults(other, again)) << "another case's deck never reuses these results";
     std::filesystem::remove_all(o.workDir);
 }
