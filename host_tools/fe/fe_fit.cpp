@@ -255,8 +255,7 @@ double polyAt(const std::vector<double> &c, double x)
 // The paper's form on our data: per n a cubic μ(u) (Eq. 2, Table 1) through the FE points
 // with u > 0 (where μ is resolved), each coefficient a cubic in n (Eq. 3), the fit's error
 // against the FE points, and a Fig. 4-like plot of the coefficients over n.
-void writeTable1Form(std::ostream &md, const fs::path &svgPath, const std::map<std::pair<double, double>, Point> &pts,
-                     const vision::PaperModel &paper)
+void writeTable1Form(std::ostream &md, const fs::path &svgPath, const std::map<std::pair<double, double>, Point> &pts)
 {
     std::map<double, std::pair<std::vector<double>, std::vector<double>>> byN; // n → (u, μ)
     for (const auto &[k, p] : pts)
@@ -382,7 +381,6 @@ void writeTable1Form(std::ostream &md, const fs::path &svgPath, const std::map<s
     }
     svg << "<text x='50' y='" << H - 8 << "' font-size='11'>dots: per-n cubics through our FE points; line: our Eq. 3 form; "
            "dashed: the paper's Eq. 3</text>\n</svg>\n";
-    (void)paper;
 }
 } // namespace
 
@@ -475,7 +473,7 @@ int reportCommand(const std::vector<std::string> &in, const std::string &outDir,
         svg << "<text x='" << x0 + 420 << "' y='" << 40 + ci * 16 << "' fill='" << col << "'>n = " << n << "</text>\n";
     }
     svg << "<text x='" << x0 + 300 << "' y='" << 40 << "' font-size='11'>dots: FE, dashed: paper Eq. 2/3</text>\n</svg>\n";
-    writeTable1Form(md, fs::path(outDir) / "coefficients_vs_n.svg", pts, paper);
+    writeTable1Form(md, fs::path(outDir) / "coefficients_vs_n.svg", pts);
     std::cout << "report: " << pts.size() << " points -> " << outDir << "/comparison.md, mu_vs_u.svg, coefficients_vs_n.svg\n";
     return 0;
 }

@@ -8,7 +8,7 @@
 
 #include "fe_aspect.h"
 #include "fe_fit.h"
-#include "table_inputs.h"
+#include "../table_inputs.h"
 #include "vision/aspect_corrected_model.h"
 #include "vision/aspect_table.h"
 #include "vision/fe_model.h"

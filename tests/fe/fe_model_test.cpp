@@ -10,7 +10,7 @@
 #include <map>
 
 #include "fe_fit.h"
-#include "table_inputs.h"
+#include "../table_inputs.h"
 #include "vision/fe_model.h"
 #include "vision/fe_model_table.h"
 

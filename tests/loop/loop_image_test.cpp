@@ -17,6 +17,7 @@
 #include "manifest.h"
 #include "measure_command.h"
 #include "synth_loop_set.h"
+#include "../table_inputs.h"
 
 namespace fs = std::filesystem;
 using namespace icacam::host;
@@ -25,14 +26,7 @@ using namespace icacam::host::loop;
 namespace {
 
 // The FE sweep(s) the product's table was generated from (its kFeSources).
-std::vector<std::string> sweeps()
-{
-    std::vector<std::string> v;
-    for (const std::string &name : splitSources(icacam::vision::reduction_table::kFeSources))
-        v.push_back(std::string(ICACAM_SOURCE_DIR) + "/" + name);
-    return v;
-}
-const std::vector<std::string> kSweep = sweeps();
+const std::vector<std::string> kSweep = icacam::test::repositoryPaths(icacam::vision::reduction_table::kFeSources);
 
 LoopSummary runSet(const std::string &name, LoopEffect effect, uint32_t seed)
 {

@@ -17,6 +17,7 @@
 #include "loop_command.h"
 #include "vision/reduction_table.h"
 #include "vision/paper_model.h"
+#include "../table_inputs.h"
 
 namespace fs = std::filesystem;
 using namespace icacam::host::loop;
@@ -26,14 +27,7 @@ namespace {
 enum class Effect { Process, Optical, Null };
 
 // The FE sweep(s) the product's table was generated from (its kFeSources).
-std::vector<std::string> sweeps()
-{
-    std::vector<std::string> v;
-    for (const std::string &name : splitSources(icacam::vision::reduction_table::kFeSources))
-        v.push_back(std::string(ICACAM_SOURCE_DIR) + "/" + name);
-    return v;
-}
-const std::vector<std::string> kSweep = sweeps();
+const std::vector<std::string> kSweep = icacam::test::repositoryPaths(icacam::vision::reduction_table::kFeSources);
 
 // Writes a manifest of `count` radii-only records and returns its path.
 std::string makeSet(const std::string &name, Effect effect, int count, uint32_t seed)

@@ -17,4 +17,14 @@ inline std::vector<std::string> provenanceInputs(const char *provenance)
     return in;
 }
 
+// The same for a space-separated list of repository paths (e.g. reduction_table::kFeSources).
+inline std::vector<std::string> repositoryPaths(const char *spaceSeparated)
+{
+    std::vector<std::string> in;
+    std::istringstream s(spaceSeparated);
+    std::string word;
+    while (s >> word) in.push_back(std::string(ICACAM_SOURCE_DIR) + "/" + word);
+    return in;
+}
+
 } // namespace icacam::test
