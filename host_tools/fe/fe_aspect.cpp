@@ -8,7 +8,7 @@
 #include <set>
 #include <stdexcept>
 
-#include "fe_fit.h"
+#include "fe_rows.h"
 
 namespace icacam::host::fe {
 
@@ -30,11 +30,7 @@ std::string list(const std::vector<double> &v)
 
 AspectRatios aspectRatios(const std::vector<std::string> &in, double minU)
 {
-    std::vector<FeRow> rows;
-    for (const auto &p : in) {
-        const auto r = readSweepCsv(p);
-        rows.insert(rows.end(), r.begin(), r.end());
-    }
+    const std::vector<FeRow> rows = readSweepCsvs(in);
     AspectRatios out;
     // The mesh and K of the other-aspect runs decide which base rows they are compared with.
     std::map<std::string, int> meshCount;

@@ -14,7 +14,9 @@
 #include <thread>
 
 #include "fe_aspect.h"
+#include "fe_compare.h"
 #include "fe_fit.h"
+#include "fe_report.h"
 #include "fe_runner.h"
 
 namespace icacam::host {

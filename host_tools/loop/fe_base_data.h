@@ -1,8 +1,7 @@
 #pragma once
 // The FE snapshots the loop's du/dr and the generated reduction table stand on: one mesh and
-// one K out of data/fe/*.csv, chosen as `icacam fe fit` chooses its base data (host_tools/fe/
-// fe_fit.cpp): the most common mesh (element, element size, corner size) among the rows at
-// 50 % reduction, then the most common K on it; E 210 GPa, D0 10, H0 15 mm. Rows of runs that
+// one K out of data/fe/*.csv, chosen by the reader `icacam fe fit` uses (host_tools/fe/
+// fe_rows.h, chooseBase at 50 % reduction); E 210 GPa, D0 10, H0 15 mm. Rows of runs that
 // stopped later (status failed) count for the snapshots they reached: those are converged
 // states. Columns are read by name; added columns are ignored.
 #include <string>

@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "fe_aspect.h"
-#include "fe_fit.h"
+#include "fe_rows.h"
 #include "../table_inputs.h"
 #include "vision/aspect_corrected_model.h"
 #include "vision/aspect_table.h"

@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <map>
 
-#include "fe_fit.h"
+#include "fe_rows.h"
 #include "../table_inputs.h"
 #include "vision/fe_model.h"
 #include "vision/fe_model_table.h"

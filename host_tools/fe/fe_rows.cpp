@@ -1,0 +1,133 @@
+#include "fe_rows.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace icacam::host::fe {
+
+namespace {
+std::vector<std::string> split(const std::string &line)
+{
+    std::vector<std::string> out;
+    std::string cell;
+    std::istringstream s(line);
+    while (std::getline(s, cell, ',')) out.push_back(cell);
+    if (!line.empty() && line.back() == ',') out.emplace_back();
+    return out;
+}
+double d(const std::string &s) { return s.empty() ? 0.0 : std::strtod(s.c_str(), nullptr); }
+} // namespace
+
+std::string meshKey(const FeRow &r)
+{
+    char b[80];
+    std::snprintf(b, sizeof b, "%s h%g c%g", r.element.c_str(), r.elem, r.cornerMm);
+    return b;
+}
+
+bool reachedSnapshot(const FeRow &r, double reduction)
+{
+    return (r.status == "ok" || r.status == "failed") && std::fabs(r.reduction - reduction) < 1e-6 &&
+           r.reduction > 0;
+}
+
+bool isPaperSpecimen(const FeRow &r) { return r.eMpa == 210000 && r.d0 == 10 && r.h0 == 15; }
+
+std::vector<FeRow> readSweepCsv(const std::string &path)
+{
+    std::ifstream f(path);
+    if (!f) throw std::runtime_error("cannot read " + path);
+    std::string line;
+    std::getline(f, line);
+    const auto head = split(line);
+    std::map<std::string, size_t> col;
+    for (size_t i = 0; i < head.size(); ++i) col[head[i]] = i;
+    for (const char *need : {"case", "status", "k_mpa", "n", "mu", "e_mpa", "d0_mm", "h0_mm", "reduction",
+                             "elem_mm", "r_i_mm", "r_o_interp_mm", "r_max_mm", "u_interp_mm", "force_kn"})
+        if (!col.count(need)) throw std::runtime_error(path + ": missing column " + need);
+    std::vector<FeRow> rows;
+    while (std::getline(f, line)) {
+        if (line.empty()) continue;
+        const auto c = split(line);
+        auto get = [&](const char *k) {
+            const auto it = col.find(k);
+            return it != col.end() && it->second < c.size() ? c[it->second] : std::string();
+        };
+        FeRow r;
+        r.caseId = get("case"); r.status = get("status");
+        r.kMpa = d(get("k_mpa")); r.n = d(get("n")); r.mu = d(get("mu")); r.eMpa = d(get("e_mpa"));
+        r.d0 = d(get("d0_mm")); r.h0 = d(get("h0_mm")); r.reductionMax = d(get("reduction_max"));
+        r.reduction = d(get("reduction")); r.elem = d(get("elem_mm"));
+        if (col.count("element")) r.element = get("element");
+        if (col.count("corner_mm")) r.cornerMm = d(get("corner_mm"));
+        if (col.count("stick_slope")) r.stickSlope = d(get("stick_slope"));
+        if (col.count("nu")) r.nu = d(get("nu"));
+        r.ri = d(get("r_i_mm")); r.ro = d(get("r_o_mm")); r.roInterp = d(get("r_o_interp_mm"));
+        r.rMax = d(get("r_max_mm")); r.u = d(get("u_mm")); r.uInterp = d(get("u_interp_mm"));
+        r.force = d(get("force_kn")); r.wallS = d(get("wall_s"));
+        if (!get("u_track_mm").empty()) r.uTrack = d(get("u_track_mm"));
+        rows.push_back(r);
+    }
+    return rows;
+}
+
+std::vector<FeRow> readSweepCsvs(const std::vector<std::string> &paths)
+{
+    std::vector<FeRow> rows;
+    for (const auto &path : paths) {
+        auto r = readSweepCsv(path);
+        rows.insert(rows.end(), r.begin(), r.end());
+    }
+    return rows;
+}
+
+BaseChoice chooseBase(const std::vector<FeRow> &rows, double reduction)
+{
+    BaseChoice b;
+    std::map<std::string, int> meshCount;
+    for (const auto &r : rows)
+        if (reachedSnapshot(r, reduction) && isPaperSpecimen(r)) ++meshCount[meshKey(r)];
+    int best = 0;
+    for (const auto &[m, c] : meshCount) if (c > best) { best = c; b.mesh = m; }
+    std::map<double, int> kCount;
+    for (const auto &r : rows)
+        if (reachedSnapshot(r, reduction) && isPaperSpecimen(r) && meshKey(r) == b.mesh) ++kCount[r.kMpa];
+    best = 0;
+    for (auto [k, c] : kCount) if (c > best) { best = c; b.kMpa = k; }
+    b.found = best > 0;
+    return b;
+}
+
+PointGrid basePoints(const std::vector<FeRow> &rows, double reduction)
+{
+    const BaseChoice base = chooseBase(rows, reduction);
+    PointGrid pts;
+    if (!base.found) return pts;
+    for (const auto &r : rows) {
+        if (!reachedSnapshot(r, reduction) || !isPaperSpecimen(r) || meshKey(r) != base.mesh || r.kMpa != base.kMpa)
+            continue;
+        Point &p = pts[{r.n, r.mu}];
+        p.n = r.n; p.mu = r.mu; p.elem = r.elem; p.mesh = base.mesh;
+        const double u = r.uBest();
+        p.tracked += r.uTrack >= 0;
+        p.u += u; p.ri += r.ri; p.ro += r.ri + u; p.rMax += r.rMax; p.force += r.force / r.kMpa;
+        p.kMin = std::min(p.kMin, r.kMpa); p.kMax = std::max(p.kMax, r.kMpa);
+        ++p.count;
+    }
+    for (auto &[k, p] : pts) {
+        const double c = p.count;
+        p.u /= c; p.ri /= c; p.ro /= c; p.rMax /= c; p.force /= c;
+    }
+    return pts;
+}
+
+PointGrid basePoints(const std::vector<std::string> &in, double reduction)
+{
+    return basePoints(readSweepCsvs(in), reduction);
+}
+
+} // namespace icacam::host::fe

@@ -1,0 +1,61 @@
+#pragma once
+// The rows of `icacam fe sweep` CSVs (data/fe/*.csv) and the base data chosen from them: one
+// reader for `fe fit`, `fe report`, `fe compare`, `fe aspect` and the loop's reduction table.
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace icacam::host::fe {
+
+struct FeRow {
+    std::string caseId, status;
+    std::string element = "CAX4R"; // column absent in the first sweeps: they were all CAX4R
+    double cornerMm = 0;
+    double stickSlope = 0, nu = 0.3;
+    double kMpa = 0, n = 0, mu = 0, eMpa = 0, d0 = 0, h0 = 0, reductionMax = 0, reduction = 0, elem = 0;
+    double ri = 0, ro = 0, roInterp = 0, rMax = 0, u = 0, uInterp = 0, force = 0, wallS = 0;
+    double uTrack = -1; // tracked contact edge (runs with --track-step); -1: not tracked
+    // u of the contact edge the models use: tracked where the run has it, else interpolated.
+    double uBest() const { return uTrack >= 0 ? uTrack : uInterp; }
+};
+// Columns by name; columns added later may be absent (defaults above). Throws on a missing
+// file or a missing required column.
+std::vector<FeRow> readSweepCsv(const std::string &path);
+std::vector<FeRow> readSweepCsvs(const std::vector<std::string> &paths);
+
+// The mesh of a row as one comparable key ("CAX8R h0.5 c0.1"): rows of different meshes
+// are never mixed in one model.
+std::string meshKey(const FeRow &r);
+
+// A converged snapshot at this reduction. A run that stopped later (status failed, e.g. at
+// 57 % of a run to 60 %) still reached it: its snapshots are converged states (the runner
+// keeps only snapshot times, never the diverged last block).
+bool reachedSnapshot(const FeRow &r, double reduction);
+
+// The paper's specimen and material: D0 10, H0 15 mm, E 210 GPa.
+bool isPaperSpecimen(const FeRow &r);
+
+// The base of the models: among the paper-specimen snapshots at `reduction`, the most common
+// mesh, then the most common K on it (other meshes are the mesh study and the independent
+// models, other K the independence checks; none is mixed into the base).
+struct BaseChoice {
+    std::string mesh;
+    double kMpa = 0;
+    bool found = false;
+};
+BaseChoice chooseBase(const std::vector<FeRow> &rows, double reduction);
+
+// One (n, μ) point of the model's base data at one reduction: the base rows, averaged.
+struct Point {
+    double n = 0, mu = 0, u = 0, ri = 0, ro = 0, rMax = 0, force = 0, elem = 0;
+    std::string mesh;
+    int count = 0;
+    int tracked = 0; // rows with the tracked contact edge (u is theirs)
+    double kMin = 1e9, kMax = 0;
+};
+using PointGrid = std::map<std::pair<double, double>, Point>; // (n, μ) → point
+PointGrid basePoints(const std::vector<std::string> &in, double reduction);
+PointGrid basePoints(const std::vector<FeRow> &rows, double reduction);
+
+} // namespace icacam::host::fe
