@@ -8,34 +8,37 @@
 namespace icacam::vision {
 
 namespace t = fe_table;
+static_assert(t::kMuCount <= kMaxRowPoints, "a row of the table must fit the interpolation's buffer");
 
 namespace {
 
 // One n row: the points (u, μ) with data where u rises strictly with μ (the invertible part).
 struct Row {
-    double u[t::kMuCount + 2] = {};
-    double mu[t::kMuCount + 2] = {};
+    double u[kMaxRowPoints] = {};
+    double mu[kMaxRowPoints] = {};
     int count = 0;
 };
 
-Row rowAt(int ri, int ni)
+Row rowFrom(const double *us, const double *mus, int count)
 {
     Row r;
-    for (int j = 0; j < t::kMuCount; ++j) {
-        const double u = t::kU[ri][ni][j];
+    for (int j = 0; j < count && j < kMaxRowPoints; ++j) {
+        const double u = us[j];
         if (u < 0) continue;
         if (r.count > 0 && u <= r.u[r.count - 1] + 1e-6) {
             // u did not grow (no fold-over yet at this μ): u cannot tell these μ apart; keep
             // the largest, so that u just above it interpolates from the end of the plateau.
-            r.mu[r.count - 1] = t::kMu[j];
+            r.mu[r.count - 1] = mus[j];
             continue;
         }
         r.u[r.count] = u;
-        r.mu[r.count] = t::kMu[j];
+        r.mu[r.count] = mus[j];
         ++r.count;
     }
     return r;
 }
+
+Row rowAt(int ri, int ni) { return rowFrom(t::kU[ri][ni], t::kMu, t::kMuCount); }
 
 // Monotone cubic Hermite (Fritsch–Carlson) through the row's points; clamps outside.
 void pchip(const Row &r, double x, double &y, double &dy, bool &outside)
@@ -125,6 +128,15 @@ ModelEstimate atReduction(int ri, double n, double u, double scale)
 }
 
 } // namespace
+
+double feMuAlongU(const double *u, const double *mu, int count, double uMm, bool *outside)
+{
+    double y = 0, dy = 0;
+    bool out = true;
+    pchip(rowFrom(u, mu, count), uMm, y, dy, out);
+    if (outside) *outside = out;
+    return y;
+}
 
 ModelEstimate FeModel::estimate(const ModelInputs &in) const
 {

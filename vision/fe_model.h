@@ -11,6 +11,13 @@ struct FeRadii {
     uint32_t range = kModelInRange;
 };
 
+// μ at uMm along one n from that n's (u, μ) points in rising μ (u < 0: no data): the
+// interpolation FeModel uses (a μ plateau where u does not grow keeps its largest μ, then a
+// monotone cubic); outside: uMm beyond the points. Exposed for the leave-one-out check of
+// `icacam fe report`. At most kMaxRowPoints points are read.
+inline constexpr int kMaxRowPoints = 10;
+double feMuAlongU(const double *u, const double *mu, int count, double uMm, bool *outside);
+
 class FeModel final : public FrictionModel {
 public:
     const char *name() const override { return "fe"; }
