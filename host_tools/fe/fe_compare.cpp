@@ -5,6 +5,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <tuple>
@@ -49,6 +50,10 @@ int compareCommand(const std::vector<std::string> &in, const std::string &out, d
     double worst = 0;
     int counted = 0, within = 0;
     std::map<long, std::tuple<int, int, double>> perReduction; // % → (judged, within, worst)
+    // At 50 %: Δu per other setup over the (n, μ) grid (the paper's reduction; a compact view
+    // of a factorial).
+    std::map<std::string, std::map<std::pair<double, double>, std::string>> at50;
+    std::set<double> ns50, mus50;
     for (size_t f = 1; f < in.size(); ++f)
         for (const FeRow &o : readSweepCsv(in[f])) {
             if (!reachedSnapshot(o, o.reduction) || o.reduction < 0.3 - 1e-9 || uOf(o) < 0) continue;
@@ -68,6 +73,11 @@ int compareCommand(const std::vector<std::string> &in, const std::string &out, d
             }
             char delta[32] = "–";
             if (uOf(r) > 0) std::snprintf(delta, sizeof delta, "%+.1f", 100 * rel);
+            if (std::fabs(r.reduction - 0.5) < 1e-6) {
+                at50[setup(o)][{r.n, r.mu}] = judged ? delta : "(" + std::string(delta) + ")";
+                ns50.insert(r.n);
+                mus50.insert(r.mu);
+            }
             char b[400];
             std::snprintf(b, sizeof b, "| %g | %g | %g | %.2f | %s | %.4f | %s | %.4f | %s | %s |\n", r.kMpa, r.n,
                           r.mu, r.reduction, setup(r).c_str(), uOf(r), setup(o).c_str(), uOf(o),
@@ -85,6 +95,21 @@ int compareCommand(const std::vector<std::string> &in, const std::string &out, d
             char b[120];
             std::snprintf(b, sizeof b, "| %ld %% | %d | %d | %.1f |\n", pct, std::get<0>(v), std::get<1>(v), 100 * std::get<2>(v));
             md << b;
+        }
+    }
+    for (const auto &[label, cells] : at50) {
+        md << "\nΔu % at 50 %, " << label << " (rows n, columns μ; in brackets where u ≤ " << minU << " mm):\n\n| n \\ μ |";
+        for (double mu : mus50) md << " " << mu << " |";
+        md << "\n|---|";
+        for (size_t k = 0; k < mus50.size(); ++k) md << "---|";
+        md << "\n";
+        for (double n : ns50) {
+            md << "| " << n << " |";
+            for (double mu : mus50) {
+                const auto it = cells.find({n, mu});
+                md << " " << (it == cells.end() ? std::string() : it->second) << " |";
+            }
+            md << "\n";
         }
     }
     if (out.empty()) std::cout << md.str();
