@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -65,6 +66,7 @@ std::vector<FeRow> readSweepCsv(const std::string &path)
         if (col.count("element")) r.element = get("element");
         if (col.count("corner_mm")) r.cornerMm = d(get("corner_mm"));
         if (col.count("stick_slope")) r.stickSlope = d(get("stick_slope"));
+        if (col.count("contact_slope")) r.contactSlope = d(get("contact_slope"));
         if (col.count("nu")) r.nu = d(get("nu"));
         r.ri = d(get("r_i_mm")); r.ro = d(get("r_o_mm")); r.roInterp = d(get("r_o_interp_mm"));
         r.rMax = d(get("r_max_mm")); r.u = d(get("u_mm")); r.uInterp = d(get("u_interp_mm"));
@@ -99,7 +101,34 @@ BaseChoice chooseBase(const std::vector<FeRow> &rows, double reduction)
     best = 0;
     for (auto [k, c] : kCount) if (c > best) { best = c; b.kMpa = k; }
     b.found = best > 0;
+    if (!b.found) return b;
+    // Slopes per K and the (n, μ) grid of each K on the base mesh.
+    auto perK = [](double slope, double k) { return k > 0 ? slope / k : 0.0; };
+    std::map<double, std::set<std::pair<double, double>>> grid;
+    std::map<double, std::set<std::pair<double, double>>> slopes; // K → {(contact/K, stick/K)}
+    for (const auto &r : rows)
+        if (reachedSnapshot(r, reduction) && isPaperSpecimen(r) && meshKey(r) == b.mesh) {
+            grid[r.kMpa].insert({r.n, r.mu});
+            slopes[r.kMpa].insert({perK(r.contactSlope, r.kMpa), perK(r.stickSlope, r.kMpa)});
+        }
+    const auto &baseGrid = grid[b.kMpa];
+    const auto &baseSlopes = slopes[b.kMpa];
+    for (const auto &[k, g] : grid) {
+        const bool covers = std::includes(g.begin(), g.end(), baseGrid.begin(), baseGrid.end());
+        auto close = [](const std::pair<double, double> &a, const std::pair<double, double> &c) {
+            return std::fabs(a.first - c.first) <= 1e-6 * std::fabs(c.first) &&
+                   std::fabs(a.second - c.second) <= 1e-6 * std::fabs(c.second);
+        };
+        const bool sameSlopes = slopes[k].size() == 1 && baseSlopes.size() == 1 &&
+                                close(*slopes[k].begin(), *baseSlopes.begin());
+        if (k == b.kMpa || (covers && sameSlopes)) b.kAveraged.push_back(k);
+    }
     return b;
+}
+
+bool BaseChoice::hasK(double k) const
+{
+    return std::find(kAveraged.begin(), kAveraged.end(), k) != kAveraged.end();
 }
 
 PointGrid basePoints(const std::vector<FeRow> &rows, double reduction)
@@ -108,7 +137,7 @@ PointGrid basePoints(const std::vector<FeRow> &rows, double reduction)
     PointGrid pts;
     if (!base.found) return pts;
     for (const auto &r : rows) {
-        if (!reachedSnapshot(r, reduction) || !isPaperSpecimen(r) || meshKey(r) != base.mesh || r.kMpa != base.kMpa)
+        if (!reachedSnapshot(r, reduction) || !isPaperSpecimen(r) || meshKey(r) != base.mesh || !base.hasK(r.kMpa))
             continue;
         Point &p = pts[{r.n, r.mu}];
         p.n = r.n; p.mu = r.mu; p.elem = r.elem; p.mesh = base.mesh;

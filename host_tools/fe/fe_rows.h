@@ -12,7 +12,7 @@ struct FeRow {
     std::string caseId, status;
     std::string element = "CAX4R"; // column absent in the first sweeps: they were all CAX4R
     double cornerMm = 0;
-    double stickSlope = 0, nu = 0.3;
+    double contactSlope = 0, stickSlope = 0, nu = 0.3; // slopes in N/mm³; 0: column absent
     double kMpa = 0, n = 0, mu = 0, eMpa = 0, d0 = 0, h0 = 0, reductionMax = 0, reduction = 0, elem = 0;
     double ri = 0, ro = 0, roInterp = 0, rMax = 0, u = 0, uInterp = 0, force = 0, wallS = 0;
     double uTrack = -1; // tracked contact edge (runs with --track-step); -1: not tracked
@@ -38,11 +38,16 @@ bool isPaperSpecimen(const FeRow &r);
 
 // The base of the models: among the paper-specimen snapshots at `reduction`, the most common
 // mesh, then the most common K on it (other meshes are the mesh study and the independent
-// models, other K the independence checks; none is mixed into the base).
+// models; none is mixed into the base). Other K join the base — averaged, as the paper's fit
+// runs through all its K — only where they cover every (n, μ) of that K and their contact
+// penalty and stick slope are the same multiples of K (the factorial, docs/fe.md); runs with
+// other slopes per K (the absolute-penalty runs) or partial grids stay checks.
 struct BaseChoice {
     std::string mesh;
-    double kMpa = 0;
+    double kMpa = 0;               // the most common K (ties: the lowest)
+    std::vector<double> kAveraged; // every K of the base, kMpa included
     bool found = false;
+    bool hasK(double k) const;
 };
 BaseChoice chooseBase(const std::vector<FeRow> &rows, double reduction);
 

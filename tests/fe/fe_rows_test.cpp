@@ -1,0 +1,74 @@
+// The base choice of the FE models (host_tools/fe/fe_rows.h): which runs are averaged into
+// the model and which stay checks.
+#include <gtest/gtest.h>
+
+#include "fe_rows.h"
+
+using namespace icacam::host::fe;
+
+namespace {
+FeRow row(double k, double n, double mu, double u, double contactPerK = 200, double stickPerK = 20)
+{
+    FeRow r;
+    r.status = "ok";
+    r.element = "CAX8R";
+    r.elem = 0.5;
+    r.cornerMm = 0.1;
+    r.kMpa = k; r.n = n; r.mu = mu;
+    r.eMpa = 210000; r.d0 = 10; r.h0 = 15;
+    r.reduction = 0.5;
+    r.contactSlope = contactPerK * k;
+    r.stickSlope = stickPerK * k;
+    r.ri = 5; r.rMax = 7; r.force = 0.14 * k;
+    r.uTrack = u;
+    return r;
+}
+void grid(std::vector<FeRow> &rows, double k, double u, double contactPerK = 200, double stickPerK = 20)
+{
+    for (double n : {0.05, 0.5})
+        for (double mu : {0.1, 0.3}) rows.push_back(row(k, n, mu, u, contactPerK, stickPerK));
+}
+} // namespace
+
+TEST(FeBaseChoice, AveragesTheKThatCoverTheGridWithTheSamePenaltyPerK)
+{
+    std::vector<FeRow> rows;
+    grid(rows, 500, 1.0);
+    grid(rows, 500, 1.0); // the most common K: 500
+    grid(rows, 1250, 0.9); // scaled slopes, full grid: joins
+    grid(rows, 250, 0.5, 400, 40); // absolute slopes (other multiples of K): a check, not the base
+    rows.push_back(row(750, 0.05, 0.1, 0.1)); // partial grid: a check
+    const BaseChoice b = chooseBase(rows, 0.5);
+    ASSERT_TRUE(b.found);
+    EXPECT_EQ(b.kMpa, 500);
+    EXPECT_EQ(b.kAveraged, (std::vector<double>{500, 1250}));
+    const PointGrid pts = basePoints(rows, 0.5);
+    ASSERT_EQ(pts.size(), 4u);
+    for (const auto &[key, p] : pts) {
+        EXPECT_EQ(p.count, 3);
+        EXPECT_NEAR(p.u, (1.0 + 1.0 + 0.9) / 3, 1e-12);
+        EXPECT_NEAR(p.force, 0.14, 1e-12); // force per K
+        EXPECT_EQ(p.kMin, 500);
+        EXPECT_EQ(p.kMax, 1250);
+    }
+}
+
+TEST(FeBaseChoice, OtherMeshesAndSpecimensStayOut)
+{
+    std::vector<FeRow> rows;
+    grid(rows, 500, 1.0);
+    grid(rows, 500, 1.0);
+    auto finer = row(500, 0.05, 0.1, 2.0);
+    finer.cornerMm = 0.05; // the mesh study
+    rows.push_back(finer);
+    auto slender = row(500, 0.05, 0.1, 3.0);
+    slender.h0 = 20; // another slenderness
+    rows.push_back(slender);
+    auto stopped = row(500, 0.05, 0.1, 4.0);
+    stopped.status = "error";
+    rows.push_back(stopped);
+    const PointGrid pts = basePoints(rows, 0.5);
+    ASSERT_EQ(pts.size(), 4u);
+    EXPECT_NEAR(pts.at({0.05, 0.1}).u, 1.0, 1e-12);
+    EXPECT_TRUE(basePoints(rows, 0.45).empty());
+}
