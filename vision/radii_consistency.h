@@ -9,10 +9,11 @@
 // moves R_max by as much, a reduction off by 0.01 moves it by ≈ 1 %. Without a declared final
 // height the same relation, solved for r, gives the reduction the image implies.
 //
-// R_i and R_o are not used: our FE's contact edge is resolution-limited (0.2 mm elements)
-// and its ICA stays narrower than the paper's at high μ (u ≤ 0.85 mm at μ 0.3), so R_i and
-// R_o from it disagree with real specimens by up to 0.6 mm there. With converged FE runs they
-// would add the check of n (R_i against R_o), which R_max alone resolves only weakly.
+// R_i and R_o are not used: the FE's contact edge is the least converged radius (its mesh
+// study and independent models agree to a few per cent of u at μ ≥ 0.1 but by tens of per
+// cent near the fold-over's onset at μ 0.05, docs/fe.md), while R_max moves by < 0.015 mm.
+// With a converged edge they would add the check of n (R_i against R_o), which R_max alone
+// resolves only weakly.
 // Pure C++20: no heap, no OS calls, no exceptions.
 namespace icacam::vision {
 

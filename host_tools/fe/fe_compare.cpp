@@ -30,7 +30,7 @@ int compareCommand(const std::vector<std::string> &in, const std::string &out, d
     auto setup = [acrossMaterial](const FeRow &r) {
         char b[160];
         if (acrossMaterial) std::snprintf(b, sizeof b, "K %g E %g, %s", r.kMpa, r.eMpa / 1000, meshKey(r).c_str());
-        else std::snprintf(b, sizeof b, "%s st%g", meshKey(r).c_str(), r.stickSlope);
+        else std::snprintf(b, sizeof b, "%s cs%g st%g", meshKey(r).c_str(), r.contactSlope, r.stickSlope);
         return std::string(b);
     };
     std::map<std::string, FeRow> ref;
