@@ -10,10 +10,15 @@ namespace icacam::vision {
 
 namespace t = aspect_table;
 
+double AspectCorrectedModel::baseAspect() { return t::kBaseAspect; }
 double AspectCorrectedModel::aspectMin() { return t::kAspect[0]; }
 double AspectCorrectedModel::aspectMax() { return t::kAspect[t::kACount - 1]; }
 
-double AspectCorrectedModel::uRatio(double aspect, double n, double reduction, double mu)
+namespace {
+using RatioTable = double[t::kACount][t::kNCount][t::kRCount][t::kMuCount];
+
+// Multilinear in (aspect, n, reduction, μ), clamped to the simulated box.
+double lookup(const RatioTable &tab, double aspect, double n, double reduction, double mu)
 {
     int ia, in, ir, im;
     double wa, wn, wr, wm;
@@ -28,10 +33,21 @@ double AspectCorrectedModel::uRatio(double aspect, double n, double reduction, d
                 for (int dm = 0; dm < 2; ++dm) {
                     const double w = (da ? wa : 1 - wa) * (dn ? wn : 1 - wn) * (dr ? wr : 1 - wr) * (dm ? wm : 1 - wm);
                     if (w == 0) continue;
-                    sum += w * t::kURatio[std::min(ia + da, t::kACount - 1)][std::min(in + dn, t::kNCount - 1)]
-                                         [std::min(ir + dr, t::kRCount - 1)][std::min(im + dm, t::kMuCount - 1)];
+                    sum += w * tab[std::min(ia + da, t::kACount - 1)][std::min(in + dn, t::kNCount - 1)]
+                                  [std::min(ir + dr, t::kRCount - 1)][std::min(im + dm, t::kMuCount - 1)];
                 }
     return sum;
+}
+} // namespace
+
+double AspectCorrectedModel::uRatio(double aspect, double n, double reduction, double mu)
+{
+    return lookup(t::kURatio, aspect, n, reduction, mu);
+}
+
+double AspectCorrectedModel::rMaxRatio(double aspect, double n, double reduction, double mu)
+{
+    return lookup(t::kRMaxRatio, aspect, n, reduction, mu);
 }
 
 ModelEstimate AspectCorrectedModel::estimate(const ModelInputs &in) const

@@ -24,6 +24,9 @@ public:
 
     // u(H0/D0) / u(1.5) from the table, multilinear, clamped to the simulated box.
     static double uRatio(double aspect, double n, double reduction, double mu);
+    // R_max(H0/D0) / R_max(1.5), the silhouette's ratio (radii_consistency.h), the same way.
+    static double rMaxRatio(double aspect, double n, double reduction, double mu);
+    static double baseAspect(); // the paper's 1.5
     static double aspectMin();
     static double aspectMax();
 

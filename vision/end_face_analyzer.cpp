@@ -228,7 +228,7 @@ void EndFaceAnalyzer::finishResult(const SpecimenSpec &spec, const FrictionModel
     } else if (m->rMaxPx > 0) {
         const bool declared = spec.hFinalMm > 0 && spec.hFinalMm < spec.h0Mm;
         const double r = declared ? 1.0 - spec.hFinalMm / spec.h0Mm : 0.5;
-        const RadiiCheck rc = checkRadii(m->rMaxMm, spec.n, est.mu, spec.d0Mm, r);
+        const RadiiCheck rc = checkRadii(m->rMaxMm, spec.n, est.mu, spec.d0Mm, r, spec.h0Mm);
         m->rMaxZ = rc.z;
         m->reductionEst = rc.reductionEst;
         if (rc.inconsistent()) f |= declared ? kFlagRadiiInconsistent : kFlagScaleSuspect;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "aspect_corrected_model.h"
 #include "reduction_table.h"
 
 namespace icacam::vision {
@@ -75,25 +76,33 @@ bool feRadiusAt(FeRadius which, double n, double mu, double reduction, double *m
     return true;
 }
 
-RadiiCheck checkRadii(double rMaxMm, double n, double mu, double d0Mm, double reduction)
+RadiiCheck checkRadii(double rMaxMm, double n, double mu, double d0Mm, double reduction, double h0Mm)
 {
     RadiiCheck c;
     const double g = d0Mm > 0 ? d0Mm / t::kD0Mm : 1.0; // R_max scales with D0
+    const double aspect = d0Mm > 0 && h0Mm > 0 ? h0Mm / d0Mm : AspectCorrectedModel::baseAspect();
+    // The FE R_max of the specimen's own slenderness at reduction r.
+    auto feAt = [&](double r, double *mm) {
+        if (!feRMaxAt(n, mu, r, mm)) return false;
+        if (std::fabs(aspect - AspectCorrectedModel::baseAspect()) > kAspectTolerance)
+            *mm *= AspectCorrectedModel::rMaxRatio(aspect, n, r, mu);
+        return true;
+    };
     double fe;
-    if (!(rMaxMm > 0) || !feRMaxAt(n, mu, reduction, &fe)) return c;
+    if (!(rMaxMm > 0) || !feAt(reduction, &fe)) return c;
     c.valid = true;
     c.rMaxFeMm = fe * g;
     const double sigma = c.rMaxFeMm * std::hypot(kFeRMaxRelSigma, kMeasuredRMaxRelSigma);
     c.z = (rMaxMm - c.rMaxFeMm) / sigma;
     // The reduction the silhouette implies: R_max rises with r (volume constancy), so bisect.
     double lo = radiiReductionMin(), hi = radiiReductionMax(), vlo, vhi;
-    if (!feRMaxAt(n, mu, lo, &vlo) || !feRMaxAt(n, mu, hi, &vhi)) return c;
+    if (!feAt(lo, &vlo) || !feAt(hi, &vhi)) return c;
     const double target = rMaxMm / g;
     if (target < vlo || target > vhi) return c; // outside what the snapshots span
     for (int it = 0; it < 40; ++it) {
         const double mid = 0.5 * (lo + hi);
         double v;
-        if (!feRMaxAt(n, mu, mid, &v)) return c;
+        if (!feAt(mid, &v)) return c;
         (v < target ? lo : hi) = mid;
     }
     c.reductionEst = 0.5 * (lo + hi);

@@ -52,6 +52,9 @@ struct RadiiCheck {
 };
 
 // reduction: the declared one, or 0.5 when none was declared (the model's assumption).
-RadiiCheck checkRadii(double rMaxMm, double n, double mu, double d0Mm, double reduction);
+// h0Mm: the specimen's initial height; at another slenderness than 1.5 the FE R_max is carried
+// by the FE ratio R_max(H0/D0)/R_max(1.5) (vision/aspect_table.h: up to 1.8 % smaller at
+// H0/D0 1.0, within ±1 % at 2.0); 0: the paper's 1.5.
+RadiiCheck checkRadii(double rMaxMm, double n, double mu, double d0Mm, double reduction, double h0Mm = 0);
 
 } // namespace icacam::vision

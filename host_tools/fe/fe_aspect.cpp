@@ -44,15 +44,17 @@ AspectRatios aspectRatios(const std::vector<std::string> &in, double minU)
     for (const auto &r : rows)
         if (usable(r) && meshKey(r) == out.mesh && r.uTrack < 0) out.tracked = false;
     auto u = [&](const FeRow &r) { return out.tracked ? r.uTrack : r.uInterp; };
-    std::map<std::tuple<double, double, double, double, double>, double> base;
+    std::map<std::tuple<double, double, double, double, double>, const FeRow *> base;
     for (const auto &r : rows)
         if (usable(r) && meshKey(r) == out.mesh && std::fabs(aspectOf(r) - kBaseAspect) < 1e-6 && r.d0 == 10)
-            base[key(r)] = u(r);
+            base[key(r)] = &r;
     for (const auto &r : rows) {
         if (!usable(r) || meshKey(r) != out.mesh || std::fabs(aspectOf(r) - kBaseAspect) < 1e-6 || r.d0 != 10) continue;
         const auto it = base.find(key(r));
-        if (it == base.end() || it->second <= minU) continue;
-        out.ratio[{aspectOf(r), r.n, std::round(r.reduction * 1e4) / 1e4, r.mu}] = u(r) / it->second;
+        if (it == base.end()) continue;
+        const auto k = std::make_tuple(aspectOf(r), r.n, std::round(r.reduction * 1e4) / 1e4, r.mu);
+        if (it->second->rMax > 0) out.rMaxRatio[k] = r.rMax / it->second->rMax;
+        if (u(*it->second) > minU) out.ratio[k] = u(r) / u(*it->second);
     }
     return out;
 }
@@ -70,10 +72,12 @@ int aspectCommand(const std::vector<std::string> &in, const std::string &out)
     // A full table for the device's multilinear lookup: a point not simulated takes the
     // nearest simulated one of the same slenderness (distance in μ, reduction and n, each
     // over its span in the paper's study); the base slenderness is 1 by definition.
-    auto fillValue = [&](double a, double n, double r, double mu) {
+    using RatioMap = std::map<std::tuple<double, double, double, double>, double>;
+    auto fillFrom = [&](const RatioMap &m, double a, double n, double r, double mu) {
         if (std::fabs(a - kBaseAspect) < 1e-6) return 1.0;
+        if (const auto it = m.find({a, n, r, mu}); it != m.end()) return it->second;
         double best = 1e9, value = 1.0;
-        for (const auto &[k, v] : ar.ratio) {
+        for (const auto &[k, v] : m) {
             if (std::fabs(std::get<0>(k) - a) > 1e-6) continue;
             const double dist = std::fabs(std::get<1>(k) - n) / 0.45 + std::fabs(std::get<2>(k) - r) / 0.3 +
                                 std::fabs(std::get<3>(k) - mu) / 0.25;
@@ -81,32 +85,40 @@ int aspectCommand(const std::vector<std::string> &in, const std::string &out)
         }
         return value;
     };
-    std::string values, simulated;
+    auto fillValue = [&](double a, double n, double r, double mu) { return fillFrom(ar.ratio, a, n, r, mu); };
+    std::string values, simulated, rMaxValues;
     int count = 0;
     for (double a : av) {
         values += "    {\n";
         simulated += "    {\n";
+        rMaxValues += "    {\n";
         for (double n : nv) {
             values += "        {\n";
             simulated += "        {\n";
+            rMaxValues += "        {\n";
             for (double r : rv) {
-                std::string line = "            {", sline = "            {";
+                std::string line = "            {", sline = "            {", rline = "            {";
                 for (size_t mi = 0; mi < mv.size(); ++mi) {
                     const bool sim = ar.ratio.count({a, n, r, mv[mi]}) > 0;
                     char b[32];
                     std::snprintf(b, sizeof b, "%s%.5f", mi ? ", " : "", fillValue(a, n, r, mv[mi]));
                     line += b;
+                    std::snprintf(b, sizeof b, "%s%.5f", mi ? ", " : "", fillFrom(ar.rMaxRatio, a, n, r, mv[mi]));
+                    rline += b;
                     sline += std::string(mi ? ", " : "") + (sim ? "1" : "0");
                     count += sim;
                 }
                 values += line + "},\n";
                 simulated += sline + "},\n";
+                rMaxValues += rline + "},\n";
             }
             values += "        },\n";
             simulated += "        },\n";
+            rMaxValues += "        },\n";
         }
         values += "    },\n";
         simulated += "    },\n";
+        rMaxValues += "    },\n";
     }
     std::string inputs;
     for (const auto &p : in) inputs += " --in " + p;
@@ -131,6 +143,9 @@ int aspectCommand(const std::vector<std::string> &in, const std::string &out)
       << "// [aspect][n][reduction][μ]\n"
       << "inline constexpr double kURatio[kACount][kNCount][kRCount][kMuCount] = {\n" << values << "};\n"
       << "inline constexpr unsigned char kSimulated[kACount][kNCount][kRCount][kMuCount] = {\n" << simulated << "};\n"
+      << "// R_max(H0/D0) / R_max(1.5), the silhouette's ratio, on the same axes (every run pair; the\n"
+      << "// nearest simulated one where there is none).\n"
+      << "inline constexpr double kRMaxRatio[kACount][kNCount][kRCount][kMuCount] = {\n" << rMaxValues << "};\n"
       << "} // namespace icacam::vision::aspect_table\n";
     if (!f) throw std::runtime_error("cannot write " + out);
     std::cout << "aspect: " << count << " simulated ratios, H0/D0 " << list(av) << ", n " << list(nv) << ", mu "

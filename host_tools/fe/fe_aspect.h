@@ -12,8 +12,11 @@ namespace icacam::host::fe {
 
 // u(H0/D0) / u(1.5) at (H0/D0, n, reduction, μ), where both runs exist on the base mesh and
 // K and u(1.5) > minU (a ratio of two small widths is noise). Key: (aspect, n, reduction, μ).
+// R_max(H0/D0) / R_max(1.5) likewise, wherever both runs exist (the silhouette is resolved
+// at any u): the scale and reduction check of a specimen of another slenderness.
 struct AspectRatios {
     std::map<std::tuple<double, double, double, double>, double> ratio;
+    std::map<std::tuple<double, double, double, double>, double> rMaxRatio;
     std::string mesh;
     bool tracked = false; // from the tracked contact edge (else the interpolated one)
 };

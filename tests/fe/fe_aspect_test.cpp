@@ -49,6 +49,17 @@ TEST(AspectTable, MatchesCommittedData)
         // The lookup returns the simulated ratio at a simulated point.
         EXPECT_NEAR(vision::AspectCorrectedModel::uRatio(a, n, r, mu), v, 2e-5);
     }
+    int rMaxChecked = 0;
+    for (const auto &[k, v] : ar.rMaxRatio) {
+        const auto [a, n, r, mu] = k;
+        const int ia = index(t::kAspect, t::kACount, a), in_ = index(t::kN, t::kNCount, n),
+                  ir = index(t::kR, t::kRCount, r), im = index(t::kMu, t::kMuCount, mu);
+        if (ia < 0 || in_ < 0 || ir < 0 || im < 0) continue; // a reduction outside the u table's axis
+        EXPECT_NEAR(t::kRMaxRatio[ia][in_][ir][im], v, 2e-5) << "stale table: rerun icacam fe aspect";
+        EXPECT_NEAR(vision::AspectCorrectedModel::rMaxRatio(a, n, r, mu), v, 2e-5);
+        ++rMaxChecked;
+    }
+    EXPECT_GE(size_t(rMaxChecked), ar.ratio.size());
 }
 
 TEST(AspectCorrectedModel, IsTheBaseModelAtThePapersSlenderness)
