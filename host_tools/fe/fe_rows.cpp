@@ -90,15 +90,50 @@ std::vector<FeRow> readSweepCsvs(const std::vector<std::string> &paths)
 BaseChoice chooseBase(const std::vector<FeRow> &rows, double reduction)
 {
     BaseChoice b;
-    std::map<std::string, int> meshCount;
+    auto inBase = [&](const FeRow &r) { return reachedSnapshot(r, reduction) && isPaperSpecimen(r); };
+    // Per mesh: its rows, its finest element (the corner, or the uniform size) and the
+    // (n, μ) grid of each K on it — over the cases, whatever reduction they reached, so that
+    // every reduction of the model comes from the same mesh.
+    auto inCases = [](const FeRow &r) {
+        return (r.status == "ok" || r.status == "failed") && r.reduction > 0 && isPaperSpecimen(r);
+    };
+    struct MeshInfo {
+        int rows = 0;
+        double size = 0;
+        std::map<double, std::set<std::pair<double, double>>> grid;
+    };
+    std::map<std::string, MeshInfo> meshes;
     for (const auto &r : rows)
-        if (reachedSnapshot(r, reduction) && isPaperSpecimen(r)) ++meshCount[meshKey(r)];
-    int best = 0;
-    for (const auto &[m, c] : meshCount) if (c > best) { best = c; b.mesh = m; }
+        if (inCases(r)) {
+            MeshInfo &m = meshes[meshKey(r)];
+            ++m.rows;
+            m.size = r.cornerMm > 0 ? r.cornerMm : r.elem;
+            m.grid[r.kMpa].insert({r.n, r.mu});
+        }
+    // The whole grid: every (n, μ) any mesh has at one K.
+    std::set<std::pair<double, double>> whole;
+    for (const auto &[key, m] : meshes)
+        for (const auto &[k, g] : m.grid) whole.insert(g.begin(), g.end());
+    auto complete = [&](const MeshInfo &m) {
+        for (const auto &[k, g] : m.grid)
+            if (std::includes(g.begin(), g.end(), whole.begin(), whole.end())) return true;
+        return false;
+    };
+    // The finest mesh that covers the whole grid at one K is the best answer the data has;
+    // a finer mesh at a few points is a mesh study, not a base (ties: the most rows). No
+    // complete mesh: the most common one.
+    const MeshInfo *chosen = nullptr;
+    for (const auto &[key, m] : meshes) {
+        const bool better = !chosen || (complete(m) != complete(*chosen) ? complete(m)
+                                        : complete(m) && m.size != chosen->size ? m.size < chosen->size
+                                                                                 : m.rows > chosen->rows);
+        if (better) { chosen = &m; b.mesh = key; }
+    }
+    if (!chosen) return b;
     std::map<double, int> kCount;
     for (const auto &r : rows)
-        if (reachedSnapshot(r, reduction) && isPaperSpecimen(r) && meshKey(r) == b.mesh) ++kCount[r.kMpa];
-    best = 0;
+        if (inBase(r) && meshKey(r) == b.mesh) ++kCount[r.kMpa];
+    int best = 0;
     for (auto [k, c] : kCount) if (c > best) { best = c; b.kMpa = k; }
     b.found = best > 0;
     if (!b.found) return b;

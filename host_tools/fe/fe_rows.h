@@ -36,9 +36,10 @@ bool reachedSnapshot(const FeRow &r, double reduction);
 // The paper's specimen and material: D0 10, H0 15 mm, E 210 GPa.
 bool isPaperSpecimen(const FeRow &r);
 
-// The base of the models: among the paper-specimen snapshots at `reduction`, the most common
-// mesh, then the most common K on it (other meshes are the mesh study and the independent
-// models; none is mixed into the base). Other K join the base — averaged, as the paper's fit
+// The base of the models: among the paper-specimen snapshots at `reduction`, the finest mesh
+// that covers the whole (n, μ) grid at one K (ties, or no complete mesh: the most rows), then
+// the most common K on it. Other meshes — coarser complete ones, the mesh study's finer
+// points, the independent models — are checks; none is mixed into the base. Other K join the base — averaged, as the paper's fit
 // runs through all its K — only where they cover every (n, μ) of that K and their contact
 // penalty and stick slope are the same multiples of K (the factorial, docs/fe.md); runs with
 // other slopes per K (the absolute-penalty runs) or partial grids stay checks.

@@ -72,3 +72,35 @@ TEST(FeBaseChoice, OtherMeshesAndSpecimensStayOut)
     EXPECT_NEAR(pts.at({0.05, 0.1}).u, 1.0, 1e-12);
     EXPECT_TRUE(basePoints(rows, 0.45).empty());
 }
+
+TEST(FeBaseChoice, TheFinestCompleteMeshIsTheBase)
+{
+    std::vector<FeRow> rows;
+    grid(rows, 500, 1.0);
+    grid(rows, 1250, 1.0); // the coarse mesh has the most rows …
+    auto finer = [&](double u) {
+        for (double n : {0.05, 0.5})
+            for (double mu : {0.1, 0.3}) {
+                rows.push_back(row(500, n, mu, u));
+                rows.back().cornerMm = 0.05;
+            }
+    };
+    finer(1.1); // … but the finer one covers the whole grid too: it is the base
+    BaseChoice b = chooseBase(rows, 0.5);
+    EXPECT_EQ(b.mesh, "CAX8R h0.5 c0.05");
+    EXPECT_EQ(b.kAveraged, (std::vector<double>{500}));
+    EXPECT_NEAR(basePoints(rows, 0.5).at({0.5, 0.3}).u, 1.1, 1e-12);
+
+    // A finer mesh at part of the grid (the mesh study) stays a check.
+    auto finest = row(500, 0.05, 0.1, 2.0);
+    finest.cornerMm = 0.025;
+    rows.push_back(finest);
+    EXPECT_EQ(chooseBase(rows, 0.5).mesh, "CAX8R h0.5 c0.05");
+
+    // The mesh is chosen over the cases, not per reduction: a finer run that stopped before
+    // 50 % does not hand that reduction to another mesh.
+    for (auto &r : rows)
+        if (r.cornerMm == 0.05 && r.n == 0.5 && r.mu == 0.3) { r.status = "failed"; r.reduction = 0.45; }
+    EXPECT_EQ(chooseBase(rows, 0.5).mesh, "CAX8R h0.5 c0.05");
+    EXPECT_EQ(basePoints(rows, 0.5).count({0.5, 0.3}), 0u);
+}
