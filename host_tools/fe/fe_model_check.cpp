@@ -105,7 +105,7 @@ void writeRunResiduals(std::ostream &md, const std::vector<FeRow> &rows)
     for (int k = 6; k <= 12; ++k) {
         const double red = k * 0.05;
         const BaseChoice base = chooseBase(rows, red);
-        const PointGrid pts = basePoints(rows, red);
+        const PointGrid pts = basePoints(rows, red, base);
         if (pts.empty()) continue;
         std::map<double, std::pair<std::vector<double>, std::vector<double>>> line; // n → (u, μ) in μ order
         for (const auto &[key, p] : pts) { line[p.n].first.push_back(p.u); line[p.n].second.push_back(p.mu); }

@@ -168,7 +168,11 @@ bool BaseChoice::hasK(double k) const
 
 PointGrid basePoints(const std::vector<FeRow> &rows, double reduction)
 {
-    const BaseChoice base = chooseBase(rows, reduction);
+    return basePoints(rows, reduction, chooseBase(rows, reduction));
+}
+
+PointGrid basePoints(const std::vector<FeRow> &rows, double reduction, const BaseChoice &base)
+{
     PointGrid pts;
     if (!base.found) return pts;
     for (const auto &r : rows) {

@@ -63,5 +63,7 @@ struct Point {
 using PointGrid = std::map<std::pair<double, double>, Point>; // (n, μ) → point
 PointGrid basePoints(const std::vector<std::string> &in, double reduction);
 PointGrid basePoints(const std::vector<FeRow> &rows, double reduction);
+// The same with the base already chosen (chooseBase(rows, reduction)).
+PointGrid basePoints(const std::vector<FeRow> &rows, double reduction, const BaseChoice &base);
 
 } // namespace icacam::host::fe
