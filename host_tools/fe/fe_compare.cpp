@@ -44,9 +44,10 @@ int compareCommand(const std::vector<std::string> &in, const std::string &out, d
     if (acrossMaterial) md << " --across-material 1";
     md << "` (u: " << (tracked ? "contact edge tracked between the nodes' touchdowns" : "interpolated contact edge")
        << "; Δu relative to the first file; bar " << 100 * bar
-       << " % where u > " << minU << " mm).\n\n"
-       << "| K | n | μ | reduction | reference | u ref (mm) | other | u other (mm) | Δu % | within bar |\n"
-       << "|---|---|---|---|---|---|---|---|---|---|\n";
+       << " % where u > " << minU << " mm). u = R_o − R_i is a difference of two radii about 50 times larger "
+          "near the fold-over's onset, so the two radii's own differences (µm) say which edge moved.\n\n"
+       << "| K | n | μ | reduction | reference | u ref (mm) | other | u other (mm) | Δu % | ΔR_i µm | ΔR_o µm | within bar |\n"
+       << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     double worst = 0;
     int counted = 0, within = 0;
     std::map<long, std::tuple<int, int, double>> perReduction; // % → (judged, within, worst)
@@ -78,10 +79,13 @@ int compareCommand(const std::vector<std::string> &in, const std::string &out, d
                 ns50.insert(r.n);
                 mus50.insert(r.mu);
             }
-            char b[400];
-            std::snprintf(b, sizeof b, "| %g | %g | %g | %.2f | %s | %.4f | %s | %.4f | %s | %s |\n", r.kMpa, r.n,
+            // To 0.1 µm, and + 0.0 so that a rounding residue prints as +0.0, not -0.0.
+            auto um = [](double mm) { return std::round(mm * 1e4) / 10 + 0.0; };
+            const double dRi = um(o.ri - r.ri), dRo = um((o.ri + uOf(o)) - (r.ri + uOf(r)));
+            char b[440];
+            std::snprintf(b, sizeof b, "| %g | %g | %g | %.2f | %s | %.4f | %s | %.4f | %s | %+.1f | %+.1f | %s |\n", r.kMpa, r.n,
                           r.mu, r.reduction, setup(r).c_str(), uOf(r), setup(o).c_str(), uOf(o),
-                          delta,
+                          delta, dRi, dRo,
                           judged ? (std::fabs(rel) <= bar ? "yes" : "**no**") : "(u ≤ bar's floor)");
             md << b;
         }
