@@ -3,7 +3,8 @@
 // Base data: CalculiX 2.20 axisymmetric upsetting (host_tools/fe, docs/fe.md),
 // D0 = 10 mm, H0 = 15 mm, E = 210 GPa, snapshots at 30-60 % height reduction, mesh CAX8R h0.5 c0.1
 // (element, far-field size, corner size in mm); each point the mean over the K that cover the
-// grid with the same penalty per K (host_tools/fe/fe_rows.h): K 250-1250 MPa.
+// grid with the same penalty per K (host_tools/fe/fe_rows.h): K 250-1250 MPa;
+// runs over K 250-1250 MPa cover the grid with that penalty per K (the K range).
 // u is the contact edge tracked between the nodes' touchdowns (u_track_mm); R_o = R_i + u; -1 marks a grid point without data.
 namespace icacam::vision::fe_table {
 inline constexpr const char *kProvenance = "icacam fe fit --in data/fe/sweep_cax8r_tracked.csv --in data/fe/factorial_k_cax8r_tracked.csv";

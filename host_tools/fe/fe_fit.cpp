@@ -42,6 +42,13 @@ int fitCommand(const std::vector<std::string> &in, const std::string &out, doubl
     if (!byRed.count(reduction)) throw std::runtime_error("fit: no base data at reduction " + std::to_string(reduction));
     std::set<double> ns, mus;
     double kMin = 1e9, kMax = 0;
+    // The K range the model answers for: the averaged K and those that checked K-independence
+    // on another mesh (fe_rows.h), at every reduction.
+    std::set<double> kCovered;
+    for (double r : reds) {
+        const BaseChoice b = chooseBase(all, r);
+        kCovered.insert(b.kCovered.begin(), b.kCovered.end());
+    }
     std::string mesh;
     int tracked = 0, rows = 0;
     for (const auto &[r, pts] : byRed)
@@ -50,6 +57,8 @@ int fitCommand(const std::vector<std::string> &in, const std::string &out, doubl
             kMin = std::min(kMin, p.kMin); kMax = std::max(kMax, p.kMax); mesh = p.mesh;
             tracked += p.tracked; rows += p.count;
         }
+    const double kLo = kCovered.empty() ? kMin : std::min(kMin, *kCovered.begin());
+    const double kHi = kCovered.empty() ? kMax : std::max(kMax, *kCovered.rbegin());
     const std::vector<double> nv(ns.begin(), ns.end()), mv(mus.begin(), mus.end());
     auto table = [&](auto get) {
         std::string s;
@@ -78,13 +87,14 @@ int fitCommand(const std::vector<std::string> &in, const std::string &out, doubl
       << "// Base data: CalculiX 2.20 axisymmetric upsetting (host_tools/fe, docs/fe.md),\n"
       << "// D0 = 10 mm, H0 = 15 mm, E = 210 GPa, snapshots at 30-60 % height reduction, mesh " << mesh
       << "\n// (element, far-field size, corner size in mm); each point the mean over the K that cover the\n"
-      << "// grid with the same penalty per K (host_tools/fe/fe_rows.h): K " << kMin << "-" << kMax << " MPa.\n"
+      << "// grid with the same penalty per K (host_tools/fe/fe_rows.h): K " << kMin << "-" << kMax << " MPa;\n"
+      << "// runs over K " << kLo << "-" << kHi << " MPa cover the grid with that penalty per K (the K range).\n"
       << "// u is " << edge << "; R_o = R_i + u; -1 marks a grid point without data.\n"
       << "namespace icacam::vision::fe_table {\n"
       << "inline constexpr const char *kProvenance = \"icacam fe fit" << inputs << "\";\n"
       << "inline constexpr double kReduction = " << reduction << "; // the model's own reduction when none is given\n"
       << "inline constexpr double kD0Mm = 10, kH0Mm = 15;\n"
-      << "inline constexpr double kKMinMpa = " << kMin << ", kKMaxMpa = " << kMax << ";\n"
+      << "inline constexpr double kKMinMpa = " << kLo << ", kKMaxMpa = " << kHi << ";\n"
       << "inline constexpr int kRCount = " << reds.size() << ", kNCount = " << nv.size() << ", kMuCount = " << mv.size() << ";\n"
       << "inline constexpr double kR[kRCount] = {" << list(reds) << "};\n"
       << "inline constexpr double kN[kNCount] = {" << list(nv) << "};\n"

@@ -137,27 +137,34 @@ BaseChoice chooseBase(const std::vector<FeRow> &rows, double reduction)
     for (auto [k, c] : kCount) if (c > best) { best = c; b.kMpa = k; }
     b.found = best > 0;
     if (!b.found) return b;
-    // Slopes per K and the (n, μ) grid of each K on the base mesh.
+    // Slopes per K and the (n, μ) grid of each (mesh, K).
     auto perK = [](double slope, double k) { return k > 0 ? slope / k : 0.0; };
-    std::map<double, std::set<std::pair<double, double>>> grid;
-    std::map<double, std::set<std::pair<double, double>>> slopes; // K → {(contact/K, stick/K)}
+    using MeshK = std::pair<std::string, double>;
+    std::map<MeshK, std::set<std::pair<double, double>>> grid;
+    std::map<MeshK, std::set<std::pair<double, double>>> slopes; // → {(contact/K, stick/K)}
     for (const auto &r : rows)
-        if (reachedSnapshot(r, reduction) && isPaperSpecimen(r) && meshKey(r) == b.mesh) {
-            grid[r.kMpa].insert({r.n, r.mu});
-            slopes[r.kMpa].insert({perK(r.contactSlope, r.kMpa), perK(r.stickSlope, r.kMpa)});
+        if (reachedSnapshot(r, reduction) && isPaperSpecimen(r)) {
+            grid[{meshKey(r), r.kMpa}].insert({r.n, r.mu});
+            slopes[{meshKey(r), r.kMpa}].insert({perK(r.contactSlope, r.kMpa), perK(r.stickSlope, r.kMpa)});
         }
-    const auto &baseGrid = grid[b.kMpa];
-    const auto &baseSlopes = slopes[b.kMpa];
-    for (const auto &[k, g] : grid) {
+    const MeshK base{b.mesh, b.kMpa};
+    const auto &baseGrid = grid[base];
+    const auto &baseSlopes = slopes[base];
+    auto close = [](const std::pair<double, double> &a, const std::pair<double, double> &c) {
+        return std::fabs(a.first - c.first) <= 1e-6 * std::fabs(c.first) &&
+               std::fabs(a.second - c.second) <= 1e-6 * std::fabs(c.second);
+    };
+    std::set<double> covered;
+    for (const auto &[mk, g] : grid) {
         const bool covers = std::includes(g.begin(), g.end(), baseGrid.begin(), baseGrid.end());
-        auto close = [](const std::pair<double, double> &a, const std::pair<double, double> &c) {
-            return std::fabs(a.first - c.first) <= 1e-6 * std::fabs(c.first) &&
-                   std::fabs(a.second - c.second) <= 1e-6 * std::fabs(c.second);
-        };
-        const bool sameSlopes = slopes[k].size() == 1 && baseSlopes.size() == 1 &&
-                                close(*slopes[k].begin(), *baseSlopes.begin());
-        if (k == b.kMpa || (covers && sameSlopes)) b.kAveraged.push_back(k);
+        const bool sameSlopes = slopes[mk].size() == 1 && baseSlopes.size() == 1 &&
+                                close(*slopes[mk].begin(), *baseSlopes.begin());
+        if (mk == base || (covers && sameSlopes)) {
+            covered.insert(mk.second);
+            if (mk.first == b.mesh) b.kAveraged.push_back(mk.second);
+        }
     }
+    b.kCovered.assign(covered.begin(), covered.end());
     return b;
 }
 

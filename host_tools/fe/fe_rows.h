@@ -47,6 +47,10 @@ struct BaseChoice {
     std::string mesh;
     double kMpa = 0;               // the most common K (ties: the lowest)
     std::vector<double> kAveraged; // every K of the base, kMpa included
+    // Every K whose runs cover the base grid with the same penalty per K on any mesh — the
+    // averaged ones and, on a coarser mesh, the factorial that checked K-independence: the
+    // K range the model answers for.
+    std::vector<double> kCovered;
     bool found = false;
     bool hasK(double k) const;
 };

@@ -42,6 +42,7 @@ TEST(FeBaseChoice, AveragesTheKThatCoverTheGridWithTheSamePenaltyPerK)
     ASSERT_TRUE(b.found);
     EXPECT_EQ(b.kMpa, 500);
     EXPECT_EQ(b.kAveraged, (std::vector<double>{500, 1250}));
+    EXPECT_EQ(b.kCovered, (std::vector<double>{500, 1250})); // not K 250 (other slopes per K) nor 750 (partial)
     const PointGrid pts = basePoints(rows, 0.5);
     ASSERT_EQ(pts.size(), 4u);
     for (const auto &[key, p] : pts) {
@@ -89,6 +90,9 @@ TEST(FeBaseChoice, TheFinestCompleteMeshIsTheBase)
     BaseChoice b = chooseBase(rows, 0.5);
     EXPECT_EQ(b.mesh, "CAX8R h0.5 c0.05");
     EXPECT_EQ(b.kAveraged, (std::vector<double>{500}));
+    // The coarse mesh's K 1250 covered the grid with the same penalty per K: it checked
+    // K-independence, so the model answers for K 500-1250 (fe fit's K range).
+    EXPECT_EQ(b.kCovered, (std::vector<double>{500, 1250}));
     EXPECT_NEAR(basePoints(rows, 0.5).at({0.5, 0.3}).u, 1.1, 1e-12);
 
     // A finer mesh at part of the grid (the mesh study) stays a check.
