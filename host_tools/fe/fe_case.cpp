@@ -23,6 +23,7 @@ std::string FeCase::label() const
     if (incMax != 0.01) s += "_im" + numberText("%g", incMax);
     if (foldZoneMm > 0) s += "_fz" + numberText("%g", foldZoneMm);
     if (trackStep > 0) s += "_tr" + numberText("%g", trackStep);
+    if (contact != "node") s += "_s2s";
     return s;
 }
 
@@ -58,6 +59,8 @@ FeMesh meshFor(const FeCase &c)
 {
     if (c.element != "CAX4R" && c.element != "CAX8R")
         throw std::invalid_argument("fe: element must be CAX4R or CAX8R, not " + c.element);
+    if (c.contact != "node" && c.contact != "surface")
+        throw std::invalid_argument("fe: contact must be node or surface, not " + c.contact);
     FeMesh m;
     m.q = c.element == "CAX8R" ? 2 : 1;
     m.r = axisNodes(c.d0Mm / 2, c.elemMm, c.cornerMm);
@@ -149,7 +152,7 @@ std::string makeDeck(const FeCase &c)
       << "*SOLID SECTION,ELSET=SPEC,MATERIAL=WORK\n*SOLID SECTION,ELSET=PLATEN,MATERIAL=TOOL\n"
       << "*SURFACE INTERACTION,NAME=SI\n*SURFACE BEHAVIOR,PRESSURE-OVERCLOSURE=LINEAR\n"
       << c.contactSlope << ", 0.1\n*FRICTION\n" << c.mu << ", " << c.stickSlope << "\n"
-      << "*CONTACT PAIR,INTERACTION=SI,TYPE=NODE TO SURFACE\nSLAVE, MASTER\n"
+      << "*CONTACT PAIR,INTERACTION=SI,TYPE=" << (c.contact == "surface" ? "SURFACE" : "NODE") << " TO SURFACE\nSLAVE, MASTER\n"
       << "*BOUNDARY\nAXIS, 1, 1\nMID, 2, 2\nPLATENN, 1, 2\n"
       << "*TIME POINTS,NAME=SNAP\n";
     for (double r : outputReductions(c)) o << numberText("%.10g", r / c.reductionMax) << "\n";

@@ -30,6 +30,10 @@ struct FeCase {
     // Specimen element: "CAX4R" (linear, reduced integration) or "CAX8R" (quadratic,
     // reduced integration: follows the fold-over at high μ where CAX4R diverges).
     std::string element = "CAX4R";
+    // Contact discretisation: "node" (NODE TO SURFACE: each slave node against the platen's
+    // faces, the base setup) or "surface" (SURFACE TO SURFACE: the slave faces integrated
+    // against the platen — another discretisation of the same law, for the independent model).
+    std::string contact = "node";
     double contactSlope = 1e5;              // N/mm³, linear pressure–overclosure
     double stickSlope = 1e4;                // N/mm³, friction stick slope (1e4 and 1e5 give the same u)
     double incInit = 0.005, incMin = 1e-7, incMax = 0.01; // of the step time 1

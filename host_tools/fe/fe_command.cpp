@@ -42,6 +42,7 @@ const char *kUsage =
     "              --elem 0.2 --corner 0 --contact-slope 1e5 --stick-slope 1e4 --fallback-stick-slope 1e3\n"
     "              --inc-max 0.01 --element CAX4R|CAX8R --platen 0 (master segment, mm)\n"
     "              --fold-zone 0 (mm of side kept at the corner size)\n"
+    "              --contact node|surface (NODE TO SURFACE, the base; SURFACE TO SURFACE)\n"
     "              --track-step 0 (reduction between frames that track the contact edge, e.g. 0.01)\n"
     "              --ccx ccx --timeout 3600 --work /tmp/icacam-fe\n"
     "              --reuse 1|only (post-process the work directory's results of the same deck again;\n"
@@ -112,6 +113,7 @@ Parsed parse(const std::vector<std::string> &args, size_t from)
         else if (key == "jobs") p.jobs = std::clamp(int(toDouble(key, v)), 1, 2);
         else if (key == "snapshot-reduction") p.reduction = toDouble(key, v);
         else if (key == "element") p.c.element = v;
+        else if (key == "contact") p.c.contact = v;
         else if (key == "min-u") p.minU = toDouble(key, v);
         else if (key == "bar") p.bar = toDouble(key, v);
         else if (key == "across-material") p.acrossMaterial = v != "0";

@@ -26,7 +26,8 @@ double d(const std::string &s) { return s.empty() ? 0.0 : std::strtod(s.c_str(),
 std::string meshKey(const FeRow &r)
 {
     char b[80];
-    std::snprintf(b, sizeof b, "%s h%g c%g", r.element.c_str(), r.elem, r.cornerMm);
+    std::snprintf(b, sizeof b, "%s h%g c%g%s", r.element.c_str(), r.elem, r.cornerMm,
+                  r.contact.rfind("surface", 0) == 0 ? " s2s" : "");
     return b;
 }
 
@@ -64,6 +65,7 @@ std::vector<FeRow> readSweepCsv(const std::string &path)
         r.d0 = d(get("d0_mm")); r.h0 = d(get("h0_mm")); r.reductionMax = d(get("reduction_max"));
         r.reduction = d(get("reduction")); r.elem = d(get("elem_mm"));
         if (col.count("element")) r.element = get("element");
+        if (col.count("contact") && !get("contact").empty()) r.contact = get("contact");
         if (col.count("corner_mm")) r.cornerMm = d(get("corner_mm"));
         if (col.count("stick_slope")) r.stickSlope = d(get("stick_slope"));
         if (col.count("contact_slope")) r.contactSlope = d(get("contact_slope"));

@@ -11,6 +11,7 @@ namespace icacam::host::fe {
 struct FeRow {
     std::string caseId, status;
     std::string element = "CAX4R"; // column absent in the first sweeps: they were all CAX4R
+    std::string contact = "node-to-surface penalty"; // as the CSV's contact column says
     double cornerMm = 0;
     double contactSlope = 0, stickSlope = 0, nu = 0.3; // slopes in N/mm³; 0: column absent
     double kMpa = 0, n = 0, mu = 0, eMpa = 0, d0 = 0, h0 = 0, reductionMax = 0, reduction = 0, elem = 0;
@@ -24,8 +25,8 @@ struct FeRow {
 std::vector<FeRow> readSweepCsv(const std::string &path);
 std::vector<FeRow> readSweepCsvs(const std::vector<std::string> &paths);
 
-// The mesh of a row as one comparable key ("CAX8R h0.5 c0.1"): rows of different meshes
-// are never mixed in one model.
+// The mesh of a row as one comparable key ("CAX8R h0.5 c0.1", "… s2s" with surface-to-surface
+// contact): rows of different meshes or contact discretisations are never mixed in one model.
 std::string meshKey(const FeRow &r);
 
 // A converged snapshot at this reduction. A run that stopped later (status failed, e.g. at

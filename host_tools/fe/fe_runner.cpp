@@ -174,10 +174,10 @@ std::vector<std::string> csvRows(const FeCase &c, const RunResult &r)
     auto row = [&](const Radii *x, double force) {
         char b[1024];
         std::snprintf(b, sizeof b,
-                      "%s,%s,%g,%g,%g,%g,%g,%g,%g,%g,%.4f,%g,%g,%s,node-to-surface penalty,%g,%g,%g,"
+                      "%s,%s,%g,%g,%g,%g,%g,%g,%g,%g,%.4f,%g,%g,%s,%s-to-surface penalty,%g,%g,%g,"
                       "%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%d,%.3f,%.1f,CalculiX 2.20 OMP=1,%s,%g,%.5f,%.5f",
                       c.label().c_str(), r.status.c_str(), c.kMpa, c.n, c.mu, c.eMpa, c.nu, c.d0Mm,
-                      c.h0Mm, c.reductionMax, x ? x->reduction : 0.0, c.elemMm, c.cornerMm, c.element.c_str(), c.contactSlope,
+                      c.h0Mm, c.reductionMax, x ? x->reduction : 0.0, c.elemMm, c.cornerMm, c.element.c_str(), c.contact.c_str(), c.contactSlope,
                       c.stickSlope, c.incMax, x ? x->riMm : 0.0, x ? x->roMm : 0.0,
                       x ? x->roInterpMm : 0.0, x ? x->rMaxMm : 0.0, x ? x->uMm() : 0.0,
                       x ? x->uInterpMm() : 0.0, x ? x->contactNodes : 0, force, r.wallS,

@@ -150,3 +150,18 @@ TEST(FeDeck, FoldZoneKeepsTheSideFine)
     EXPECT_NEAR(m.r[m.nr - 1] - m.r[m.nr - 2], 0.12, 1e-9);
     EXPECT_NE(c.label().find("_fz1.5"), std::string::npos);
 }
+
+TEST(FeDeck, SurfaceToSurfaceContactIsItsOwnCase)
+{
+    FeCase c;
+    c.element = "CAX8R";
+    const std::string nodeDeck = makeDeck(c), nodeLabel = c.label();
+    c.contact = "surface";
+    const std::string deck = makeDeck(c);
+    EXPECT_NE(deck.find("TYPE=SURFACE TO SURFACE"), std::string::npos);
+    EXPECT_EQ(deck.find("NODE TO SURFACE"), std::string::npos);
+    EXPECT_EQ(c.label(), nodeLabel + "_s2s"); // its own resume key and work directory
+    c.contact = "mortar";
+    EXPECT_THROW(makeDeck(c), std::invalid_argument);
+    EXPECT_NE(nodeDeck.find("TYPE=NODE TO SURFACE"), std::string::npos);
+}

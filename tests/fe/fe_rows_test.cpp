@@ -62,6 +62,10 @@ TEST(FeBaseChoice, OtherMeshesAndSpecimensStayOut)
     auto finer = row(500, 0.05, 0.1, 2.0);
     finer.cornerMm = 0.05; // the mesh study
     rows.push_back(finer);
+    auto s2s = row(500, 0.05, 0.1, 2.5);
+    s2s.contact = "surface-to-surface penalty"; // an independent contact discretisation
+    rows.push_back(s2s);
+    EXPECT_EQ(meshKey(s2s), "CAX8R h0.5 c0.1 s2s");
     auto slender = row(500, 0.05, 0.1, 3.0);
     slender.h0 = 20; // another slenderness
     rows.push_back(slender);
