@@ -22,6 +22,13 @@ std::string list(const std::vector<double> &v, const char *f = "%.6g")
     }
     return s;
 }
+std::string kRange(double lo, double hi)
+{
+    char b[60];
+    if (lo == hi) std::snprintf(b, sizeof b, "%g", lo);
+    else std::snprintf(b, sizeof b, "%g-%g", lo, hi);
+    return b;
+}
 } // namespace
 
 int fitCommand(const std::vector<std::string> &in, const std::string &out, double reduction)
@@ -87,8 +94,8 @@ int fitCommand(const std::vector<std::string> &in, const std::string &out, doubl
       << "// Base data: CalculiX 2.20 axisymmetric upsetting (host_tools/fe, docs/fe.md),\n"
       << "// D0 = 10 mm, H0 = 15 mm, E = 210 GPa, snapshots at 30-60 % height reduction, mesh " << mesh
       << "\n// (element, far-field size, corner size in mm); each point the mean over the K that cover the\n"
-      << "// grid with the same penalty per K (host_tools/fe/fe_rows.h): K " << kMin << "-" << kMax << " MPa;\n"
-      << "// runs over K " << kLo << "-" << kHi << " MPa cover the grid with that penalty per K (the K range).\n"
+      << "// grid with the same penalty per K (host_tools/fe/fe_rows.h): K " << kRange(kMin, kMax) << " MPa;\n"
+      << "// runs over K " << kRange(kLo, kHi) << " MPa cover the grid with that penalty per K (the K range).\n"
       << "// u is " << edge << "; R_o = R_i + u; -1 marks a grid point without data.\n"
       << "namespace icacam::vision::fe_table {\n"
       << "inline constexpr const char *kProvenance = \"icacam fe fit" << inputs << "\";\n"
