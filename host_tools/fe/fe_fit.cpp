@@ -36,26 +36,24 @@ int fitCommand(const std::vector<std::string> &in, const std::string &out, doubl
     // Every snapshot reduction from 30 % to 60 % that has base data (`reduction` must be one).
     std::vector<double> reds;
     std::map<double, PointGrid> byRed;
+    // The K range the model answers for: the averaged K and those that checked K-independence
+    // on another mesh (BaseChoice::kCovered, which includes the averaged ones).
+    std::set<double> kCovered;
     const std::vector<FeRow> all = readSweepCsvs(in);
     for (int k = 6; k <= 12; ++k) {
         const double r = std::round(k * 0.05 * 1e6) / 1e6;
-        auto pts = basePoints(all, r);
+        const BaseChoice base = chooseBase(all, r);
+        auto pts = basePoints(all, r, base);
         if (pts.empty()) continue;
         reds.push_back(r);
         byRed[r] = std::move(pts);
+        kCovered.insert(base.kCovered.begin(), base.kCovered.end());
     }
     if (byRed.empty()) throw std::runtime_error("fit: no usable rows");
     reduction = std::round(reduction * 1e6) / 1e6;
     if (!byRed.count(reduction)) throw std::runtime_error("fit: no base data at reduction " + std::to_string(reduction));
     std::set<double> ns, mus;
     double kMin = 1e9, kMax = 0;
-    // The K range the model answers for: the averaged K and those that checked K-independence
-    // on another mesh (fe_rows.h), at every reduction.
-    std::set<double> kCovered;
-    for (double r : reds) {
-        const BaseChoice b = chooseBase(all, r);
-        kCovered.insert(b.kCovered.begin(), b.kCovered.end());
-    }
     std::string mesh;
     int tracked = 0, rows = 0;
     for (const auto &[r, pts] : byRed)
@@ -64,8 +62,8 @@ int fitCommand(const std::vector<std::string> &in, const std::string &out, doubl
             kMin = std::min(kMin, p.kMin); kMax = std::max(kMax, p.kMax); mesh = p.mesh;
             tracked += p.tracked; rows += p.count;
         }
-    const double kLo = kCovered.empty() ? kMin : std::min(kMin, *kCovered.begin());
-    const double kHi = kCovered.empty() ? kMax : std::max(kMax, *kCovered.rbegin());
+    const double kLo = kCovered.empty() ? kMin : *kCovered.begin();
+    const double kHi = kCovered.empty() ? kMax : *kCovered.rbegin();
     const std::vector<double> nv(ns.begin(), ns.end()), mv(mus.begin(), mus.end());
     auto table = [&](auto get) {
         std::string s;

@@ -145,7 +145,7 @@ BaseChoice chooseBase(const std::vector<FeRow> &rows, double reduction)
     std::map<MeshK, std::set<std::pair<double, double>>> grid;
     std::map<MeshK, std::set<std::pair<double, double>>> slopes; // → {(contact/K, stick/K)}
     for (const auto &r : rows)
-        if (reachedSnapshot(r, reduction) && isPaperSpecimen(r)) {
+        if (inBase(r)) {
             grid[{meshKey(r), r.kMpa}].insert({r.n, r.mu});
             slopes[{meshKey(r), r.kMpa}].insert({perK(r.contactSlope, r.kMpa), perK(r.stickSlope, r.kMpa)});
         }
