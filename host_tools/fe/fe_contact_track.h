@@ -19,18 +19,26 @@ struct SideFrame {
     double reduction = 0;
     std::vector<double> gapMm; // platen height − node height (≤ tol: on the platen)
     std::vector<double> rMm;
+    // Nodes per element edge along the side: 1 linear elements, 2 quadratic (corner and
+    // mid-side nodes alternate; trackedContactEdge follows each kind and takes the mean).
+    int nodesPerEdge = 1;
 };
 
 // The reduction at which each node joins the contact zone that grows from the corner (its
-// gap, linear between two frames, reaches tol), or -1 when it never does within the frames;
+// gap, followed from the free frames before it as c·(t* − t)^p with p between 1, a side
+// meeting the platen at an angle, and 2, a tangent one, reaches tol), or -1 when it never
+// does within the frames;
 // made non-decreasing from the corner down (a node below cannot roll on before one above).
 std::vector<double> touchdownReductions(const std::vector<SideFrame> &frames, double tolMm);
 
 // R_o of frame k with the edge tracked between touchdowns: the edge's material position runs
 // from node a (the last one down) to node b (the next) linearly in reduction between their
-// touchdowns, and its radius is taken at that fraction of the deformed segment a–b. Before the first side node touches down the edge is the corner
-// (u = 0, as with the node count). After the last event the next node's touchdown is
-// extrapolated from its gap's rate over the last two frames.
-double trackedContactEdge(const std::vector<SideFrame> &frames, const std::vector<double> &touchdown, std::size_t k);
+// touchdowns, and its radius is taken at that fraction of the deformed segment a–b; with
+// quadratic elements, along the corner nodes and along the mid-side nodes separately, and the
+// mean of the two. Before the first side node touches down the edge is the corner (u = 0, as
+// with the node count). After the last event the next node's touchdown is predicted from its
+// gap's approach in the frames so far (tolMm: as for the touchdowns).
+double trackedContactEdge(const std::vector<SideFrame> &frames, const std::vector<double> &touchdown, std::size_t k,
+                          double tolMm);
 
 } // namespace icacam::host::fe

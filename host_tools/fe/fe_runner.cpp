@@ -28,6 +28,7 @@ SideFrame sideFrame(const FeCase &c, const FeMesh &m, const NodeXY &coords, cons
 {
     SideFrame f;
     f.reduction = reduction;
+    f.nodesPerEdge = m.q;
     const double zPlaten = c.h0Mm / 2 * (1 - reduction);
     for (int j = 0; j < m.rows(); ++j) {
         const int id = m.lateralNode(j);
@@ -140,7 +141,7 @@ RunResult runOnce(FeCase c, const RunOptions &o)
     if (c.trackStep > 0) {
         const auto touchdown = touchdownReductions(frames, kGapTolMm);
         for (size_t i = 0; i < res.radii.size(); ++i)
-            res.radii[i].roTrackMm = std::max(res.radii[i].riMm, trackedContactEdge(frames, touchdown, snapshotFrame[i]));
+            res.radii[i].roTrackMm = std::max(res.radii[i].riMm, trackedContactEdge(frames, touchdown, snapshotFrame[i], kGapTolMm));
     }
     for (ForcePoint f : forces) {
         // Axisymmetric elements: CalculiX reports forces for a 2° segment.

@@ -1,9 +1,11 @@
 // Other diameters by geometric similarity (issue 5, docs/fe.md): the committed FE case at
 // D0 20, H0 30 mm (every length of the deck ×2, mesh included) against the base case at
 // D0 10, H0 15, and the generated model reading it. Rate-independent plasticity has no
-// length scale, so lengths scale by s = D0/10 and force by s²; what does not scale is the
-// contact penalty and the gap tolerance (absolute, N/mm³ and mm), which move the fold-over's
-// onset by a few per cent of u before 40 % — hence the check from 40 % on. The model's μ
+// length scale, so lengths scale by s = D0/10 and force by s² — once the contact penalty and
+// the stick slope (N/mm³: stress per length) are scaled by 1/s too; that case is checked here
+// at every snapshot from 30 %. The same D0 20 case with the absolute slopes (also in the file)
+// folds slightly later (u up to 8 % lower before 45 %): a numerical effect of the
+// regularisation, documented in docs/fe.md and not a property of the specimen. The model's μ
 // itself is checked against its data in fe_model_test.cpp.
 #include <gtest/gtest.h>
 
@@ -32,15 +34,19 @@ TEST(FeSimilarity, TwiceTheSpecimenGivesTwiceTheLengths)
     vision::FeModel model;
     int checked = 0;
     for (const auto &o : other) {
-        if (o.d0 == 10 || o.reduction < 0.4 - 1e-9 || o.uTrack < 0) continue;
+        if (o.d0 == 10 || o.reduction < 0.3 - 1e-9 || o.uTrack < 0) continue;
         ASSERT_NEAR(o.h0 / o.d0, 1.5, 1e-9) << o.caseId << ": similarity needs the paper's slenderness";
         const auto it = ref.find(key(o));
         ASSERT_NE(it, ref.end()) << o.caseId << " at " << o.reduction << ": no base case to compare with";
         const auto &r = it->second;
         const double s = o.d0 / 10;
-        EXPECT_NEAR(o.uTrack / s, r.uTrack, 0.02 * r.uTrack) << o.caseId << " at " << o.reduction;
-        EXPECT_NEAR(o.ri / s, r.ri, 0.002 * r.ri) << o.caseId << " at " << o.reduction;
-        EXPECT_NEAR(o.rMax / s, r.rMax, 0.002 * r.rMax) << o.caseId << " at " << o.reduction;
+        // The similar case: both slopes scaled by 1/s (the absolute-slope run is not similar).
+        if (std::fabs(o.contactSlope * s - r.contactSlope) > 1e-6 * r.contactSlope ||
+            std::fabs(o.stickSlope * s - r.stickSlope) > 1e-6 * r.stickSlope)
+            continue;
+        EXPECT_NEAR(o.uTrack / s, r.uTrack, 0.01 * r.uTrack) << o.caseId << " at " << o.reduction;
+        EXPECT_NEAR(o.ri / s, r.ri, 0.001 * r.ri) << o.caseId << " at " << o.reduction;
+        EXPECT_NEAR(o.rMax / s, r.rMax, 0.001 * r.rMax) << o.caseId << " at " << o.reduction;
         EXPECT_NEAR(o.force / (s * s), r.force, 0.01 * r.force) << o.caseId << " at " << o.reduction;
         // The model scales u by D0/10 and reads the reduction from the final height: it reads
         // the large specimen as it reads the base one.
@@ -51,5 +57,5 @@ TEST(FeSimilarity, TwiceTheSpecimenGivesTwiceTheLengths)
         EXPECT_EQ(e.range, uint32_t(vision::kModelInRange)) << o.caseId << " at " << o.reduction;
         ++checked;
     }
-    EXPECT_GE(checked, 5) << "the similarity case should reach 40-60 %";
+    EXPECT_GE(checked, 7) << "the similar case (slopes scaled) should reach 30-60 %";
 }
