@@ -38,22 +38,26 @@ bool reachedSnapshot(const FeRow &r, double reduction);
 bool isPaperSpecimen(const FeRow &r);
 
 // The base of the models: among the paper-specimen snapshots at `reduction`, the finest mesh
-// that covers the whole (n, μ) grid at one K (ties, or no complete mesh: the most rows), then
-// the most common K on it. Other meshes — coarser complete ones, the mesh study's finer
-// points, the independent models — are checks; none is mixed into the base. Other K join the base — averaged, as the paper's fit
-// runs through all its K — only where they cover every (n, μ) of that K and their contact
-// penalty and stick slope are the same multiples of K (the factorial, docs/fe.md); runs with
-// other slopes per K (the absolute-penalty runs) or partial grids stay checks.
+// that covers the whole (n, μ) grid at one K, with the stiffest regularisation (stick slope,
+// then contact penalty, per K) that covers it there (ties, or nothing complete: the most
+// rows), then the most common K in that family. Other meshes and regularisations — coarser
+// complete ones, the mesh study's finer points, the penalty studies, the independent models —
+// are checks; none is mixed into the base. Other K join the base — averaged, as the paper's
+// fit runs through all its K — only where they cover every (n, μ) of that K with the same
+// slopes per K (the factorial, docs/fe.md); runs with other slopes per K (the absolute-penalty
+// runs) or partial grids stay checks.
 struct BaseChoice {
     std::string mesh;
+    double contactPerK = 0, stickPerK = 0; // the base's slopes, N/mm³ per MPa of K
     double kMpa = 0;               // the most common K (ties: the lowest)
     std::vector<double> kAveraged; // every K of the base, kMpa included
-    // Every K whose runs cover the base grid with the same penalty per K on any mesh — the
-    // averaged ones and, on a coarser mesh, the factorial that checked K-independence: the
-    // K range the model answers for.
+    // Every K of a family (one mesh, one set of slopes per K) that covers the base grid both
+    // at that K and at the base's K — the averaged ones and the factorial that checked
+    // K-independence: the K range the model answers for.
     std::vector<double> kCovered;
     bool found = false;
     bool hasK(double k) const;
+    bool sameRegularisation(const FeRow &r) const; // the row's slopes per K are the base's
 };
 BaseChoice chooseBase(const std::vector<FeRow> &rows, double reduction);
 

@@ -36,7 +36,7 @@ TEST(FeBaseChoice, AveragesTheKThatCoverTheGridWithTheSamePenaltyPerK)
     grid(rows, 500, 1.0);
     grid(rows, 500, 1.0); // the most common K: 500
     grid(rows, 1250, 0.9); // scaled slopes, full grid: joins
-    grid(rows, 250, 0.5, 400, 40); // absolute slopes (other multiples of K): a check, not the base
+    grid(rows, 250, 0.5, 100, 10); // other (softer) slopes per K: a check, not the base
     rows.push_back(row(750, 0.05, 0.1, 0.1)); // partial grid: a check
     const BaseChoice b = chooseBase(rows, 0.5);
     ASSERT_TRUE(b.found);
@@ -111,4 +111,42 @@ TEST(FeBaseChoice, TheFinestCompleteMeshIsTheBase)
         if (r.cornerMm == 0.05 && r.n == 0.5 && r.mu == 0.3) { r.status = "failed"; r.reduction = 0.45; }
     EXPECT_EQ(chooseBase(rows, 0.5).mesh, "CAX8R h0.5 c0.05");
     EXPECT_EQ(basePoints(rows, 0.5).count({0.5, 0.3}), 0u);
+}
+
+TEST(FeBaseChoice, TheStiffestRegularisationOnTheFinestMeshIsTheBase)
+{
+    // The regularised Coulomb law and the penalty contact approach the exact laws as their
+    // slopes grow: of two complete sets on the finest mesh the stiffer stick slope is the base,
+    // whatever the row counts; the other stays a check and is never averaged in.
+    std::vector<FeRow> rows;
+    auto finer = [&](double u, double stickPerK) {
+        for (double n : {0.05, 0.5})
+            for (double mu : {0.1, 0.3}) {
+                rows.push_back(row(500, n, mu, u, 200, stickPerK));
+                rows.back().cornerMm = 0.05;
+            }
+    };
+    finer(1.0, 20);
+    finer(1.0, 20); // more rows with the base's first stick slope …
+    finer(1.2, 200); // … but a stick slope ten times stiffer covers the grid too
+    grid(rows, 500, 0.8);  // the factorial on a coarser mesh (slopes 200 K / 20 K) …
+    grid(rows, 1250, 0.8); // … checked K 500-1250
+    const BaseChoice b = chooseBase(rows, 0.5);
+    ASSERT_TRUE(b.found);
+    EXPECT_EQ(b.mesh, "CAX8R h0.5 c0.05");
+    EXPECT_DOUBLE_EQ(b.stickPerK, 200);
+    EXPECT_DOUBLE_EQ(b.contactPerK, 200);
+    EXPECT_EQ(b.kAveraged, (std::vector<double>{500}));
+    // The K range still comes from the family that covered the grid at the base's K and others.
+    EXPECT_EQ(b.kCovered, (std::vector<double>{500, 1250}));
+    const PointGrid pts = basePoints(rows, 0.5, b);
+    ASSERT_EQ(pts.size(), 4u);
+    for (const auto &[key, p] : pts) {
+        EXPECT_EQ(p.count, 1) << "only the stiff set, not averaged with the soft one";
+        EXPECT_NEAR(p.u, 1.2, 1e-12);
+    }
+    // A stiffer set at part of the grid (a penalty study) stays a check.
+    rows.push_back(row(500, 0.05, 0.1, 3.0, 200, 2000));
+    rows.back().cornerMm = 0.05;
+    EXPECT_DOUBLE_EQ(chooseBase(rows, 0.5).stickPerK, 200);
 }
