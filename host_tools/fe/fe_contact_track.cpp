@@ -58,6 +58,16 @@ double predictedTouchdown(const std::vector<SideFrame> &frames, std::size_t j, s
 }
 } // namespace
 
+bool contactZoneBroken(const SideFrame &frame, double tolMm)
+{
+    const int top = int(frame.gapMm.size()) - 1;
+    int low = top;
+    while (low > 0 && frame.gapMm[size_t(low - 1)] <= tolMm) --low;
+    for (int j = low - 2; j >= 0; --j)
+        if (frame.gapMm[size_t(j)] <= tolMm) return true;
+    return false;
+}
+
 std::vector<double> touchdownReductions(const std::vector<SideFrame> &frames, double tolMm)
 {
     if (frames.empty()) return {};

@@ -24,6 +24,12 @@ struct SideFrame {
     int nodesPerEdge = 1;
 };
 
+// True when a former-lateral node is on the platen (gap ≤ tol) below a free node of the zone
+// that grows from the corner: a node inside the zone has lifted off (seen with a stiff contact
+// penalty: a mid-side node hovering a µm above the platen). The tracking follows the zone down
+// from the corner, so the touchdowns below such a node come late and the edge lags.
+bool contactZoneBroken(const SideFrame &frame, double tolMm);
+
 // The reduction at which each node joins the contact zone that grows from the corner (its
 // gap, followed from the free frames before it as c·(t* − t)^p with p between 1, a side
 // meeting the platen at an angle, and 2, a tangent one, reaches tol), or -1 when it never

@@ -138,10 +138,25 @@ RunResult runOnce(FeCase c, const RunOptions &o)
         res.radii.push_back(computeRadii(c, mesh, frd.coords, s.disp, red));
         snapshotFrame.push_back(frames.size() - 1);
     }
+    std::string trackNote;
     if (c.trackStep > 0) {
         const auto touchdown = touchdownReductions(frames, kGapTolMm);
         for (size_t i = 0; i < res.radii.size(); ++i)
             res.radii[i].roTrackMm = std::max(res.radii[i].riMm, trackedContactEdge(frames, touchdown, snapshotFrame[i], kGapTolMm));
+        // Say so in the rows when the contact zone was broken (never silently a lagging edge).
+        int broken = 0;
+        double from = 0, to = 0;
+        for (const SideFrame &f : frames)
+            if (contactZoneBroken(f, kGapTolMm)) {
+                if (broken++ == 0) from = f.reduction;
+                to = f.reduction;
+            }
+        if (broken > 0) {
+            char b[200];
+            std::snprintf(b, sizeof b, "contact zone broken by a lifted node in %d frames from %.0f to %.0f %%: the tracked edge lags there",
+                          broken, 100 * from, 100 * to);
+            trackNote = b;
+        }
     }
     for (ForcePoint f : forces) {
         // Axisymmetric elements: CalculiX reports forces for a 2° segment.
@@ -158,6 +173,7 @@ RunResult runOnce(FeCase c, const RunOptions &o)
         res.message = at == std::string::npos ? "ccx did not finish" : log.substr(at, log.find('\n', at) - at);
         for (char &ch : res.message) if (ch == ',') ch = ';';
     }
+    if (!trackNote.empty()) res.message = res.message.empty() ? trackNote : res.message + "; " + trackNote;
     if (!o.keep) fs::remove_all(dir);
     return res;
 }

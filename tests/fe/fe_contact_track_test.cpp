@@ -129,3 +129,12 @@ TEST(FeContactTrack, ContactThatLiftsOffDoesNotMoveTheEdgeBack)
     EXPECT_GE(td[kTop - 1], 0) << "a touchdown stays a touchdown";
     EXPECT_GE(trackedContactEdge(frames, td, 2, kTol), frames[2].rMm[kTop - 1]);
 }
+
+TEST(FeContactTrack, SaysWhenANodeInsideTheContactZoneLiftedOff)
+{
+    SideFrame f = frameAt(0.5);
+    EXPECT_FALSE(contactZoneBroken(f, kTol)) << "one zone from the corner down";
+    f.gapMm[kTop - 1] = 5e-4; // the first side node hovers half a µm above the platen …
+    EXPECT_TRUE(contactZoneBroken(f, kTol)) << "… while the nodes below it are down";
+    EXPECT_FALSE(contactZoneBroken(frameAt(0.2), kTol)) << "no fold yet";
+}
