@@ -38,13 +38,17 @@ AspectRatios aspectRatios(const std::vector<std::string> &in, double minU)
         if (usable(r) && std::fabs(aspectOf(r) - kBaseAspect) > 1e-6) ++meshCount[meshKey(r)];
     int best = 0;
     for (const auto &[m, c] : meshCount) if (c > best) { best = c; out.mesh = m; }
-    auto key = [](const FeRow &r) { return std::make_tuple(r.kMpa, r.n, r.mu, r.eMpa, std::round(r.reduction * 1e4) / 1e4); };
+    // The same physics and the same regularisation (contact penalty, stick slope): a ratio of
+    // two runs that differ only in slenderness.
+    auto key = [](const FeRow &r) {
+        return std::make_tuple(r.kMpa, r.n, r.mu, r.eMpa, std::round(r.reduction * 1e4) / 1e4, r.contactSlope, r.stickSlope);
+    };
     // Both sides tracked, or neither: the tracked edge when every selected row has it.
     out.tracked = true;
     for (const auto &r : rows)
         if (usable(r) && meshKey(r) == out.mesh && r.uTrack < 0) out.tracked = false;
     auto u = [&](const FeRow &r) { return out.tracked ? r.uTrack : r.uInterp; };
-    std::map<std::tuple<double, double, double, double, double>, const FeRow *> base;
+    std::map<std::tuple<double, double, double, double, double, double, double>, const FeRow *> base;
     for (const auto &r : rows)
         if (usable(r) && meshKey(r) == out.mesh && std::fabs(aspectOf(r) - kBaseAspect) < 1e-6 && r.d0 == 10)
             base[key(r)] = &r;

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 
 #include "fe_aspect.h"
@@ -115,4 +116,27 @@ TEST(AspectCorrectedModel, FlagsSlendernessOutsideTheRuns)
     EXPECT_TRUE(model.estimate({0.4, 0.25, 500, 10, 10 * hi + 1}).range & vision::kModelAspectOutside);
     // A squat specimen's narrower ring means more friction than the paper's model says.
     EXPECT_GT(model.estimate({0.3, 0.25, 500, 10, 10}).mu, paper.estimate({0.3, 0.25, 500, 10, 15}).mu);
+}
+
+TEST(AspectTable, PairsRunsOfTheSameRegularisationOnly)
+{
+    // A slender run is divided by the paper-slenderness run with the same contact penalty and
+    // stick slope, never by one that differs in the regularisation too.
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / "icacam_fe_aspect_pairing_test";
+    fs::create_directories(dir);
+    const char *head = "case,status,k_mpa,n,mu,e_mpa,nu,d0_mm,h0_mm,reduction,elem_mm,corner_mm,element,contact_slope,"
+                       "stick_slope,r_i_mm,r_o_mm,r_o_interp_mm,r_max_mm,u_mm,u_interp_mm,force_kn,u_track_mm\n";
+    auto row = [](double h0, double stick, double u) {
+        std::ostringstream s;
+        s << "c,ok,500,0.25,0.2,210000,0.3,10," << h0 << ",0.5,0.5,0.1,CAX8R,100000," << stick << ",5.5," << 5.5 + u << ","
+          << 5.5 + u << ",7.3," << u << "," << u << ",80," << u << "\n";
+        return s.str();
+    };
+    std::ofstream(dir / "base.csv") << head << row(15, 100000, 0.82) << row(15, 10000, 0.80);
+    std::ofstream(dir / "slender.csv") << head << row(20, 100000, 0.90);
+    const auto ar = host::fe::aspectRatios({(dir / "base.csv").string(), (dir / "slender.csv").string()});
+    ASSERT_EQ(ar.ratio.size(), 1u);
+    EXPECT_NEAR(ar.ratio.begin()->second, 0.90 / 0.82, 1e-9);
+    fs::remove_all(dir);
 }
