@@ -60,7 +60,7 @@ std::vector<FeRow> readSweepCsv(const std::string &path)
             return it != col.end() && it->second < c.size() ? c[it->second] : std::string();
         };
         FeRow r;
-        r.caseId = get("case"); r.status = get("status");
+        r.caseId = get("case"); r.status = get("status"); r.message = get("message");
         r.kMpa = d(get("k_mpa")); r.n = d(get("n")); r.mu = d(get("mu")); r.eMpa = d(get("e_mpa"));
         r.d0 = d(get("d0_mm")); r.h0 = d(get("h0_mm")); r.reductionMax = d(get("reduction_max"));
         r.reduction = d(get("reduction")); r.elem = d(get("elem_mm"));

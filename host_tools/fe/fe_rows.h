@@ -10,6 +10,7 @@ namespace icacam::host::fe {
 
 struct FeRow {
     std::string caseId, status;
+    std::string message; // the runner's note: why ccx stopped, a broken contact zone, …
     std::string element = "CAX4R"; // column absent in the first sweeps: they were all CAX4R
     std::string contact = "node-to-surface penalty"; // as the CSV's contact column says
     double cornerMm = 0;

@@ -114,3 +114,23 @@ TEST(FeModel, FlagsOutsideTheRange)
     const auto r10 = model.radii(t::kN[0], t::kMu[0], 10);
     EXPECT_NEAR(r.rMaxMm, 2 * r10.rMaxMm, 1e-9);
 }
+
+TEST(FeModel, BaseRunsTrackedACleanContactZone)
+{
+    // The runner says in a run's message when a node inside the contact zone lifted off (the
+    // tracked edge lags there, fe_contact_track.h). The model's base must not contain such runs.
+    ASSERT_TRUE(haveInputs()) << t::kProvenance;
+    const auto rows = host::fe::readSweepCsvs(tableInputs());
+    int checked = 0;
+    for (int r = 0; r < t::kRCount; ++r) {
+        const auto base = host::fe::chooseBase(rows, t::kR[r]);
+        for (const auto &row : rows) {
+            if (!host::fe::reachedSnapshot(row, t::kR[r]) || !host::fe::isPaperSpecimen(row) ||
+                host::fe::meshKey(row) != base.mesh || !base.hasK(row.kMpa) || !base.sameRegularisation(row))
+                continue;
+            EXPECT_EQ(row.message.find("contact zone broken"), std::string::npos) << row.caseId << ": " << row.message;
+            ++checked;
+        }
+    }
+    EXPECT_GE(checked, t::kRCount * 30);
+}
