@@ -58,11 +58,19 @@ double predictedTouchdown(const std::vector<SideFrame> &frames, std::size_t j, s
 }
 } // namespace
 
+namespace {
+// The lowest node of the contact zone that grows down from the corner (the last index).
+int zoneBottom(const SideFrame &frame, double tolMm)
+{
+    int low = int(frame.gapMm.size()) - 1;
+    while (low > 0 && frame.gapMm[size_t(low - 1)] <= tolMm) --low;
+    return low;
+}
+} // namespace
+
 bool contactZoneBroken(const SideFrame &frame, double tolMm)
 {
-    const int top = int(frame.gapMm.size()) - 1;
-    int low = top;
-    while (low > 0 && frame.gapMm[size_t(low - 1)] <= tolMm) --low;
+    const int low = zoneBottom(frame, tolMm);
     for (int j = low - 2; j >= 0; --j)
         if (frame.gapMm[size_t(j)] <= tolMm) return true;
     return false;
@@ -78,8 +86,7 @@ std::vector<double> touchdownReductions(const std::vector<SideFrame> &frames, do
     int reached = top;   // lowest node of the contiguous contact zone so far
     for (size_t f = 0; f < frames.size(); ++f) {
         const SideFrame &fr = frames[f];
-        int low = top;
-        while (low > 0 && fr.gapMm[size_t(low - 1)] <= tolMm) --low;
+        const int low = zoneBottom(fr, tolMm);
         for (int j = reached - 1; j >= low; --j) {
             // Joined between frame f-1 and f: where its gap, followed from the free frames
             // before, reaches tol. Not by interpolating to frame f: there the node already

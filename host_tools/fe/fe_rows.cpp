@@ -197,6 +197,12 @@ BaseChoice chooseBase(const std::vector<FeRow> &rows, double reduction)
     return b;
 }
 
+bool BaseChoice::includes(const FeRow &r, double reduction) const
+{
+    return found && reachedSnapshot(r, reduction) && isPaperSpecimen(r) && meshKey(r) == mesh && hasK(r.kMpa) &&
+           sameRegularisation(r);
+}
+
 bool BaseChoice::hasK(double k) const
 {
     return std::find(kAveraged.begin(), kAveraged.end(), k) != kAveraged.end();
@@ -212,9 +218,7 @@ PointGrid basePoints(const std::vector<FeRow> &rows, double reduction, const Bas
     PointGrid pts;
     if (!base.found) return pts;
     for (const auto &r : rows) {
-        if (!reachedSnapshot(r, reduction) || !isPaperSpecimen(r) || meshKey(r) != base.mesh || !base.hasK(r.kMpa) ||
-            !base.sameRegularisation(r))
-            continue;
+        if (!base.includes(r, reduction)) continue;
         Point &p = pts[{r.n, r.mu}];
         p.n = r.n; p.mu = r.mu; p.elem = r.elem; p.mesh = base.mesh;
         const double u = r.uBest();

@@ -59,6 +59,8 @@ struct BaseChoice {
     bool found = false;
     bool hasK(double k) const;
     bool sameRegularisation(const FeRow &r) const; // the row's slopes per K are the base's
+    // The row is one of the base's snapshots at `reduction` (what basePoints averages).
+    bool includes(const FeRow &r, double reduction) const;
 };
 BaseChoice chooseBase(const std::vector<FeRow> &rows, double reduction);
 
