@@ -38,7 +38,51 @@ Row rowFrom(const double *us, const double *mus, int count)
     return r;
 }
 
-Row rowAt(int ri, int ni) { return rowFrom(t::kU[ri][ni], t::kMu, t::kMuCount); }
+using Carry = double[t::kKCount][t::kRCount][t::kNCount][t::kMuCount];
+
+// How the value at grid point (ri, ni, mj) moves from the base's K to kMpa (≤ 0: not given,
+// the base's K): the generated K carry, linear in K between the carried K, held at the ends
+// (estimate flags a K outside them).
+double carryAt(const Carry &d, int ri, int ni, int mj, double kMpa)
+{
+    if (kMpa <= 0 || t::kKCount < 2) return 0;
+    int i = 0;
+    double w = 0;
+    bracketAxis(t::kK, t::kKCount, kMpa, i, w);
+    return (1 - w) * d[i][ri][ni][mj] + w * d[i + 1][ri][ni][mj];
+}
+
+// The tables at K: u (never below 0: no fold-over is no fold-over), R_i, R_o, R_max; -1 where
+// the base has no data.
+double uAtK(int ri, int ni, int mj, double k)
+{
+    const double u = t::kU[ri][ni][mj];
+    if (u < 0) return -1;
+    const double v = u + carryAt(t::kDU, ri, ni, mj, k);
+    return v > 0 ? v : 0;
+}
+double riAtK(int ri, int ni, int mj, double k)
+{
+    const double v = t::kRi[ri][ni][mj];
+    return v < 0 ? -1 : v + carryAt(t::kDRi, ri, ni, mj, k);
+}
+double roAtK(int ri, int ni, int mj, double k)
+{
+    const double v = t::kRo[ri][ni][mj];
+    return v < 0 ? -1 : v + carryAt(t::kDRi, ri, ni, mj, k) + carryAt(t::kDU, ri, ni, mj, k);
+}
+double rMaxAtK(int ri, int ni, int mj, double k)
+{
+    const double v = t::kRmax[ri][ni][mj];
+    return v < 0 ? -1 : v + carryAt(t::kDRmax, ri, ni, mj, k);
+}
+
+Row rowAt(int ri, int ni, double kMpa)
+{
+    double us[t::kMuCount];
+    for (int j = 0; j < t::kMuCount; ++j) us[j] = uAtK(ri, ni, j, kMpa);
+    return rowFrom(us, t::kMu, t::kMuCount);
+}
 
 // Monotone cubic Hermite (Fritsch–Carlson) through the row's points; clamps outside.
 void pchip(const Row &r, double x, double &y, double &dy, bool &outside)
@@ -69,47 +113,49 @@ void pchip(const Row &r, double x, double &y, double &dy, bool &outside)
 }
 
 
-double lerp2(const double (&tab)[t::kNCount][t::kMuCount], double n, double mu)
+// at(ri, i, j): a table's value at grid point (reduction ri, n i, μ j), < 0 without data.
+using GridValue = double (*)(int, int, int, double);
+
+double lerp2(GridValue at, int ri, double k, double n, double mu)
 {
     int i = 0, j = 0;
     double wn = 0, wm = 0;
     bracketAxis(t::kN, t::kNCount, n, i, wn);
     bracketAxis(t::kMu, t::kMuCount, mu, j, wm);
-    auto at = [&](int a, int b) {
+    auto value = [&](int a, int b) {
         a = a < t::kNCount ? a : t::kNCount - 1;
         b = b < t::kMuCount ? b : t::kMuCount - 1;
-        return tab[a][b];
+        return at(ri, a, b, k);
     };
     // A grid point without data (-1) only matters when it carries weight: on a simulated
     // (n, μ) the neighbours' holes do not.
     const double w[4] = {(1 - wn) * (1 - wm), (1 - wn) * wm, wn * (1 - wm), wn * wm};
-    const double v[4] = {at(i, j), at(i, j + 1), at(i + 1, j), at(i + 1, j + 1)};
+    const int ai[4] = {i, i, i + 1, i + 1}, bj[4] = {j, j + 1, j, j + 1};
     double sum = 0;
-    for (int k = 0; k < 4; ++k) {
-        if (w[k] == 0) continue;
-        if (v[k] < 0) return -1;
-        sum += w[k] * v[k];
+    for (int q = 0; q < 4; ++q) {
+        if (w[q] == 0) continue;
+        const double v = value(ai[q], bj[q]);
+        if (v < 0) return -1;
+        sum += w[q] * v;
     }
     return sum;
 }
 
-using Table = double[t::kRCount][t::kNCount][t::kMuCount];
-
 // Bilinear in (n, μ) at the two snapshot reductions around r, linear between them.
-double lerp3(const Table &tab, double n, double mu, double r)
+double lerp3(GridValue at, double k, double n, double mu, double r)
 {
-    int k = 0;
+    int ri = 0;
     double w = 0;
-    bracketAxis(t::kR, t::kRCount, r, k, w);
-    const double a = lerp2(tab[k], n, mu);
+    bracketAxis(t::kR, t::kRCount, r, ri, w);
+    const double a = lerp2(at, ri, k, n, mu);
     if (w == 0 || t::kRCount == 1) return a;
-    const double b = lerp2(tab[k + 1], n, mu);
+    const double b = lerp2(at, ri + 1, k, n, mu);
     if (w == 1) return b;
     return a < 0 || b < 0 ? -1 : (1 - w) * a + w * b;
 }
 
 // μ from u at snapshot reduction index ri: PCHIP along the two simulated n around n.
-ModelEstimate atReduction(int ri, double n, double u, double scale)
+ModelEstimate atReduction(int ri, double n, double u, double scale, double kMpa)
 {
     ModelEstimate e;
     int i = 0;
@@ -118,7 +164,7 @@ ModelEstimate atReduction(int ri, double n, double u, double scale)
     const int i1 = t::kNCount > 1 ? i + 1 : i;
     double mu0 = 0, d0 = 0, mu1 = 0, d1 = 0;
     bool out0 = false, out1 = false;
-    const Row r0 = rowAt(ri, i), r1 = rowAt(ri, i1);
+    const Row r0 = rowAt(ri, i, kMpa), r1 = rowAt(ri, i1, kMpa);
     pchip(r0, u, mu0, d0, out0);
     pchip(r1, u, mu1, d1, out1);
     e.mu = (1 - w) * mu0 + w * mu1;
@@ -158,8 +204,10 @@ ModelEstimate FeModel::estimate(const ModelInputs &in) const
     int k = 0;
     double wr = 0;
     bracketAxis(t::kR, t::kRCount, red, k, wr);
-    const ModelEstimate a = atReduction(k, in.n, u, scale);
-    const ModelEstimate b = t::kRCount > 1 ? atReduction(k + 1, in.n, u, scale) : a;
+    // u(μ) at the specimen's K: the base plus the K carry (the fold-over's onset moves with
+    // the elastic strain K/E; docs/fe.md, the factorial).
+    const ModelEstimate a = atReduction(k, in.n, u, scale, in.kMpa);
+    const ModelEstimate b = t::kRCount > 1 ? atReduction(k + 1, in.n, u, scale, in.kMpa) : a;
     e.mu = (1 - wr) * a.mu + wr * b.mu;
     e.dMuDu = (1 - wr) * a.dMuDu + wr * b.dMuDu;
     if (wr < 1) e.range |= a.range;
@@ -177,19 +225,20 @@ ModelEstimate FeModel::estimate(const ModelInputs &in) const
     return e;
 }
 
-double FeModel::uAt(double n, double mu, double reduction) const
+double FeModel::uAt(double n, double mu, double reduction, double kMpa) const
 {
-    return lerp3(t::kU, n, mu, reduction > 0 ? reduction : t::kReduction);
+    return lerp3(uAtK, kMpa, n, mu, reduction > 0 ? reduction : t::kReduction);
 }
 
-FeRadii FeModel::radii(double n, double mu, double d0Mm, double reduction) const
+FeRadii FeModel::radii(double n, double mu, double d0Mm, double reduction, double kMpa) const
 {
     FeRadii r;
     const double s = d0Mm / t::kD0Mm;
     const double red = reduction > 0 ? reduction : t::kReduction;
-    r.riMm = lerp3(t::kRi, n, mu, red) * s;
-    r.roMm = lerp3(t::kRo, n, mu, red) * s;
-    r.rMaxMm = lerp3(t::kRmax, n, mu, red) * s;
+    r.riMm = lerp3(riAtK, kMpa, n, mu, red) * s;
+    r.roMm = lerp3(roAtK, kMpa, n, mu, red) * s;
+    r.rMaxMm = lerp3(rMaxAtK, kMpa, n, mu, red) * s;
+    if (kMpa > 0 && (kMpa < t::kKMinMpa - 1e-9 || kMpa > t::kKMaxMpa + 1e-9)) r.range |= kModelKOutside;
     if (red < t::kR[0] - 1e-9 || red > t::kR[t::kRCount - 1] + 1e-9) r.range |= kModelReductionOutside;
     if (n < t::kN[0] - 1e-9) r.range |= kModelNBelow;
     if (n > t::kN[t::kNCount - 1] + 1e-9) r.range |= kModelNAbove;

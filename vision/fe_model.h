@@ -23,13 +23,15 @@ public:
     const char *name() const override { return "fe"; }
     // μ from u (scaled to D0 = 10 mm by geometric similarity) and n: monotone cubic (PCHIP)
     // in u along each simulated n, linear between the simulated n, at the declared final
-    // height's reduction (snapshots 30-60 %, linear between them), else at 50 %.
+    // height's reduction (snapshots 30-60 %, linear between them), else at 50 %; at the given
+    // K through the K carry (linear in K between the factorial's K), else at the base's K.
     ModelEstimate estimate(const ModelInputs &in) const override;
     bool correctsReduction() const override { return true; }
-    // The FE's u at (n, μ, reduction; 0: 50 %) (D0 = 10 mm), linear between grid points.
-    double uAt(double n, double mu, double reduction = 0) const;
-    // The radii the FE predicts at (n, μ, reduction; 0: 50 %), scaled to d0Mm.
-    FeRadii radii(double n, double mu, double d0Mm = 10, double reduction = 0) const;
+    // The FE's u at (n, μ, reduction; 0: 50 %) (D0 = 10 mm), linear between grid points, at
+    // K (MPa; 0: the base's K) through the generated K carry.
+    double uAt(double n, double mu, double reduction = 0, double kMpa = 0) const;
+    // The radii the FE predicts at (n, μ, reduction; 0: 50 %, K; 0: the base's), scaled to d0Mm.
+    FeRadii radii(double n, double mu, double d0Mm = 10, double reduction = 0, double kMpa = 0) const;
 };
 
 } // namespace icacam::vision

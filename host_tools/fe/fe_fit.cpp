@@ -36,6 +36,7 @@ int fitCommand(const std::vector<std::string> &in, const std::string &out, doubl
     // Every snapshot reduction from 30 % to 60 % that has base data (`reduction` must be one).
     std::vector<double> reds;
     std::map<double, PointGrid> byRed;
+    std::map<double, KCarry> carryByRed; // how u moves with K, per reduction (fe_rows.h)
     // The K range the model answers for: the averaged K and those that checked K-independence
     // on another mesh (BaseChoice::kCovered, which includes the averaged ones).
     std::set<double> kCovered;
@@ -48,6 +49,7 @@ int fitCommand(const std::vector<std::string> &in, const std::string &out, doubl
         if (pts.empty()) continue;
         reds.push_back(r);
         byRed[r] = std::move(pts);
+        carryByRed[r] = kCarry(all, r, base);
         kCovered.insert(base.kCovered.begin(), base.kCovered.end());
         contactPerK = base.contactPerK;
         stickPerK = base.stickPerK;
@@ -68,6 +70,43 @@ int fitCommand(const std::vector<std::string> &in, const std::string &out, doubl
     const double kLo = kCovered.empty() ? kMin : *kCovered.begin();
     const double kHi = kCovered.empty() ? kMax : *kCovered.rbegin();
     const std::vector<double> nv(ns.begin(), ns.end()), mv(mus.begin(), mus.end());
+    // The K carry's K and family: those of the model's own reduction; a reduction where that
+    // family lacks a K or a point carries 0 there (counted, said in the file).
+    const KCarry &carry0 = carryByRed[reduction];
+    std::vector<double> carryK = carry0.found ? carry0.k : std::vector<double>{kMin};
+    int carryHoles = 0;
+    auto carryTable = [&](auto get) {
+        std::string s;
+        for (double k : carryK) {
+            s += "  {\n";
+            for (double r : reds) {
+                s += "    {\n";
+                const KCarry &c = carryByRed[r];
+                for (double n : nv) {
+                    std::vector<double> row;
+                    for (double mu : mv) {
+                        double v = 0;
+                        if (carry0.found && byRed[r].count({n, mu})) {
+                            const auto dk = c.delta.find(k);
+                            const bool have = c.found && c.mesh == carry0.mesh && dk != c.delta.end() &&
+                                              dk->second.count({n, mu});
+                            if (have) v = get(dk->second.at({n, mu}));
+                            else ++carryHoles;
+                        }
+                        row.push_back(v);
+                    }
+                    s += "        {" + list(row, "%.5f") + "},\n";
+                }
+                s += "    },\n";
+            }
+            s += "  },\n";
+        }
+        return s;
+    };
+    const std::string carryU = carryTable([](const Point &p) { return p.u; });
+    const std::string carryRi = carryTable([](const Point &p) { return p.ri; });
+    const std::string carryRmax = carryTable([](const Point &p) { return p.rMax; });
+    carryHoles /= 3;
     auto table = [&](auto get) {
         std::string s;
         for (double r : reds) {
@@ -99,7 +138,18 @@ int fitCommand(const std::vector<std::string> &in, const std::string &out, doubl
       << "(host_tools/fe/fe_rows.h): K " << kRange(kMin, kMax) << " MPa;\n"
       << "// runs over K " << kRange(kLo, kHi) << " MPa cover the grid with one set of slopes per K, the base's K among them\n"
       << "// (the factorial that checked K-independence): the K range.\n"
-      << "// u is " << edge << "; R_o = R_i + u; -1 marks a grid point without data.\n"
+      << "// u is " << edge << "; R_o = R_i + u; -1 marks a grid point without data.\n";
+    if (carry0.found) {
+        f << "// K carry: u, R_i and R_max at K minus at the base's K, from the runs of one family that cover the\n"
+          << "// grid at K " << list(carryK) << " MPa (mesh " << carry0.mesh << ", contact penalty " << carry0.contactPerK
+          << " K, stick slope " << carry0.stickPerK << " K N/mm³): the model at K adds it, linear in K between them\n"
+          << "// (host_tools/fe/fe_rows.h, KCarry).";
+        if (carryHoles) f << " " << carryHoles << " grid points without a K run carry 0.";
+        f << "\n";
+    } else {
+        f << "// K carry: none (no family covers the grid at several K): the model is the same at every K.\n";
+    }
+    f
       << "namespace icacam::vision::fe_table {\n"
       << "inline constexpr const char *kProvenance = \"icacam fe fit" << inputs << "\";\n"
       << "inline constexpr double kReduction = " << reduction << "; // the model's own reduction when none is given\n"
@@ -114,10 +164,19 @@ int fitCommand(const std::vector<std::string> &in, const std::string &out, doubl
       << "inline constexpr double kRi[kRCount][kNCount][kMuCount] = {\n" << table([](const Point &p) { return p.ri; }) << "};\n"
       << "inline constexpr double kRo[kRCount][kNCount][kMuCount] = {\n" << table([](const Point &p) { return p.ro; }) << "};\n"
       << "inline constexpr double kRmax[kRCount][kNCount][kMuCount] = {\n" << table([](const Point &p) { return p.rMax; }) << "};\n"
+      << "inline constexpr int kKCount = " << carryK.size() << ";\n"
+      << "inline constexpr double kK[kKCount] = {" << list(carryK) << "}; // MPa\n"
+      << "// [K][reduction][n][μ] in mm\n"
+      << "inline constexpr double kDU[kKCount][kRCount][kNCount][kMuCount] = {\n" << carryU << "};\n"
+      << "inline constexpr double kDRi[kKCount][kRCount][kNCount][kMuCount] = {\n" << carryRi << "};\n"
+      << "inline constexpr double kDRmax[kKCount][kRCount][kNCount][kMuCount] = {\n" << carryRmax << "};\n"
       << "} // namespace icacam::vision::fe_table\n";
     if (!f) throw std::runtime_error("cannot write " + out);
     std::cout << "fit: " << byRed[reds.front()].size() << "-" << byRed[reduction].size() << " (n, mu) points at "
-              << reds.size() << " reductions, n " << list(nv) << ", mu " << list(mv) << " -> " << out << "\n";
+              << reds.size() << " reductions, n " << list(nv) << ", mu " << list(mv);
+    if (carry0.found) std::cout << ", K carry " << list(carryK) << " MPa from " << carry0.mesh;
+    if (carryHoles) std::cout << " (" << carryHoles << " points without it)";
+    std::cout << " -> " << out << "\n";
     return 0;
 }
 

@@ -99,9 +99,14 @@ void writeRunResiduals(std::ostream &md, const std::vector<FeRow> &rows)
 {
     md << "\n## The model against each run it averages\n\n";
     if (const BaseChoice b = chooseBase(rows, 0.5); b.kAveraged.size() <= 1) {
-        char b1[200];
+        char b1[400];
+        const KCarry c = kCarry(rows, 0.5, b);
         std::snprintf(b1, sizeof b1, "The base is one K (K %g MPa on %s): the model is its runs at the grid points. "
-                      "The spread over K is in docs/fe/factorial.md.\n", b.kMpa, b.mesh.c_str());
+                      "The spread over K is in docs/fe/factorial.md; %s.\n", b.kMpa, b.mesh.c_str(),
+                      c.found ? ("the model carries it (u and the radii at K minus at the base's K, from " + c.mesh +
+                                 ", K " + std::to_string(int(c.k.front())) + "-" + std::to_string(int(c.k.back())) +
+                                 " MPa; KCarry in fe_rows.h)").c_str()
+                              : "no family covers the grid at several K: the model is the same at every K");
         md << b1;
         return;
     }

@@ -234,6 +234,73 @@ PointGrid basePoints(const std::vector<FeRow> &rows, double reduction, const Bas
     return pts;
 }
 
+KCarry kCarry(const std::vector<FeRow> &rows, double reduction, const BaseChoice &base)
+{
+    KCarry c;
+    if (!base.found) return c;
+    using Family = std::pair<std::string, SlopesPerK>;
+    // family → K → (n, μ) → the rows there (repeats averaged)
+    std::map<Family, std::map<double, PointGrid>> fams;
+    std::map<Family, double> famSize; // the finest element: the corner, or the uniform size
+    for (const auto &r : rows) {
+        if (!reachedSnapshot(r, reduction) || !isPaperSpecimen(r)) continue;
+        famSize[{meshKey(r), slopesPerK(r)}] = r.cornerMm > 0 ? r.cornerMm : r.elem;
+        Point &p = fams[{meshKey(r), slopesPerK(r)}][r.kMpa][{r.n, r.mu}];
+        const double u = r.uBest();
+        p.n = r.n; p.mu = r.mu; p.u += u; p.ri += r.ri; p.ro += r.ri + u; p.rMax += r.rMax;
+        ++p.count;
+    }
+    for (auto &[fam, byK] : fams)
+        for (auto &[k, pts] : byK)
+            for (auto &[key, p] : pts) { p.u /= p.count; p.ri /= p.count; p.ro /= p.count; p.rMax /= p.count; }
+    const PointGrid basePts = basePoints(rows, reduction, base);
+    auto covers = [&](const PointGrid &g) {
+        for (const auto &[key, p] : basePts) if (!g.count(key)) return false;
+        return true;
+    };
+    const Family *best = nullptr;
+    std::vector<double> bestK;
+    double bestSize = 0;
+    for (const auto &[fam, byK] : fams) {
+        // The family must have every K the base averages: the differences are taken from them.
+        bool hasBaseK = true;
+        for (double k : base.kAveraged) hasBaseK = hasBaseK && byK.count(k) && covers(byK.at(k));
+        if (!hasBaseK) continue;
+        std::vector<double> ks;
+        for (const auto &[k, pts] : byK) if (covers(pts)) ks.push_back(k);
+        if (ks.size() < 2) continue;
+        const double size = famSize.at(fam);
+        bool better = !best || ks.size() > bestK.size();
+        if (best && ks.size() == bestK.size()) {
+            if (size != bestSize) better = size < bestSize;
+            else better = fam.second.second > best->second.second;
+        }
+        if (better) { best = &fam; bestK = ks; bestSize = size; }
+    }
+    if (!best) return c;
+    c.found = true;
+    c.mesh = best->first;
+    c.contactPerK = double(best->second.first) / 1000.0;
+    c.stickPerK = double(best->second.second) / 1000.0;
+    c.k = bestK;
+    const auto &byK = fams.at(*best);
+    for (const auto &[key, b] : basePts) {
+        Point ref; // the family at the base's K (their mean, as the base averages them)
+        for (double k : base.kAveraged) {
+            const Point &p = byK.at(k).at(key);
+            ref.u += p.u; ref.ri += p.ri; ref.ro += p.ro; ref.rMax += p.rMax;
+        }
+        const double m = double(base.kAveraged.size());
+        for (double k : c.k) {
+            const Point &p = byK.at(k).at(key);
+            Point &d = c.delta[k][key];
+            d.n = p.n; d.mu = p.mu; d.mesh = c.mesh; d.count = p.count;
+            d.u = p.u - ref.u / m; d.ri = p.ri - ref.ri / m; d.ro = p.ro - ref.ro / m; d.rMax = p.rMax - ref.rMax / m;
+        }
+    }
+    return c;
+}
+
 PointGrid basePoints(const std::vector<std::string> &in, double reduction)
 {
     return basePoints(readSweepCsvs(in), reduction);

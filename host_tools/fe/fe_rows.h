@@ -78,4 +78,21 @@ PointGrid basePoints(const std::vector<FeRow> &rows, double reduction);
 // The same with the base already chosen (chooseBase(rows, reduction)).
 PointGrid basePoints(const std::vector<FeRow> &rows, double reduction, const BaseChoice &base);
 
+// How u and the radii move with K where the base has one K: the runs of one family (one mesh,
+// one set of slopes per K) that cover the base's grid at several K — the factorial — as
+// differences from that family's own value at the base's K (the mean over the base's averaged
+// K). Differences, not the family's values: the family may be a coarser mesh or another
+// regularisation, and what it says reliably is how u changes with K (elasticity: the elastic
+// strain K/E at yield moves the fold-over's onset), not u itself (docs/fe.md, the factorial).
+// Chosen as the family with the most such K, then the finest mesh, then the stiffest stick.
+struct KCarry {
+    std::string mesh;              // the carry family's mesh (meshKey)
+    double contactPerK = 0, stickPerK = 0;
+    std::vector<double> k;         // every K of the carry, the base's among them; rising
+    // K → (n, μ) → (u, R_i, R_o, R_max) at K minus at the base's K; force unused.
+    std::map<double, PointGrid> delta;
+    bool found = false;            // at least two K
+};
+KCarry kCarry(const std::vector<FeRow> &rows, double reduction, const BaseChoice &base);
+
 } // namespace icacam::host::fe

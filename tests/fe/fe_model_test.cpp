@@ -57,6 +57,68 @@ TEST(FeModel, TableMatchesCommittedData)
     EXPECT_GE(found, 1);
 }
 
+TEST(FeModel, KCarryMatchesCommittedData)
+{
+    // The K carry (u and the radii at K minus at the base's K) is what `fe fit` takes from the
+    // CSVs: a stale table or a changed selection fails here.
+    ASSERT_TRUE(haveInputs()) << t::kProvenance;
+    const auto rows = host::fe::readSweepCsvs(tableInputs());
+    int checked = 0;
+    for (int r = 0; r < t::kRCount; ++r) {
+        const auto c = host::fe::kCarry(rows, t::kR[r], host::fe::chooseBase(rows, t::kR[r]));
+        ASSERT_TRUE(c.found) << "the committed data hold the factorial: a K carry is expected";
+        ASSERT_EQ(int(c.k.size()), t::kKCount);
+        for (int q = 0; q < t::kKCount; ++q) {
+            ASSERT_EQ(c.k[q], t::kK[q]);
+            for (int i = 0; i < t::kNCount; ++i)
+                for (int j = 0; j < t::kMuCount; ++j) {
+                    const auto &d = c.delta.at(t::kK[q]);
+                    const auto it = d.find({t::kN[i], t::kMu[j]});
+                    if (it == d.end()) continue;
+                    EXPECT_NEAR(t::kDU[q][r][i][j], it->second.u, 2e-5) << "stale table: rerun icacam fe fit";
+                    EXPECT_NEAR(t::kDRi[q][r][i][j], it->second.ri, 2e-5);
+                    EXPECT_NEAR(t::kDRmax[q][r][i][j], it->second.rMax, 2e-5);
+                    ++checked;
+                }
+        }
+    }
+    EXPECT_GE(checked, t::kRCount * t::kKCount * 30);
+}
+
+TEST(FeModel, ReadsUAtTheSpecimensK)
+{
+    // At each factorial K, u at a simulated (n, μ) is the base's plus the carry, and μ read
+    // back at that K is the simulated μ within 1 %; K not given is the base's K.
+    vision::FeModel model;
+    int checked = 0, moved = 0;
+    for (int q = 0; q < t::kKCount; ++q)
+        for (int r = 0; r < t::kRCount; ++r)
+            for (int i = 0; i < t::kNCount; ++i)
+                for (int j = 0; j < t::kMuCount; ++j) {
+                    if (t::kU[r][i][j] < 0) continue;
+                    const double u = model.uAt(t::kN[i], t::kMu[j], t::kR[r], t::kK[q]);
+                    EXPECT_NEAR(u, std::max(0.0, t::kU[r][i][j] + t::kDU[q][r][i][j]), 1e-12);
+                    const auto rad = model.radii(t::kN[i], t::kMu[j], 10, t::kR[r], t::kK[q]);
+                    EXPECT_NEAR(rad.roMm - rad.riMm, t::kU[r][i][j] + t::kDU[q][r][i][j], 1e-9);
+                    vision::ModelInputs in;
+                    in.n = t::kN[i];
+                    in.uMm = u;
+                    in.kMpa = t::kK[q];
+                    in.hFinalMm = in.h0Mm * (1 - t::kR[r]);
+                    const auto e = model.estimate(in);
+                    if (e.range != vision::kModelInRange) continue;
+                    EXPECT_NEAR(e.mu, t::kMu[j], 0.01 * t::kMu[j])
+                        << "K " << t::kK[q] << " n " << t::kN[i] << " r " << t::kR[r] << " u " << u;
+                    ++checked;
+                    // The same u read without K (the base's) gives another μ where the carry moved u.
+                    in.kMpa = 0;
+                    if (std::fabs(model.estimate(in).mu - e.mu) > 1e-4) ++moved;
+                }
+    EXPECT_GE(checked, 100);
+    EXPECT_GE(moved, 20) << "the K carry should move μ near the fold-over's onset";
+    EXPECT_NEAR(model.uAt(0.25, 0.1), model.uAt(0.25, 0.1, 0, 500), 1e-12);
+}
+
 TEST(FeModel, ReproducesFeDataWithinOnePercent)
 {
     ASSERT_TRUE(haveInputs()) << "the table's inputs are not in the tree: " << t::kProvenance;

@@ -150,3 +150,41 @@ TEST(FeBaseChoice, TheStiffestRegularisationOnTheFinestMeshIsTheBase)
     rows.back().cornerMm = 0.05;
     EXPECT_DOUBLE_EQ(chooseBase(rows, 0.5).stickPerK, 200);
 }
+
+TEST(FeKCarry, HowUMovesWithKFromTheFamilyWithTheMostK)
+{
+    // The base: one K on the fine mesh. The factorial on a coarser mesh covers the grid at
+    // K 250, 500 and 1250; its values are off (coarse), its differences in K are the carry.
+    std::vector<FeRow> rows;
+    for (double n : {0.05, 0.5})
+        for (double mu : {0.1, 0.3}) {
+            rows.push_back(row(500, n, mu, 1.2, 200, 200));
+            rows.back().cornerMm = 0.05;
+        }
+    grid(rows, 500, 0.8);
+    grid(rows, 250, 0.7);
+    grid(rows, 1250, 0.95);
+    for (auto &r : rows) if (r.cornerMm == 0.1) r.ri = 5 - (r.uTrack - 0.8); // R_i moves against u
+    grid(rows, 750, 0.5, 100, 10); // another regularisation at one more K: no base K, no carry
+    rows.push_back(row(2000, 0.05, 0.1, 2.0)); // a partial grid: not a K of the carry
+    const BaseChoice b = chooseBase(rows, 0.5);
+    ASSERT_EQ(b.mesh, "CAX8R h0.5 c0.05");
+    const KCarry c = kCarry(rows, 0.5, b);
+    ASSERT_TRUE(c.found);
+    EXPECT_EQ(c.mesh, "CAX8R h0.5 c0.1");
+    EXPECT_EQ(c.k, (std::vector<double>{250, 500, 1250}));
+    ASSERT_EQ(c.delta.size(), 3u);
+    for (const auto &[key, d] : c.delta.at(250)) {
+        EXPECT_NEAR(d.u, -0.1, 1e-12);
+        EXPECT_NEAR(d.ri, 0.1, 1e-12);
+        EXPECT_NEAR(d.ro, 0.0, 1e-12);
+    }
+    for (const auto &[key, d] : c.delta.at(500)) EXPECT_NEAR(d.u, 0.0, 1e-12);
+    for (const auto &[key, d] : c.delta.at(1250)) EXPECT_NEAR(d.u, 0.15, 1e-12);
+
+    // Without runs at several K that cover the grid there is no carry.
+    std::vector<FeRow> one;
+    grid(one, 500, 1.0);
+    grid(one, 250, 0.5, 100, 10);
+    EXPECT_FALSE(kCarry(one, 0.5, chooseBase(one, 0.5)).found);
+}
