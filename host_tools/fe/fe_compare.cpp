@@ -61,8 +61,8 @@ int compareCommand(const std::vector<std::string> &in, const std::string &out, d
     if (acrossMaterial) md << " --across-material 1";
     md << "` (u: " << (tracked ? "contact edge tracked between the nodes' touchdowns" : "interpolated contact edge")
        << "; Δu relative to the first file; bar " << 100 * bar
-       << " % where u > " << minU << " mm). u = R_o − R_i is a difference of two radii about 50 times larger "
-          "near the fold-over's onset, so the two radii's own differences (µm) say which edge moved. Δμ %: the μ "
+       << " % where u > " << minU << " mm). u = R_o − R_i is a difference of two radii of 5–7 mm, "
+          "50–70 times u where u is 0.1 mm and more below, so the two radii's own differences (µm) say which edge moved. Δμ %: the μ "
           "that the reference's u(μ) at the same n and reduction gives for the other's u, against the case's μ — "
           "the difference in u as an instrument reading μ from it would see it (in brackets: extrapolated "
           "beyond the reference's u range).\n\n"
