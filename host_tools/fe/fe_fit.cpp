@@ -88,7 +88,8 @@ int fitCommand(const std::vector<std::string> &in, const std::string &out, doubl
                         double v = 0;
                         if (carry0.found && byRed[r].count({n, mu})) {
                             const auto dk = c.delta.find(k);
-                            const bool have = c.found && c.mesh == carry0.mesh && dk != c.delta.end() &&
+                            const bool have = c.found && c.mesh == carry0.mesh && c.contactPerK == carry0.contactPerK &&
+                                              c.stickPerK == carry0.stickPerK && dk != c.delta.end() &&
                                               dk->second.count({n, mu});
                             if (have) v = get(dk->second.at({n, mu}));
                             else ++carryHoles;
