@@ -74,27 +74,32 @@ int fitCommand(const std::vector<std::string> &in, const std::string &out, doubl
     // family lacks a K or a point carries 0 there (counted, said in the file).
     const KCarry &carry0 = carryByRed[reduction];
     std::vector<double> carryK = carry0.found ? carry0.k : std::vector<double>{kMin};
+    // A base point whose K run is missing at some reduction (or comes from another family there).
+    auto carryAt = [&](double k, double r, double n, double mu) -> const Point * {
+        const KCarry &c = carryByRed[r];
+        const auto dk = c.delta.find(k);
+        const bool same = c.found && c.mesh == carry0.mesh && c.contactPerK == carry0.contactPerK &&
+                          c.stickPerK == carry0.stickPerK && dk != c.delta.end();
+        if (!same) return nullptr;
+        const auto it = dk->second.find({n, mu});
+        return it == dk->second.end() ? nullptr : &it->second;
+    };
     int carryHoles = 0;
+    if (carry0.found)
+        for (double k : carryK)
+            for (double r : reds)
+                for (const auto &[key, p] : byRed[r]) carryHoles += carryAt(k, r, key.first, key.second) == nullptr;
     auto carryTable = [&](auto get) {
         std::string s;
         for (double k : carryK) {
             s += "  {\n";
             for (double r : reds) {
                 s += "    {\n";
-                const KCarry &c = carryByRed[r];
                 for (double n : nv) {
                     std::vector<double> row;
                     for (double mu : mv) {
-                        double v = 0;
-                        if (carry0.found && byRed[r].count({n, mu})) {
-                            const auto dk = c.delta.find(k);
-                            const bool have = c.found && c.mesh == carry0.mesh && c.contactPerK == carry0.contactPerK &&
-                                              c.stickPerK == carry0.stickPerK && dk != c.delta.end() &&
-                                              dk->second.count({n, mu});
-                            if (have) v = get(dk->second.at({n, mu}));
-                            else ++carryHoles;
-                        }
-                        row.push_back(v);
+                        const Point *d = carry0.found && byRed[r].count({n, mu}) ? carryAt(k, r, n, mu) : nullptr;
+                        row.push_back(d ? get(*d) : 0.0);
                     }
                     s += "        {" + list(row, "%.5f") + "},\n";
                 }
@@ -107,7 +112,6 @@ int fitCommand(const std::vector<std::string> &in, const std::string &out, doubl
     const std::string carryU = carryTable([](const Point &p) { return p.u; });
     const std::string carryRi = carryTable([](const Point &p) { return p.ri; });
     const std::string carryRmax = carryTable([](const Point &p) { return p.rMax; });
-    carryHoles /= 3;
     auto table = [&](auto get) {
         std::string s;
         for (double r : reds) {
