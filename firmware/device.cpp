@@ -6,7 +6,7 @@
 
 #include "firmware/scale_check.h"
 #include "firmware/screen.h"
-#include "vision/paper_model.h"
+#include "vision/model/paper_model.h"
 #include "vision/reference_disc.h"
 
 namespace icacam::fw {

@@ -22,9 +22,9 @@
 #include "hal/file/folder_storage.h"
 #include "hal/file/png_display.h"
 #include "hal/file/pty_serial.h"
-#include "vision/aspect_corrected_model.h"
-#include "vision/paper_model.h"
-#include "vision/reduction_corrected_model.h"
+#include "vision/model/aspect_corrected_model.h"
+#include "vision/model/paper_model.h"
+#include "vision/model/reduction_corrected_model.h"
 #ifdef ICACAM_HAVE_GPIOD
 #include "hal/gpiod/gpiod_lines.h"
 #endif

@@ -12,7 +12,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "calibration/calibration_file.h"
-#include "friction_models.h"
+#include "vision/model/friction_models.h"
 #include "image_file.h"
 #include "manifest.h"
 #include "result_writer.h"
@@ -94,7 +94,7 @@ int measureCommand(const std::vector<std::string> &args)
     }
     if (manifestPath.empty()) throw std::runtime_error(std::string("--manifest is required\n") + kUsage);
     if (format != "csv" && format != "jsonl") throw std::runtime_error("--format must be csv or jsonl");
-    auto model = makeFrictionModel(modelName);
+    auto model = frictionModel(modelName);
     if (!model) throw std::runtime_error("unknown model '" + modelName + "' (known: " + kKnownModels + ")");
 
     Manifest manifest;

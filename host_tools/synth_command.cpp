@@ -11,7 +11,7 @@
 #include "end_face_renderer.h"
 #include "manifest.h"
 #include "synth_loop_set.h"
-#include "vision/paper_model.h"
+#include "vision/model/paper_model.h"
 
 namespace icacam::host {
 

@@ -9,8 +9,8 @@
 
 #include "end_face_renderer.h"
 #include "synth_command.h"
-#include "vision/radii_consistency.h"
-#include "vision/reduction_corrected_model.h"
+#include "vision/model/radii_consistency.h"
+#include "vision/model/reduction_corrected_model.h"
 
 namespace icacam::host {
 

@@ -7,7 +7,7 @@
 
 #include "boundary_fit.h"
 #include "radial_profile.h"
-#include "radii_consistency.h"
+#include "model/radii_consistency.h"
 #include "ring_search.h"
 
 namespace icacam::vision {

@@ -7,7 +7,7 @@
 #include <memory>
 
 #include "edge_profile.h"
-#include "friction_model.h"
+#include "model/friction_model.h"
 #include "luma_view.h"
 #include "measurement.h"
 #include "plane_calibration.h"

@@ -11,7 +11,7 @@
 #include <tuple>
 
 #include "fe_rows.h"
-#include "vision/fe_model.h"
+#include "vision/model/fe_model.h"
 
 namespace icacam::host::fe {
 

@@ -1,5 +1,5 @@
 #pragma once
-// `icacam fe fit`: the generated model table (vision/fe_model_table.h) from the FE base data.
+// `icacam fe fit`: the generated model table (vision/model/fe_model_table.h) from the FE base data.
 #include <string>
 #include <vector>
 

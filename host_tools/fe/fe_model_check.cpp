@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "vision/fe_model.h"
+#include "vision/model/fe_model.h"
 
 namespace icacam::host::fe {
 

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "vision/paper_model.h"
+#include "vision/model/paper_model.h"
 
 namespace icacam::host::fe {
 

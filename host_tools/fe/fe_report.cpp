@@ -12,7 +12,7 @@
 #include "fe_rows.h"
 #include "fe_model_check.h"
 #include "fe_paper_form.h"
-#include "vision/paper_model.h"
+#include "vision/model/paper_model.h"
 
 namespace icacam::host::fe {
 

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "vision/friction_model.h"
+#include "vision/model/friction_model.h"
 
 namespace icacam::host::loop {
 

@@ -8,14 +8,14 @@
 #include <iostream>
 #include <stdexcept>
 
-#include "friction_models.h"
+#include "vision/model/friction_models.h"
 #include "image_file.h"
 #include "loop_plot.h"
 #include "manifest.h"
 #include "reduction_table.h"
 #include "vision/end_face_analyzer.h"
 
-#include "vision/reduction_table.h"
+#include "vision/model/reduction_table.h"
 
 #ifndef ICACAM_LOOP_SOURCE_DIR
 #define ICACAM_LOOP_SOURCE_DIR "."
@@ -37,7 +37,7 @@ const char *kUsage =
     "effect. A height reduction other than the model's 50 % is corrected physically: u is\n"
     "carried to 50 % with du/dr from the FE sweep before μ = model(u, n). Writes ranking.csv,\n"
     "report.md, records.csv and PNG plots to DIR (docs/loop.md).\n"
-    "       icacam loop table [--fe-sweep CSV] [--out vision/reduction_table.h]\n"
+    "       icacam loop table [--fe-sweep CSV] [--out vision/model/reduction_table.h]\n"
     "Writes the generated table (FE du/dr and snapshot radii) the device's models read.\n";
 
 // A repository file: under the source tree this tool was built from, else relative to here.
@@ -173,7 +173,7 @@ void plotCandidate(const std::string &path, const Candidate &c, const std::vecto
 LoopSummary runLoop(const std::string &manifestPath, const std::string &reportDir, const std::string &modelName,
                     const RankingOptions &opt, const std::vector<std::string> &feSweeps)
 {
-    auto model = makeFrictionModel(modelName);
+    auto model = frictionModel(modelName);
     if (!model) throw std::runtime_error("unknown model '" + modelName + "' (known: " + kKnownModels + ")");
     Manifest manifest;
     std::string err;
@@ -410,7 +410,7 @@ LoopSummary runLoop(const std::string &manifestPath, const std::string &reportDi
                         "the weak part, and FE runs past 50 % on a finer corner mesh are the next step.\n");
         } else if (isReduction && model->correctsReduction()) {
             f << "`" << s.chosen << "`: the model `" << model->name() << "` already carries u to 50 % with the FE "
-                 "du/dr (vision/reduction_table.h). A reduction effect left in its residual means the FE slope "
+                 "du/dr (vision/model/reduction_table.h). A reduction effect left in its residual means the FE slope "
                  "is off: the residual grows with the reduction when the FE du/dr is too small (run with "
                  "`--model paper` for the least-squares scale of the FE slope). Reported here as its "
                  "one-candidate k-fold model, not built into the product: better FE runs are the fix.\n";

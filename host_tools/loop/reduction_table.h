@@ -1,5 +1,5 @@
 #pragma once
-// `icacam loop table`: writes vision/reduction_table.h from the FE sweep (data/fe/sweep.csv),
+// `icacam loop table`: writes vision/model/reduction_table.h from the FE sweep (data/fe/sweep.csv),
 // so that the device can carry u to the model's 50 % reduction and check the radii without
 // reading a CSV at run time. Columns are read by name; added columns are ignored.
 #include <string>

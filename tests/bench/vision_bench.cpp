@@ -7,7 +7,7 @@
 #include "end_face_renderer.h"
 #include "opencv_baseline.h"
 #include "vision/end_face_analyzer.h"
-#include "vision/paper_model.h"
+#include "vision/model/paper_model.h"
 
 namespace {
 const cv::Mat &frame()

@@ -26,7 +26,7 @@
 #include "measure_command.h"
 #include "synth_command.h"
 #include "vision/end_face_analyzer.h"
-#include "vision/paper_model.h"
+#include "vision/model/paper_model.h"
 
 using namespace icacam;
 namespace fs = std::filesystem;

@@ -1,5 +1,5 @@
-// The slenderness carry (vision/aspect_corrected_model.h) and its generated table
-// (vision/aspect_table.h) against the committed FE runs its provenance names.
+// The slenderness carry (vision/model/aspect_corrected_model.h) and its generated table
+// (vision/model/aspect_table.h) against the committed FE runs its provenance names.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,10 +10,10 @@
 #include "fe_aspect.h"
 #include "fe_rows.h"
 #include "../table_inputs.h"
-#include "vision/aspect_corrected_model.h"
-#include "vision/aspect_table.h"
-#include "vision/fe_model.h"
-#include "vision/paper_model.h"
+#include "vision/model/aspect_corrected_model.h"
+#include "vision/model/aspect_table.h"
+#include "vision/model/fe_model.h"
+#include "vision/model/paper_model.h"
 
 using namespace icacam;
 namespace t = icacam::vision::aspect_table;

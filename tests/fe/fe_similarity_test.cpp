@@ -14,7 +14,7 @@
 #include <tuple>
 
 #include "fe_rows.h"
-#include "vision/fe_model.h"
+#include "vision/model/fe_model.h"
 
 using namespace icacam;
 

@@ -21,7 +21,7 @@
 #include "hal/file/file_trigger.h"
 #include "hal/file/folder_storage.h"
 #include "synth_command.h"
-#include "vision/paper_model.h"
+#include "vision/model/paper_model.h"
 
 using namespace icacam;
 namespace fs = std::filesystem;

@@ -13,7 +13,7 @@
 #include "hal/file/file_led.h"
 #include "hal/file/file_trigger.h"
 #include "hal/file/folder_storage.h"
-#include "vision/paper_model.h"
+#include "vision/model/paper_model.h"
 
 using namespace icacam;
 namespace fs = std::filesystem;

@@ -5,7 +5,7 @@
 #include <cstring>
 
 #include "vision/end_face_analyzer.h"
-#include "vision/paper_model.h"
+#include "vision/model/paper_model.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {

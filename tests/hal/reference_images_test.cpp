@@ -18,7 +18,7 @@
 
 #include "hal/file/image_decoder.h"
 #include "vision/end_face_analyzer.h"
-#include "vision/paper_model.h"
+#include "vision/model/paper_model.h"
 
 namespace {
 

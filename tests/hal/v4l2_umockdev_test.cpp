@@ -20,7 +20,7 @@
 #include "firmware/font5x7.h"
 #include "hal/file/clocks.h"
 #include "hal/file/folder_storage.h"
-#include "vision/paper_model.h"
+#include "vision/model/paper_model.h"
 #include "hal/v4l2/v4l2_camera.h"
 #include "tests/firmware/recording_serial.h"
 #include "tests/hal/umockdev_ioctl.h"

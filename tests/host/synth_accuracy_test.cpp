@@ -8,7 +8,7 @@
 #include "end_face_renderer.h"
 #include "synth_command.h"
 #include "vision/end_face_analyzer.h"
-#include "vision/paper_model.h"
+#include "vision/model/paper_model.h"
 
 using namespace icacam;
 

@@ -13,7 +13,7 @@
 #include <unistd.h>
 
 #include "loop_command.h"
-#include "vision/reduction_table.h"
+#include "vision/model/reduction_table.h"
 #include "manifest.h"
 #include "measure_command.h"
 #include "synth_loop_set.h"

@@ -15,8 +15,8 @@
 
 #include "loop_analysis.h"
 #include "loop_command.h"
-#include "vision/reduction_table.h"
-#include "vision/paper_model.h"
+#include "vision/model/reduction_table.h"
+#include "vision/model/paper_model.h"
 #include "../table_inputs.h"
 
 namespace fs = std::filesystem;

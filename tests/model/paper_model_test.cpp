@@ -2,7 +2,7 @@
 // range flags.
 #include <gtest/gtest.h>
 
-#include "vision/paper_model.h"
+#include "vision/model/paper_model.h"
 
 using namespace icacam::vision;
 

@@ -1,4 +1,4 @@
-// The reduction-aware model in the product (vision/reduction_corrected_model.h, docs/loop.md):
+// The reduction-aware model in the product (vision/model/reduction_corrected_model.h, docs/loop.md):
 // its generated table is current with the FE sweep, its slope is the loop tool's, it carries a
 // forward reduction effect back, it is the base model at 50 %, and it flags reductions the FE
 // snapshots do not cover.
@@ -12,13 +12,12 @@
 
 #include <unistd.h>
 
-#include "friction_models.h"
 #include "loop_analysis.h"
 #include "loop_command.h"
-#include "vision/reduction_table.h"
+#include "vision/model/reduction_table.h"
 #include "reduction_table.h"
-#include "vision/paper_model.h"
-#include "vision/reduction_corrected_model.h"
+#include "vision/model/paper_model.h"
+#include "vision/model/reduction_corrected_model.h"
 
 using namespace icacam::host::loop;
 using icacam::vision::ModelInputs;
@@ -57,11 +56,11 @@ TEST(ReductionTable, CommittedTableMatchesTheSweepItWasGeneratedFrom)
     ASSERT_FALSE(kNames.empty());
     const std::string fresh = reductionTableText(kSweep, kNames, &err);
     ASSERT_FALSE(fresh.empty()) << err;
-    std::ifstream f(std::string(ICACAM_SOURCE_DIR) + "/vision/reduction_table.h", std::ios::binary);
+    std::ifstream f(std::string(ICACAM_SOURCE_DIR) + "/vision/model/reduction_table.h", std::ios::binary);
     std::stringstream committed;
     committed << f.rdbuf();
     EXPECT_EQ(committed.str(), fresh)
-        << "stale table: rerun `" << icacam::vision::reduction_table::kProvenance << " --out vision/reduction_table.h`";
+        << "stale table: rerun `" << icacam::vision::reduction_table::kProvenance << " --out vision/model/reduction_table.h`";
 }
 
 TEST(ReductionTable, GeneratorReadsColumnsByNameAndIgnoresAddedOnes)
@@ -180,16 +179,4 @@ TEST(ReductionCorrectedModel, FlagsReductionsTheFeSnapshotsDoNotCover)
     // Not an upset specimen at all: flagged, never a silent value.
     EXPECT_TRUE(model.estimate(inputs(0.5, 0.25, 15)).range & icacam::vision::kModelReductionOutside);
     EXPECT_TRUE(model.estimate(inputs(0.5, 0.25, 20)).range & icacam::vision::kModelReductionOutside);
-}
-
-TEST(FrictionModels, DefaultIsReductionAwareAndThePaperStaysSelectable)
-{
-    auto def = icacam::host::makeFrictionModel(icacam::host::kDefaultModel);
-    ASSERT_TRUE(def);
-    EXPECT_TRUE(def->correctsReduction());
-    auto paper = icacam::host::makeFrictionModel("paper");
-    ASSERT_TRUE(paper);
-    EXPECT_FALSE(paper->correctsReduction());
-    EXPECT_TRUE(icacam::host::makeFrictionModel("fe_reduction"));
-    EXPECT_FALSE(icacam::host::makeFrictionModel("nonsense"));
 }

@@ -1,4 +1,4 @@
-// The generated model (vision/fe_model_table.h) against the committed FE data
+// The generated model (vision/model/fe_model_table.h) against the committed FE data
 // (the CSVs its provenance names): the table is current, and μ is reproduced within 1 % in range.
 #include <gtest/gtest.h>
 
@@ -11,8 +11,8 @@
 
 #include "fe_rows.h"
 #include "../table_inputs.h"
-#include "vision/fe_model.h"
-#include "vision/fe_model_table.h"
+#include "vision/model/fe_model.h"
+#include "vision/model/fe_model_table.h"
 
 using namespace icacam;
 namespace t = icacam::vision::fe_table;

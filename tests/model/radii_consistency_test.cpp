@@ -1,4 +1,4 @@
-// The silhouette check against the FE (vision/radii_consistency.h, docs/loop.md): consistent
+// The silhouette check against the FE (vision/model/radii_consistency.h, docs/loop.md): consistent
 // records stay quiet, a scale error of 4 % fires, with and without a declared final
 // height, and the reduction R_max implies is recovered. On rendered images through the whole
 // pipeline as well as on the relation itself.
@@ -8,11 +8,11 @@
 
 #include "end_face_renderer.h"
 #include "loop_analysis.h"
-#include "vision/aspect_corrected_model.h"
+#include "vision/model/aspect_corrected_model.h"
 #include "vision/end_face_analyzer.h"
-#include "vision/paper_model.h"
-#include "vision/radii_consistency.h"
-#include "vision/reduction_corrected_model.h"
+#include "vision/model/paper_model.h"
+#include "vision/model/radii_consistency.h"
+#include "vision/model/reduction_corrected_model.h"
 
 using namespace icacam;
 using vision::checkRadii;

@@ -1,0 +1,74 @@
+// The models on the device: choosing one by name and every estimate, radii lookup and
+// consistency check allocate nothing (operator new is counted).
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+
+#include "vision/model/fe_model.h"
+#include "vision/model/friction_models.h"
+#include "vision/model/radii_consistency.h"
+
+static std::atomic<long> gAllocations{0};
+
+void *operator new(std::size_t n)
+{
+    gAllocations.fetch_add(1, std::memory_order_relaxed);
+    if (void *p = std::malloc(n ? n : 1)) return p;
+    throw std::bad_alloc();
+}
+void *operator new[](std::size_t n) { return operator new(n); }
+void *operator new(std::size_t n, const std::nothrow_t &) noexcept
+{
+    gAllocations.fetch_add(1, std::memory_order_relaxed);
+    return std::malloc(n ? n : 1);
+}
+void *operator new[](std::size_t n, const std::nothrow_t &t) noexcept { return operator new(n, t); }
+void operator delete(void *p) noexcept { std::free(p); }
+void operator delete[](void *p) noexcept { std::free(p); }
+void operator delete(void *p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void *p, std::size_t) noexcept { std::free(p); }
+
+using namespace icacam::vision;
+
+TEST(ModelAllocation, NoneToChooseOrEvaluateAnyModel)
+{
+    // The counter must see an allocation when there is one, or the zero below proves nothing.
+    const long before = gAllocations.load();
+    ::operator delete(::operator new(8)); // a direct call: not elided as a new-expression may be
+    ASSERT_EQ(gAllocations.load(), before + 1);
+
+    double sum = 0;
+    const long start = gAllocations.load();
+    for (std::string_view name : kModelNames) {
+        const FrictionModel *m = frictionModel(name);
+        ASSERT_NE(m, nullptr);
+        // Declared and undeclared final heights, other slenderness and size, a given K, and
+        // inputs outside every range: every path through the carries.
+        for (double h0 : {15.0, 10.0, 20.0, 30.0})
+            for (double hFinal : {0.0, 0.48, 0.5, 0.53, 1.1})
+                for (double k : {0.0, 500.0, 900.0, 5000.0})
+                    for (double u : {-0.1, 0.0, 0.3, 0.8, 1.4, 4.0}) {
+                        ModelInputs in;
+                        in.uMm = u;
+                        in.n = 0.2;
+                        in.kMpa = k;
+                        in.d0Mm = h0 == 30 ? 20 : 10;
+                        in.h0Mm = h0;
+                        in.hFinalMm = hFinal * h0;
+                        const ModelEstimate e = m->estimate(in);
+                        sum += e.mu + e.dMuDu + e.modelSigma;
+                    }
+    }
+    const FeModel fe;
+    for (double r : {0.0, 0.35, 0.5, 0.58}) {
+        sum += fe.uAt(0.3, 0.12, r, 700) + fe.radii(0.3, 0.12, 12, r, 700).rMaxMm;
+        double mm = 0;
+        if (feRadiusAt(FeRadius::Inner, 0.3, 0.12, r, &mm)) sum += mm;
+        const RadiiCheck c = checkRadii(7.3, 0.3, 0.12, 10, r > 0 ? r : 0.5, 14);
+        sum += c.z + c.reductionEst;
+    }
+    EXPECT_EQ(gAllocations.load() - start, 0);
+    EXPECT_TRUE(sum == sum); // used, so the loop is not optimised away
+}
