@@ -32,7 +32,7 @@ int synthCommand(const std::vector<std::string> &args)
 {
     std::string outDir, effect;
     double count = 10, seed = 1;
-    bool hard = false;
+    bool hard = false, radii = false;
     for (size_t i = 0; i < args.size(); ++i) {
         auto value = [&]() -> std::string {
             if (i + 1 >= args.size()) throw std::runtime_error(args[i] + " needs a value");
@@ -43,22 +43,27 @@ int synthCommand(const std::vector<std::string> &args)
         else if (args[i] == "--seed") { if (!parseNumber(value(), &seed)) throw std::runtime_error("bad --seed"); }
         else if (args[i] == "--hard") hard = true;
         else if (args[i] == "--effect") effect = value();
+        else if (args[i] == "--radii") radii = true;
         else if (args[i] == "-h" || args[i] == "--help") {
             std::cout << "usage: icacam synth --out DIR [--count N] [--seed S] [--hard]\n"
-                         "       icacam synth --out DIR --effect process|optical|null [--count N] [--seed S]\n"
+                         "       icacam synth --out DIR --effect process|optical|camera|material|speed|null\n"
+                         "                    [--radii] [--count N] [--seed S]\n"
                          "Writes DIR/images/*, DIR/manifest.csv and DIR/truth.csv. With --effect: a record\n"
-                         "set for `icacam loop` (mu_ref and recorded columns) carrying that hidden effect\n"
-                         "(docs/loop.md).\n";
+                         "set for `icacam loop` (mu_ref and recorded columns) carrying that hidden effect,\n"
+                         "as images or (--radii) as measured radii (docs/loop.md).\n";
             return 0;
         } else throw std::runtime_error("unknown option '" + args[i] + "'");
     }
     if (outDir.empty()) throw std::runtime_error("--out is required");
+    if (radii && effect.empty()) throw std::runtime_error("--radii applies to --effect sets");
     if (!effect.empty()) {
         LoopSetOptions opt;
-        if (!parseLoopEffect(effect, &opt.effect)) throw std::runtime_error("--effect: process, optical or null");
+        if (!parseLoopEffect(effect, &opt.effect))
+            throw std::runtime_error("--effect: process, optical, camera, material, speed or null");
         if (hard) throw std::runtime_error("--hard does not apply to --effect sets");
         opt.count = int(count);
         opt.seed = uint32_t(seed);
+        opt.radii = radii;
         const std::string manifest = writeLoopSet(outDir, opt);
         std::cerr << "icacam synth: wrote " << opt.count << " records with the " << effect << " effect: " << manifest
                   << "\n";

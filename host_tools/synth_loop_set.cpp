@@ -16,71 +16,115 @@ namespace icacam::host {
 
 namespace fs = std::filesystem;
 
+namespace {
+
+// A lab's materials: one declared n and K each (n and μ where the FE snapshots and the
+// paper's model both have data).
+struct Material {
+    const char *name;
+    double n;
+    int kMpa;
+};
+constexpr Material kMaterials[] = {
+    {"AlMgSi1", 0.14, 290}, {"C15E", 0.22, 760}, {"CuZn37", 0.34, 680}, {"X5CrNi18-10", 0.44, 1150}};
+constexpr int kMaterialCount = int(sizeof kMaterials / sizeof kMaterials[0]);
+const char *const kCameras[] = {"cam-1", "cam-2", "cam-3"};
+
+} // namespace
+
 bool parseLoopEffect(const std::string &name, LoopEffect *out)
 {
     if (name == "null") *out = LoopEffect::Null;
     else if (name == "process") *out = LoopEffect::Process;
     else if (name == "optical") *out = LoopEffect::Optical;
+    else if (name == "camera") *out = LoopEffect::Camera;
+    else if (name == "material") *out = LoopEffect::Material;
+    else if (name == "speed") *out = LoopEffect::Speed;
     else return false;
     return true;
 }
 
 std::string writeLoopSet(const std::string &dir, const LoopSetOptions &opt)
 {
-    fs::create_directories(fs::path(dir) / "images");
+    fs::create_directories(fs::path(dir) / (opt.radii ? "" : "images"));
     const std::string manifestPath = (fs::path(dir) / "manifest.csv").string();
     std::ofstream man(manifestPath), truth(fs::path(dir) / "truth.csv");
     if (!man || !truth) throw std::runtime_error("cannot write to '" + dir + "'");
-    man << "id,image,n,k_mpa,d0_mm,h0_mm,mm_per_px,mu_ref,h_final_mm,operator,lens,press_speed_mm_s,ambient_c,"
+    man << "id," << (opt.radii ? "r_inner_mm,r_outer_mm,r_bulge_mm" : "image,mm_per_px")
+        << ",n,k_mpa,d0_mm,h0_mm,mu_ref,h_final_mm,material,camera_id,lens,operator,press_speed_mm_s,ambient_c,"
            "sequence\n";
-    truth << "id,mu,reduction,scale_error,u_mm,r_inner_mm,r_outer_mm,r_bulge_mm\n";
+    truth << "id,mu,n_true,n_declared,reduction,scale_error,speed_factor,u_mm,r_inner_mm,r_outer_mm,r_bulge_mm,"
+             "material,camera_id\n";
     std::mt19937 rng(opt.seed);
     auto U = [&](double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); };
-    std::normal_distribution<double> refNoise(0, opt.muRefSigma);
+    std::normal_distribution<double> refNoise(0, opt.muRefSigma), radiusNoise(0, opt.radiusSigmaMm);
     const char *ops[] = {"A", "B", "C"};
     const char *lenses[] = {"L16", "L25"};
+    // The set's hidden fault: which camera and which material, and the material's wrong n.
+    const int badCamera = int(rng() % 3), badMaterial = int(rng() % uint32_t(kMaterialCount));
+    double wrongN = kMaterials[badMaterial].n + (rng() % 2 ? 1 : -1) * U(0.06, 0.10);
+    if (wrongN < 0.06 || wrongN > 0.5) wrongN = kMaterials[badMaterial].n + (wrongN < 0.06 ? 1 : -1) * 0.08;
     for (int i = 0; i < opt.count; ++i) {
-        // μ and n where the FE snapshots and the paper's model both have data.
-        const double n = U(0.1, 0.45), mu = U(0.08, 0.22);
+        const int m = int(rng() % uint32_t(kMaterialCount)), cam = int(rng() % 3);
+        const Material &mat = kMaterials[m];
+        const double n = mat.n, mu = U(0.08, 0.22);
+        const double nDeclared = opt.effect == LoopEffect::Material && m == badMaterial ? wrongN : n;
         const std::string op = ops[rng() % 3], lens = lenses[rng() % 2];
-        const double speed = U(1, 5), ambient = U(18, 28);
+        const double speed = U(0.5, 5), ambient = U(18, 28);
         // The press holds 50 % within ±0.1 % unless the process effect is on.
         const double r = opt.effect == LoopEffect::Process ? U(0.46, 0.54) : 0.5 + U(-0.001, 0.001);
         // Geometry from the FE: the ring's width from the paper's model at 50 % carried by the
         // FE du/dr (the physics the model lacks), the contact edge and the silhouette from the
-        // FE snapshots at (n, μ, r).
-        const double u = uForMu(mu, n) + vision::ReductionCorrectedModel::slopeAt(n, mu) * (r - 0.5);
+        // FE snapshots at (n, μ, r). A rate-sensitive material's ring widens with the speed.
+        const double speedFactor =
+            opt.effect == LoopEffect::Speed ? 1 + kSpeedLogSlope * std::log(speed / kSpeedReferenceMmS) : 1.0;
+        const double u = (uForMu(mu, n) + vision::ReductionCorrectedModel::slopeAt(n, mu) * (r - 0.5)) * speedFactor;
         double ro = 0, rMax = 0;
         if (!vision::feRadiusAt(vision::FeRadius::Outer, n, mu, r, &ro) ||
             !vision::feRadiusAt(vision::FeRadius::Max, n, mu, r, &rMax))
             throw std::runtime_error("no FE snapshot data at the drawn (n, mu, r)");
-        EndFaceScene s = nominalScene(u);
-        s.width = opt.width, s.height = opt.height;
-        s.mmPerPx = 2.0 * rMax * 1.06 / std::min(opt.width, opt.height) * U(1.0, 1.15);
-        const double rMaxPx = rMax / s.mmPerPx;
-        s.cxPx = U(rMaxPx + 8, std::max(rMaxPx + 9, s.width - rMaxPx - 8));
-        s.cyPx = U(rMaxPx + 8, std::max(rMaxPx + 9, s.height - rMaxPx - 8));
-        s.rOuterMm = ro, s.rInnerMm = ro - u, s.rMaxMm = rMax;
-        s.noiseSigma = U(1, 3);
-        s.blurSigmaPx = U(0.6, 1.2);
-        s.seed = opt.seed * 1000u + uint32_t(i);
-        // The optical effect: L25 was fitted later and nobody recalibrated, so its images are
-        // declared at L16's scale: every radius comes out 8 % large.
-        const double scaleError = opt.effect == LoopEffect::Optical && lens == "L25" ? 0.08 : 0.0;
-        const cv::Mat img = renderEndFace(s);
-        const auto bytes = encodeEndFace(s, img);
+        // A stale calibration: the lab's mm_per_px is too large, so every length comes out
+        // large by the same factor (L25 was fitted later and kept L16's scale; one camera
+        // was moved after it was calibrated).
+        double scaleError = 0;
+        if (opt.effect == LoopEffect::Optical && lens == std::string("L25")) scaleError = 0.08;
+        if (opt.effect == LoopEffect::Camera && cam == badCamera) scaleError = kCameraScaleError;
         char id[32];
         std::snprintf(id, sizeof id, "loop-%03d", i + 1);
-        const std::string name = std::string(id) + (s.jpegQuality ? ".jpg" : ".png");
-        std::ofstream(fs::path(dir) / "images" / name, std::ios::binary)
-            .write(reinterpret_cast<const char *>(bytes.data()), std::streamsize(bytes.size()));
-        char line[512];
-        std::snprintf(line, sizeof line, "%s,images/%s,%.4f,%d,10,15,%.7f,%.4f,%.3f,%s,%s,%.2f,%.1f,%d\n", id,
-                      name.c_str(), n, int(U(400, 900)), s.mmPerPx * (1 + scaleError), mu + refNoise(rng),
-                      15 * (1 - r), op.c_str(), lens.c_str(), speed, ambient, i + 1);
+        std::string measured;
+        double ri = ro - u, roEq = ro;
+        char line[640];
+        if (opt.radii) {
+            const double k = 1 + scaleError;
+            std::snprintf(line, sizeof line, "%.5f,%.5f,%.5f", (ri + radiusNoise(rng)) * k, (ro + radiusNoise(rng)) * k,
+                          (rMax + radiusNoise(rng)) * k);
+            measured = line;
+        } else {
+            EndFaceScene s = nominalScene(u);
+            s.width = opt.width, s.height = opt.height;
+            s.mmPerPx = 2.0 * rMax * 1.06 / std::min(opt.width, opt.height) * U(1.0, 1.15);
+            const double rMaxPx = rMax / s.mmPerPx;
+            s.cxPx = U(rMaxPx + 8, std::max(rMaxPx + 9, s.width - rMaxPx - 8));
+            s.cyPx = U(rMaxPx + 8, std::max(rMaxPx + 9, s.height - rMaxPx - 8));
+            s.rOuterMm = ro, s.rInnerMm = ro - u, s.rMaxMm = rMax;
+            s.noiseSigma = U(1, 3);
+            s.blurSigmaPx = U(0.6, 1.2);
+            s.seed = opt.seed * 1000u + uint32_t(i);
+            const cv::Mat img = renderEndFace(s);
+            const auto bytes = encodeEndFace(s, img);
+            const std::string name = std::string(id) + (s.jpegQuality ? ".jpg" : ".png");
+            std::ofstream(fs::path(dir) / "images" / name, std::ios::binary)
+                .write(reinterpret_cast<const char *>(bytes.data()), std::streamsize(bytes.size()));
+            std::snprintf(line, sizeof line, "images/%s,%.7f", name.c_str(), s.mmPerPx * (1 + scaleError));
+            measured = line;
+            ri = s.rInnerEqMm(), roEq = s.rOuterEqMm();
+        }
+        std::snprintf(line, sizeof line, "%s,%s,%.4f,%d,10,15,%.4f,%.3f,%s,%s,%s,%s,%.2f,%.1f,%d\n", id,
+                      measured.c_str(), nDeclared, mat.kMpa, mu + refNoise(rng), 15 * (1 - r), mat.name,
+                      kCameras[cam], lens.c_str(), op.c_str(), speed, ambient, i + 1);
         man << line;
-        std::snprintf(line, sizeof line, "%s,%.5f,%.4f,%.3f,%.5f,%.5f,%.5f,%.5f\n", id, mu, r, scaleError,
-                      s.rOuterEqMm() - s.rInnerEqMm(), s.rInnerEqMm(), s.rOuterEqMm(), rMax);
+        std::snprintf(line, sizeof line, "%s,%.5f,%.4f,%.4f,%.4f,%.3f,%.5f,%.5f,%.5f,%.5f,%.5f,%s,%s\n", id, mu, n,
+                      nDeclared, r, scaleError, speedFactor, roEq - ri, ri, roEq, rMax, mat.name, kCameras[cam]);
         truth << line;
     }
     return manifestPath;

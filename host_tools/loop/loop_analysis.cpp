@@ -46,13 +46,58 @@ bool solve(std::vector<double> a, std::vector<double> b, std::vector<double> *x)
 
 double normalUpperQuantile(double p) // x with P(Z > x) = p
 {
-    double lo = -10, hi = 10;
+    double lo = -38, hi = 38;
     for (int i = 0; i < 200; ++i) {
         const double mid = 0.5 * (lo + hi);
         if (0.5 * std::erfc(mid / std::sqrt(2.0)) > p) lo = mid;
         else hi = mid;
     }
     return 0.5 * (lo + hi);
+}
+
+// Regularised incomplete beta I_x(a, b) (continued fraction, Lentz).
+double incompleteBeta(double a, double b, double x)
+{
+    if (x <= 0) return 0;
+    if (x >= 1) return 1;
+    if (x > (a + 1) / (a + b + 2)) return 1 - incompleteBeta(b, a, 1 - x);
+    const double lnFront = std::lgamma(a + b) - std::lgamma(a) - std::lgamma(b) + a * std::log(x) + b * std::log1p(-x);
+    double c = 1, d = 1 - (a + b) * x / (a + 1);
+    if (std::fabs(d) < 1e-300) d = 1e-300;
+    d = 1 / d;
+    double f = d;
+    for (int m = 1; m < 300; ++m) {
+        for (int half = 0; half < 2; ++half) {
+            const double num = half == 0 ? m * (b - m) * x / ((a + 2 * m - 1) * (a + 2 * m))
+                                         : -(a + m) * (a + b + m) * x / ((a + 2 * m) * (a + 2 * m + 1));
+            d = 1 + num * d;
+            if (std::fabs(d) < 1e-300) d = 1e-300;
+            c = 1 + num / c;
+            if (std::fabs(c) < 1e-300) c = 1e-300;
+            d = 1 / d;
+            f *= d * c;
+            if (half == 1 && std::fabs(d * c - 1) < 1e-14) return std::exp(lnFront) * f / a;
+        }
+    }
+    return std::exp(lnFront) * f / a;
+}
+
+// Nested-model F test of a candidate's in-sample fit against its form's baseline, as the
+// normal z of its p-value (capped where the p-value underflows).
+double nestedZ(double sse0, int p0, double sse1, int p1, size_t n)
+{
+    const int df1 = p1 - p0, df2 = int(n) - p1;
+    if (df1 < 1 || df2 < 1 || !(sse1 > 0)) return 0;
+    const double f = std::max(0.0, (sse0 - sse1) / df1) / (sse1 / df2);
+    const double p = incompleteBeta(0.5 * df2, 0.5 * df1, df2 / (df2 + df1 * f)); // P(F' > f)
+    return p < 1e-300 ? 37.0 : normalUpperQuantile(std::min(p, 0.5)) ;
+}
+
+double sumSquares(const std::vector<double> &v)
+{
+    double s = 0;
+    for (double x : v) s += x * x;
+    return s;
 }
 
 double mean(const std::vector<double> &v)
@@ -164,7 +209,32 @@ std::vector<double> cvErrors(const Candidate *c, const std::vector<double> &y, c
     return pred;
 }
 
+// Paired z of a − b (per-record differences of |held-out error|): > 0 when a's are larger.
+double pairedZ(const std::vector<double> &a, const std::vector<double> &b)
+{
+    std::vector<double> d(a.size());
+    for (size_t i = 0; i < a.size(); ++i) d[i] = std::fabs(a[i]) - std::fabs(b[i]);
+    const double md = mean(d);
+    double v = 0;
+    for (double x : d) v += (x - md) * (x - md);
+    const double se = d.size() > 1 ? std::sqrt(v / double(d.size() - 1) / double(d.size())) : 0;
+    return se > 0 ? md / se : 0;
+}
+
 } // namespace
+
+bool isSymptom(const std::string &name)
+{
+    if (name.rfind("diag_", 0) == 0) return true;
+    // What a measurement produces (a radii record set's radii, a device record's result).
+    static const std::set<std::string> kMeasured = {"mu", "mu_sigma", "status", "flags", "message", "ms", "r_max_z"};
+    if (kMeasured.count(name)) return true;
+    // Named after a measured quantity: the quantity itself or anything derived from it.
+    static const char *const kStems[] = {"r_inner", "r_outer", "r_bulge", "r_max", "u_mm", "u_px", "reduction_est"};
+    for (const char *stem : kStems)
+        if (name.find(stem) != std::string::npos) return true;
+    return false;
+}
 
 double rms(const std::vector<double> &v)
 {
@@ -211,6 +281,7 @@ std::vector<Candidate> buildCandidates(const std::vector<LoopRecord> &usable)
         if (!any || distinct.size() < 2) continue; // constant: explains nothing
         Candidate c;
         c.name = name;
+        c.symptom = isSymptom(name);
         if (numeric) {
             c.kind = "numeric";
             for (const LoopRecord &r : usable) {
@@ -231,7 +302,7 @@ std::vector<Candidate> buildCandidates(const std::vector<LoopRecord> &usable)
     bool anyReduction = false;
     for (const LoopRecord &r : usable) anyReduction = anyReduction || r.reduction >= 0;
     if (anyReduction) {
-        Candidate c{"reduction", "numeric", {}, {}};
+        Candidate c{"reduction", "numeric", {}, {}, false};
         for (const LoopRecord &r : usable) c.x.push_back(r.reduction >= 0 ? r.reduction : kNaN);
         out.push_back(std::move(c));
     }
@@ -239,7 +310,7 @@ std::vector<Candidate> buildCandidates(const std::vector<LoopRecord> &usable)
     for (const LoopRecord &r : usable)
         for (const auto &[k, v] : r.diagnostics) diag.insert(k);
     for (const std::string &name : diag) {
-        Candidate c{name, "diagnostic", {}, {}};
+        Candidate c{name, "diagnostic", {}, {}, true};
         std::set<double> distinct;
         for (const LoopRecord &r : usable) {
             auto it = r.diagnostics.find(name);
@@ -262,7 +333,8 @@ std::vector<double> cvPredict(const Candidate &c, const std::vector<double> &res
 std::vector<RankedCandidate> rankCandidates(const std::vector<Candidate> &candidates, const std::vector<double> &y,
                                             const RankingOptions &opt, const std::vector<double> *scaleSensitivity,
                                             const std::vector<double> *uSensitivity,
-                                            const std::map<std::string, std::vector<double>> *physicalForms)
+                                            const std::map<std::string, std::vector<double>> *physicalForms,
+                                            const std::map<std::string, FittedForm> *fittedForms)
 {
     std::vector<RankedCandidate> out;
     if (y.size() < 4) return out;
@@ -276,21 +348,37 @@ std::vector<RankedCandidate> rankCandidates(const std::vector<Candidate> &candid
     if (scaleSensitivity) formList.push_back({"scale", scaleSensitivity, cvErrors(nullptr, y, fold, folds, scaleSensitivity)});
     if (uSensitivity) formList.push_back({"u", uSensitivity, cvErrors(nullptr, y, fold, folds, uSensitivity)});
     const size_t forms = formList.size();
-    const size_t tries = candidates.size() * forms + (physicalForms ? physicalForms->size() : 0);
+    const size_t tries = candidates.size() * forms + (physicalForms ? physicalForms->size() : 0) +
+                         (fittedForms ? fittedForms->size() : 0);
     const double zCrit = normalUpperQuantile(opt.alpha / double(std::max<size_t>(tries, 1)));
+    // In-sample sum of squares and parameter count of a linear model (nullptr: the baseline).
+    auto inSample = [&](const Candidate *c, const std::vector<double> *sens, int *params) {
+        std::vector<double> pred(y.size(), 0);
+        fitPredict(c, y, fold, -1, &pred, sens);
+        for (size_t i = 0; i < y.size(); ++i) pred[i] = y[i] - pred[i];
+        if (!c) *params = sens ? 2 : 1;
+        else if (c->kind == "categorical") *params = int(std::set<std::string>(c->levels.begin(), c->levels.end()).size()) + (sens ? 1 : 0);
+        else *params = sens ? 3 : 2;
+        return sumSquares(pred);
+    };
     std::vector<std::vector<double>> errors; // held-out errors per candidate, as in out
     for (const Candidate &c : candidates) {
         std::vector<double> e1 = cvErrors(&c, y, fold, folds);
         const std::vector<double> *e0 = &formList[0].e0;
         std::string form = "mu";
+        const std::vector<double> *formSens = nullptr;
         for (size_t fi = 1; fi < formList.size(); ++fi) {
             std::vector<double> e2 = cvErrors(&c, y, fold, folds, formList[fi].sens);
             if (rms(formList[fi].e0) - rms(e2) > rms(*e0) - rms(e1)) {
                 e1 = std::move(e2);
                 e0 = &formList[fi].e0;
                 form = formList[fi].name;
+                formSens = formList[fi].sens;
             }
         }
+        // The chosen form's nested test: the in-sample fit against the form's baseline.
+        int p0 = 0, p1 = 0;
+        double sse0 = inSample(nullptr, formSens, &p0), sse1 = inSample(&c, formSens, &p1);
         if (physicalForms) {
             const auto it = physicalForms->find(c.name);
             if (it != physicalForms->end() && it->second.size() == y.size()) {
@@ -299,23 +387,31 @@ std::vector<RankedCandidate> rankCandidates(const std::vector<Candidate> &candid
                     e1 = std::move(e2);
                     e0 = &formList[0].e0;
                     form = "fe";
+                    sse0 = inSample(nullptr, nullptr, &p0);
+                    sse1 = inSample(nullptr, &it->second, &p1);
                 }
+            }
+        }
+        if (fittedForms) {
+            const auto it = fittedForms->find(c.name);
+            if (it != fittedForms->end() && it->second.errors.size() == y.size() &&
+                rms(it->second.baseline) - rms(it->second.errors) > rms(*e0) - rms(e1)) {
+                e1 = it->second.errors;
+                e0 = &it->second.baseline;
+                form = it->second.form;
+                sse0 = sumSquares(it->second.baselineFit), p0 = it->second.params0;
+                sse1 = sumSquares(it->second.errorsFit), p1 = it->second.params1;
             }
         }
         RankedCandidate r;
         r.name = c.name;
         r.kind = c.kind;
+        r.symptom = c.symptom;
         r.form = form;
         r.cvRmsBefore = rms(*e0);
         r.cvRmsAfter = rms(e1);
         r.gain = r.cvRmsBefore - r.cvRmsAfter;
-        std::vector<double> d(y.size());
-        for (size_t i = 0; i < y.size(); ++i) d[i] = std::fabs((*e0)[i]) - std::fabs(e1[i]);
-        const double md = mean(d);
-        double v = 0;
-        for (double x : d) v += (x - md) * (x - md);
-        const double se = std::sqrt(v / double(d.size() - 1) / double(d.size()));
-        r.z = se > 0 ? md / se : 0;
+        r.z = nestedZ(sse0, p0, sse1, p1, y.size());
         if (c.kind != "categorical") {
             double sx = 0, sy2 = 0, sxy = 0, mx = 0, myv = mean(y);
             int cnt = 0;
@@ -338,28 +434,30 @@ std::vector<RankedCandidate> rankCandidates(const std::vector<Candidate> &candid
     for (size_t i = 0; i < order.size(); ++i) order[i] = i;
     std::stable_sort(order.begin(), order.end(),
                      [&](size_t a, size_t b) { return out[a].cvRmsAfter < out[b].cvRmsAfter; });
-    // A symptom does not outrank a cause it cannot be told from: when the leader is an image
-    // diagnostic, the first significant recorded column whose held-out |errors| are not
-    // significantly larger than the leader's (paired z < 2) goes first.
-    if (!order.empty() && out[order[0]].kind == "diagnostic") {
-        const std::vector<double> &lead = errors[order[0]];
-        for (size_t k = 1; k < order.size(); ++k) {
-            const RankedCandidate &c = out[order[k]];
-            if (c.kind == "diagnostic" || !c.significant) continue;
-            std::vector<double> d(y.size());
-            for (size_t i = 0; i < y.size(); ++i) d[i] = std::fabs(errors[order[k]][i]) - std::fabs(lead[i]);
-            const double md = mean(d);
-            double v = 0;
-            for (double x : d) v += (x - md) * (x - md);
-            const double se = std::sqrt(v / double(d.size() - 1) / double(d.size()));
-            if (se > 0 && md / se < 2.0) {
-                out[order[k]].preferredOver = out[order[0]].name;
-                const size_t moved = order[k];
-                order.erase(order.begin() + long(k));
-                order.insert(order.begin(), moved);
-            }
-            break; // only the best recorded column is considered
-        }
+    // A symptom never outranks a cause it cannot be told from: each significant recorded
+    // condition moves ahead of every symptom directly above it whose held-out |errors| are not
+    // significantly smaller than its own (paired z < 2). It stops at a better cause or at a
+    // symptom that is significantly better (that symptom sees something the cause does not).
+    for (size_t k = 1; k < order.size(); ++k) {
+        RankedCandidate &c = out[order[k]];
+        if (c.symptom || !c.significant) continue;
+        size_t pos = k;
+        while (pos > 0 && out[order[pos - 1]].symptom &&
+               pairedZ(errors[order[k]], errors[order[pos - 1]]) < 2.0)
+            --pos;
+        if (pos == k) continue;
+        for (size_t j = pos; j < k; ++j) c.preferredOver.push_back(out[order[j]].name);
+        const size_t moved = order[k];
+        order.erase(order.begin() + long(k));
+        order.insert(order.begin() + long(pos), moved);
+    }
+    // The measurements that point to each significant cause: the significant symptoms, best
+    // first (a symptom answers to the cause; alone it does not name it).
+    for (size_t k = 0; k < order.size(); ++k) {
+        RankedCandidate &c = out[order[k]];
+        if (c.symptom || !c.significant) continue;
+        for (size_t j : order)
+            if (out[j].symptom && out[j].significant) c.pointedBy.push_back(out[j].name);
     }
     std::vector<RankedCandidate> ranked;
     for (size_t i : order) ranked.push_back(std::move(out[i]));

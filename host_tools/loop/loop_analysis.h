@@ -34,7 +34,14 @@ struct Candidate {
     std::string kind; // "numeric", "categorical" or "diagnostic"
     std::vector<double> x;            // numeric value per usable record (NaN: missing)
     std::vector<std::string> levels;  // categorical level per usable record
+    bool symptom = false;             // a measured quantity (isSymptom), not a recorded condition
 };
+
+// A measured quantity (a symptom) rather than a recorded condition (a cause): every
+// pipeline diagnostic (diag_*), the radii of a radii record set (r_inner_mm, r_outer_mm,
+// r_bulge_mm), what a device measured (mu, u_mm, reduction_est, status, flags, ...), and any
+// column named after one of them (r_outer_px, u_over_r0, ...).
+bool isSymptom(const std::string &name);
 
 struct RankedCandidate {
     std::string name, kind;
@@ -45,12 +52,25 @@ struct RankedCandidate {
     double cvRmsBefore = 0; // k-fold RMS of the residual with a constant offset only
     double cvRmsAfter = 0;  // k-fold RMS with the one-candidate model
     double gain = 0;        // cvRmsBefore - cvRmsAfter
-    double z = 0;           // paired z of the per-record squared-error reduction
+    double z = 0;           // nested F test of the form against its baseline, as a normal z
     double correlation = 0; // numeric: Pearson r with the residual (for reading only)
     bool significant = false;
-    // Set on a recorded column moved ahead of the image diagnostic that ranked first by a
-    // margin within the noise (see rankCandidates): that diagnostic's name.
-    std::string preferredOver;
+    bool symptom = false;
+    // On a recorded condition moved ahead of measured quantities that ranked above it by a
+    // margin within the noise (see rankCandidates): those symptoms, best first.
+    std::vector<std::string> preferredOver;
+    // On a significant recorded condition: the significant symptoms, best first: the
+    // measurements that point to a cause.
+    std::vector<std::string> pointedBy;
+};
+
+// A candidate's physical form fitted outside the ranking: held-out errors per record under it
+// and under its own baseline.
+struct FittedForm {
+    std::string form;
+    std::vector<double> baseline, errors;       // held out (k-fold)
+    std::vector<double> baselineFit, errorsFit; // fitted on every record (the nested F test)
+    int params0 = 1, params1 = 1;               // parameters of the baseline and of the form
 };
 
 struct RankingOptions {
@@ -69,10 +89,10 @@ std::vector<int> foldAssignment(size_t count, int folds, uint32_t seed);
 std::vector<Candidate> buildCandidates(const std::vector<LoopRecord> &usable);
 
 // Ranks candidates by k-fold CV RMS of the residual (μ_model − μ_ref) after the candidate's
-// model, best first; significance is the gain over the form's own baseline. An image
-// diagnostic (a symptom: the radii answer to any cause that moves the geometry) does not
-// outrank a significant recorded column whose held-out errors are not significantly worse
-// (paired z < 2): the column moves to the front. With
+// model, best first; significance is the gain over the form's own baseline. A symptom (a
+// measured quantity: the radii answer to any cause that moves the geometry) never outranks a
+// significant recorded condition it cannot be told from (the condition's held-out |errors|
+// not significantly larger, paired z < 2): the condition moves ahead of it. With
 // scaleSensitivity (dμ/du · u per record) each candidate is tried in both forms (the better
 // one counts; the Bonferroni count doubles).
 // uSensitivity (dμ/du per record) adds the form "u": an additive shift of u linear in the
@@ -82,10 +102,13 @@ std::vector<RankedCandidate> rankCandidates(const std::vector<Candidate> &candid
                                             const RankingOptions &opt,
                                             const std::vector<double> *scaleSensitivity = nullptr,
                                             const std::vector<double> *uSensitivity = nullptr,
-                                            const std::map<std::string, std::vector<double>> *physicalForms = nullptr);
+                                            const std::map<std::string, std::vector<double>> *physicalForms = nullptr,
+                                            const std::map<std::string, FittedForm> *fittedForms = nullptr);
 // physicalForms: per candidate name, the change in μ a physical model of that candidate makes
 // per record (the reduction: μ(u) − μ(u carried to 50 % with the FE du/dr)); tried as the form
 // "fe": residual = a + b·change, a and b fitted per fold (b = 1: the physics as it is).
+// fittedForms: per candidate name, a physical form fitted elsewhere (loop_physics.h: a length
+// factor or an n per group), tried against its own baseline like the other forms.
 
 // Cross-validated predictions of the residual by one candidate (for before/after plots).
 std::vector<double> cvPredict(const Candidate &c, const std::vector<double> &residual,

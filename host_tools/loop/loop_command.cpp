@@ -10,6 +10,7 @@
 
 #include "vision/model/friction_models.h"
 #include "image_file.h"
+#include "loop_physics_report.h"
 #include "loop_plot.h"
 #include "manifest.h"
 #include "reduction_table.h"
@@ -230,7 +231,12 @@ LoopSummary runLoop(const std::string &manifestPath, const std::string &reportDi
             physicalForms["reduction"] = std::move(change);
         }
     }
-    s.ranking = rankCandidates(cands, res, opt, &sens, &uSens, &physicalForms);
+    // A grouping (a camera, a lens, a material) is also ranked in its physical form: a length
+    // factor per group, or an n per material (loop_physics.h).
+    std::map<std::string, FittedForm> fittedForms;
+    for (const Candidate &c : cands)
+        if (c.kind == "categorical" && !c.symptom) fittedForms[c.name] = groupingForm(*model, usable, c, fold, folds);
+    s.ranking = rankCandidates(cands, res, opt, &sens, &uSens, &physicalForms, &fittedForms);
     {
         std::vector<double> e(res.size());
         for (int k = 0; k < folds; ++k) {
@@ -304,18 +310,38 @@ LoopSummary runLoop(const std::string &manifestPath, const std::string &reportDi
         s.cvRmsAfter = s.rmsPhysical; // no parameter is fitted to these records: held out as is
     }
 
+    // Any other chosen effect in its physical form, with the regression patch beside it.
+    const Candidate *lead = nullptr;
+    for (const Candidate &c : cands)
+        if (c.name == s.chosen) lead = &c;
+    if (lead) s.cvRmsPatch = s.ranking.front().cvRmsAfter;
+    if (s.physical) s.reading = "fe_slope";
+    else if (lead && (isReduction || lead->symptom)) s.reading = "patch";
+    else if (lead && lead->kind == "categorical") {
+        const GroupReading reading = readingOf(usable, *lead);
+        s.grouping = fitGrouping(*model, usable, *lead, reading, fold, folds);
+        s.reading = reading == GroupReading::Scale ? "scale" : "n";
+        s.cvRmsAfter = rms(s.grouping.cvErrors);
+    } else if (lead) {
+        s.reading = "process";
+        s.linear = fitLinearEffect(*lead, res, s.ranking.front().form, sens, uSens);
+    }
+    writePhysicalCsv((fs::path(reportDir) / "physical.csv").string(), s);
+
     // ranking.csv
     {
         std::ofstream f(fs::path(reportDir) / "ranking.csv");
-        f << "rank,candidate,kind,form,cv_rms_before,cv_rms_after,gain,z,correlation,chosen\n";
+        f << "rank,candidate,kind,form,cv_rms_before,cv_rms_after,gain,z,correlation,chosen,symptom\n";
         int k = 0;
         for (const RankedCandidate &r : s.ranking)
             f << ++k << "," << r.name << "," << r.kind << "," << r.form << "," << f4(r.cvRmsBefore, "%.5f") << ","
               << f4(r.cvRmsAfter, "%.5f") << "," << f4(r.gain, "%.5f") << "," << f4(r.z, "%.2f") << ","
               << f4(r.correlation, "%.3f") << "," << (r.name == s.chosen ? "yes" : r.significant ? "significant" : "no")
-              << "\n";
+              << "," << (r.symptom ? "yes" : "no") << "\n";
     }
-    // records.csv
+    // records.csv (corrected: the physical form fitted on every record)
+    const bool corrected = s.physical || !s.grouping.muAfter.empty();
+    const std::vector<double> &muCorrected = s.physical ? muPhys : s.grouping.muAfter;
     {
         std::ofstream f(fs::path(reportDir) / "records.csv");
         f << "id,n,u_mm,reduction,mu_ref,mu_model,residual,mu_corrected,residual_corrected\n";
@@ -323,8 +349,8 @@ LoopSummary runLoop(const std::string &manifestPath, const std::string &reportDi
             const LoopRecord &r = usable[i];
             f << r.id << "," << r.n << "," << f4(r.uMm, "%.5f") << "," << f4(r.reduction, "%.4f") << "," << r.muRef
               << "," << f4(r.muModel, "%.5f") << "," << f4(res[i], "%.5f") << ","
-              << (s.physical ? f4(muPhys[i], "%.5f") : "") << ","
-              << (s.physical ? f4(muPhys[i] - r.muRef, "%.5f") : "") << "\n";
+              << (corrected ? f4(muCorrected[i], "%.5f") : "") << ","
+              << (corrected ? f4(muCorrected[i] - r.muRef, "%.5f") : "") << "\n";
         }
     }
     // Plots: residual against the three leading candidates; before/after.
@@ -347,6 +373,14 @@ LoopSummary runLoop(const std::string &manifestPath, const std::string &reportDi
         if (s.physical) {
             after.label = "reduction-corrected (after), RMS " + f4(s.rmsPhysical);
             for (size_t i = 0; i < usable.size(); ++i) { after.x.push_back(usable[i].muRef); after.y.push_back(muPhys[i]); }
+            ser.push_back(after);
+        } else if (!s.grouping.cvErrors.empty()) {
+            after.label = "with " + s.chosen + " as " + (s.reading == "n" ? "n per material" : "a scale per group") +
+                          " (after, CV), RMS " + f4(s.cvRmsAfter);
+            for (size_t i = 0; i < usable.size(); ++i) {
+                after.x.push_back(usable[i].muRef);
+                after.y.push_back(usable[i].muRef + s.grouping.cvErrors[i]);
+            }
             ser.push_back(after);
         } else if (!s.chosen.empty()) {
             after.label = "with " + s.chosen + " (after, CV), RMS " + f4(s.cvRmsAfter);
@@ -386,8 +420,12 @@ LoopSummary runLoop(const std::string &manifestPath, const std::string &reportDi
               << f4(s.rmsPhysical) << "** |\n";
             f << "| same with the FE slope's scale fitted per fold (k-fold; scale on all records "
               << f4(s.slopeScale, "%.3f") << ") | " << f4(s.cvRmsPhysicalScaled) << " |\n";
+        } else if (!s.grouping.cvErrors.empty()) {
+            f << "| **after: " << s.chosen << " in its physical form ("
+              << (s.reading == "n" ? "n per material" : "a length factor per group") << ", k-fold)** | **"
+              << f4(s.cvRmsAfter) << "** |\n";
         } else if (!s.chosen.empty()) {
-            f << "| **after (" << s.chosen << ", k-fold)** | **" << f4(s.cvRmsAfter) << "** |\n";
+            f << "| **after (" << s.chosen << ", regression, k-fold)** | **" << f4(s.cvRmsAfter) << "** |\n";
         }
         f << "\n## Chosen effect\n\n";
         if (s.chosen.empty()) {
@@ -415,27 +453,19 @@ LoopSummary runLoop(const std::string &manifestPath, const std::string &reportDi
                  "`--model paper` for the least-squares scale of the FE slope). Reported here as its "
                  "one-candidate k-fold model, not built into the product: better FE runs are the fix.\n";
         } else {
-            f << "`" << s.chosen << "` (" << s.ranking.front().kind << ", form " << s.ranking.front().form
-              << "): corrected by its one-candidate model of the residual (k-fold); form `scale` means the effect "
-                 "acts as a relative scale error of u (optics: calibration, lens, working distance). Trace it to its cause before building it into "
-                 "the model: a camera/lens column or an image diagnostic points to the scale (optics), a process "
-                 "column to the upsetting.\n";
+            writePhysicalSection(f, s);
         }
-        if (!s.ranking.empty() && !s.ranking.front().preferredOver.empty())
-            f << "\n`" << s.ranking.front().name << "` is ranked ahead of the image diagnostic `"
-              << s.ranking.front().preferredOver
-              << "`, which had a slightly lower CV RMS: the diagnostic's held-out errors are not significantly "
-                 "smaller (paired z < 2), and a radius measured in the image answers to any cause that moves the "
-                 "geometry; the recorded column names the cause.\n";
+        writeSymptomNote(f, s);
         f << "\n## Ranking (best first; full list in ranking.csv)\n\n| # | candidate | kind | form | CV RMS before | "
              "CV RMS after | gain | z | r |\n|---|---|---|---|---|---|---|---|---|\n";
         for (size_t k = 0; k < s.ranking.size() && k < 15; ++k) {
             const RankedCandidate &r = s.ranking[k];
-            f << "| " << k + 1 << " | " << r.name << (r.significant ? " *" : "") << " | " << r.kind << " | " << r.form << " | "
+            f << "| " << k + 1 << " | " << r.name << (r.significant ? " *" : "") << " | " << r.kind
+              << (r.symptom ? " (symptom)" : "") << " | " << r.form << " | "
               << f4(r.cvRmsBefore) << " | " << f4(r.cvRmsAfter) << " | " << f4(r.gain, "%.5f") << " | "
               << f4(r.z, "%.1f") << " | " << f4(r.correlation, "%.2f") << " |\n";
         }
-        f << "\n(* significant)\n\n## Plots\n\n";
+        f << "\n(* significant; a symptom is a measured quantity, the rest are recorded conditions)\n\n## Plots\n\n";
         for (const std::string &p : plots) f << "![" << p << "](" << p << ")\n\n";
     }
     return s;
@@ -498,6 +528,7 @@ int loopCommand(const std::vector<std::string> &args)
               << "top " << (s.ranking.empty() ? "-" : s.ranking.front().name) << "\n"
               << "chosen " << (s.chosen.empty() ? "(none)" : s.chosen) << "\n"
               << "rms_after " << f4(s.cvRmsAfter) << (s.physical ? " (physical FE du/dr correction)" : "") << "\n";
+    loop::printPhysical(std::cout, s);
     if (s.physical)
         std::cout << "fe_slope_scale " << f4(s.slopeScale, "%.3f") << " cv_rms_scaled " << f4(s.cvRmsPhysicalScaled)
                   << "\n";

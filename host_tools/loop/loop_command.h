@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "loop_analysis.h"
+#include "loop_physics.h"
 
 namespace icacam::host {
 // `icacam loop --manifest FILE --report DIR [--model paper] [--folds 5] [--seed S] [--fe-sweep CSV]`
@@ -22,6 +23,15 @@ struct LoopSummary {
     double rmsPhysical = 0;      // RMS after the physical reduction correction (no fitted parameter)
     double slopeScale = 0;       // least-squares scale of the FE du/dr on all records (1: FE as is)
     double cvRmsPhysicalScaled = 0; // k-fold with that scale fitted per fold
+    // The chosen effect in its physical form (docs/loop.md): "fe_slope" (the reduction through
+    // the FE du/dr), "scale" (a length factor per group of images: a recalibration), "n" (an n
+    // per material), "process" (a recorded variable the FE does not model: its best linear
+    // form and size, the FE study that would add it), "patch" (a symptom with no recorded
+    // cause, or a reduction a reduction-aware model left: the regression only), "" (none).
+    std::string reading;
+    double cvRmsPatch = 0; // the chosen candidate's best regression of the residual (k-fold)
+    PhysicalFit grouping;  // reading "scale" or "n"
+    LinearEffect linear;   // reading "process"
 };
 
 // Runs the whole analysis on a manifest and writes the report folder. feSweeps: the FE sweep

@@ -1,0 +1,238 @@
+#include "loop_physics.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+
+namespace icacam::host::loop {
+
+namespace {
+
+// The range a fitted parameter may take: beyond it the model has no data (n) or the
+// camera would be off by more than any calibration slip (s).
+constexpr double kScaleMin = 0.7, kScaleMax = 1.4;
+constexpr double kNMin = 0.02, kNMax = 0.6;
+
+constexpr double kShiftMax = 0.3;
+
+// μ of a record with the group's parameter applied (a factor s, or a shift Δn).
+double muWith(const vision::FrictionModel &model, const LoopRecord &r, GroupReading reading, double p)
+{
+    vision::ModelInputs in = inputsOf(r);
+    if (reading == GroupReading::Scale) in.uMm = r.uMm / p;
+    else in.n = std::clamp(r.n + p, kNMin, kNMax);
+    return model.estimate(in).mu;
+}
+
+double neutral(GroupReading reading) { return reading == GroupReading::Scale ? 1.0 : 0.0; }
+
+double declaredN(const std::vector<LoopRecord> &usable, const std::vector<size_t> &members)
+{
+    double s = 0;
+    for (size_t i : members) s += usable[i].n;
+    return members.empty() ? 0 : s / double(members.size());
+}
+
+// Least squares of μ(p) − μ_ref over the members (Gauss–Newton, numerical derivative).
+// Returns p, and Σ J² and the sum of squares at p for the uncertainty.
+double fitParameter(const vision::FrictionModel &model, const std::vector<LoopRecord> &usable,
+                    const std::vector<size_t> &members, GroupReading reading, double start, double *sumJ2,
+                    double *sse)
+{
+    const double lo = reading == GroupReading::Scale ? kScaleMin : -kShiftMax;
+    const double hi = reading == GroupReading::Scale ? kScaleMax : kShiftMax;
+    const double h = 1e-4;
+    double p = start;
+    for (int it = 0; it < 30; ++it) {
+        double jr = 0, jj = 0;
+        for (size_t i : members) {
+            const LoopRecord &r = usable[i];
+            const double res = muWith(model, r, reading, p) - r.muRef;
+            const double j = (muWith(model, r, reading, p + h) - muWith(model, r, reading, p - h)) / (2 * h);
+            jr += j * res;
+            jj += j * j;
+        }
+        if (!(jj > 0)) break;
+        const double next = std::clamp(p - jr / jj, lo, hi);
+        const bool done = std::fabs(next - p) < 1e-9;
+        p = next;
+        if (done) break;
+    }
+    *sumJ2 = 0;
+    *sse = 0;
+    for (size_t i : members) {
+        const LoopRecord &r = usable[i];
+        const double res = muWith(model, r, reading, p) - r.muRef;
+        const double j = (muWith(model, r, reading, p + h) - muWith(model, r, reading, p - h)) / (2 * h);
+        *sumJ2 += j * j;
+        *sse += res * res;
+    }
+    return p;
+}
+
+// Fits every level on the records where `train` holds.
+std::map<std::string, GroupFit> fitLevels(const vision::FrictionModel &model, const std::vector<LoopRecord> &usable,
+                                          const Candidate &g, GroupReading reading,
+                                          const std::vector<bool> &train, double *scatter)
+{
+    std::map<std::string, std::vector<size_t>> members;
+    for (size_t i = 0; i < usable.size(); ++i)
+        if (train[i]) members[g.levels[i]].push_back(i);
+    std::map<std::string, GroupFit> out;
+    std::map<std::string, double> sumJ2;
+    double sse = 0;
+    int dof = 0;
+    for (const auto &[level, idx] : members) {
+        GroupFit f;
+        f.level = level;
+        f.records = int(idx.size());
+        f.declared = reading == GroupReading::Scale ? 1.0 : declaredN(usable, idx);
+        f.value = neutral(reading); // the fitted parameter; a shift is turned into n below
+        if (idx.size() >= 3) {
+            double s2 = 0;
+            f.value = fitParameter(model, usable, idx, reading, neutral(reading), &sumJ2[level], &s2);
+            f.fitted = true;
+            sse += s2;
+            dof += int(idx.size()) - 1;
+        }
+        out[level] = f;
+    }
+    // One scatter for all groups (the reference method's and the measurement's, the same for
+    // every camera and material): more degrees of freedom than any one group has.
+    *scatter = dof > 0 ? std::sqrt(sse / dof) : 0;
+    for (auto &[level, f] : out)
+        if (f.fitted && sumJ2[level] > 0) f.sigma = *scatter / std::sqrt(sumJ2[level]);
+    return out;
+}
+
+// The value a group reports: the factor, or the declared n plus the fitted shift.
+double reported(const GroupFit &f, GroupReading reading)
+{
+    return reading == GroupReading::Scale ? f.value : f.declared + f.value;
+}
+
+} // namespace
+
+const char *formName(GroupReading reading) { return reading == GroupReading::Scale ? "factor" : "n"; }
+
+FittedForm groupingForm(const vision::FrictionModel &model, const std::vector<LoopRecord> &usable,
+                        const Candidate &grouping, const std::vector<int> &fold, int folds)
+{
+    const GroupReading reading = readingOf(usable, grouping);
+    Candidate one = grouping;
+    one.levels.assign(usable.size(), "all");
+    FittedForm f;
+    f.form = formName(reading);
+    const PhysicalFit base = fitGrouping(model, usable, one, reading, fold, folds);
+    const PhysicalFit per = fitGrouping(model, usable, grouping, reading, fold, folds);
+    f.baseline = base.cvErrors;
+    f.errors = per.cvErrors;
+    for (size_t i = 0; i < usable.size(); ++i) {
+        f.baselineFit.push_back(base.muAfter[i] - usable[i].muRef);
+        f.errorsFit.push_back(per.muAfter[i] - usable[i].muRef);
+    }
+    f.params0 = 1;
+    f.params1 = 0;
+    for (const GroupFit &g : per.groups) f.params1 += g.fitted ? 1 : 0;
+    return f;
+}
+
+vision::ModelInputs inputsOf(const LoopRecord &r)
+{
+    vision::ModelInputs in;
+    in.uMm = r.uMm;
+    in.n = r.n;
+    in.kMpa = r.kMpa;
+    in.d0Mm = r.d0Mm;
+    in.h0Mm = r.h0Mm;
+    in.hFinalMm = r.reduction >= 0 ? r.h0Mm * (1 - r.reduction) : 0;
+    return in;
+}
+
+GroupReading readingOf(const std::vector<LoopRecord> &usable, const Candidate &g)
+{
+    if (g.kind != "categorical" || g.levels.size() != usable.size()) return GroupReading::Scale;
+    std::map<std::string, std::set<long>> nPerLevel;
+    std::set<long> all;
+    for (size_t i = 0; i < usable.size(); ++i) {
+        const long n = std::lround(usable[i].n * 1e4);
+        nPerLevel[g.levels[i]].insert(n);
+        all.insert(n);
+    }
+    for (const auto &[level, ns] : nPerLevel)
+        if (ns.size() != 1) return GroupReading::Scale;
+    return all.size() >= 2 ? GroupReading::N : GroupReading::Scale;
+}
+
+PhysicalFit fitGrouping(const vision::FrictionModel &model, const std::vector<LoopRecord> &usable,
+                        const Candidate &g, GroupReading reading, const std::vector<int> &fold, int folds)
+{
+    PhysicalFit out;
+    out.reading = reading;
+    const std::map<std::string, GroupFit> all = fitLevels(model, usable, g, reading, std::vector<bool>(usable.size(), true), &out.scatter);
+    for (size_t i = 0; i < usable.size(); ++i)
+        out.muAfter.push_back(muWith(model, usable[i], reading, all.at(g.levels[i]).value));
+    for (auto [level, f] : all) {
+        f.value = reported(f, reading);
+        out.groups.push_back(f);
+    }
+    out.cvErrors.assign(usable.size(), 0);
+    for (int k = 0; k < folds; ++k) {
+        std::vector<bool> train(usable.size());
+        for (size_t i = 0; i < usable.size(); ++i) train[i] = fold[i] != k;
+        double scatter = 0;
+        const std::map<std::string, GroupFit> fit = fitLevels(model, usable, g, reading, train, &scatter);
+        for (size_t i = 0; i < usable.size(); ++i) {
+            if (fold[i] != k) continue;
+            const auto it = fit.find(g.levels[i]);
+            // A level the training folds never saw stays as declared.
+            const double p = it != fit.end() ? it->second.value : neutral(reading);
+            out.cvErrors[i] = muWith(model, usable[i], reading, p) - usable[i].muRef;
+        }
+    }
+    return out;
+}
+
+LinearEffect fitLinearEffect(const Candidate &c, const std::vector<double> &y, const std::string &form,
+                             const std::vector<double> &scaleSens, const std::vector<double> &uSens)
+{
+    LinearEffect e;
+    e.form = form;
+    const std::vector<double> *g = form == "scale" ? &scaleSens : form == "u" ? &uSens : nullptr;
+    // residual = w·(a + b·(x − x̄)), w = 1 in the μ form: ordinary least squares in (a, b).
+    double xm = 0;
+    int nx = 0;
+    e.xMin = INFINITY, e.xMax = -INFINITY;
+    for (double x : c.x)
+        if (std::isfinite(x)) { xm += x; ++nx; e.xMin = std::min(e.xMin, x); e.xMax = std::max(e.xMax, x); }
+    if (nx < 3) return e;
+    xm /= nx;
+    double s00 = 0, s01 = 0, s11 = 0, t0 = 0, t1 = 0;
+    std::vector<double> w;
+    for (size_t i = 0; i < y.size(); ++i) {
+        const double wi = g ? (*g)[i] : 1.0;
+        const double xi = std::isfinite(c.x[i]) ? c.x[i] - xm : 0;
+        s00 += wi * wi, s01 += wi * wi * xi, s11 += wi * wi * xi * xi;
+        t0 += wi * y[i], t1 += wi * xi * y[i];
+        w.push_back(std::fabs(wi));
+    }
+    const double det = s00 * s11 - s01 * s01;
+    if (!(det > 0)) return e;
+    const double a = (s11 * t0 - s01 * t1) / det, b = (s00 * t1 - s01 * t0) / det;
+    double sse = 0;
+    for (size_t i = 0; i < y.size(); ++i) {
+        const double wi = g ? (*g)[i] : 1.0;
+        const double xi = std::isfinite(c.x[i]) ? c.x[i] - xm : 0;
+        const double r = y[i] - wi * (a + b * xi);
+        sse += r * r;
+    }
+    const double s2 = y.size() > 2 ? sse / double(y.size() - 2) : 0;
+    e.slope = b;
+    e.sigma = std::sqrt(s2 * s00 / det);
+    std::nth_element(w.begin(), w.begin() + long(w.size() / 2), w.end());
+    e.muSpan = b * (e.xMax - e.xMin) * w[w.size() / 2];
+    return e;
+}
+
+} // namespace icacam::host::loop
