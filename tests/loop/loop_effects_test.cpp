@@ -18,7 +18,7 @@
 #include "loop_command.h"
 #include "manifest.h"
 #include "synth_loop_set.h"
-#include "vision/reduction_table.h"
+#include "vision/model/reduction_table.h"
 #include "../table_inputs.h"
 
 namespace fs = std::filesystem;
