@@ -1,10 +1,10 @@
 #include "aspect_corrected_model.h"
 
-#include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "aspect_table.h"
-#include "table_axis.h"
+#include "grid.h"
 
 namespace icacam::vision {
 
@@ -17,26 +17,13 @@ double AspectCorrectedModel::aspectMax() { return t::kAspect[t::kACount - 1]; }
 namespace {
 using RatioTable = double[t::kACount][t::kNCount][t::kRCount][t::kMuCount];
 
-// Multilinear in (aspect, n, reduction, μ), clamped to the simulated box.
+// Multilinear in (aspect, n, reduction, μ), held at the simulated box's faces (estimate flags
+// a slenderness beyond them).
 double lookup(const RatioTable &tab, double aspect, double n, double reduction, double mu)
 {
-    int ia, in, ir, im;
-    double wa, wn, wr, wm;
-    bracketAxis(t::kAspect, t::kACount, aspect, ia, wa);
-    bracketAxis(t::kN, t::kNCount, n, in, wn);
-    bracketAxis(t::kR, t::kRCount, reduction, ir, wr);
-    bracketAxis(t::kMu, t::kMuCount, mu, im, wm);
-    double sum = 0;
-    for (int da = 0; da < 2; ++da)
-        for (int dn = 0; dn < 2; ++dn)
-            for (int dr = 0; dr < 2; ++dr)
-                for (int dm = 0; dm < 2; ++dm) {
-                    const double w = (da ? wa : 1 - wa) * (dn ? wn : 1 - wn) * (dr ? wr : 1 - wr) * (dm ? wm : 1 - wm);
-                    if (w == 0) continue;
-                    sum += w * tab[std::min(ia + da, t::kACount - 1)][std::min(in + dn, t::kNCount - 1)]
-                                  [std::min(ir + dr, t::kRCount - 1)][std::min(im + dm, t::kMuCount - 1)];
-                }
-    return sum;
+    constexpr std::array<GridAxis, 4> axes{GridAxis{t::kAspect, t::kACount}, GridAxis{t::kN, t::kNCount},
+                                          GridAxis{t::kR, t::kRCount}, GridAxis{t::kMu, t::kMuCount}};
+    return gridValue(&tab[0][0][0][0], axes, {aspect, n, reduction, mu});
 }
 } // namespace
 

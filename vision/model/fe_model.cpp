@@ -1,9 +1,10 @@
 #include "fe_model.h"
 
+#include <array>
 #include <cmath>
 
 #include "fe_model_table.h"
-#include "table_axis.h"
+#include "grid.h"
 
 namespace icacam::vision {
 
@@ -24,7 +25,7 @@ Row rowFrom(const double *us, const double *mus, int count)
     Row r;
     for (int j = 0; j < count && j < kMaxRowPoints; ++j) {
         const double u = us[j];
-        if (u < 0) continue;
+        if (!(u >= 0)) continue; // no data
         if (r.count > 0 && u <= r.u[r.count - 1] + 1e-6) {
             // u did not grow (no fold-over yet at this μ): u cannot tell these μ apart; keep
             // the largest, so that u just above it interpolates from the end of the plateau.
@@ -38,49 +39,37 @@ Row rowFrom(const double *us, const double *mus, int count)
     return r;
 }
 
-using Carry = double[t::kKCount][t::kRCount][t::kNCount][t::kMuCount];
+// The table's axes as the grid reads them. Held at the ends: estimate and radii flag what
+// lies beyond (an n, μ, reduction or K outside the runs), the value is the nearest edge's.
+constexpr GridAxis kRAxis{t::kR, t::kRCount}, kNAxis{t::kN, t::kNCount}, kMuAxis{t::kMu, t::kMuCount},
+    kKAxis{t::kK, t::kKCount};
+constexpr std::array<GridAxis, 3> kGrid{kRAxis, kNAxis, kMuAxis};
+using Index = std::array<int, 3>;
 
-// How the value at grid point (ri, ni, mj) moves from the base's K to kMpa (≤ 0: not given,
-// the base's K): the generated K carry, linear in K between the carried K, held at the ends
-// (estimate flags a K outside them).
-double carryAt(const Carry &d, int ri, int ni, int mj, double kMpa)
+// How a table's value at grid point (reduction, n, μ) moves from the base's K to kMpa (<= 0:
+// not given, the base's K): the generated K carry, linear in K between the carried K.
+double carryAt(const double *carry, const Index &p, double kMpa)
 {
     if (kMpa <= 0 || t::kKCount < 2) return 0;
-    int i = 0;
-    double w = 0;
-    bracketAxis(t::kK, t::kKCount, kMpa, i, w);
-    return (1 - w) * d[i][ri][ni][mj] + w * d[i + 1][ri][ni][mj];
+    return gridValue<4>(carry, {kKAxis, kRAxis, kNAxis, kMuAxis}, {kMpa, t::kR[p[0]], t::kN[p[1]], t::kMu[p[2]]});
 }
 
-// The tables at K: u (never below 0: no fold-over is no fold-over), R_i, R_o, R_max; -1 where
-// the base has no data.
-double uAtK(int ri, int ni, int mj, double k)
+// The tables at K on a grid point: u (never below 0: no fold-over is no fold-over), R_i, R_o,
+// R_max; NaN where the base has no data.
+double uAtK(const Index &p, double k)
 {
-    const double u = t::kU[ri][ni][mj];
-    if (u < 0) return -1;
-    const double v = u + carryAt(t::kDU, ri, ni, mj, k);
-    return v > 0 ? v : 0;
+    const double v = t::kU[p[0]][p[1]][p[2]] + carryAt(&t::kDU[0][0][0][0], p, k);
+    return v > 0 ? v : v == v ? 0 : kNoData;
 }
-double riAtK(int ri, int ni, int mj, double k)
-{
-    const double v = t::kRi[ri][ni][mj];
-    return v < 0 ? -1 : v + carryAt(t::kDRi, ri, ni, mj, k);
-}
-double roAtK(int ri, int ni, int mj, double k)
-{
-    const double v = t::kRo[ri][ni][mj];
-    return v < 0 ? -1 : v + carryAt(t::kDRi, ri, ni, mj, k) + carryAt(t::kDU, ri, ni, mj, k);
-}
-double rMaxAtK(int ri, int ni, int mj, double k)
-{
-    const double v = t::kRmax[ri][ni][mj];
-    return v < 0 ? -1 : v + carryAt(t::kDRmax, ri, ni, mj, k);
-}
+double riAtK(const Index &p, double k) { return t::kRi[p[0]][p[1]][p[2]] + carryAt(&t::kDRi[0][0][0][0], p, k); }
+double roAtK(const Index &p, double k) { return t::kRo[p[0]][p[1]][p[2]] + carryAt(&t::kDRi[0][0][0][0], p, k) + carryAt(&t::kDU[0][0][0][0], p, k); }
+double rMaxAtK(const Index &p, double k) { return t::kRmax[p[0]][p[1]][p[2]] + carryAt(&t::kDRmax[0][0][0][0], p, k); }
 
+// The row of one (reduction, n) grid point at K: its (u, μ) points.
 Row rowAt(int ri, int ni, double kMpa)
 {
     double us[t::kMuCount];
-    for (int j = 0; j < t::kMuCount; ++j) us[j] = uAtK(ri, ni, j, kMpa);
+    for (int j = 0; j < t::kMuCount; ++j) us[j] = uAtK({ri, ni, j}, kMpa);
     return rowFrom(us, t::kMu, t::kMuCount);
 }
 
@@ -113,64 +102,12 @@ void pchip(const Row &r, double x, double &y, double &dy, bool &outside)
 }
 
 
-// at(ri, i, j): a table's value at grid point (reduction ri, n i, μ j), < 0 without data.
-using GridValue = double (*)(int, int, int, double);
-
-double lerp2(GridValue at, int ri, double k, double n, double mu)
+// A table at K over (reduction, n, μ): multilinear on the grid (NaN where a weighted grid
+// point has no data).
+template <class AtK>
+double lookup(AtK atK, double k, double red, double n, double mu)
 {
-    int i = 0, j = 0;
-    double wn = 0, wm = 0;
-    bracketAxis(t::kN, t::kNCount, n, i, wn);
-    bracketAxis(t::kMu, t::kMuCount, mu, j, wm);
-    auto value = [&](int a, int b) {
-        a = a < t::kNCount ? a : t::kNCount - 1;
-        b = b < t::kMuCount ? b : t::kMuCount - 1;
-        return at(ri, a, b, k);
-    };
-    // A grid point without data (-1) only matters when it carries weight: on a simulated
-    // (n, μ) the neighbours' holes do not.
-    const double w[4] = {(1 - wn) * (1 - wm), (1 - wn) * wm, wn * (1 - wm), wn * wm};
-    const int ai[4] = {i, i, i + 1, i + 1}, bj[4] = {j, j + 1, j, j + 1};
-    double sum = 0;
-    for (int q = 0; q < 4; ++q) {
-        if (w[q] == 0) continue;
-        const double v = value(ai[q], bj[q]);
-        if (v < 0) return -1;
-        sum += w[q] * v;
-    }
-    return sum;
-}
-
-// Bilinear in (n, μ) at the two snapshot reductions around r, linear between them.
-double lerp3(GridValue at, double k, double n, double mu, double r)
-{
-    int ri = 0;
-    double w = 0;
-    bracketAxis(t::kR, t::kRCount, r, ri, w);
-    const double a = lerp2(at, ri, k, n, mu);
-    if (w == 0 || t::kRCount == 1) return a;
-    const double b = lerp2(at, ri + 1, k, n, mu);
-    if (w == 1) return b;
-    return a < 0 || b < 0 ? -1 : (1 - w) * a + w * b;
-}
-
-// μ from u at snapshot reduction index ri: PCHIP along the two simulated n around n.
-ModelEstimate atReduction(int ri, double n, double u, double scale, double kMpa)
-{
-    ModelEstimate e;
-    int i = 0;
-    double w = 0;
-    bracketAxis(t::kN, t::kNCount, n, i, w);
-    const int i1 = t::kNCount > 1 ? i + 1 : i;
-    double mu0 = 0, d0 = 0, mu1 = 0, d1 = 0;
-    bool out0 = false, out1 = false;
-    const Row r0 = rowAt(ri, i, kMpa), r1 = rowAt(ri, i1, kMpa);
-    pchip(r0, u, mu0, d0, out0);
-    pchip(r1, u, mu1, d1, out1);
-    e.mu = (1 - w) * mu0 + w * mu1;
-    e.dMuDu = ((1 - w) * d0 + w * d1) * scale;
-    if ((w < 1 && out0) || (w > 0 && out1)) e.range |= kModelUOutside;
-    return e;
+    return blendCorners(locateOnGrid(kGrid, {red, n, mu}), [&](const Index &p) { return atK(p, k); });
 }
 
 } // namespace
@@ -201,17 +138,20 @@ ModelEstimate FeModel::estimate(const ModelInputs &in) const
         else e.range |= kModelReductionOutside;
     }
     if (red < t::kR[0] - 1e-9 || red > t::kR[t::kRCount - 1] + 1e-9) e.range |= kModelReductionOutside;
-    int k = 0;
-    double wr = 0;
-    bracketAxis(t::kR, t::kRCount, red, k, wr);
     // u(μ) at the specimen's K: the base plus the K carry (the fold-over's onset moves with
-    // the elastic strain K/E; docs/fe.md, the factorial).
-    const ModelEstimate a = atReduction(k, in.n, u, scale, in.kMpa);
-    const ModelEstimate b = t::kRCount > 1 ? atReduction(k + 1, in.n, u, scale, in.kMpa) : a;
-    e.mu = (1 - wr) * a.mu + wr * b.mu;
-    e.dMuDu = (1 - wr) * a.dMuDu + wr * b.dMuDu;
-    if (wr < 1) e.range |= a.range;
-    if (wr > 0) e.range |= b.range;
+    // the elastic strain K/E; docs/fe.md, the factorial). Along u the monotone cubic of each
+    // simulated (reduction, n) row: the model's choice, not a lookup; between the rows the
+    // grid's corners, linear.
+    bool outside = false;
+    forEachCorner(locateOnGrid<2>({kRAxis, kNAxis}, {red, in.n}), [&](const std::array<int, 2> &p, double w) {
+        double mu = 0, dMu = 0;
+        bool out = false;
+        pchip(rowAt(p[0], p[1], in.kMpa), u, mu, dMu, out);
+        e.mu += w * mu;
+        e.dMuDu += w * dMu * scale;
+        outside = outside || out;
+    });
+    if (outside) e.range |= kModelUOutside;
     const double muLo = t::kMu[0], muHi = t::kMu[t::kMuCount - 1];
     if (e.mu < muLo - 1e-9 || (u <= 0 && muLo > 0)) e.range |= kModelMuBelow;
     if (e.mu > muHi + 1e-9) e.range |= kModelMuAbove;
@@ -227,7 +167,8 @@ ModelEstimate FeModel::estimate(const ModelInputs &in) const
 
 double FeModel::uAt(double n, double mu, double reduction, double kMpa) const
 {
-    return lerp3(uAtK, kMpa, n, mu, reduction > 0 ? reduction : t::kReduction);
+    const double u = lookup(uAtK, kMpa, reduction > 0 ? reduction : t::kReduction, n, mu);
+    return u == u ? u : -1;
 }
 
 FeRadii FeModel::radii(double n, double mu, double d0Mm, double reduction, double kMpa) const
@@ -235,9 +176,10 @@ FeRadii FeModel::radii(double n, double mu, double d0Mm, double reduction, doubl
     FeRadii r;
     const double s = d0Mm / t::kD0Mm;
     const double red = reduction > 0 ? reduction : t::kReduction;
-    r.riMm = lerp3(riAtK, kMpa, n, mu, red) * s;
-    r.roMm = lerp3(roAtK, kMpa, n, mu, red) * s;
-    r.rMaxMm = lerp3(rMaxAtK, kMpa, n, mu, red) * s;
+    auto scaled = [&](double v) { return v == v ? v * s : -1.0; }; // -1: no data
+    r.riMm = scaled(lookup(riAtK, kMpa, red, n, mu));
+    r.roMm = scaled(lookup(roAtK, kMpa, red, n, mu));
+    r.rMaxMm = scaled(lookup(rMaxAtK, kMpa, red, n, mu));
     if (kMpa > 0 && (kMpa < t::kKMinMpa - 1e-9 || kMpa > t::kKMaxMpa + 1e-9)) r.range |= kModelKOutside;
     if (red < t::kR[0] - 1e-9 || red > t::kR[t::kRCount - 1] + 1e-9) r.range |= kModelReductionOutside;
     if (n < t::kN[0] - 1e-9) r.range |= kModelNBelow;

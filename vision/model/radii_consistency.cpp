@@ -1,9 +1,11 @@
 #include "radii_consistency.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "aspect_corrected_model.h"
+#include "grid.h"
 #include "reduction_table.h"
 
 namespace icacam::vision {
@@ -13,40 +15,6 @@ namespace t = reduction_table;
 namespace {
 
 double snapStep() { return t::kRCount > 1 ? t::kR[t::kRCount - 1] - t::kR[t::kRCount - 2] : 0.05; }
-
-using Table = float[t::kNCount][t::kMuCount][t::kRCount];
-
-// One simulated (n, μ) point's radius at reduction r: linear between the bracketing
-// snapshots, or continued from the last two. False if those snapshots are missing.
-bool atPoint(const Table &tab, int ni, int mi, double r, double *v)
-{
-    if (t::kRCount < 2) return false;
-    int k = 0;
-    while (k < t::kRCount - 2 && r > t::kR[k + 1]) ++k;
-    const double a = tab[ni][mi][k], b = tab[ni][mi][k + 1];
-    if (a < 0 || b < 0) return false;
-    const double w = (r - t::kR[k]) / (t::kR[k + 1] - t::kR[k]);
-    if (w < 0) return false; // before the first snapshot: not covered
-    *v = a + w * (b - a);
-    return true;
-}
-
-// One n row at μ: linear between the nearest simulated μ with data, held beyond them.
-bool atRow(const Table &tab, int ni, double mu, double r, double *v)
-{
-    int lo = -1, hi = -1;
-    double vlo = 0, vhi = 0, x;
-    for (int j = 0; j < t::kMuCount; ++j) {
-        if (!atPoint(tab, ni, j, r, &x)) continue;
-        if (t::kMu[j] <= mu) lo = j, vlo = x;
-        else if (hi < 0) hi = j, vhi = x;
-    }
-    if (lo < 0 && hi < 0) return false;
-    if (lo < 0) { *v = vhi; return true; }
-    if (hi < 0) { *v = vlo; return true; }
-    *v = vlo + (mu - t::kMu[lo]) / (t::kMu[hi] - t::kMu[lo]) * (vhi - vlo);
-    return true;
-}
 
 } // namespace
 
@@ -60,19 +28,15 @@ bool feRMaxAt(double n, double mu, double reduction, double *rMaxMm)
 
 bool feRadiusAt(FeRadius which, double n, double mu, double reduction, double *mm)
 {
-    const Table &tab = which == FeRadius::Inner ? t::kRi : which == FeRadius::Outer ? t::kRo : t::kRmax;
+    const auto &tab = which == FeRadius::Inner ? t::kRi : which == FeRadius::Outer ? t::kRo : t::kRmax;
     if (reduction > radiiReductionMax() + 1e-9) return false;
-    n = std::clamp(n, t::kN[0], t::kN[t::kNCount - 1]);
-    int i = 0;
-    while (i < t::kNCount - 2 && n > t::kN[i + 1]) ++i;
-    const int i1 = std::min(i + 1, t::kNCount - 1);
-    const double w = i1 > i ? (n - t::kN[i]) / (t::kN[i1] - t::kN[i]) : 0;
-    double a, b;
-    const bool okA = atRow(tab, i, mu, reduction, &a), okB = atRow(tab, i1, mu, reduction, &b);
-    if (okA && okB) *mm = a + w * (b - a);
-    else if (okA && w < 0.5) *mm = a; // a row without data: the nearer one, only if it is the nearer
-    else if (okB && w >= 0.5) *mm = b;
-    else return false;
+    // n and μ held at the simulated ends (R_max saturates at high μ), the reduction continued
+    // past the last snapshot (up to radiiReductionMax) but not before the first.
+    constexpr std::array<GridAxis, 3> axes{GridAxis{t::kN, t::kNCount}, GridAxis{t::kMu, t::kMuCount},
+                                          GridAxis{t::kR, t::kRCount, Beyond::Nothing, Beyond::Extend}};
+    const double v = gridValue(&tab[0][0][0], axes, {n, mu, reduction});
+    if (!(v == v)) return false; // no data there
+    *mm = v;
     return true;
 }
 

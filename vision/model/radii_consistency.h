@@ -17,10 +17,10 @@
 // Pure C++20: no heap, no OS calls, no exceptions.
 namespace icacam::vision {
 
-// FE R_max at (n, μ, r) for D0 = 10 mm: linear in r (extrapolated up to one snapshot step
-// past the last), linear in μ between the simulated μ of each n (μ held at the row's last
-// simulated value beyond it: R_max saturates at high μ), linear in n (clamped to the
-// simulated n). False when there is no data.
+// FE R_max at (n, μ, r) for D0 = 10 mm, read with the grid (grid.h): linear in r
+// (extrapolated up to one snapshot step past the last, nothing before the first), linear in
+// μ (held beyond the simulated μ: R_max saturates at high μ) and in n (held at the simulated
+// n). False when there is no data (a weighted snapshot the runs did not reach).
 bool feRMaxAt(double n, double mu, double reduction, double *rMaxMm);
 
 // The same interpolation for any of the three radii (synthetic record sets place the contact
