@@ -225,7 +225,7 @@ double pairedZ(const std::vector<double> &a, const std::vector<double> &b)
 
 bool isSymptom(const std::string &name)
 {
-    if (name.rfind("diag_", 0) == 0) return true;
+    if (name.rfind("diag_", 0) == 0 || name.rfind("device_", 0) == 0) return true;
     // What a measurement produces (a radii record set's radii, a device record's result).
     static const std::set<std::string> kMeasured = {"mu", "mu_sigma", "status", "flags", "message", "ms", "r_max_z"};
     if (kMeasured.count(name)) return true;

@@ -38,7 +38,7 @@ struct Candidate {
 };
 
 // A measured quantity (a symptom) rather than a recorded condition (a cause): every
-// pipeline diagnostic (diag_*), the radii of a radii record set (r_inner_mm, r_outer_mm,
+// pipeline diagnostic (diag_*), what a device measured (device_*, from its journal), the radii of a radii record set (r_inner_mm, r_outer_mm,
 // r_bulge_mm), what a device measured (mu, u_mm, reduction_est, status, flags, ...), and any
 // column named after one of them (r_outer_px, u_over_r0, ...).
 bool isSymptom(const std::string &name);

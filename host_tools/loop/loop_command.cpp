@@ -10,6 +10,7 @@
 
 #include "vision/model/friction_models.h"
 #include "image_file.h"
+#include "journal_records.h"
 #include "loop_physics_report.h"
 #include "loop_plot.h"
 #include "manifest.h"
@@ -32,7 +33,10 @@ namespace {
 const char *kUsage =
     "usage: icacam loop --manifest FILE --report DIR [--model paper] [--folds 5] [--seed S]\n"
     "                   [--fe-sweep CSV]... [--alpha 0.05]\n"
-    "Measures every record (image + mm_per_px, or r_inner_mm + r_outer_mm), takes the residual\n"
+    "       icacam loop --journal DIR --reference CSV --report DIR [options as above]\n"
+    "Measures every record (image + mm_per_px, or r_inner_mm + r_outer_mm; with --journal an\n"
+    "icacam-fw journal folder's saved frames, joined by record id with the CSV's mu_ref and\n"
+    "recorded columns, re-measured with the current pipeline), takes the residual\n"
     "μ_model − mu_ref, ranks every recorded column and every pipeline diagnostic by the k-fold\n"
     "cross-validated gain of a one-candidate model of the residual, and corrects the leading\n"
     "effect. A height reduction other than the model's 50 % is corrected physically: u is\n"
@@ -67,6 +71,40 @@ std::string f4(double v, const char *fmt = "%.4f")
 namespace loop {
 
 namespace {
+
+// The one place the loop measures an image (a manifest's image record, a journal's saved
+// frame): the current pipeline's measurement and its diagnostics.
+bool measureImage(const std::string &path, const SpecimenSpec &spec, const FrictionModel &model,
+                  EndFaceAnalyzer &analyzer, LoopRecord *r, std::string *why)
+{
+    LumaImage img;
+    if (std::string e = loadLuma(path, &img); !e.empty()) { *why = e; return false; }
+    const LumaView view{img.luma.data, img.luma.cols, img.luma.rows, int(img.luma.step[0]), 1};
+    const Measurement m = analyzer.measure(view, spec, model);
+    if (!m.hasValue()) { *why = errorMessage(m.error); return false; }
+    r->uMm = m.uMm;
+    auto &d = r->diagnostics;
+    d["diag_u_mm"] = m.uMm;
+    d["diag_r_inner_mm"] = m.rInnerMm;
+    d["diag_r_outer_mm"] = m.rOuterMm;
+    if (m.rMaxMm > 0) d["diag_rmax_over_r0"] = m.rMaxMm / (0.5 * r->d0Mm);
+    if (m.reductionEst >= 0) d["diag_reduction_est"] = m.reductionEst; // from R_max and the FE
+    d["diag_inner_contrast"] = m.inner.contrast;
+    d["diag_outer_contrast"] = m.outer.contrast;
+    d["diag_inner_coverage"] = m.inner.coverage;
+    d["diag_outer_coverage"] = m.outer.coverage;
+    d["diag_inner_scatter_px"] = m.inner.scatterPx;
+    d["diag_outer_scatter_px"] = m.outer.scatterPx;
+    d["diag_inner_ellipticity"] = m.inner.ellipticity;
+    d["diag_outer_ellipticity"] = m.outer.ellipticity;
+    d["diag_outer_axis_deg"] = m.outer.axisDeg;
+    d["diag_centre_offset_px"] = m.centreOffsetPx;
+    d["diag_edge_width_px"] = m.edgeWidthPx;
+    d["diag_saturated_fraction"] = m.saturatedFraction;
+    d["diag_u_px"] = m.uPx;
+    d["diag_flag_count"] = double(__builtin_popcount(m.flags));
+    return true;
+}
 
 bool measureRecord(const ManifestRow &row, const Manifest &manifest, const FrictionModel &model,
                    EndFaceAnalyzer &analyzer, LoopRecord *r, std::string *why)
@@ -103,32 +141,7 @@ bool measureRecord(const ManifestRow &row, const Manifest &manifest, const Frict
         if (!num("mm_per_px", 0, &spec.mmPerPx) || !(spec.mmPerPx > 0)) { *why = "no mm_per_px"; return false; }
         fs::path p = row.get("image");
         if (p.is_relative()) p = fs::path(manifest.baseDir) / p;
-        LumaImage img;
-        if (std::string e = loadLuma(p.string(), &img); !e.empty()) { *why = e; return false; }
-        const LumaView view{img.luma.data, img.luma.cols, img.luma.rows, int(img.luma.step[0]), 1};
-        const Measurement m = analyzer.measure(view, spec, model);
-        if (!m.hasValue()) { *why = errorMessage(m.error); return false; }
-        r->uMm = m.uMm;
-        auto &d = r->diagnostics;
-        d["diag_u_mm"] = m.uMm;
-        d["diag_r_inner_mm"] = m.rInnerMm;
-        d["diag_r_outer_mm"] = m.rOuterMm;
-        if (m.rMaxMm > 0) d["diag_rmax_over_r0"] = m.rMaxMm / (0.5 * r->d0Mm);
-        if (m.reductionEst >= 0) d["diag_reduction_est"] = m.reductionEst; // from R_max and the FE
-        d["diag_inner_contrast"] = m.inner.contrast;
-        d["diag_outer_contrast"] = m.outer.contrast;
-        d["diag_inner_coverage"] = m.inner.coverage;
-        d["diag_outer_coverage"] = m.outer.coverage;
-        d["diag_inner_scatter_px"] = m.inner.scatterPx;
-        d["diag_outer_scatter_px"] = m.outer.scatterPx;
-        d["diag_inner_ellipticity"] = m.inner.ellipticity;
-        d["diag_outer_ellipticity"] = m.outer.ellipticity;
-        d["diag_outer_axis_deg"] = m.outer.axisDeg;
-        d["diag_centre_offset_px"] = m.centreOffsetPx;
-        d["diag_edge_width_px"] = m.edgeWidthPx;
-        d["diag_saturated_fraction"] = m.saturatedFraction;
-        d["diag_u_px"] = m.uPx;
-        d["diag_flag_count"] = double(__builtin_popcount(m.flags));
+        if (!measureImage(p.string(), spec, model, analyzer, r, why)) return false;
     } else {
         *why = "neither image nor r_inner_mm/r_outer_mm";
         return false;
@@ -174,17 +187,43 @@ void plotCandidate(const std::string &path, const Candidate &c, const std::vecto
 LoopSummary runLoop(const std::string &manifestPath, const std::string &reportDir, const std::string &modelName,
                     const RankingOptions &opt, const std::vector<std::string> &feSweeps)
 {
-    auto model = frictionModel(modelName);
-    if (!model) throw std::runtime_error("unknown model '" + modelName + "' (known: " + kKnownModels + ")");
     Manifest manifest;
     std::string err;
     if (!readManifest(manifestPath, &manifest, &err)) throw std::runtime_error(err);
+    return runLoopOn(manifest, "Manifest: `" + manifestPath + "`", {}, reportDir, modelName, opt, feSweeps);
+}
+
+LoopSummary runJournalLoop(const std::string &journalDir, const std::string &referenceCsv, const std::string &reportDir,
+                           const std::string &modelName, const RankingOptions &opt,
+                           const std::vector<std::string> &feSweeps)
+{
+    Manifest manifest;
+    JournalJoin join;
+    std::string err;
+    if (!readJournalManifest(journalDir, referenceCsv, &manifest, &join, &err)) throw std::runtime_error(err);
+    const std::string source = "Journal: `" + journalDir + "` (" + std::to_string(join.lines) + " lines, " +
+                               std::to_string(join.results) + " results, " + std::to_string(join.scaleChecks) +
+                               " scale checks), joined by record id with `" + referenceCsv + "`: " +
+                               std::to_string(join.joined) + " records with a reference value and a saved frame, "
+                               "re-measured with the current pipeline (the device's own results are the device_* "
+                               "columns)";
+    LoopSummary s = runLoopOn(manifest, source, join.skipped, reportDir, modelName, opt, feSweeps);
+    s.journal = join;
+    return s;
+}
+
+LoopSummary runLoopOn(const Manifest &manifest, const std::string &source, const std::vector<std::string> &skippedBefore,
+                      const std::string &reportDir, const std::string &modelName, const RankingOptions &opt,
+                      const std::vector<std::string> &feSweeps)
+{
+    auto model = frictionModel(modelName);
+    if (!model) throw std::runtime_error("unknown model '" + modelName + "' (known: " + kKnownModels + ")");
     fs::create_directories(reportDir);
 
     EndFaceAnalyzer analyzer;
     analyzer.configure(16384, 16384);
     std::vector<LoopRecord> usable;
-    std::vector<std::string> skipped;
+    std::vector<std::string> skipped = skippedBefore;
     for (const ManifestRow &row : manifest.rows) {
         LoopRecord r;
         r.id = row.get("id", "line" + std::to_string(row.line));
@@ -406,7 +445,7 @@ LoopSummary runLoop(const std::string &manifestPath, const std::string &reportDi
     {
         std::ofstream f(fs::path(reportDir) / "report.md");
         f << "# icacam loop report\n\n";
-        f << "Manifest: `" << manifestPath << "`, model `" << modelName << "`, " << folds << "-fold CV, seed "
+        f << source << ", model `" << modelName << "`, " << folds << "-fold CV, seed "
           << opt.seed << ". Records: " << s.records << ", usable " << s.usable << ".\n\n";
         for (const std::string &k : skipped) f << "- skipped " << k << "\n";
         f << "\n## Error in μ (μ_model − μ_ref)\n\n| | RMS |\n|---|---|\n";
@@ -491,7 +530,7 @@ int loopCommand(const std::vector<std::string> &args)
 {
     if (!args.empty() && args[0] == "table")
         return loop::loopTableCommand({args.begin() + 1, args.end()}, repoFile("data/fe/sweep.csv"));
-    std::string manifestPath, reportDir, modelName = "paper";
+    std::string manifestPath, journalDir, referenceCsv, reportDir, modelName = "paper";
     std::vector<std::string> feSweeps;
     loop::RankingOptions opt;
     for (size_t i = 0; i < args.size(); ++i) {
@@ -501,6 +540,8 @@ int loopCommand(const std::vector<std::string> &args)
         };
         double v;
         if (args[i] == "--manifest") manifestPath = value();
+        else if (args[i] == "--journal") journalDir = value();
+        else if (args[i] == "--reference") referenceCsv = value();
         else if (args[i] == "--report") reportDir = value();
         else if (args[i] == "--model") modelName = value();
         else if (args[i] == "--fe-sweep") feSweeps.push_back(value());
@@ -516,13 +557,17 @@ int loopCommand(const std::vector<std::string> &args)
         } else if (args[i] == "-h" || args[i] == "--help") { std::cout << kUsage; return 0; }
         else throw std::runtime_error("unknown option '" + args[i] + "'\n" + kUsage);
     }
-    if (manifestPath.empty() || reportDir.empty())
-        throw std::runtime_error(std::string("--manifest and --report are required\n") + kUsage);
+    if (manifestPath.empty() == journalDir.empty() || reportDir.empty())
+        throw std::runtime_error(std::string("--report and one of --manifest or --journal are required\n") + kUsage);
+    if (journalDir.empty() != referenceCsv.empty())
+        throw std::runtime_error(std::string("--journal and --reference go together\n") + kUsage);
     // By default the FE data the product's table was generated from (its kFeSources).
     if (feSweeps.empty())
         for (const std::string &name : loop::splitSources(vision::reduction_table::kFeSources))
             feSweeps.push_back(repoFile(name));
-    const loop::LoopSummary s = loop::runLoop(manifestPath, reportDir, modelName, opt, feSweeps);
+    const loop::LoopSummary s = journalDir.empty()
+                                    ? loop::runLoop(manifestPath, reportDir, modelName, opt, feSweeps)
+                                    : loop::runJournalLoop(journalDir, referenceCsv, reportDir, modelName, opt, feSweeps);
     std::cout << "records " << s.records << " usable " << s.usable << "\n"
               << "rms_before " << f4(s.rmsBefore) << "\ncv_rms_offset " << f4(s.cvRmsOffset) << "\n"
               << "top " << (s.ranking.empty() ? "-" : s.ranking.front().name) << "\n"

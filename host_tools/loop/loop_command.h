@@ -2,6 +2,7 @@
 #include <string>
 #include <vector>
 
+#include "journal_records.h"
 #include "loop_analysis.h"
 #include "loop_physics.h"
 
@@ -32,12 +33,25 @@ struct LoopSummary {
     double cvRmsPatch = 0; // the chosen candidate's best regression of the residual (k-fold)
     PhysicalFit grouping;  // reading "scale" or "n"
     LinearEffect linear;   // reading "process"
+    JournalJoin journal;   // runJournalLoop: what the join found
 };
 
 // Runs the whole analysis on a manifest and writes the report folder. feSweeps: the FE sweep
 // CSV(s) for du/dr (base data chosen over all of them, fe_base_data.h).
 LoopSummary runLoop(const std::string &manifestPath, const std::string &reportDir, const std::string &modelName,
                     const RankingOptions &opt, const std::vector<std::string> &feSweeps);
+
+// The same on an icacam-fw journal folder joined with a CSV of reference values by record id
+// (journal_records.h): the saved frames are re-measured with the current pipeline.
+LoopSummary runJournalLoop(const std::string &journalDir, const std::string &referenceCsv, const std::string &reportDir,
+                           const std::string &modelName, const RankingOptions &opt,
+                           const std::vector<std::string> &feSweeps);
+
+// On records already read; source: the report's first words about where they come from;
+// skippedBefore: records left out before measuring, with why.
+LoopSummary runLoopOn(const Manifest &manifest, const std::string &source, const std::vector<std::string> &skippedBefore,
+                      const std::string &reportDir, const std::string &modelName, const RankingOptions &opt,
+                      const std::vector<std::string> &feSweeps);
 
 // The space-separated repository paths of a table's kFeSources.
 std::vector<std::string> splitSources(const std::string &sources);

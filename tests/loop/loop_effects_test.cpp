@@ -184,3 +184,25 @@ TEST(LoopEffects, SymptomNeverOutranksACauseItCannotBeToldFrom)
     EXPECT_EQ(ranked[0].preferredOver[0], "r_outer_mm");
     EXPECT_EQ(ranked[0].pointedBy.size(), 1u);
 }
+
+// The lab's loopset (../shared/data/loopset, images with mu_ref and what the lab recorded; no
+// truth file): the reduction the press stopped at is the cause, corrected through the FE
+// slope, and the held-out error at least halves.
+TEST(LoopEffects, LoopsetReductionFirstAndErrorHalved)
+{
+    const fs::path set = fs::path(ICACAM_SHARED_DATA) / "loopset";
+    if (!fs::exists(set / "manifest.csv")) GTEST_SKIP() << "no loopset at " << set;
+    const fs::path report = fs::temp_directory_path() / ("icacam_loopset_" + std::to_string(::getpid()));
+    RankingOptions ro;
+    ro.folds = 5;
+    ro.seed = 1;
+    const LoopSummary s = runLoop((set / "manifest.csv").string(), report.string(), "paper", ro, kSweep);
+    fs::remove_all(report);
+    EXPECT_GE(s.usable, 58);
+    ASSERT_FALSE(s.ranking.empty());
+    const std::string top = s.ranking.front().name;
+    EXPECT_TRUE(top == "reduction" || top == "h_final_mm") << top;
+    EXPECT_TRUE(s.physical);
+    EXPECT_EQ(s.reading, "fe_slope");
+    EXPECT_LE(s.cvRmsAfter, 0.5 * s.rmsBefore) << s.rmsBefore << " -> " << s.cvRmsAfter;
+}

@@ -1,0 +1,185 @@
+#include "journal_records.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace icacam::host::loop {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// One flat JSON object (the journal has no nesting): key → value as text (numbers as
+// written, strings unescaped, true/false/null as words). False on anything else.
+bool parseFlat(const std::string &s, std::map<std::string, std::string> *out)
+{
+    size_t i = 0;
+    auto ws = [&] { while (i < s.size() && (s[i] == ' ' || s[i] == '\t' || s[i] == '\r')) ++i; };
+    auto str = [&](std::string *v) {
+        if (i >= s.size() || s[i] != '"') return false;
+        for (++i; i < s.size(); ++i) {
+            char c = s[i];
+            if (c == '"') { ++i; return true; }
+            if (c != '\\') { v->push_back(c); continue; }
+            if (++i >= s.size()) return false;
+            switch (s[i]) {
+            case 'n': v->push_back('\n'); break;
+            case 't': v->push_back('\t'); break;
+            case 'r': v->push_back('\r'); break;
+            case 'b': v->push_back('\b'); break;
+            case 'f': v->push_back('\f'); break;
+            case 'u': {
+                if (i + 4 >= s.size()) return false;
+                const unsigned code = unsigned(std::stoul(s.substr(i + 1, 4), nullptr, 16));
+                v->push_back(code < 0x80 ? char(code) : '?'); // the journal writes ASCII
+                i += 4;
+                break;
+            }
+            default: v->push_back(s[i]);
+            }
+        }
+        return false;
+    };
+    ws();
+    if (i >= s.size() || s[i++] != '{') return false;
+    ws();
+    if (i < s.size() && s[i] == '}') return true;
+    while (i < s.size()) {
+        std::string key, value;
+        ws();
+        if (!str(&key)) return false;
+        ws();
+        if (i >= s.size() || s[i++] != ':') return false;
+        ws();
+        if (i < s.size() && s[i] == '"') {
+            if (!str(&value)) return false;
+        } else {
+            const size_t start = i;
+            while (i < s.size() && s[i] != ',' && s[i] != '}' && s[i] != ' ') ++i;
+            value = s.substr(start, i - start);
+            if (value.empty()) return false;
+        }
+        (*out)[key] = value;
+        ws();
+        if (i < s.size() && s[i] == ',') { ++i; continue; }
+        if (i < s.size() && s[i] == '}') return true;
+        return false;
+    }
+    return false;
+}
+
+// A line as the journal writes it: {...,"crc32":"xxxxxxxx"} with the CRC of what precedes
+// ,"crc32".
+bool intact(const std::string &line)
+{
+    static const std::string kKey = ",\"crc32\":\"";
+    const size_t at = line.rfind(kKey);
+    if (at == std::string::npos || line.size() != at + kKey.size() + 10 || line.compare(line.size() - 2, 2, "\"}") != 0)
+        return false;
+    char want[9];
+    std::snprintf(want, sizeof want, "%08x", journalCrc32(line.substr(0, at)));
+    return line.compare(at + kKey.size(), 8, want) == 0;
+}
+
+// A record id as the join key: the number when it is one (12, 000012, 12.0), else the text.
+std::string joinKey(const std::string &id)
+{
+    double v;
+    if (parseNumber(id, &v) && v == std::floor(v) && std::fabs(v) < 1e15) return std::to_string((long long)v);
+    return id;
+}
+
+// What the device measured: renamed so that it is a symptom and not taken for a radii record.
+const char *const kMeasured[] = {"mu", "mu_sigma", "u_mm", "r_inner_mm", "r_outer_mm", "reduction_est",
+                                 "status", "flags", "message", "ms"};
+// Settings and conditions the device recorded with each result.
+const char *const kConditions[] = {"n", "k_mpa", "mm_per_px", "h_final_mm", "material", "calibration", "trigger"};
+
+} // namespace
+
+uint32_t journalCrc32(const std::string &data)
+{
+    uint32_t crc = 0xFFFFFFFFu;
+    for (unsigned char c : data) {
+        crc ^= c;
+        for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
+    }
+    return ~crc;
+}
+
+bool readJournalManifest(const std::string &journalDir, const std::string &referenceCsv, Manifest *out,
+                         JournalJoin *info, std::string *error)
+{
+    *info = {};
+    Manifest ref;
+    if (!readManifest(referenceCsv, &ref, error)) return false;
+    if (std::find(ref.columns.begin(), ref.columns.end(), "id") == ref.columns.end()) {
+        *error = "reference CSV '" + referenceCsv + "' has no id column";
+        return false;
+    }
+    std::map<std::string, const ManifestRow *> byId;
+    for (const ManifestRow &r : ref.rows) {
+        if (!r.error.empty()) { info->skipped.push_back("reference line " + std::to_string(r.line) + ": " + r.error); continue; }
+        byId[joinKey(r.get("id"))] = &r;
+    }
+    const fs::path journal = fs::path(journalDir) / "journal.jsonl";
+    std::ifstream in(journal);
+    if (!in) {
+        *error = "cannot read the journal '" + journal.string() + "'";
+        return false;
+    }
+    *out = {};
+    out->baseDir = journalDir;
+    out->columns = {"id", "image"};
+    for (const char *c : kConditions) out->columns.push_back(c);
+    for (const char *c : kMeasured) out->columns.push_back(std::string("device_") + c);
+    for (const std::string &c : ref.columns)
+        if (c != "id") out->columns.push_back(std::find(out->columns.begin(), out->columns.end(), c) == out->columns.end() ? c : "ref_" + c);
+    std::map<std::string, bool> used;
+    std::string line;
+    while (std::getline(in, line)) {
+        ++info->lines;
+        const std::string where = "journal line " + std::to_string(info->lines);
+        std::map<std::string, std::string> f;
+        if (!intact(line) || !parseFlat(line, &f)) { info->skipped.push_back(where + ": damaged (CRC or JSON)"); continue; }
+        if (f["type"] == "scalecheck") { ++info->scaleChecks; continue; }
+        if (f["type"] != "result") continue;
+        ++info->results;
+        const std::string id = f["id"], what = "journal record " + id;
+        const auto it = byId.find(joinKey(id));
+        if (it == byId.end()) { info->skipped.push_back(what + ": no row in the reference CSV"); continue; }
+        used[it->first] = true;
+        if (f["image"].empty()) { info->skipped.push_back(what + ": no saved frame (journal.images none, or an error before capture)"); continue; }
+        if (!f["calibration"].empty()) {
+            // The frame's boundaries were mapped through a calibration file the loop does not read.
+            info->skipped.push_back(what + ": measured through calibration '" + f["calibration"] +
+                                    "'; the loop re-measures frames with mm_per_px only");
+            continue;
+        }
+        ManifestRow row;
+        row.line = info->lines;
+        row.cells["id"] = id;
+        row.cells["image"] = f["image"];
+        for (const char *c : kConditions) row.cells[c] = f[c];
+        for (const char *c : kMeasured) row.cells[std::string("device_") + c] = f[c];
+        for (const auto &[k, v] : it->second->cells) {
+            if (k == "id") continue;
+            const bool journalHas = row.cells.count(k) > 0;
+            const bool journalEmpty = journalHas && (row.cells[k].empty() || (k == "h_final_mm" && row.cells[k] == "0"));
+            if (!journalHas || journalEmpty) row.cells[k] = v;
+            else row.cells["ref_" + k] = v;
+        }
+        out->rows.push_back(std::move(row));
+        ++info->joined;
+    }
+    for (const auto &[key, row] : byId)
+        if (!used.count(key)) info->skipped.push_back("reference id " + row->get("id") + ": not in the journal");
+    return true;
+}
+
+} // namespace icacam::host::loop

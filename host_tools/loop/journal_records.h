@@ -1,0 +1,37 @@
+#pragma once
+// An icacam-fw journal folder (docs/firmware.md, "Journal": journal.jsonl, one CRC-closed JSON
+// line per result, and the saved frames img-NNNNNN.pgm) joined by record id with a CSV of
+// reference values, as a manifest the loop measures like any other: each joined result with a
+// saved frame becomes an image record, re-measured with the current pipeline.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "manifest.h"
+
+namespace icacam::host::loop {
+
+struct JournalJoin {
+    int lines = 0;       // lines in journal.jsonl
+    int results = 0;     // intact result lines
+    int joined = 0;      // results with a reference row and a saved frame: the manifest's rows
+    int scaleChecks = 0; // scale-check lines (not measurements)
+    std::vector<std::string> skipped; // "what: why", one per line or reference row left out
+};
+
+// Columns of the manifest: id (the journal's record id), image (the saved frame), the
+// device's settings as it measured (n, k_mpa, mm_per_px, h_final_mm, material, calibration,
+// trigger), what the device measured then, prefixed device_ (device_mu, device_u_mm,
+// device_r_inner_mm, ..., device_status: symptoms, kept for the ranking and the comparison),
+// and every column of the reference CSV (mu_ref and whatever the lab recorded: camera,
+// press speed, ...). A reference column the journal also has fills it where the journal's is
+// empty (an undeclared h_final_mm of 0 counts as empty) and is kept as ref_<name> otherwise.
+// Ids join by number (12 = 000012) or else as text. False only when the journal or the CSV
+// cannot be read.
+bool readJournalManifest(const std::string &journalDir, const std::string &referenceCsv, Manifest *out,
+                         JournalJoin *info, std::string *error);
+
+// CRC-32 (IEEE) as the journal closes its lines with it.
+uint32_t journalCrc32(const std::string &data);
+
+} // namespace icacam::host::loop

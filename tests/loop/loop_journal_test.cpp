@@ -1,0 +1,168 @@
+// icacam loop on the device's own records: a device (icacam-fw's Device on the file-backed
+// HAL) measures rendered end faces and journals them with their frames; `icacam loop
+// --journal DIR --reference CSV` joins the journal with the lab's reference values by record
+// id, re-measures the saved frames with the current pipeline and finds the effect nobody
+// declared (lens L25 calibrated at L16's scale, 8 % large).
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+
+#include <unistd.h>
+
+#include "firmware/device.h"
+#include "hal/file/clocks.h"
+#include "hal/file/file_camera.h"
+#include "hal/file/file_led.h"
+#include "hal/file/file_trigger.h"
+#include "hal/file/folder_storage.h"
+#include "journal_records.h"
+#include "loop_command.h"
+#include "manifest.h"
+#include "synth_loop_set.h"
+#include "tests/firmware/recording_serial.h"
+#include "vision/model/paper_model.h"
+#include "vision/model/reduction_table.h"
+#include "../table_inputs.h"
+
+namespace fs = std::filesystem;
+using namespace icacam;
+using namespace icacam::host;
+using namespace icacam::host::loop;
+
+namespace {
+
+const std::vector<std::string> kSweep = icacam::test::repositoryPaths(icacam::vision::reduction_table::kFeSources);
+
+struct NullDisplay final : hal::Display {
+    hal::Error show(const hal::MonoBitmap &) override { return {}; }
+};
+
+// The lab's session: a rendered record set measured one by one on the device, each after
+// the operator set that specimen's n, K, scale, final height and material over serial.
+// Writes DIR/journal (the device's journal and frames) and DIR/reference.csv (the lab's
+// reference μ and what it recorded, by the device's record id). Returns the record count.
+int labSession(const fs::path &dir, LoopEffect effect, uint32_t seed, int count)
+{
+    LoopSetOptions opt;
+    opt.effect = effect;
+    opt.seed = seed;
+    opt.count = count;
+    const std::string manifestPath = writeLoopSet((dir / "set").string(), opt);
+    Manifest set;
+    std::string err;
+    EXPECT_TRUE(readManifest(manifestPath, &set, &err)) << err;
+
+    hal::ManualClock clock;
+    hal::FileCamera camera(clock, hal::FileCameraOptions{(dir / "set" / "images").string(), 1, false, 0});
+    hal::FileTrigger trigger{clock};
+    hal::FileLed led{clock};
+    NullDisplay display;
+    test::RecordingSerial serial;
+    hal::FolderStorage storage;
+    vision::PaperModel model;
+    EXPECT_TRUE(storage.open((dir / "journal").string()).ok());
+    fw::Config cfg;
+    cfg.n = 0.2;
+    cfg.mmPerPx = 0.02;
+    cfg.cameraMaxWidth = 800, cfg.cameraMaxHeight = 600;
+    fw::Device device(fw::DeviceHal{camera, trigger, led, display, serial, storage, clock}, cfg, model);
+    EXPECT_TRUE(device.start().ok());
+    auto say = [&](const std::string &line) {
+        serial.in += line + "\n";
+        device.tick();
+    };
+    std::ofstream ref(dir / "reference.csv");
+    ref << "id,mu_ref,lens,camera_id,operator,press_speed_mm_s,ambient_c\n";
+    int id = 0;
+    for (const ManifestRow &r : set.rows) { // the frames are taken in the manifest's order
+        for (const char *key : {"n", "k_mpa", "mm_per_px", "h_final_mm", "material"})
+            say(std::string("set ") + key + " " + r.get(key));
+        say("trigger");
+        ++id;
+        ref << id << "," << r.get("mu_ref") << "," << r.get("lens") << "," << r.get("camera_id") << ","
+            << r.get("operator") << "," << r.get("press_speed_mm_s") << "," << r.get("ambient_c") << "\n";
+    }
+    ref << "999,0.1,L16,cam-1,A,2,20\n"; // a reference row the journal does not have
+    return id;
+}
+
+} // namespace
+
+TEST(LoopJournal, DeviceRecordsReMeasuredAndTheLensFound)
+{
+    const fs::path dir = fs::temp_directory_path() / ("icacam_loop_journal_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    const int count = labSession(dir, LoopEffect::Optical, 3, 40);
+    ASSERT_TRUE(fs::exists(dir / "journal" / "journal.jsonl"));
+    ASSERT_TRUE(fs::exists(dir / "journal" / "img-000001.pgm"));
+    // A torn line in the middle of the journal (a byte flipped): skipped with its reason, the
+    // batch goes on.
+    {
+        std::string text;
+        {
+            std::ifstream f(dir / "journal" / "journal.jsonl");
+            text.assign(std::istreambuf_iterator<char>(f), {});
+        }
+        const size_t second = text.find('\n') + 1;
+        text[text.find("\"mu\"", second) + 2] = 'v';
+        std::ofstream(dir / "journal" / "journal.jsonl") << text;
+    }
+    Manifest joined;
+    JournalJoin join;
+    std::string err;
+    ASSERT_TRUE(readJournalManifest((dir / "journal").string(), (dir / "reference.csv").string(), &joined, &join, &err))
+        << err;
+    EXPECT_EQ(join.results, count - 1);
+    EXPECT_EQ(join.joined, count - 1);
+    int damaged = 0, notInJournal = 0;
+    for (const std::string &s : join.skipped) {
+        damaged += s.find("damaged") != std::string::npos;
+        notInJournal += s.find("reference id 999: not in the journal") != std::string::npos;
+    }
+    EXPECT_EQ(damaged, 1);
+    EXPECT_EQ(notInJournal, 1);
+    // The device's settings and results come through, its results as device_* (symptoms), and
+    // the frame, not the device's radii, is what the loop measures.
+    ASSERT_FALSE(joined.rows.empty());
+    const ManifestRow &first = joined.rows.front();
+    EXPECT_EQ(first.get("image"), "img-000001.pgm");
+    EXPECT_FALSE(first.get("device_mu").empty());
+    EXPECT_FALSE(first.get("mm_per_px").empty());
+    EXPECT_FALSE(first.get("lens").empty());
+    EXPECT_FALSE(first.has("r_inner_mm"));
+    EXPECT_TRUE(isSymptom("device_mu") && isSymptom("device_r_outer_mm"));
+
+    RankingOptions ro;
+    ro.folds = 5;
+    ro.seed = 11;
+    const LoopSummary s = runJournalLoop((dir / "journal").string(), (dir / "reference.csv").string(),
+                                         (dir / "report").string(), "paper", ro, kSweep);
+    EXPECT_GE(s.usable, count - 4) << "most frames re-measured";
+    ASSERT_FALSE(s.ranking.empty());
+    EXPECT_EQ(s.ranking.front().name, "lens");
+    ASSERT_EQ(s.chosen, "lens");
+    EXPECT_EQ(s.reading, "scale");
+    EXPECT_LT(s.cvRmsAfter, 0.7 * s.rmsBefore) << s.rmsBefore << " -> " << s.cvRmsAfter;
+    for (const GroupFit &g : s.grouping.groups) {
+        std::printf("journal: lens %s factor %.4f +- %.4f (k=2)\n", g.level.c_str(), g.value, 2 * g.sigma);
+        EXPECT_NEAR(g.value, g.level == "L25" ? 1.08 : 1.0, 2 * g.sigma) << g.level;
+    }
+    std::string report;
+    {
+        std::ifstream f(dir / "report" / "report.md");
+        report.assign(std::istreambuf_iterator<char>(f), {});
+    }
+    EXPECT_NE(report.find("Journal: `"), std::string::npos);
+    EXPECT_NE(report.find("damaged"), std::string::npos);
+    fs::remove_all(dir);
+}
+
+TEST(LoopJournal, CrcIsTheJournalsCrc32)
+{
+    // The IEEE CRC-32 check value.
+    EXPECT_EQ(journalCrc32("123456789"), 0xCBF43926u);
+}
