@@ -6,18 +6,18 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <iterator>
-#include <mutex>
 #include <set>
 #include <sstream>
 #include <stdexcept>
-#include <thread>
 
 #include "fe_aspect.h"
 #include "fe_compare.h"
 #include "fe_fit.h"
 #include "fe_report.h"
 #include "fe_runner.h"
+#include "fe_slurm_script.h"
+#include "fe_sweep.h"
+#include "fe_sweep_csv.h"
 
 namespace icacam::host {
 
@@ -32,6 +32,11 @@ const char *kUsage =
     "  run     [case options] [--out CSV] [--work DIR]       one case: ccx, R_i R_o R_max u force\n"
     "  sweep   --grid 'k=500;n=0.25,0.05;mu=0.05,0.1' [case options] --out CSV [--jobs 1]\n"
     "          resumable: cases already in CSV are skipped; grid keys: k n mu e d0 h0 red elem\n"
+    "          [--executor local|slurm] [--resubmit-failed 1] (the cases whose rows say failed, alone)\n"
+    "          slurm (docs/fe-cluster.md): one job array, a case per task, results in <CSV>.slurm/:\n"
+    "          [--partition P] [--time 30:00] [--cpus-per-task 1] [--sbatch '--account=x --mem=2G']\n"
+    "          [--setup 'module load calculix'] [--slurm-config FILE (key = value, the same keys)]\n"
+    "          [--slurm-dir DIR] [--icacam PATH] [--array-limit N] [--poll 15] [--cancel 1]\n"
     "  fit     --in CSV [--in CSV2] --out vision/model/fe_model_table.h [--reduction 0.5]\n"
     "  report  --in CSV --out DIR                             Table 1 / Fig. 3 comparison\n"
     "  aspect  --in ASPECT.csv --in BASE.csv --out vision/model/aspect_table.h   u(H0/D0)/u(1.5) table\n"
@@ -58,6 +63,7 @@ struct Parsed {
     std::string edge = "interp";   // compare: which contact edge (interp | track)
     bool acrossMaterial = false;   // compare: match regardless of K and E
     int jobs = 1;
+    SweepOptions sweep;            // sweep: executor, Slurm settings
 };
 
 double toDouble(const std::string &key, const std::string &v)
@@ -121,60 +127,12 @@ Parsed parse(const std::vector<std::string> &args, size_t from)
             if (v != "interp" && v != "track") throw std::runtime_error("--edge: interp or track, not '" + v + "'");
             p.edge = v;
         }
+        else if (setSweepOption(p.sweep, key, v)) {}
         else if (!setCaseKey(p.c, key, toDouble(key, v)))
             throw std::runtime_error("unknown option '" + a + "'\n" + kUsage);
     }
     if (p.reduction <= 0) p.reduction = p.c.reductionMax;
     return p;
-}
-
-std::set<std::string> casesIn(const std::string &csv)
-{
-    std::set<std::string> s;
-    std::ifstream f(csv);
-    std::string line;
-    std::getline(f, line);
-    while (std::getline(f, line))
-        if (!line.empty()) s.insert(line.substr(0, line.find(',')));
-    return s;
-}
-
-void appendRows(const std::string &csv, const std::vector<std::string> &rows)
-{
-    const bool fresh = !fs::exists(csv) || fs::file_size(csv) == 0;
-    if (fs::path(csv).has_parent_path()) fs::create_directories(fs::path(csv).parent_path());
-    if (!fresh) {
-        // A file from before columns were added (they only ever are, at the end): extend its
-        // header so the new rows' columns have names; its old rows simply lack them.
-        std::ifstream in(csv);
-        std::string head;
-        std::getline(in, head);
-        const std::string now = csvHeader();
-        if (head != now && now.compare(0, head.size(), head) == 0 && now[head.size()] == ',') {
-            std::string rest((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-            in.close();
-            std::ofstream rewrite(csv, std::ios::trunc);
-            rewrite << now << "\n" << rest;
-            if (!rewrite) throw std::runtime_error("cannot write " + csv);
-        } else if (head != now)
-            throw std::runtime_error(csv + ": its header is not this version's (nor a prefix of it); write to a new file");
-    }
-    std::ofstream f(csv, std::ios::app);
-    if (fresh) f << csvHeader() << "\n";
-    for (const auto &r : rows) f << r << "\n";
-    if (!f) throw std::runtime_error("cannot write " + csv);
-}
-
-void printResult(const FeCase &c, const RunResult &r)
-{
-    std::cout << c.label() << ": " << r.status << " in " << r.wallS << " s" << (r.message.empty() ? "" : " (" + r.message + ")") << "\n";
-    for (const Radii &x : r.radii) {
-        double f = 0;
-        for (const auto &p : r.force) if (std::fabs(p.time - x.reduction) < 1e-6) f = p.fy;
-        std::printf("  reduction %.3f  R_i %.4f  R_o %.4f  R_max %.4f  u %.4f (interp %.4f, tracked %.4f)  F %.2f kN\n",
-                    x.reduction, x.riMm, x.roMm, x.rMaxMm, x.uMm(), x.uInterpMm(), x.uTrackMm(), f);
-    }
-    std::fflush(stdout);
 }
 
 // "k=500;n=0.25,0.05;mu=0.05,0.1" → the cases, the first key outermost.
@@ -208,39 +166,18 @@ int sweep(const Parsed &p)
 {
     if (p.out.empty() || p.grid.empty()) throw std::runtime_error("sweep needs --grid and --out");
     const auto cases = expandGrid(p.c, p.grid);
-    const auto done = casesIn(p.out);
-    std::vector<FeCase> todo;
-    size_t unsolved = 0;
-    for (const FeCase &c : cases) {
-        if (done.count(c.label())) continue;
-        if (p.run.reuseOnly && !hasReusableResults(c, p.run)) { ++unsolved; continue; }
-        todo.push_back(c);
-    }
-    std::cout << "sweep: " << cases.size() << " cases, " << cases.size() - todo.size() - unsolved << " already in "
-              << p.out << ", " << todo.size() << " to run";
-    if (p.run.reuseOnly) std::cout << " (post-processing only; " << unsolved << " without results left out)";
-    std::cout << "\n";
-    std::mutex m;
-    size_t next = 0;
-    auto worker = [&] {
-        for (;;) {
-            FeCase c;
-            {
-                std::lock_guard<std::mutex> l(m);
-                if (next >= todo.size()) return;
-                c = todo[next++];
-            }
-            RunResult r;
-            try { r = runCase(c, p.run); } catch (const std::exception &e) { r.status = "error"; r.message = e.what(); }
-            std::lock_guard<std::mutex> l(m);
-            printResult(c, r);
-            appendRows(p.out, csvRows(c, r));
+    // A case leaves this process as `icacam fe run` options (Slurm tasks): they must make
+    // the same case again.
+    if (p.sweep.executor != "local")
+        for (const FeCase &c : cases) {
+            std::vector<std::string> args{"run"};
+            for (const auto &a : caseOptions(c)) args.push_back(a);
+            if (parse(args, 1).c.label() != c.label())
+                throw std::runtime_error("sweep: case " + c.label() + " does not survive its own options");
         }
-    };
-    std::vector<std::thread> threads;
-    for (int j = 0; j < p.jobs; ++j) threads.emplace_back(worker);
-    for (auto &t : threads) t.join();
-    return 0;
+    SweepOptions o = p.sweep;
+    o.jobs = p.jobs;
+    return runSweep(cases, p.out, p.run, o);
 }
 
 } // namespace
@@ -254,7 +191,7 @@ int feCommand(const std::vector<std::string> &args)
     if (sub == "run") {
         FeCase c = p.c;
         const RunResult r = runCase(c, p.run);
-        printResult(c, r);
+        printRunResult(c, r);
         if (!p.out.empty()) appendRows(p.out, csvRows(c, r));
         return r.status == "ok" ? 0 : 1;
     }

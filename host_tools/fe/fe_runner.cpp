@@ -178,6 +178,19 @@ RunResult runOnce(FeCase c, const RunOptions &o)
     return res;
 }
 
+void printRunResult(const FeCase &c, const RunResult &r)
+{
+    std::printf("%s: %s in %g s%s\n", c.label().c_str(), r.status.c_str(), r.wallS,
+                r.message.empty() ? "" : (" (" + r.message + ")").c_str());
+    for (const Radii &x : r.radii) {
+        double f = 0;
+        for (const auto &p : r.force) if (std::fabs(p.time - x.reduction) < 1e-6) f = p.fy;
+        std::printf("  reduction %.3f  R_i %.4f  R_o %.4f  R_max %.4f  u %.4f (interp %.4f, tracked %.4f)  F %.2f kN\n",
+                    x.reduction, x.riMm, x.roMm, x.rMaxMm, x.uMm(), x.uInterpMm(), x.uTrackMm(), f);
+    }
+    std::fflush(stdout);
+}
+
 std::string csvHeader()
 {
     return "case,status,k_mpa,n,mu,e_mpa,nu,d0_mm,h0_mm,reduction_max,reduction,elem_mm,corner_mm,element,"

@@ -42,6 +42,9 @@ RunResult runCase(FeCase &c, const RunOptions &o);
 // True when the work directory holds results of c's deck that `reuse` would post-process.
 bool hasReusableResults(const FeCase &c, const RunOptions &o);
 
+// The result on stdout: status, wall time, message and one line per snapshot.
+void printRunResult(const FeCase &c, const RunResult &r);
+
 // The CSV header and rows of a result (one row per snapshot).
 std::string csvHeader();
 std::vector<std::string> csvRows(const FeCase &c, const RunResult &r);
