@@ -26,16 +26,37 @@ bool setSweepOption(SweepOptions &o, const std::string &key, const std::string &
 }
 
 namespace {
-// The grid's cases whose rows in csv say they did not solve, with what the solver said.
-std::map<std::string, CaseStatus> failedCases(const std::vector<FeCase> &cases, const std::string &csv)
+// The labels a case's rows may carry: its own, or after the runner's retry with the fallback
+// stick slope (which enters the label) the retried case's.
+std::vector<std::string> rowLabels(const FeCase &c, const RunOptions &run)
+{
+    std::vector<std::string> l{c.label()};
+    if (run.fallbackStickSlope > 0 && run.fallbackStickSlope < c.stickSlope) {
+        FeCase retried = c;
+        retried.stickSlope = run.fallbackStickSlope;
+        l.push_back(retried.label());
+    }
+    return l;
+}
+
+// The grid's cases whose rows in csv say they did not solve: row label → what the solver said.
+std::map<std::string, CaseStatus> failedCases(const std::vector<FeCase> &cases, const std::string &csv, const RunOptions &run)
 {
     const auto st = caseStatuses(csv);
     std::map<std::string, CaseStatus> failed;
-    for (const FeCase &c : cases) {
-        const auto it = st.find(c.label());
-        if (it != st.end() && it->second.status != "ok") failed[c.label()] = it->second;
-    }
+    for (const FeCase &c : cases)
+        for (const std::string &label : rowLabels(c, run)) {
+            const auto it = st.find(label);
+            if (it != st.end() && it->second.status != "ok") failed[label] = it->second;
+        }
     return failed;
+}
+
+bool hasRows(const FeCase &c, const RunOptions &run, const std::set<std::string> &done)
+{
+    for (const std::string &label : rowLabels(c, run))
+        if (done.count(label)) return true;
+    return false;
 }
 } // namespace
 
@@ -61,18 +82,18 @@ int runSweep(const std::vector<FeCase> &cases, const std::string &out, const Run
     }
     if (o.resubmitFailed) {
         std::set<std::string> again;
-        for (const auto &[label, st] : failedCases(cases, out)) again.insert(label);
+        for (const auto &[label, st] : failedCases(cases, out, run)) again.insert(label);
         dropCases(out, again);
         if (slurm)
             for (const FeCase &c : cases)
-                if (again.count(c.label())) slurm->forget(c);
+                if (hasRows(c, run, again)) slurm->forget(c);
         std::cout << "sweep: " << again.size() << " failed cases taken out of " << out << " to run again\n";
     }
     const auto done = casesIn(out);
     std::vector<FeCase> todo;
     size_t unsolved = 0;
     for (const FeCase &c : cases) {
-        if (done.count(c.label())) continue;
+        if (hasRows(c, run, done)) continue;
         if (run.reuseOnly && !hasReusableResults(c, run)) { ++unsolved; continue; }
         todo.push_back(c);
     }
@@ -82,7 +103,7 @@ int runSweep(const std::vector<FeCase> &cases, const std::string &out, const Run
     std::cout << "\n";
     const size_t lost = executor->solve(todo, [&](const SolvedCase &s) { appendRows(out, s.rows); });
     if (slurm) {
-        const auto failed = failedCases(cases, out);
+        const auto failed = failedCases(cases, out, run);
         for (const auto &[label, st] : failed)
             std::cout << "failed: " << label << ": " << st.status << (st.message.empty() ? "" : ": " + st.message) << "\n";
         if (!failed.empty())
