@@ -24,19 +24,28 @@ namespace {
 const char *kUsage =
     "usage: icacam calibrate --images DIR --board chessboard:COLSxROWS:SQUARE_MM\n"
     "                        --flat PHOTO --out FILE [--board-thickness MM]\n"
-    "                        [--max-blur PX] [--free-k3]\n"
+    "                        [--max-rms PX] [--max-blur PX] [--free-k3]\n"
     "  --images DIR   photos of the board in different poses (png/jpg/tif/bmp/pgm)\n"
     "  --board        chessboard:COLSxROWS:SQUARE_MM (inner corners, square side) or\n"
     "                 circles:COLSxROWS:SPACING_MM (symmetric grid of dark dots)\n"
     "  --flat PHOTO   the photo with the board lying flat on the fixture (path, or a name\n"
     "                 in DIR): gives the fixture plane's pose\n"
     "  --board-thickness MM  the board's surface above the fixture (default 0)\n"
-    "  --max-blur PX  refuse views whose board edges (squares or dots) are wider than this\n"
-    "                 (default 3)\n"
+    "  --max-rms PX   refuse a calibration whose RMS reprojection error is above this\n"
+    "                 (default 0.5: the corners are not found to the accuracy a scale needs)\n"
+    "  --max-blur PX  also refuse views whose board edges (squares or dots) are wider than\n"
+    "                 this (default: no limit; views are judged by their reprojection error)\n"
     "  --free-k3      also fit k3 (default: fixed at 0, ill-determined in a narrow field)\n"
-    "Needs at least 5 usable views. See docs/calibration.md.\n";
+    "Needs at least 5 usable views. A view whose corners do not fit the calibration (its\n"
+    "reprojection error 4 times the median view's and above 0.3 px: the board moved, bent\n"
+    "or was misdetected) is dropped with a message. See docs/calibration.md.\n";
 
 constexpr int kMinViews = 5;
+// A view stands out when its RMS reprojection error exceeds both of these: the factor over
+// the median view's keeps a uniformly soft set (every view a little worse, all consistent),
+// the floor keeps sharp sets' ordinary spread (0.02–0.1 px) from dropping good views.
+constexpr double kDropFactor = 4.0;
+constexpr double kDropFloorPx = 0.3;
 
 struct Board {
     bool circles = false;
@@ -125,7 +134,7 @@ std::string detect(const cv::Mat &gray, const Board &b, double maxBlur, std::vec
             return "circle grid not found (blurred, cut off, or not " + std::to_string(b.size.width) + "x" +
                    std::to_string(b.size.height) + " dots?)";
         *blur = circleGridEdgeWidth(gray, b.size, *pts);
-        if (!(*blur <= maxBlur)) {
+        if (maxBlur > 0 && !(*blur <= maxBlur)) {
             char msg[120];
             std::snprintf(msg, sizeof msg, "blurred (dot edge width %.1f px > %.1f px)", *blur, maxBlur);
             return msg;
@@ -140,7 +149,7 @@ std::string detect(const cv::Mat &gray, const Board &b, double maxBlur, std::vec
     // moves corners by more than its scatter shows.
     const cv::Scalar sharp = cv::estimateChessboardSharpness(gray, b.size, *pts);
     *blur = sharp[0];
-    if (!(sharp[0] <= maxBlur)) {
+    if (maxBlur > 0 && !(sharp[0] <= maxBlur)) {
         char msg[120];
         std::snprintf(msg, sizeof msg, "blurred (edge width %.1f px > %.1f px)", sharp[0], maxBlur);
         return msg;
@@ -164,7 +173,7 @@ bool isImage(const fs::path &p)
 int calibrateCommand(const std::vector<std::string> &args)
 {
     std::string dir, boardSpec, flat, outPath;
-    double thickness = 0, maxBlur = 3.0;
+    double thickness = 0, maxBlur = 0, maxRms = 0.5;
     bool freeK3 = false;
     for (size_t i = 0; i < args.size(); ++i) {
         auto value = [&]() -> std::string {
@@ -181,6 +190,7 @@ int calibrateCommand(const std::vector<std::string> &args)
         else if (args[i] == "--out") outPath = value();
         else if (args[i] == "--board-thickness") number(&thickness);
         else if (args[i] == "--max-blur") number(&maxBlur);
+        else if (args[i] == "--max-rms") number(&maxRms);
         else if (args[i] == "--free-k3") freeK3 = true;
         else if (args[i] == "-h" || args[i] == "--help") { std::cout << kUsage; return 0; }
         else throw std::runtime_error("unknown option '" + args[i] + "'\n" + kUsage);
@@ -219,19 +229,75 @@ int calibrateCommand(const std::vector<std::string> &args)
         imagePts.push_back(pts);
         used.push_back(p.filename().string());
     }
-    if (!rejected.str().empty()) std::cerr << "icacam calibrate: views not used:\n" << rejected.str();
-    if (int(used.size()) < kMinViews)
+    if (int(used.size()) < kMinViews) {
+        if (!rejected.str().empty()) std::cerr << "icacam calibrate: views not used:\n" << rejected.str();
         throw std::runtime_error("only " + std::to_string(used.size()) + " usable view" +
                                  (used.size() == 1 ? "" : "s") + " of " + std::to_string(files.size()) +
                                  " in '" + dir + "': a calibration needs at least " +
                                  std::to_string(kMinViews) +
-                                 " sharp views of the whole board in different tilts");
+                                 " views of the whole board in different tilts");
+    }
 
+    // Calibrate, then drop the view that stands out (if any) and calibrate again: a view is
+    // judged by what it does to the calibration, not by how sharp it looks.
     cv::Mat K, D;
     std::vector<cv::Mat> rvecs, tvecs;
+    std::vector<double> perView;
     const int flags = freeK3 ? 0 : cv::CALIB_FIX_K3;
-    const double rms = cv::calibrateCamera(objectPts, imagePts, imageSize, K, D, rvecs, tvecs, flags,
-                                           cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, 100, 1e-12));
+    double rms = 0, medianView = 0;
+    for (;;) {
+        cv::Mat stdIntr, stdExtr, errs;
+        rms = cv::calibrateCamera(objectPts, imagePts, imageSize, K, D, rvecs, tvecs, stdIntr, stdExtr, errs,
+                                          flags,
+                                          cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, 100, 1e-12));
+        perView.assign(errs.begin<double>(), errs.end<double>());
+        std::vector<double> sorted = perView;
+        std::sort(sorted.begin(), sorted.end());
+        medianView = sorted[sorted.size() / 2];
+        const size_t worst = size_t(std::max_element(perView.begin(), perView.end()) - perView.begin());
+        const bool standsOut = perView[worst] > std::max(kDropFloorPx, kDropFactor * medianView);
+        if (!standsOut) break;
+        char msg[200];
+        if (int(used.size()) <= kMinViews) {
+            std::snprintf(msg, sizeof msg,
+                          "  %s: reprojection error %.2f px against the views' median %.2f px, kept: only %d views\n",
+                          used[worst].c_str(), perView[worst], medianView, kMinViews);
+            rejected << msg;
+            break;
+        }
+        std::snprintf(msg, sizeof msg,
+                      "  %s: dropped: reprojection error %.2f px against the views' median %.2f px (the board "
+                      "moved, bent or was misdetected)\n",
+                      used[worst].c_str(), perView[worst], medianView);
+        rejected << msg;
+        objectPts.erase(objectPts.begin() + long(worst));
+        imagePts.erase(imagePts.begin() + long(worst));
+        used.erase(used.begin() + long(worst));
+    }
+    if (!rejected.str().empty()) std::cerr << "icacam calibrate: views not used:\n" << rejected.str();
+    // Every view alike but none fitting well (very soft or noisy boards): nothing stands out,
+    // and the calibration is still not good enough to write.
+    if (rms > maxRms) {
+        char msg[240];
+        std::snprintf(msg, sizeof msg,
+                      "the %zu views calibrate to an RMS reprojection error of %.2f px (median view %.2f px), above "
+                      "%.2f px: the corners are not found well enough (blurred, noisy or moving boards?); no file written",
+                      used.size(), rms, medianView, maxRms);
+        throw std::runtime_error(msg);
+    }
+    // Coverage of the field: distortion is fitted where corners are and extrapolated elsewhere.
+    constexpr int kCellsX = 8, kCellsY = 6;
+    bool cell[kCellsY][kCellsX] = {};
+    for (const auto &view : imagePts)
+        for (const cv::Point2f &q : view) {
+            const int cx = std::clamp(int(q.x * kCellsX / float(imageSize.width)), 0, kCellsX - 1);
+            const int cy = std::clamp(int(q.y * kCellsY / float(imageSize.height)), 0, kCellsY - 1);
+            cell[cy][cx] = true;
+        }
+    int covered = 0;
+    for (const auto &row : cell)
+        for (bool c : row) covered += c;
+    const double coverage = double(covered) / (kCellsX * kCellsY);
 
     // The flat view: the fixture plane's pose with the intrinsics just found.
     LumaImage flatImg;
@@ -251,6 +317,15 @@ int calibrateCommand(const std::vector<std::string> &args)
     double flatErr = 0;
     for (size_t i = 0; i < obj.size(); ++i) flatErr += std::pow(cv::norm(reproj[i] - flatPts[i]), 2);
     flatErr = std::sqrt(flatErr / double(obj.size()));
+    // The flat view gives the plane every measurement uses: it must fit like a good view.
+    if (flatErr > std::max(kDropFloorPx, kDropFactor * medianView)) {
+        char msg[200];
+        std::snprintf(msg, sizeof msg,
+                      "--flat '%s': its corners do not fit the calibration (reprojection error %.2f px against the "
+                      "views' median %.2f px): retake it",
+                      flatPath.string().c_str(), flatErr, medianView);
+        throw std::runtime_error(msg);
+    }
 
     calibration::CalibrationFile c;
     vision::PlaneCalibration &p = c.plane;
@@ -275,8 +350,10 @@ int calibrateCommand(const std::vector<std::string> &args)
     if (std::string e = calibration::writeCalibrationFile(outPath, c); !e.empty()) throw std::runtime_error(e);
 
     const double tiltDeg = std::acos(std::min(1.0, std::fabs(normal[2]))) * 180 / M_PI;
-    std::printf("icacam calibrate: %d views of %zu, RMS reprojection error %.3f px%s\n", c.views,
-                files.size(), rms, rms > 0.5 ? " (high: check the views)" : "");
+    std::printf("icacam calibrate: %d views of %zu, RMS reprojection error %.3f px\n", c.views, files.size(), rms);
+    std::printf("  per-view reprojection error: median %.3f px, largest %.3f px; corners cover %.0f %% of the frame%s\n",
+                medianView, *std::max_element(perView.begin(), perView.end()), 100 * coverage,
+                coverage < 0.3 ? " (low: distortion is extrapolated beyond them; add views near the frame's edges)" : "");
     std::printf("  fx %.2f  fy %.2f  cx %.2f  cy %.2f\n", p.fx, p.fy, p.cx, p.cy);
     std::printf("  distortion k1 %.5f  k2 %.5f  p1 %.6f  p2 %.6f  k3 %.5f\n", p.k1, p.k2, p.p1, p.p2, p.k3);
     std::printf("  fixture: %.2f mm from the camera along the axis, tilted %.2f deg; flat view RMS %.3f px\n",

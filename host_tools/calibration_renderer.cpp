@@ -149,6 +149,33 @@ cv::Mat BoardPhotoRenderer::chessboard(const ChessboardSpec &b, const cv::Vec3d 
     return out;
 }
 
+cv::Mat BoardPhotoRenderer::movingChessboard(const ChessboardSpec &b, const cv::Vec3d &rvec0, const cv::Vec3d &tvec0,
+                                             const cv::Vec3d &rvec1, const cv::Vec3d &tvec1, double blurPx,
+                                             double noise, uint32_t seed) const
+{
+    // Sharp frames at poses along the path, blended row by row at each row's exposure time.
+    constexpr int kSteps = 8;
+    std::vector<cv::Mat> frames;
+    for (int k = 0; k <= kSteps; ++k) {
+        const double a = double(k) / kSteps;
+        cv::Mat f;
+        chessboard(b, (1 - a) * rvec0 + a * rvec1, (1 - a) * tvec0 + a * tvec1, 0, 0, 0).convertTo(f, CV_64F);
+        frames.push_back(f);
+    }
+    cv::Mat f(cam_.height, cam_.width, CV_64F);
+    for (int y = 0; y < cam_.height; ++y) {
+        const double tau = double(y) / std::max(1, cam_.height - 1) * kSteps;
+        const int k = std::min(kSteps - 1, int(tau));
+        const double w = tau - k;
+        cv::Mat row = f.row(y);
+        cv::addWeighted(frames[size_t(k)].row(y), 1 - w, frames[size_t(k) + 1].row(y), w, 0, row);
+    }
+    addNoise(f, blurPx, noise, seed);
+    cv::Mat out;
+    f.convertTo(out, CV_8U);
+    return out;
+}
+
 cv::Mat BoardPhotoRenderer::circleGrid(const CircleGridSpec &g, const cv::Vec3d &rvec, const cv::Vec3d &tvec,
                                        double blurPx, double noise, uint32_t seed) const
 {
@@ -243,6 +270,120 @@ cv::Mat BoardPhotoRenderer::endFace(const EndFaceScene &scene, double xMm, doubl
     return out;
 }
 
+CameraModel tiltedCamera(int width, int height, double fPx, double cxPx, double cyPx, double k1, double tiltDeg,
+                         double azimuthDeg, double fixtureDistanceMm)
+{
+    CameraModel c;
+    c.width = width, c.height = height;
+    c.fx = c.fy = fPx, c.cx = cxPx, c.cy = cyPx;
+    c.k1 = k1, c.k2 = 0, c.p1 = c.p2 = c.k3 = 0;
+    const double t = tiltDeg * kDeg, a = azimuthDeg * kDeg;
+    c.fixtureRvec = {t * std::cos(a), t * std::sin(a), 0};
+    c.fixtureTvec = {0, 0, fixtureDistanceMm};
+    return c;
+}
+
+namespace {
+// +1 when the camera is on the fixture's +z side: the plane h above the fixture is z = up·h.
+double upSign(const cv::Matx33d &R, const cv::Vec3d &t) { return -(R.t() * t)[2] >= 0 ? 1.0 : -1.0; }
+} // namespace
+
+cv::Point2d axisOnPlane(const CameraModel &cam, double heightMm)
+{
+    const cv::Matx33d R = rotation(cam.fixtureRvec);
+    const cv::Vec3d b = R.t() * cam.fixtureTvec, a = R.t() * cv::Vec3d(0, 0, 1);
+    const double lambda = (upSign(R, cam.fixtureTvec) * heightMm + b[2]) / a[2];
+    return {lambda * a[0] - b[0], lambda * a[1] - b[1]};
+}
+
+cv::Point2d projectFromPlane(const CameraModel &cam, double xMm, double yMm, double heightMm)
+{
+    const cv::Matx33d R = rotation(cam.fixtureRvec);
+    const cv::Matx33d K(cam.fx, 0, cam.cx, 0, cam.fy, cam.cy, 0, 0, 1);
+    const std::vector<double> D{cam.k1, cam.k2, cam.p1, cam.p2, cam.k3};
+    const std::vector<cv::Point3d> p{{xMm, yMm, upSign(R, cam.fixtureTvec) * heightMm}};
+    std::vector<cv::Point2d> img;
+    cv::projectPoints(p, cam.fixtureRvec, cam.fixtureTvec, K, D, img);
+    return img[0];
+}
+
+double planeScaleAtPoint(const CameraModel &cam, double xMm, double yMm, double heightMm)
+{
+    const double d = 0.05;
+    const cv::Point2d o = projectFromPlane(cam, xMm, yMm, heightMm);
+    const cv::Point2d ex = projectFromPlane(cam, xMm + d, yMm, heightMm) - o;
+    const cv::Point2d ey = projectFromPlane(cam, xMm, yMm + d, heightMm) - o;
+    return d / std::sqrt(std::fabs(ex.x * ey.y - ex.y * ey.x));
+}
+
+cv::Mat renderEndFaceThrough(const CameraModel &cam, const EndFaceScene &scene, double xMm, double yMm,
+                             double heightMm)
+{
+    constexpr int kStep = 8;
+    const int gw = cam.width / kStep + 2, gh = cam.height / kStep + 2;
+    std::vector<cv::Point2d> grid, und;
+    grid.reserve(size_t(gw) * size_t(gh));
+    for (int j = 0; j < gh; ++j)
+        for (int i = 0; i < gw; ++i) grid.emplace_back(i * kStep, j * kStep);
+    const cv::Matx33d K(cam.fx, 0, cam.cx, 0, cam.fy, cam.cy, 0, 0, 1);
+    const std::vector<double> D{cam.k1, cam.k2, cam.p1, cam.p2, cam.k3};
+    cv::undistortPoints(grid, und, K, D, cv::noArray(), cv::noArray(),
+                        cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, 50, 1e-14));
+    const cv::Matx33d R = rotation(cam.fixtureRvec), Rt = R.t();
+    const cv::Vec3d b = Rt * cam.fixtureTvec;
+    const double up = upSign(R, cam.fixtureTvec);
+    // Per grid point, the offset from the specimen's axis in the top plane and at half height.
+    std::vector<cv::Vec4d> offsets(grid.size());
+    for (size_t k = 0; k < grid.size(); ++k) {
+        const cv::Vec3d a = Rt * cv::Vec3d(und[k].x, und[k].y, 1);
+        const double l1 = (up * heightMm + b[2]) / a[2], l2 = (up * heightMm / 2 + b[2]) / a[2];
+        offsets[k] = {l1 * a[0] - b[0] - xMm, l1 * a[1] - b[1] - yMm, l2 * a[0] - b[0] - xMm, l2 * a[1] - b[1] - yMm};
+    }
+    // The texture: the end face drawn flat, a little finer than the camera sees it there.
+    EndFaceScene tex = scene;
+    tex.mmPerPx = 0.7 * planeScaleAtPoint(cam, xMm, yMm, heightMm);
+    const int half = int(std::ceil((scene.rMaxMm + 1.0) / tex.mmPerPx));
+    tex.width = tex.height = 2 * half + 1;
+    tex.cxPx = tex.cyPx = half;
+    tex.blurSigmaPx = 0, tex.noiseSigma = 0, tex.jpegQuality = 0;
+    tex.gradient = tex.vignetting = 0; // applied in the camera's frame below
+    tex.distractor = false;
+    cv::Mat texture;
+    renderEndFace(tex).convertTo(texture, CV_32F);
+
+    cv::Mat mapX(cam.height, cam.width, CV_32F), mapY(cam.height, cam.width, CV_32F);
+    const double split = 0.5 * (scene.rOuterMm + scene.rMaxMm);
+    for (int y = 0; y < cam.height; ++y) {
+        const int j = y / kStep;
+        const double fy = double(y - j * kStep) / kStep;
+        float *mx = mapX.ptr<float>(y), *my = mapY.ptr<float>(y);
+        for (int x = 0; x < cam.width; ++x) {
+            const int i = x / kStep;
+            const double fx = double(x - i * kStep) / kStep;
+            const size_t k00 = size_t(j) * size_t(gw) + size_t(i);
+            const cv::Vec4d o = (1 - fy) * ((1 - fx) * offsets[k00] + fx * offsets[k00 + 1]) +
+                                fy * ((1 - fx) * offsets[k00 + size_t(gw)] + fx * offsets[k00 + size_t(gw) + 1]);
+            const bool top = std::hypot(o[0], o[1]) <= split;
+            mx[x] = float(half + (top ? o[0] : o[2]) / tex.mmPerPx);
+            my[x] = float(half + (top ? o[1] : o[3]) / tex.mmPerPx);
+        }
+    }
+    cv::Mat f;
+    cv::remap(texture, f, mapX, mapY, cv::INTER_LINEAR, cv::BORDER_CONSTANT, cv::Scalar(scene.background));
+    std::mt19937 rng(scene.seed ^ 0x5bd1e995u);
+    applyIllumination(f, scene.gradient, scene.vignetting, std::uniform_real_distribution<double>(0, 2 * M_PI)(rng));
+    if (scene.blurSigmaPx > 0) cv::GaussianBlur(f, f, {0, 0}, scene.blurSigmaPx);
+    if (scene.noiseSigma > 0) {
+        cv::Mat n(f.size(), CV_32F);
+        cv::RNG noise(scene.seed);
+        noise.fill(n, cv::RNG::NORMAL, 0, scene.noiseSigma);
+        f += n;
+    }
+    cv::Mat out;
+    f.convertTo(out, CV_8U);
+    return out;
+}
+
 std::vector<std::pair<cv::Vec3d, cv::Vec3d>> calibrationPoses(const CameraModel &cam,
                                                               const ChessboardSpec &b, int count,
                                                               uint32_t seed)
@@ -261,7 +402,9 @@ std::vector<std::pair<cv::Vec3d, cv::Vec3d>> calibrationPoses(const CameraModel 
         const double dir = U(0, 2 * M_PI), tilt = (poses.size() < 2 ? U(0, 6) : U(10, 28)) * kDeg;
         const cv::Matx33d R = rotation({tilt * std::cos(dir), tilt * std::sin(dir), 0}) *
                               rotation({0, 0, U(-15, 15) * kDeg});
-        const cv::Vec3d pos(U(-2.5, 2.5), U(-2, 2), U(52, 66));
+        // Positions drawn for a 62 mm camera and scaled to this one's distance.
+        const double k = std::fabs(cam.fixtureTvec[2]) / 62;
+        const cv::Vec3d pos(U(-2.5, 2.5) * k, U(-2, 2) * k, U(52, 66) * k);
         const cv::Vec3d t = pos - R * centre;
         cv::Vec3d rvec;
         cv::Rodrigues(R, rvec);

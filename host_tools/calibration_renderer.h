@@ -55,6 +55,12 @@ public:
     // then Gaussian blur (σ px) and sensor noise (σ grey levels).
     cv::Mat chessboard(const ChessboardSpec &b, const cv::Vec3d &rvec, const cv::Vec3d &tvec,
                        double blurPx, double noise, uint32_t seed) const;
+    // The chessboard moving during a rolling-shutter exposure: row y is exposed at time
+    // y / height along the straight path from pose 0 to pose 1. Its corners fit no single
+    // pose: a genuinely bad calibration view (the board was still being put down).
+    cv::Mat movingChessboard(const ChessboardSpec &b, const cv::Vec3d &rvec0, const cv::Vec3d &tvec0,
+                             const cv::Vec3d &rvec1, const cv::Vec3d &tvec1, double blurPx, double noise,
+                             uint32_t seed) const;
     // A circle grid at the pose, likewise.
     cv::Mat circleGrid(const CircleGridSpec &g, const cv::Vec3d &rvec, const cv::Vec3d &tvec,
                        double blurPx, double noise, uint32_t seed) const;
@@ -78,8 +84,33 @@ private:
     cv::Mat rays_; // CV_64FC2: undistorted normalized coordinates per pixel
 };
 
+// A camera looking down at the fixture from fixtureDistanceMm (along its axis), its axis
+// tilted tiltDeg from the fixture's normal towards azimuthDeg (in the fixture plane), focal
+// length fPx, principal point (cxPx, cyPx), radial distortion k1 (barrel when negative).
+CameraModel tiltedCamera(int width, int height, double fPx, double cxPx, double cyPx, double k1, double tiltDeg,
+                         double azimuthDeg, double fixtureDistanceMm);
+
+// Where the camera's axis meets the plane heightMm above the fixture (fixture mm).
+cv::Point2d axisOnPlane(const CameraModel &cam, double heightMm);
+
+// The image of the point (xMm, yMm) of the plane heightMm above the fixture (pixels).
+cv::Point2d projectFromPlane(const CameraModel &cam, double xMm, double yMm, double heightMm);
+
+// The mean scale there (mm per pixel, the square root of the area ratio, lens included):
+// the one number a lab would declare for an object lying there.
+double planeScaleAtPoint(const CameraModel &cam, double xMm, double yMm, double heightMm);
+
+// The end face of `scene`, as BoardPhotoRenderer::endFace draws it (top in the plane at
+// heightMm, the silhouette at half that height), through any camera without building the
+// per-pixel ray table: the pixel-to-plane maps are computed on an 8 px grid and interpolated
+// (smooth maps: under 0.01 px for the lenses rendered here), so a new camera per scene stays
+// cheap. The scene's illumination, blur and noise are applied in the camera's frame.
+cv::Mat renderEndFaceThrough(const CameraModel &cam, const EndFaceScene &scene, double xMm, double yMm,
+                             double heightMm);
+
 // A set of board poses for calibration: tilts up to ±25° in several directions at
-// distances around the fixture's, the board kept in the frame.
+// distances around the fixture's (0.84–1.06 × the camera's distance to the fixture, its
+// translation's z), the board kept in the frame.
 std::vector<std::pair<cv::Vec3d, cv::Vec3d>> calibrationPoses(const CameraModel &cam,
                                                               const ChessboardSpec &b, int count,
                                                               uint32_t seed);

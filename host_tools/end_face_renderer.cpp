@@ -78,6 +78,20 @@ EndFaceScene randomScene(std::mt19937 &rng, double uMm, double rOuterMm, double 
     return s;
 }
 
+void applyIllumination(cv::Mat &f, double gradient, double vignetting, double angle)
+{
+    const double diag = std::hypot(f.cols / 2.0, f.rows / 2.0);
+    for (int y = 0; y < f.rows; ++y) {
+        float *row = f.ptr<float>(y);
+        for (int x = 0; x < f.cols; ++x) {
+            const double X = x - f.cols / 2.0, Y = y - f.rows / 2.0;
+            const double g = 1 + gradient * (X * std::cos(angle) + Y * std::sin(angle)) / diag;
+            const double vg = 1 - vignetting * (X * X + Y * Y) / (diag * diag);
+            row[x] = float(row[x] * g * vg);
+        }
+    }
+}
+
 cv::Mat renderEndFace(const EndFaceScene &s)
 {
     std::mt19937 rng(s.seed);
@@ -115,13 +129,22 @@ cv::Mat renderEndFace(const EndFaceScene &s)
         }
     }
     // Stains and lubricant blotches: soft dark or bright spots on the end face.
+    // Each spot is blurred in its own neighbourhood (4 σ beyond its rim, where the Gaussian
+    // kernel ends): the frame-sized blur it replaces cost most of a large texture's render.
     for (int i = 0; i < s.stains; ++i) {
         const double a = U(0, 2 * M_PI), rr = U(0.2, 1.0) * ro;
         const cv::Point c(int(s.cxPx + rr * std::cos(a)), int(s.cyPx + rr * std::sin(a)));
-        cv::Mat spot = cv::Mat::zeros(f.size(), CV_32F);
-        cv::circle(spot, c, int(U(0.02, 0.08) * ro), cv::Scalar(U(-30, 15)), -1, cv::LINE_AA);
-        cv::GaussianBlur(spot, spot, {0, 0}, U(3, 10));
-        f += spot;
+        const double level = U(-30, 15);
+        const int radius = int(U(0.02, 0.08) * ro);
+        const double sigma = U(3, 10);
+        const int reach = radius + int(std::ceil(4 * sigma)) + 3;
+        const cv::Rect box = cv::Rect(c.x - reach, c.y - reach, 2 * reach + 1, 2 * reach + 1) &
+                             cv::Rect(0, 0, f.cols, f.rows);
+        if (box.empty()) continue;
+        cv::Mat spot = cv::Mat::zeros(box.size(), CV_32F);
+        cv::circle(spot, c - box.tl(), radius, cv::Scalar(level), -1, cv::LINE_AA);
+        cv::GaussianBlur(spot, spot, {0, 0}, sigma);
+        f(box) += spot;
     }
     for (int i = 0; i < s.scratches; ++i) {
         const double a = U(0, 2 * M_PI), rr = U(0, 0.8) * ro, len = U(0.1, 0.6) * ro, b = U(0, 2 * M_PI);
@@ -129,17 +152,7 @@ cv::Mat renderEndFace(const EndFaceScene &s)
         const cv::Point q(int(p.x + len * std::cos(b)), int(p.y + len * std::sin(b)));
         cv::line(f, p, q, cv::Scalar(U(-40, 40) + 0), 1, cv::LINE_AA);
     }
-    // Illumination: a linear gradient and radial vignetting about the frame centre.
-    const double diag = std::hypot(s.width / 2.0, s.height / 2.0);
-    for (int y = 0; y < s.height; ++y) {
-        float *row = f.ptr<float>(y);
-        for (int x = 0; x < s.width; ++x) {
-            const double X = x - s.width / 2.0, Y = y - s.height / 2.0;
-            const double g = 1 + s.gradient * (X * std::cos(gAngle) + Y * std::sin(gAngle)) / diag;
-            const double vg = 1 - s.vignetting * (X * X + Y * Y) / (diag * diag);
-            row[x] = float(row[x] * g * vg);
-        }
-    }
+    applyIllumination(f, s.gradient, s.vignetting, gAngle);
     if (s.blurSigmaPx > 0) cv::GaussianBlur(f, f, {0, 0}, s.blurSigmaPx);
     if (s.noiseSigma > 0) {
         cv::Mat n(f.size(), CV_32F);

@@ -46,6 +46,10 @@ EndFaceScene nominalScene(double uMm = 0.6);
 // library must handle. `hard` widens them to the limits.
 EndFaceScene randomScene(std::mt19937 &rng, double uMm, double rOuterMm, double rMaxMm, bool hard);
 
+// Illumination on a CV_32F frame: a linear gradient (fraction across the half-diagonal, in
+// the direction `angle`) and radial vignetting about the frame centre.
+void applyIllumination(cv::Mat &f, double gradient, double vignetting, double angle);
+
 // Renders the scene to an 8-bit grey image (blur, noise and JPEG applied).
 cv::Mat renderEndFace(const EndFaceScene &s);
 

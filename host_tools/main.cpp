@@ -9,6 +9,7 @@
 #include "fe/fe_command.h"
 #include "loop/loop_command.h"
 #include "measure_command.h"
+#include "score_command.h"
 #include "synth_command.h"
 
 namespace {
@@ -17,6 +18,7 @@ const char *kHelp =
     "commands:\n"
     "  measure   measure μ from saved end-face images listed in a manifest\n"
     "  synth     render synthetic end-face images with ground truth\n"
+    "  score     judge measured results against a truth file, per condition\n"
     "  calibrate camera intrinsics, distortion and fixture pose from board photos\n"
     "  fe        CalculiX upsetting runs, sweeps and the μ model built from them\n"
     "  loop      residuals against measured records: rank causes, correct, report\n"
@@ -32,6 +34,7 @@ int main(int argc, char **argv)
     try {
         if (cmd == "measure") return icacam::host::measureCommand(args);
         if (cmd == "synth") return icacam::host::synthCommand(args);
+        if (cmd == "score") return icacam::host::scoreCommand(args);
         if (cmd == "calibrate") return icacam::host::calibrateCommand(args);
         if (cmd == "fe") return icacam::host::feCommand(args);
         if (cmd == "loop") return icacam::host::loopCommand(args);

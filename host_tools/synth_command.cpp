@@ -10,6 +10,7 @@
 
 #include "end_face_renderer.h"
 #include "manifest.h"
+#include "synth_conditions.h"
 #include "synth_loop_set.h"
 #include "vision/model/paper_model.h"
 
@@ -30,7 +31,7 @@ double uForMu(double mu, double n)
 
 int synthCommand(const std::vector<std::string> &args)
 {
-    std::string outDir, effect;
+    std::string outDir, effect, conditions;
     double count = 10, seed = 1;
     bool hard = false, radii = false;
     for (size_t i = 0; i < args.size(); ++i) {
@@ -44,18 +45,24 @@ int synthCommand(const std::vector<std::string> &args)
         else if (args[i] == "--hard") hard = true;
         else if (args[i] == "--effect") effect = value();
         else if (args[i] == "--radii") radii = true;
+        else if (args[i] == "--condition") conditions = value();
         else if (args[i] == "-h" || args[i] == "--help") {
             std::cout << "usage: icacam synth --out DIR [--count N] [--seed S] [--hard]\n"
+                         "       icacam synth --out DIR --condition all|NAME[,NAME...] [--count N] [--seed S] [--hard]\n"
                          "       icacam synth --out DIR --effect process|optical|camera|material|speed|null\n"
                          "                    [--radii] [--count N] [--seed S]\n"
                          "Writes DIR/images/*, DIR/manifest.csv and DIR/truth.csv. With --effect: a record\n"
                          "set for `icacam loop` (mu_ref and recorded columns) carrying that hidden effect,\n"
-                         "as images or (--radii) as measured radii (docs/loop.md).\n";
+                         "as images or (--radii) as measured radii (docs/loop.md). With --condition: N records\n"
+                         "per condition a manifest does not declare (" + conditionNames() + "),\n"
+                         "truth.csv naming the condition and its true parameters; score a measurement with\n"
+                         "`icacam score` (docs/uncertainty.md).\n";
             return 0;
         } else throw std::runtime_error("unknown option '" + args[i] + "'");
     }
     if (outDir.empty()) throw std::runtime_error("--out is required");
     if (radii && effect.empty()) throw std::runtime_error("--radii applies to --effect sets");
+    if (!effect.empty() && !conditions.empty()) throw std::runtime_error("--effect and --condition do not combine");
     if (!effect.empty()) {
         LoopSetOptions opt;
         if (!parseLoopEffect(effect, &opt.effect))
@@ -67,6 +74,18 @@ int synthCommand(const std::vector<std::string> &args)
         const std::string manifest = writeLoopSet(outDir, opt);
         std::cerr << "icacam synth: wrote " << opt.count << " records with the " << effect << " effect: " << manifest
                   << "\n";
+        return 0;
+    }
+    if (!conditions.empty()) {
+        ConditionSetOptions opt;
+        if (!parseConditions(conditions, &opt.conditions))
+            throw std::runtime_error("--condition: all, or a comma-separated list of " + conditionNames());
+        opt.countPerCondition = int(count);
+        opt.seed = uint32_t(seed);
+        opt.hard = hard;
+        const std::string manifest = writeConditionSet(outDir, opt);
+        std::cerr << "icacam synth: wrote " << opt.countPerCondition * int(opt.conditions.size()) << " records ("
+                  << conditions << "): " << manifest << "\n";
         return 0;
     }
     fs::create_directories(fs::path(outDir) / "images");

@@ -1,0 +1,40 @@
+// The uncertainty's bars on rendered sets, one condition per test (PRODUCT.md §7,
+// docs/uncertainty.md "Coverage"): `icacam measure` (default model) on 40 new scenes of a
+// condition the manifest does not declare (30 through the tilted cameras: slower to render); no ok result beyond the tolerance
+// (max(0.01, 5 % of μ)), at least 90 % of the results within 2 σ (σ without the model's own
+// fit error: the truth is the paper's model), and where nothing is undeclared a σ that is
+// neither inflated nor too small: median |Δμ|/σ between 0.3 and 1.
+// Registered always; run only with -DICACAM_COVERAGE_BARS=ON.
+#include <gtest/gtest.h>
+
+#include "coverage_support.h"
+
+using namespace icacam;
+
+namespace {
+
+void expectBars(const std::string &condition, uint32_t seed, bool nothingUndeclared, int scenes = 40)
+{
+    const test::ScoredSet set = test::renderMeasureScore("bars-" + condition, condition, scenes, seed);
+    const host::ConditionScore *c = set.report.find(condition);
+    ASSERT_TRUE(c);
+    EXPECT_EQ(c->total, scenes);
+    EXPECT_EQ(c->silentWrong, 0) << condition << ": ok results beyond the tolerance (worst ok " << c->worstOkDmu
+                                 << ", " << c->worstOkId << ")";
+    EXPECT_GE(c->withinFraction(), 0.9) << condition << ": " << c->withinK << " of " << c->measured
+                                        << " within 2 σ";
+    if (nothingUndeclared) {
+        EXPECT_GE(c->medianRatio, 0.3) << condition << ": σ inflated";
+        EXPECT_LE(c->medianRatio, 1.0) << condition << ": σ too small";
+    }
+    std::filesystem::remove_all(set.dir);
+}
+
+} // namespace
+
+TEST(CoverageBars, Declared) { expectBars("declared", 9101, true); }
+TEST(CoverageBars, LowResolution) { expectBars("lowres", 9102, true); }
+TEST(CoverageBars, ReductionNotDeclared) { expectBars("reduction", 9103, false); }
+TEST(CoverageBars, ScaleMeasuredOnTheFixture) { expectBars("fixture_scale", 9104, false); }
+TEST(CoverageBars, TiltedDistortingCamera) { expectBars("tilt", 9105, false, 30); }
+TEST(CoverageBars, CalibratedTiltedCamera) { expectBars("calibrated_tilt", 9106, false, 30); }

@@ -1,0 +1,53 @@
+#pragma once
+// Shared by the coverage tests: render a condition set with `icacam synth --condition`,
+// measure it with `icacam measure` as a user would, and score it with `icacam score`'s code.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "coverage_score.h"
+#include "manifest.h"
+#include "measure_command.h"
+#include "synth_conditions.h"
+#include "test_support.h"
+
+namespace icacam::test {
+
+struct ScoredSet {
+    std::filesystem::path dir;
+    host::Manifest results, truth, manifest;
+    host::ScoreReport report;
+};
+
+// Renders `count` records of each condition (seeded), measures them with the given
+// `icacam measure` arguments (default model unless --model is among them) and scores them.
+inline ScoredSet renderMeasureScore(const std::string &name, const std::string &conditions, int count, uint32_t seed,
+                                    const std::vector<std::string> &measureArgs = {})
+{
+    ScoredSet s;
+    s.dir = tempDir(name);
+    host::ConditionSetOptions opt;
+    EXPECT_TRUE(host::parseConditions(conditions, &opt.conditions)) << conditions;
+    opt.countPerCondition = count;
+    opt.seed = seed;
+    opt.quiet = true;
+    const std::string manifest = host::writeConditionSet(s.dir.string(), opt);
+    const std::string results = (s.dir / "results.csv").string();
+    std::vector<std::string> args{"--manifest", manifest, "--out", results};
+    args.insert(args.end(), measureArgs.begin(), measureArgs.end());
+    testing::internal::CaptureStderr();
+    host::measureCommand(args);
+    testing::internal::GetCapturedStderr();
+    std::string err;
+    EXPECT_TRUE(host::readManifest(results, &s.results, &err)) << err;
+    EXPECT_TRUE(host::readManifest((s.dir / "truth.csv").string(), &s.truth, &err)) << err;
+    EXPECT_TRUE(host::readManifest(manifest, &s.manifest, &err)) << err;
+    EXPECT_TRUE(host::scoreResults(s.results, s.truth, host::ScoreOptions{}, &s.report, &err)) << err;
+    std::cout << host::formatScore(s.report, host::ScoreOptions{}, false);
+    return s;
+}
+
+} // namespace icacam::test
