@@ -120,7 +120,7 @@ TEST(Score, TakesTheBudgetWithoutTheModelTermWhenTheTruthIsTheModelsOwn)
 // every reading of a condition.
 TEST(SynthConditions, TruthMatchesTheImagesWhenTheConditionIsDeclared)
 {
-    const int count = 5;
+    const int count = 3;
     test::ScoredSet set = test::renderMeasureScore("synth-conditions", "declared,reduction,fixture_scale,tilt,lowres",
                                                    count, 4242);
     const auto &truthRows = set.truth.rows;
