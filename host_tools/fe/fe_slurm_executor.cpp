@@ -1,6 +1,9 @@
 #include "fe_slurm_executor.h"
 
+#include <algorithm>
+#include <cerrno>
 #include <chrono>
+#include <cstring>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -9,6 +12,10 @@
 #include <sstream>
 #include <stdexcept>
 #include <thread>
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
 
 #include "fe_slurm_queue.h"
 #include "fe_slurm_script.h"
@@ -57,6 +64,24 @@ SlurmExecutor::SlurmExecutor(const RunOptions &run, const SlurmOptions &slurm) :
     jobName_ = jobNameFor(dir_);
     if (slurm_.icacam.empty()) slurm_.icacam = fs::read_symlink("/proc/self/exe").string();
     for (const char *sub : {"results", "logs", "jobs"}) fs::create_directories(fs::path(dir_) / sub);
+    const std::string lockFile = (fs::path(dir_) / "sweep.lock").string();
+    lock_ = ::open(lockFile.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (lock_ < 0) throw std::runtime_error("cannot open " + lockFile);
+    if (::flock(lock_, LOCK_EX | LOCK_NB) != 0) {
+        const int why = errno;
+        if (why == EWOULDBLOCK) {
+            ::close(lock_);
+            throw std::runtime_error("another sweep command watches " + dir_ + " (" + lockFile + " is locked)");
+        }
+        // A filesystem without flock (some parallel filesystems): say so and go on unguarded.
+        std::cout << "slurm: " << lockFile << " cannot be locked here (" << std::strerror(why)
+                  << "): run one sweep command per directory at a time\n";
+    }
+}
+
+SlurmExecutor::~SlurmExecutor()
+{
+    if (lock_ >= 0) ::close(lock_);
 }
 
 std::string SlurmExecutor::resultsDir() const { return (fs::path(dir_) / "results").string(); }
@@ -154,9 +179,13 @@ size_t SlurmExecutor::solve(const std::vector<FeCase> &cases, const GatherFn &ga
     }
     std::cout << "slurm: " << cases.size() - open.size() << " results gathered from " << resultsDir() << ", "
               << flying.size() << " cases still in the queue, " << toSubmit.size() << " to submit\n";
-    // 3. The rest: one job array.
-    if (!toSubmit.empty())
-        for (const Task &t : submit(toSubmit)) flying[t.c.label()] = t;
+    // 3. The rest: one job array (several past Slurm's default MaxArraySize, 1001 tasks).
+    constexpr size_t kArrayMax = 1000;
+    for (size_t from = 0; from < toSubmit.size(); from += kArrayMax) {
+        const std::vector<FeCase> part(toSubmit.begin() + long(from),
+                                       toSubmit.begin() + long(std::min(toSubmit.size(), from + kArrayMax)));
+        for (const Task &t : submit(part)) flying[t.c.label()] = t;
+    }
     if (!flying.empty())
         std::cout << "slurm: the tasks run on without this command: run it again to gather them, "
                      "--cancel 1 to stop them\n";

@@ -17,7 +17,12 @@ namespace icacam::host::fe {
 
 class SlurmExecutor : public SweepExecutor {
 public:
+    // Throws when another sweep command watches the same directory (it would gather the same
+    // results into the CSV twice).
     SlurmExecutor(const RunOptions &run, const SlurmOptions &slurm);
+    ~SlurmExecutor() override;
+    SlurmExecutor(const SlurmExecutor &) = delete;
+    SlurmExecutor &operator=(const SlurmExecutor &) = delete;
     size_t solve(const std::vector<FeCase> &cases, const GatherFn &gather) override;
     // scancel this sweep's tasks still in the queue; returns how many there were.
     size_t cancel();
@@ -41,6 +46,7 @@ private:
     RunOptions run_;
     SlurmOptions slurm_;
     std::string dir_, jobName_;
+    int lock_ = -1; // flock on <dir>/sweep.lock while this command watches the directory
 };
 
 } // namespace icacam::host::fe

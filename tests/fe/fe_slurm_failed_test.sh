@@ -27,4 +27,29 @@ subs=$(ls "$work"/sweep.csv.slurm/jobs/*.cases | sort -V)
 [ "$(cut -d, -f1 "$work/sweep.csv" | tail -n +2 | sort -u | wc -l)" = 2 ] || fail "not 2 cases in the CSV"
 [ "$(tail -n +2 "$work/sweep.csv" | awk -F, '{ print $1 }' | sort | uniq -c | awk '{ print $1 }' | sort -u)" = 10 ] ||
     fail "not 10 rows per case (the failed rows were not replaced)"
-echo "PASS: $(echo "$failed" | wc -l) failed case(s) listed and resubmitted alone"
+
+# A task that ends without rows (here cancelled while it runs; on a cluster a time limit, a
+# lost node) is listed with its Slurm state, the sweep exits 1, and the next run submits it.
+lost=("$icacam" fe sweep --executor slurm --poll 1 --grid "mu=0.3" "${caseOptions[@]}" --work "$work/ccx"
+      --out "$work/lost.csv")
+"${lost[@]}" > "$work/lost.log" 2>&1 &
+pid=$!
+name=""
+for _ in $(seq 1 120); do
+    name=$(grep -o 'icacam-fe-[0-9a-f]*' "$work/lost.log" | head -1 || true)
+    [ -n "$name" ] && [ -n "$(squeue -h -t RUNNING -n "$name" -o %i)" ] && break
+    sleep 0.5
+done
+[ -n "$name" ] || fail "the sweep never showed a running task"
+# A second command on the same sweep would gather the same results twice: refused.
+if "${lost[@]}" > "$work/second-watcher.log" 2>&1; then fail "a second sweep command watched the same directory"; fi
+grep -q "another sweep command watches" "$work/second-watcher.log" || { cat "$work/second-watcher.log"; fail "no reason given"; }
+scancel -n "$name"
+rc=0
+wait "$pid" || rc=$?
+cat "$work/lost.log"
+[ "$rc" = 1 ] || fail "a sweep with a case left without rows exited $rc, not 1"
+grep -q "no result: task .* ended CANCELLED" "$work/lost.log" || fail "the task's end (CANCELLED) is not listed"
+[ ! -s "$work/lost.csv" ] || [ "$(tail -n +2 "$work/lost.csv" | wc -l)" = 0 ] || fail "rows for a cancelled case"
+"${lost[@]}" --cancel 1 | grep -q "cancelled 0 tasks" || fail "--cancel found tasks of a finished sweep"
+echo "PASS: $(echo "$failed" | wc -l) failed case(s) listed and resubmitted alone; a cancelled task listed; a second watcher refused"

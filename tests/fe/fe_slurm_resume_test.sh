@@ -4,7 +4,8 @@
 # submits only the cases that have neither a result nor a task.
 source "$(dirname "$0")/fe_slurm_common.sh"
 grid="n=0.1,0.25,0.4;mu=0.1,0.3"
-sweep=("$icacam" fe sweep --executor slurm --poll 1 --grid "$grid" "${caseOptions[@]}" --work "$work/ccx"
+# Two tasks at a time whatever the node's CPUs: there are queued tasks when the first lands.
+sweep=("$icacam" fe sweep --executor slurm --poll 1 --array-limit 2 --grid "$grid" "${caseOptions[@]}" --work "$work/ccx"
        --out "$work/sweep.csv")
 results=$work/sweep.csv.slurm/results
 fail() { echo "FAIL: $*"; exit 1; }
