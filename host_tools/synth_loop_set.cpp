@@ -71,8 +71,10 @@ std::string writeLoopSet(const std::string &dir, const LoopSetOptions &opt)
         const double nDeclared = opt.effect == LoopEffect::Material && m == badMaterial ? wrongN : n;
         const std::string op = ops[rng() % 3], lens = lenses[rng() % 2];
         const double speed = U(0.5, 5), ambient = U(18, 28);
-        // The press holds 50 % within ±0.1 % unless the process effect is on.
-        const double r = opt.effect == LoopEffect::Process ? U(0.46, 0.54) : 0.5 + U(-0.001, 0.001);
+        // The press holds 50 % unless the process effect is on; the recorded final height
+        // carries the height gauge's ±0.015 mm either way.
+        const double r = opt.effect == LoopEffect::Process ? U(0.46, 0.54) : 0.5;
+        const double hFinalRecorded = 15 * (1 - r) + U(-0.015, 0.015);
         // Geometry from the FE: the ring's width from the paper's model at 50 % carried by the
         // FE du/dr (the physics the model lacks), the contact edge and the silhouette from the
         // FE snapshots at (n, μ, r). A rate-sensitive material's ring widens with the speed.
@@ -120,7 +122,7 @@ std::string writeLoopSet(const std::string &dir, const LoopSetOptions &opt)
             ri = s.rInnerEqMm(), roEq = s.rOuterEqMm();
         }
         std::snprintf(line, sizeof line, "%s,%s,%.4f,%d,10,15,%.4f,%.3f,%s,%s,%s,%s,%.2f,%.1f,%d\n", id,
-                      measured.c_str(), nDeclared, mat.kMpa, mu + refNoise(rng), 15 * (1 - r), mat.name,
+                      measured.c_str(), nDeclared, mat.kMpa, mu + refNoise(rng), hFinalRecorded, mat.name,
                       kCameras[cam], lens.c_str(), op.c_str(), speed, ambient, i + 1);
         man << line;
         std::snprintf(line, sizeof line, "%s,%.5f,%.4f,%.4f,%.4f,%.3f,%.5f,%.5f,%.5f,%.5f,%.5f,%s,%s\n", id, mu, n,

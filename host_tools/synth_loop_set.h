@@ -9,7 +9,8 @@
 namespace icacam::host {
 
 enum class LoopEffect {
-    Null,     // every specimen at 50 %, every camera calibrated, every n right: nothing to find
+    Null,     // every specimen at 50 % (the recorded final height carries the gauge's ±0.015 mm),
+              // every camera calibrated, every n right: nothing to find
     Process,  // the press stops at 46–54 % reduction (recorded in h_final_mm): u follows the FE
     Optical,  // lens L25's images carry an 8 % scale error (the lab kept L16's mm_per_px)
     Camera,   // one of three cameras measures every length 4 % large (a stale calibration)

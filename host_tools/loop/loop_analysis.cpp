@@ -221,6 +221,45 @@ double pairedZ(const std::vector<double> &a, const std::vector<double> &b)
     return se > 0 ? md / se : 0;
 }
 
+// The share of a numeric symptom's variance a candidate explains (numeric: a line; categorical:
+// the level means), with the F test of that fit as a normal z.
+double explainedShare(const Candidate &symptom, const Candidate &cause, double *z)
+{
+    std::vector<size_t> idx;
+    for (size_t i = 0; i < symptom.x.size(); ++i)
+        if (std::isfinite(symptom.x[i]) && (cause.kind == "categorical" || std::isfinite(cause.x[i]))) idx.push_back(i);
+    *z = 0;
+    if (idx.size() < 4) return 0;
+    double my = 0;
+    for (size_t i : idx) my += symptom.x[i];
+    my /= double(idx.size());
+    double sst = 0, sse = 0;
+    int params = 2;
+    if (cause.kind == "categorical") {
+        std::map<std::string, std::pair<double, int>> sums;
+        for (size_t i : idx) { sums[cause.levels[i]].first += symptom.x[i]; sums[cause.levels[i]].second++; }
+        for (size_t i : idx) {
+            const auto &[sum, n] = sums[cause.levels[i]];
+            sse += (symptom.x[i] - sum / n) * (symptom.x[i] - sum / n);
+        }
+        params = int(sums.size());
+    } else {
+        double mx = 0, sxx = 0, sxy = 0;
+        for (size_t i : idx) mx += cause.x[i];
+        mx /= double(idx.size());
+        for (size_t i : idx) { sxx += (cause.x[i] - mx) * (cause.x[i] - mx); sxy += (cause.x[i] - mx) * (symptom.x[i] - my); }
+        const double b = sxx > 0 ? sxy / sxx : 0;
+        for (size_t i : idx) {
+            const double r = symptom.x[i] - my - b * (cause.x[i] - mx);
+            sse += r * r;
+        }
+    }
+    for (size_t i : idx) sst += (symptom.x[i] - my) * (symptom.x[i] - my);
+    if (!(sst > 0)) return 0;
+    *z = nestedZ(sst, 1, sse, params, idx.size());
+    return 1 - sse / sst;
+}
+
 } // namespace
 
 bool isSymptom(const std::string &name)
@@ -442,14 +481,50 @@ std::vector<RankedCandidate> rankCandidates(const std::vector<Candidate> &candid
         RankedCandidate &c = out[order[k]];
         if (c.symptom || !c.significant) continue;
         size_t pos = k;
-        while (pos > 0 && out[order[pos - 1]].symptom &&
-               pairedZ(errors[order[k]], errors[order[pos - 1]]) < 2.0)
+        while (pos > 0 && out[order[pos - 1]].symptom && pairedZ(errors[order[k]], errors[order[pos - 1]]) < 2.0)
             --pos;
         if (pos == k) continue;
         for (size_t j = pos; j < k; ++j) c.preferredOver.push_back(out[order[j]].name);
         const size_t moved = order[k];
         order.erase(order.begin() + long(k));
         order.insert(order.begin() + long(pos), moved);
+    }
+    // A significant symptom still leads: it established that there is an effect, and the
+    // question left is its name. A cause not significant on its own takes the lead when it
+    // explains the residual as well as every symptom above it (paired z < 2), passes the test
+    // of a single comparison (z above the one-sided α quantile, the same minimum gain), and
+    // explains the leading symptom itself (the symptom's own values, F test at α): of such
+    // causes, the one that explains the symptom best (R²). A chance correlate of the residual
+    // rarely also explains the measurement; the cause that moved the geometry does.
+    size_t lead = order.size(); // the first significant symptom, when no significant cause leads
+    if (!order.empty() && !(out[order[0]].significant && !out[order[0]].symptom))
+        for (size_t k = 0; k < order.size() && lead == order.size(); ++k)
+            if (out[order[k]].symptom && out[order[k]].significant && candidates[order[k]].kind != "categorical") lead = k;
+    if (lead < order.size()) {
+        const double zSingle = normalUpperQuantile(opt.alpha);
+        size_t best = order.size();
+        double bestR2 = -1;
+        for (size_t k = 0; k < order.size(); ++k) {
+            const RankedCandidate &c = out[order[k]];
+            if (c.symptom || c.significant || !(c.gain > 0 && c.z > zSingle && c.gain >= opt.minRelativeGain * c.cvRmsBefore))
+                continue;
+            bool told = pairedZ(errors[order[k]], errors[order[lead]]) >= 2.0;
+            for (size_t j = 0; j < k && !told; ++j)
+                told = out[order[j]].symptom && pairedZ(errors[order[k]], errors[order[j]]) >= 2.0;
+            double zAssoc = 0;
+            const double r2 = explainedShare(candidates[order[lead]], candidates[order[k]], &zAssoc);
+            if (!told && zAssoc > zSingle && r2 > bestR2) best = k, bestR2 = r2;
+        }
+        if (best < order.size()) {
+            RankedCandidate &c = out[order[best]];
+            c.significant = c.viaSymptom = true;
+            for (size_t j = 0; j < best; ++j)
+                if (out[order[j]].symptom) c.preferredOver.push_back(out[order[j]].name);
+            if (best < lead) c.preferredOver.push_back(out[order[lead]].name);
+            const size_t moved = order[best];
+            order.erase(order.begin() + long(best));
+            order.insert(order.begin(), moved);
+        }
     }
     // The measurements that point to each significant cause: the significant symptoms, best
     // first (a symptom answers to the cause; alone it does not name it).

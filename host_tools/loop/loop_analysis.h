@@ -56,6 +56,9 @@ struct RankedCandidate {
     double correlation = 0; // numeric: Pearson r with the residual (for reading only)
     bool significant = false;
     bool symptom = false;
+    // Significant through a significant symptom it cannot be told from (rankCandidates): on its
+    // own only at the level of a single comparison.
+    bool viaSymptom = false;
     // On a recorded condition moved ahead of measured quantities that ranked above it by a
     // margin within the noise (see rankCandidates): those symptoms, best first.
     std::vector<std::string> preferredOver;
@@ -76,7 +79,7 @@ struct FittedForm {
 struct RankingOptions {
     int folds = 5;
     uint32_t seed = 1;
-    double alpha = 0.05;          // family-wise, Bonferroni over the candidates
+    double alpha = 0.01;          // family-wise, Bonferroni over the candidates and forms
     double minRelativeGain = 0.05; // a chosen effect must cut the CV RMS by at least 5 %
 };
 

@@ -32,7 +32,7 @@ namespace {
 
 const char *kUsage =
     "usage: icacam loop --manifest FILE --report DIR [--model paper] [--folds 5] [--seed S]\n"
-    "                   [--fe-sweep CSV]... [--alpha 0.05]\n"
+    "                   [--fe-sweep CSV]... [--alpha 0.01]\n"
     "       icacam loop --journal DIR --reference CSV --report DIR [options as above]\n"
     "Measures every record (image + mm_per_px, or r_inner_mm + r_outer_mm; with --journal an\n"
     "icacam-fw journal folder's saved frames, joined by record id with the CSV's mu_ref and\n"

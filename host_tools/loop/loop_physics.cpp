@@ -74,7 +74,7 @@ double fitParameter(const vision::FrictionModel &model, const std::vector<LoopRe
 // Fits every level on the records where `train` holds.
 std::map<std::string, GroupFit> fitLevels(const vision::FrictionModel &model, const std::vector<LoopRecord> &usable,
                                           const Candidate &g, GroupReading reading,
-                                          const std::vector<bool> &train, double *scatter)
+                                          const std::vector<bool> &train, double *scatter, bool jackknife = false)
 {
     std::map<std::string, std::vector<size_t>> members;
     for (size_t i = 0; i < usable.size(); ++i)
@@ -103,6 +103,28 @@ std::map<std::string, GroupFit> fitLevels(const vision::FrictionModel &model, co
     *scatter = dof > 0 ? std::sqrt(sse / dof) : 0;
     for (auto &[level, f] : out)
         if (f.fitted && sumJ2[level] > 0) f.sigma = *scatter / std::sqrt(sumJ2[level]);
+    if (!jackknife) return out;
+    // The scatter-based σ assumes every record's μ error alike; the radii's own noise and the
+    // reference's act unequally with u. The jackknife over a group's records carries whatever
+    // acts: the larger of the two is stated.
+    for (auto &[level, f] : out) {
+        const std::vector<size_t> &idx = members[level];
+        if (!f.fitted || idx.size() < 4) continue;
+        std::vector<double> theta;
+        for (size_t leave = 0; leave < idx.size(); ++leave) {
+            std::vector<size_t> rest;
+            for (size_t j = 0; j < idx.size(); ++j)
+                if (j != leave) rest.push_back(idx[j]);
+            double j2 = 0, s2 = 0;
+            theta.push_back(fitParameter(model, usable, rest, reading, f.value, &j2, &s2));
+        }
+        double mean = 0, var = 0;
+        for (double t : theta) mean += t;
+        mean /= double(theta.size());
+        for (double t : theta) var += (t - mean) * (t - mean);
+        const double m = double(theta.size());
+        f.sigma = std::max(f.sigma, std::sqrt((m - 1) / m * var));
+    }
     return out;
 }
 
@@ -170,7 +192,8 @@ PhysicalFit fitGrouping(const vision::FrictionModel &model, const std::vector<Lo
 {
     PhysicalFit out;
     out.reading = reading;
-    const std::map<std::string, GroupFit> all = fitLevels(model, usable, g, reading, std::vector<bool>(usable.size(), true), &out.scatter);
+    const std::map<std::string, GroupFit> all =
+        fitLevels(model, usable, g, reading, std::vector<bool>(usable.size(), true), &out.scatter, true);
     for (size_t i = 0; i < usable.size(); ++i)
         out.muAfter.push_back(muWith(model, usable[i], reading, all.at(g.levels[i]).value));
     for (auto [level, f] : all) {

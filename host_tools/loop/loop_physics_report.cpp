@@ -141,6 +141,11 @@ void writeSymptomNote(std::ostream &f, const LoopSummary &s)
           << " (measured, with a slightly lower CV RMS): their held-out errors are not significantly smaller "
              "(paired z < 2), and a measured quantity answers to any cause that moves the geometry; the recorded "
              "condition names the cause.\n";
+    if (lead.viaSymptom)
+        f << "\n`" << lead.name << "` is not significant on its own over the whole family of candidates (z "
+          << fmt(lead.z, "%.1f")
+          << "); it counts because the symptoms above established the effect and it explains them as well, "
+             "and it passes the test of a single comparison.\n";
     if (!lead.pointedBy.empty())
         f << "\nSymptoms that pointed to it (measured quantities that explain the residual significantly, best "
              "first): "
