@@ -52,10 +52,16 @@ std::string repoFile(const std::string &name)
     return fs::exists(p) ? p.string() : name;
 }
 
+// Paths as the report names them: relative to the source tree when under it (a report
+// committed from one checkout reads the same in another).
 std::string joined(const std::vector<std::string> &v)
 {
+    const std::string root = fs::path(ICACAM_LOOP_SOURCE_DIR).lexically_normal().string() + "/";
     std::string s;
-    for (const std::string &x : v) s += (s.empty() ? "" : ", ") + x;
+    for (const std::string &x : v) {
+        const std::string p = fs::path(x).lexically_normal().string();
+        s += (s.empty() ? "" : ", ") + (p.rfind(root, 0) == 0 ? p.substr(root.size()) : p);
+    }
     return s;
 }
 
@@ -482,9 +488,9 @@ LoopSummary runLoopOn(const Manifest &manifest, const std::string &source, const
               << f4(s.slopeScale, "%.3f")
               << (std::fabs(s.slopeScale - 1) <= 0.15
                       ? " (the FE runs carry the effect found in the data).\n"
-                      : ": the data's effect differs from the FE slope by that factor; the FE sweep "
-                        "(uniform 0.2 mm mesh, u in steps of the contact nodes, snapshots only up to 50 %) is "
-                        "the weak part, and FE runs past 50 % on a finer corner mesh are the next step.\n");
+                      : ": the data's effect differs from the FE slope by that factor. The FE du/dr is the weak "
+                        "part (the contact edge's resolution, docs/fe.md): better-converged FE runs past 50 %, "
+                        "not a factor fitted to these records, are the next step.\n");
         } else if (isReduction && model->correctsReduction()) {
             f << "`" << s.chosen << "`: the model `" << model->name() << "` already carries u to 50 % with the FE "
                  "du/dr (vision/model/reduction_table.h). A reduction effect left in its residual means the FE slope "
