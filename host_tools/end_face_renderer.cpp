@@ -116,7 +116,8 @@ cv::Mat renderEndFace(const EndFaceScene &s)
                 const double inBarrel = smoothStep(rm - r);
                 double barrel = s.barrel + s.highlight * std::exp(-0.5 * std::pow((r - (0.4 * ro + 0.6 * rm)) / 3.0, 2));
                 v = v * (1 - inBarrel) + barrel * inBarrel;
-                const double roT = ro * wobbleAt(s, 1, t), riT = ri * wobbleAt(s, 0, t);
+                const double roT = ro * wobbleAt(s, 1, t) + s.edgeOffsetMm[1] / s.mmPerPx;
+                const double riT = ri * wobbleAt(s, 0, t) + s.edgeOffsetMm[0] / s.mmPerPx;
                 const double inContact = smoothStep(roT - r);
                 const double fadeK = 1 - s.fade * 0.5 * (1 + std::cos(t - fadePhase));
                 double icaLevel = s.ica + s.turningMarks * std::sin(2 * M_PI * r / markPeriod);

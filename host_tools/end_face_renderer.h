@@ -20,6 +20,10 @@ struct EndFaceScene {
     // Boundary wobble: relative amplitudes of harmonics 2..4 and their phases.
     double wobble[2][3] = {}, wobblePhase[2][3] = {};
     double background = 40, barrel = 30, ica = 170, face = 150; // grey levels
+    // Where the visible edges lie relative to the boundaries' truth (mm, inner and outer):
+    // a soft transition whose middle is not the boundary itself. The truth radii below
+    // exclude it.
+    double edgeOffsetMm[2] = {0, 0};
     double fade = 0;            // ICA contrast fades by this fraction around the ring
     double turningMarks = 0;    // amplitude of concentric marks in the ICA (grey levels)
     int stains = 0, scratches = 0;

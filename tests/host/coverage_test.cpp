@@ -120,7 +120,7 @@ TEST(Score, TakesTheBudgetWithoutTheModelTermWhenTheTruthIsTheModelsOwn)
 // every reading of a condition.
 TEST(SynthConditions, TruthMatchesTheImagesWhenTheConditionIsDeclared)
 {
-    const int count = 3;
+    const int count = 4;
     test::ScoredSet set = test::renderMeasureScore("synth-conditions", "declared,reduction,fixture_scale,tilt,lowres",
                                                    count, 4242);
     const auto &truthRows = set.truth.rows;
@@ -187,7 +187,7 @@ TEST(SynthConditions, TruthMatchesTheImagesWhenTheConditionIsDeclared)
         const host::ConditionScore *c = r.find(cond);
         ASSERT_TRUE(c) << cond;
         EXPECT_GE(c->measured, count - 1) << cond;
-        EXPECT_LE(c->medianAbs, 0.002) << cond;
+        EXPECT_LE(c->medianAbs, 0.004) << cond; // the edge model alone: about 0.001
     }
     std::filesystem::remove_all(set.dir);
 }
