@@ -17,6 +17,9 @@ struct Config {
     double d0Mm = 10, h0Mm = 15;
     double hFinalMm = 0;     // final height after upsetting; 0 = not given (50 % assumed)
     std::string material;
+    // [tolerance] the lab's tolerance on μ and the declared inputs' (1 σ); changeable over serial
+    double toleranceMu = 0.01, toleranceRel = 0.05; // ok: 2 σ_μ within max(abs, rel · μ)
+    double nTol = 0.01, hFinalTolMm = 0.05, mmPerPxTolRel = 0.005;
     // [calibration] one of the two is required
     double mmPerPx = 0;      // scale in the end-face plane (with a file: only sizes the search)
     std::string calibrationFile; // from `icacam calibrate` (docs/calibration.md)

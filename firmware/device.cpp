@@ -7,6 +7,7 @@
 #include "firmware/scale_check.h"
 #include "firmware/screen.h"
 #include "vision/model/paper_model.h"
+#include "vision/reading_record.h"
 #include "vision/reference_disc.h"
 
 namespace icacam::fw {
@@ -15,7 +16,7 @@ using vision::Measurement;
 
 namespace {
 
-// Both write into caller buffers: the report path allocates nothing once out_ has grown.
+// Writes into a caller buffer: the report path allocates nothing once out_ has grown.
 void isoTime(int64_t wallMs, char (&b)[96])
 {
     const time_t s = time_t(wallMs / 1000);
@@ -25,17 +26,17 @@ void isoTime(int64_t wallMs, char (&b)[96])
                   t.tm_hour, t.tm_min, t.tm_sec, int(wallMs % 1000));
 }
 
-void flagList(uint32_t flags, char (&b)[512])
-{
-    size_t n = 0;
-    b[0] = 0;
-    for (int bit = 0; bit < vision::kFlagCount; ++bit)
-        if (flags & (1u << bit)) {
-            const int w = std::snprintf(b + n, sizeof b - n, "%s%s", n ? "|" : "", vision::flagName(bit));
-            if (w < 0 || size_t(w) >= sizeof b - n) break;
-            n += size_t(w);
-        }
-}
+// The reading's fields into a device JSON line (the one schema: vision/reading_record.h).
+class JsonRecordSink final : public vision::RecordSink {
+public:
+    explicit JsonRecordSink(JsonBuilder *j) : j_(j) {}
+    void text(const char *name, std::string_view v) override { j_->str(name, v); }
+    void number(const char *name, double v, int decimals) override { j_->fixed(name, v, decimals); }
+    void absent(const char *name) override { j_->raw(name, "null"); }
+
+private:
+    JsonBuilder *j_;
+};
 
 constexpr const char *kSettingsFile = "settings.conf";
 
@@ -287,16 +288,12 @@ void Device::measure(const char *origin, const std::string &tag)
     vision::LumaView luma;
     const bool captured = captureFrame(&frame, &luma, &problem);
     if (captured && problem.empty()) {
-        vision::SpecimenSpec spec{cfg_.n, cfg_.kMpa, cfg_.d0Mm, cfg_.h0Mm, cfg_.mmPerPx, cfg_.hFinalMm};
+        vision::SpecimenSpec spec = specimenSpec(cfg_);
         if (cal_.present) {
-            // The end face's plane: the specimen's final height above the fixture when
-            // given, else the model's 50 % reduction (docs/calibration.md).
+            // The interpreter puts the end face's plane at the reading's final height.
             problem = frameSizeIssue(cal_, luma.width, luma.height);
             plane_ = cal_.file.plane;
-            plane_.heightMm = endFaceHeightMm();
             spec.calibration = &plane_;
-            if (!(spec.mmPerPx > 0))
-                spec.mmPerPx = vision::planeScaleAt(plane_, 0.5 * (luma.width - 1), 0.5 * (luma.height - 1));
         }
         if (problem.empty()) m = analyzer_.measure(luma, spec, model_);
     }
@@ -352,7 +349,6 @@ bool Device::captureFrame(hal::CapturedFrame *frame, vision::LumaView *luma, std
     return captured;
 }
 
-double Device::endFaceHeightMm() const { return cfg_.hFinalMm > 0 ? cfg_.hFinalMm : 0.5 * cfg_.h0Mm; }
 
 std::string Device::setCalibrationFile(Config *trial)
 {
@@ -417,30 +413,33 @@ void Device::scaleCheck(const Command &c)
     state_ = State::Idle;
 }
 
+vision::SpecimenSpec specimenSpec(const Config &c)
+{
+    vision::SpecimenSpec s;
+    s.n = c.n, s.kMpa = c.kMpa, s.d0Mm = c.d0Mm, s.h0Mm = c.h0Mm, s.mmPerPx = c.mmPerPx, s.hFinalMm = c.hFinalMm;
+    s.tolerances.n = c.nTol, s.tolerances.hFinalMm = c.hFinalTolMm, s.tolerances.scaleRel = c.mmPerPxTolRel;
+    s.tolerance.absMu = c.toleranceMu, s.tolerance.relMu = c.toleranceRel;
+    return s;
+}
+
 void Device::buildRecord(long id, const char *origin, const std::string &tag, const Measurement &m,
                          std::string_view problem, const hal::CapturedFrame *frame, std::string_view image, long ms)
 {
     out_.clear();
     JsonBuilder j(&out_);
-    const bool value = problem.empty() && m.hasValue();
-    char when[96], flags[512];
+    char when[96];
     isoTime(hal_.clock.wallMs(), when);
-    flagList(value ? m.flags : 0, flags);
-    j.str("type", "result").integer("id", id).str("time", when);
-    j.str("status", problem.empty() ? vision::statusName(m.status) : "error");
-    if (value) {
-        j.num("mu", m.mu, 5).num("mu_sigma", m.muSigma, 3).num("u_mm", m.uMm, 5);
-        j.num("r_inner_mm", m.rInnerMm, 6).num("r_outer_mm", m.rOuterMm, 6);
-        if (m.reductionEst >= 0) j.num("reduction_est", m.reductionEst, 4);
-    }
-    j.str("flags", flags);
-    j.str("message", !problem.empty() ? problem : m.hasValue() ? std::string_view() : vision::errorMessage(m.error));
+    j.str("type", "result").integer("id", id);
+    JsonRecordSink sink(&j);
+    // A frame never measured (capture, LED or calibration problem) is a record without a reading.
+    vision::writeReading(problem.empty() ? &m : nullptr, problem, model_.name(), sink);
+    j.str("time", when);
     j.str("image", image).str("source", frame ? std::string_view(frame->source) : std::string_view());
     j.num("n", cfg_.n).num("k_mpa", cfg_.kMpa).num("mm_per_px", cfg_.mmPerPx, 8);
-    j.num("h_final_mm", cfg_.hFinalMm).str("model", model_.name());
+    j.num("h_final_mm", cfg_.hFinalMm);
     // Which calibration mapped the boundaries, and the plane it mapped them into.
     j.str("calibration", cal_.present ? cal_.name : "");
-    if (cal_.present) j.num("plane_height_mm", endFaceHeightMm(), 4);
+    if (cal_.present && m.hasValue()) j.num("plane_height_mm", cfg_.h0Mm * (1 - m.reduction), 4);
     j.str("material", cfg_.material).str("trigger", origin).integer("ms", ms);
     if (!tag.empty()) j.str("tag", tag);
     j.end();

@@ -24,6 +24,9 @@
 
 namespace icacam::fw {
 
+// What the config declares about the specimen and the tolerances, as the interpreter takes it.
+vision::SpecimenSpec specimenSpec(const Config &c);
+
 struct DeviceHal {
     hal::Camera &camera;
     hal::TriggerButton &trigger;
@@ -62,7 +65,6 @@ private:
     bool captureFrame(hal::CapturedFrame *frame, vision::LumaView *luma, std::string *problem);
     // Loads trial's calibration.file into cal_ ("none" clears it); "" or why not.
     std::string setCalibrationFile(Config *trial);
-    double endFaceHeightMm() const;
     void sendError(const char *code, std::string_view message, std::string_view tag);
     void send(std::string_view line);
     void showIdle(std::string_view note);

@@ -176,6 +176,16 @@ JsonBuilder &JsonBuilder::num(std::string_view key, double value, int digits)
     return *this;
 }
 
+JsonBuilder &JsonBuilder::fixed(std::string_view key, double value, int decimals)
+{
+    keyPart(key);
+    if (!std::isfinite(value)) { out_->append("null"); return *this; }
+    char b[64];
+    std::snprintf(b, sizeof b, "%.*f", decimals, value);
+    out_->append(b);
+    return *this;
+}
+
 JsonBuilder &JsonBuilder::integer(std::string_view key, long long value)
 {
     keyPart(key);

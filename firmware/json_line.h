@@ -16,8 +16,9 @@ struct JsonField {
 };
 
 struct FlatObject {
-    // A journal record has about 25 fields (result, diagnostics, settings, calibration).
-    static constexpr int kMaxFields = 40;
+    // A journal record has about 60 fields (the reading, its budget and diagnostics, the
+    // device's settings and capture).
+    static constexpr int kMaxFields = 96;
     JsonField fields[kMaxFields];
     int count = 0;
     const JsonField *find(std::string_view key) const;
@@ -32,6 +33,7 @@ public:
     explicit JsonBuilder(std::string *out) : out_(out) { out_->push_back('{'); }
     JsonBuilder &str(std::string_view key, std::string_view value);
     JsonBuilder &num(std::string_view key, double value, int digits = 6);
+    JsonBuilder &fixed(std::string_view key, double value, int decimals); // %.Nf, null if not finite
     JsonBuilder &integer(std::string_view key, long long value);
     JsonBuilder &boolean(std::string_view key, bool value);
     JsonBuilder &raw(std::string_view key, std::string_view json); // value already JSON

@@ -34,7 +34,9 @@ const char *shortFlag(int bit)
         "u outside model",    "low contrast",    "edge coverage low", "edges scatter",
         "image blurred",      "saturated",       "specimen clipped",  "elliptical",
         "not concentric",     "check scale",     "narrow ring",       "no silhouette",
-        "reduction outside", "radii inconsistent", "H0/D0 outside"};
+        "reduction outside", "radii inconsistent", "H0/D0 outside",
+        "edges uncertain",   "scale uncertain",   "give final height", "n tolerance wide",
+        "model uncertain",   "silhouette unusable"};
     return bit >= 0 && bit < vision::kFlagCount ? kWords[bit] : "check";
 }
 

@@ -1,6 +1,6 @@
 #pragma once
-// One output row per manifest record, as CSV or JSON lines (PRODUCT.md §6 columns first,
-// then the diagnostics the loop and the overlays use).
+// One output row per manifest record, as CSV or JSON lines: the record id, then the
+// reading's fields in the one schema the device uses too (vision/reading_record.h).
 #include <ostream>
 #include <string>
 #include <vector>
@@ -11,8 +11,7 @@ namespace icacam::host {
 
 struct ResultRow {
     std::string id;
-    std::string status = "error";
-    std::string message;
+    std::string message;                    // why a row never reached vision; else "" (the reading says)
     const vision::Measurement *m = nullptr; // null for rows that never reached vision
     std::string model;
 };

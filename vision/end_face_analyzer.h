@@ -1,6 +1,7 @@
 #pragma once
 // The measurement pipeline: frame → specimen centre → contact edge R_o → original face
-// edge R_i → equivalent radii → u → μ ± σ with flags. All working memory is taken once in
+// edge R_i → silhouette (measureFace), then the interpretation → radii in mm, u, μ ± σ with
+// its budget and flags (reading_interpreter.h). All working memory is taken once in
 // configure(); measure() allocates nothing and makes no OS call.
 #include <cstddef>
 #include <cstdint>
@@ -12,22 +13,9 @@
 #include "measurement.h"
 #include "plane_calibration.h"
 #include "specimen_locator.h"
+#include "specimen_spec.h"
 
 namespace icacam::vision {
-
-// What the instrument is told about the specimen (manifest or device config).
-struct SpecimenSpec {
-    double n = 0;          // strain-hardening exponent
-    double kMpa = 0;       // strength coefficient, 0 if unknown
-    double d0Mm = 10;      // initial diameter
-    double h0Mm = 15;      // initial height
-    double mmPerPx = 0;    // scale in the plane of the end face
-    double hFinalMm = 0;   // final height when recorded (0: assume the model's 50 % reduction)
-    // Camera calibration with the end face's height set (docs/calibration.md): when given,
-    // the radii in mm come from mapping each boundary into the end-face plane, and mmPerPx
-    // only sizes the search.
-    const PlaneCalibration *calibration = nullptr;
-};
 
 class EndFaceAnalyzer {
 public:
@@ -55,14 +43,19 @@ public:
     ErrorCode configure(int maxWidth, int maxHeight);
     size_t workingBytes() const { return workBytes_; }
 
-    // Measures one frame. The result's point arrays stay valid until the next call.
+    // Measures one frame and interprets it (measureFace, then interpretEndFace of
+    // reading_interpreter.h). The result's point arrays stay valid until the next call.
     Measurement measure(const LumaView &frame, const SpecimenSpec &spec, const FrictionModel &model);
+    // The image half alone: boundaries, silhouette and image-quality flags in pixels, sized
+    // by spec's scale (or, with a calibration and no scale, the calibration's at the image
+    // centre). Status stays Error with error None when the face was found: interpretEndFace
+    // turns it into a reading.
+    Measurement measureFace(const LumaView &frame, const SpecimenSpec &spec);
 
 private:
     struct Ring; // transient per-measurement state (on the stack, fixed size)
 
     bool refineCentre(const LumaView &v, double r0Px, double *cx, double *cy);
-    void finishResult(const SpecimenSpec &spec, const FrictionModel &model, Measurement *m) const;
 
     int maxWidth_ = 0, maxHeight_ = 0;
     size_t workBytes_ = 0;

@@ -32,8 +32,19 @@ enum MeasureFlag : uint32_t {
     kFlagReductionOutside = 1u << 16, // recorded final height outside what the model covers
     kFlagRadiiInconsistent = 1u << 17, // R_max contradicts the declared scale and final height
     kFlagAspectOutside = 1u << 18,  // the specimen's H0/D0 lies outside what the model covers
+    // The budget misses the tolerance; the flag names its leading component (what to declare
+    // or improve to get an ok reading).
+    kFlagEdgesUncertain = 1u << 19,     // boundary scatter or the edge model
+    kFlagScaleUncertain = 1u << 20,     // mm_per_px or the calibration's plane
+    kFlagReductionUncertain = 1u << 21, // the final height (declare h_final_mm)
+    kFlagNUncertain = 1u << 22,         // the declared n's tolerance
+    kFlagModelUncertain = 1u << 23,     // the friction model's own error
+    kFlagSilhouetteUnreliable = 1u << 24, // a silhouette was found but does not fit the FE shape: not used
 };
-constexpr int kFlagCount = 19;
+constexpr int kFlagCount = 25;
+// The flags that say the budget misses the tolerance (the others are checks).
+constexpr uint32_t kBudgetFlags = kFlagEdgesUncertain | kFlagScaleUncertain | kFlagReductionUncertain |
+                                  kFlagNUncertain | kFlagModelUncertain;
 const char *flagName(int bit);
 
 // One located edge point on a ray, in pixel coordinates (Q16.16).
@@ -67,6 +78,17 @@ struct BoundaryFit {
     double radiusAt(double cosTheta, double sinTheta) const; // same, trig precomputed
 };
 
+// Standard uncertainties of μ, one per source (GUM, JCGM 100), each from the model's own
+// sensitivities (finite differences of the friction model). muSigma combines them with the
+// scale–reduction correlation the silhouette leaves (see reading_interpreter.h).
+struct UncertaintyBudget {
+    double edges = 0;     // boundary scatter and the edge model (u's uncertainty)
+    double scale = 0;     // mm_per_px's tolerance, or the calibration and the plane's height
+    double reduction = 0; // the final height (declared or inferred) and the carry to 50 %
+    double n = 0;         // the declared n's tolerance
+    double model = 0;     // the 50 % model's own fit error
+};
+
 struct Measurement {
     Status status = Status::Error;
     ErrorCode error = ErrorCode::NotConfigured;
@@ -86,6 +108,15 @@ struct Measurement {
     // declared final height (or 50 % when none), and the reduction R_max implies (-1: none).
     double rMaxZ = 0;
     double reductionEst = -1;
+    // The silhouette's per-ray fit: coverage (0 when only the mean profile named it).
+    double silhouetteCoverage = 0;
+
+    // The interpretation (reading_interpreter.h): what the reading used and its budget.
+    UncertaintyBudget budget;
+    double reduction = 0.5;      // height reduction u was read at (declared, inferred or nominal)
+    double reductionSigma = 0;   // its standard uncertainty
+    double scaleFactor = 1;      // correction the silhouette applied to the declared scale
+    double toleranceMu = 0;      // the lab's tolerance for this reading (status ok: 2σ within it)
 
     // Edge points of each boundary (one per ray, valid or not) for overlays and tests.
     const EdgeSample *innerPoints = nullptr;

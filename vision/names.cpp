@@ -20,7 +20,9 @@ const char *flagName(int bit)
         "u_outside_model", "low_contrast",  "low_coverage",   "high_scatter",
         "blurred",         "saturated",     "specimen_clipped", "elliptical",
         "centre_offset",   "scale_suspect", "narrow_ring",    "no_silhouette",
-        "reduction_outside_model", "radii_inconsistent", "aspect_outside_model"};
+        "reduction_outside_model", "radii_inconsistent", "aspect_outside_model",
+        "edges_uncertain", "scale_uncertain", "reduction_uncertain", "n_uncertain",
+        "model_uncertain", "silhouette_unreliable"};
     return bit >= 0 && bit < kFlagCount ? kNames[bit] : "unknown";
 }
 

@@ -257,8 +257,9 @@ bool RingSearch::locateOnRays(int sign, const double *loPx, const double *hiPx, 
     return true;
 }
 
-double RingSearch::silhouetteFromRays(const double *outerR)
+double RingSearch::silhouetteFromRays(const double *outerR, double *coverage)
 {
+    *coverage = 0;
     constexpr int kCoarse = EndFaceAnalyzer::kCoarseRays;
     const double rA = EndFaceAnalyzer::kCoarseStart * r0, rB = EndFaceAnalyzer::kCoarseEnd * r0;
     const double step = EndFaceAnalyzer::coarseStep(r0);
@@ -306,6 +307,7 @@ double RingSearch::silhouetteFromRays(const double *outerR)
     opt.maxHarmonics = 2;
     opt.minRejectPx = 2.0;
     if (!fitBoundary(radius, valid, kCoarse, cx, cy, opt, &fit) || fit.coverage < 0.4) return 0;
+    *coverage = fit.coverage;
     return fit.rEqPx;
 }
 
@@ -472,7 +474,7 @@ ErrorCode RingSearch::run(Measurement *m)
     m->outer = outer;
     // The silhouette per coarse ray refines the mean profile's estimate (the mean profile
     // blurs a weak barrel/background step and can name a highlight's flank instead).
-    const double perRay = silhouetteFromRays(outerR);
+    const double perRay = silhouetteFromRays(outerR, &m->silhouetteCoverage);
     m->rMaxPx = perRay > 0 ? perRay : me.rMax;
     m->innerPoints = innerPts;
     m->outerPoints = outerPts;

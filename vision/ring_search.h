@@ -46,7 +46,7 @@ struct RingSearch {
     // boxHalf > 0: the rows hold a box step detector of that half-width instead.
     void sampleWindow(const double *start, double step, int count, int boxHalf, Measurement *m);
     // Silhouette R_max from the coarse rays, outside the fitted contact edge; 0 if unclear.
-    double silhouetteFromRays(const double *outerR);
+    double silhouetteFromRays(const double *outerR, double *coverage);
 
     double fineStart_[kMaxRayTable] = {}, fineStep_ = 1;
     // Fine ray i points along angle 2πi/256: directions come from the shared AngleTable.

@@ -88,12 +88,15 @@ bool measureImage(const std::string &path, const SpecimenSpec &spec, const Frict
     const LumaView view{img.luma.data, img.luma.cols, img.luma.rows, int(img.luma.step[0]), 1};
     const Measurement m = analyzer.measure(view, spec, model);
     if (!m.hasValue()) { *why = errorMessage(m.error); return false; }
-    r->uMm = m.uMm;
+    // u at the declared scale: the loop looks for what was not declared, so the reading's
+    // own silhouette correction (reading_interpreter.h) is taken back out.
+    const double k = m.scaleFactor;
+    r->uMm = m.uMm / k;
     auto &d = r->diagnostics;
-    d["diag_u_mm"] = m.uMm;
-    d["diag_r_inner_mm"] = m.rInnerMm;
-    d["diag_r_outer_mm"] = m.rOuterMm;
-    if (m.rMaxMm > 0) d["diag_rmax_over_r0"] = m.rMaxMm / (0.5 * r->d0Mm);
+    d["diag_u_mm"] = r->uMm;
+    d["diag_r_inner_mm"] = m.rInnerMm / k;
+    d["diag_r_outer_mm"] = m.rOuterMm / k;
+    if (m.rMaxMm > 0) d["diag_rmax_over_r0"] = m.rMaxMm / k / (0.5 * r->d0Mm);
     if (m.reductionEst >= 0) d["diag_reduction_est"] = m.reductionEst; // from R_max and the FE
     d["diag_inner_contrast"] = m.inner.contrast;
     d["diag_outer_contrast"] = m.outer.contrast;

@@ -137,7 +137,10 @@ TEST(CalibratedMeasure, MuThroughATiltedDistortingCamera)
         if (mc.flags & degraded) {
             ++degradedCases;
         } else {
-            EXPECT_EQ(mc.status, vision::Status::Ok) << "case " << i << ": " << flagNames(mc.flags);
+            // The status may still be warn when the budget (the model's own error, mostly)
+            // misses the tolerance: no check flag, and the truth within the budget.
+            EXPECT_EQ(mc.flags & ~vision::kBudgetFlags, 0u) << "case " << i << ": " << flagNames(mc.flags);
+            EXPECT_LE(eCal, 2 * mc.muSigma) << "case " << i;
             EXPECT_LT(std::max(mc.inner.ellipticity, mc.outer.ellipticity), 0.006) << "case " << i;
         }
         // Uncalibrated: a μ outside the devset bound must carry a flag.

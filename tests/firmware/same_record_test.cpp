@@ -1,0 +1,122 @@
+// One instrument: the same image and declared inputs give the same reading fields on the
+// device (icacam-fw over the file-backed HAL, its serial result line) and on the PC
+// (`icacam measure --format jsonl`, and `icacam loop`, which measures through the same
+// RecordMeasurer), field by field and to the printed digit.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <sstream>
+
+#include "firmware/device.h"
+#include "firmware/json_line.h"
+#include "vision/model/friction_models.h"
+#include "hal/file/clocks.h"
+#include "hal/file/file_camera.h"
+#include "hal/file/file_led.h"
+#include "hal/file/file_trigger.h"
+#include "hal/file/folder_storage.h"
+#include "manifest.h"
+#include "record_measurer.h"
+#include "result_writer.h"
+#include "tests/firmware/recording_serial.h"
+#include "vision/reading_record.h"
+
+using namespace icacam;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct NullDisplay final : hal::Display {
+    hal::Error show(const hal::MonoBitmap &) override { return {}; }
+};
+
+const std::string kSample = std::string(ICACAM_SOURCE_DIR) + "/tests/data/sample";
+
+// The device's result line for one frame of the sample set.
+fw::FlatObject deviceResult(const std::string &image, const fw::Config &base, const vision::FrictionModel &model)
+{
+    char t[] = "/tmp/icacam-same-XXXXXX";
+    const fs::path dir = ::mkdtemp(t);
+    fs::create_directories(dir / "frames");
+    fs::copy_file(kSample + "/images/" + image, dir / "frames" / image);
+    hal::ManualClock clock;
+    hal::FileCamera camera(clock, hal::FileCameraOptions{(dir / "frames").string(), 1, false, 0});
+    hal::FileTrigger trigger{clock};
+    hal::FileLed led{clock};
+    NullDisplay display;
+    test::RecordingSerial serial;
+    hal::FolderStorage storage;
+    EXPECT_TRUE(storage.open((dir / "journal").string()).ok());
+    fw::Config cfg = base;
+    cfg.baseDir = dir.string();
+    fw::Device device(fw::DeviceHal{camera, trigger, led, display, serial, storage, clock}, cfg, model);
+    EXPECT_TRUE(device.start().ok());
+    serial.in += "trigger\n";
+    device.tick();
+    const fw::FlatObject r = serial.last("result");
+    fs::remove_all(dir);
+    return r;
+}
+
+fw::FlatObject hostResult(const std::string &manifestText, const vision::FrictionModel &model)
+{
+    host::Manifest manifest;
+    std::string err;
+    EXPECT_TRUE(host::parseManifest(manifestText, &manifest, &err)) << err;
+    manifest.baseDir = kSample;
+    host::RecordMeasurer measurer(model, vision::SpecimenSpec{});
+    host::RecordReading reading;
+    measurer.measure(manifest.rows.at(0), manifest, &reading);
+    std::ostringstream out;
+    host::ResultWriter writer(out, true);
+    host::ResultRow row;
+    row.id = "x";
+    row.model = model.name();
+    if (reading.measured) row.m = &reading.m;
+    else row.message = reading.message;
+    writer.write(row);
+    std::string line = out.str();
+    line.pop_back();
+    fw::FlatObject o;
+    EXPECT_EQ(fw::parseFlatObject(line, &o), "");
+    return o;
+}
+
+void expectSameReading(const fw::FlatObject &device, const fw::FlatObject &host)
+{
+    for (int i = 0; i < vision::readingFieldCount(); ++i) {
+        const char *name = vision::readingFieldName(i);
+        const fw::JsonField *d = device.find(name), *h = host.find(name);
+        ASSERT_TRUE(d) << "device record lacks " << name;
+        ASSERT_TRUE(h) << "icacam measure record lacks " << name;
+        EXPECT_EQ(int(d->type), int(h->type)) << name;
+        EXPECT_EQ(d->text, h->text) << name;
+    }
+}
+
+} // namespace
+
+TEST(OneInstrument, DeviceAndMeasureGiveTheSameReading)
+{
+    const vision::FrictionModel *model = vision::frictionModel(vision::kDefaultModel);
+    ASSERT_NE(model, nullptr);
+    fw::Config cfg;
+    cfg.n = 0.1742, cfg.kMpa = 647, cfg.mmPerPx = 0.0153924;
+    cfg.cameraMaxWidth = 2048, cfg.cameraMaxHeight = 1536;
+    // Nothing more declared: the reduction is inferred from the silhouette on both.
+    const fw::FlatObject d1 = deviceResult("synth-0002.jpg", cfg, *model);
+    const fw::FlatObject h1 = hostResult("id,image,n,k_mpa,mm_per_px\na,images/synth-0002.jpg,0.1742,647,0.0153924\n", *model);
+    ASSERT_NE(d1.find("mu"), nullptr);
+    EXPECT_EQ(d1.find("mu")->type, fw::JsonField::Type::Number);
+    expectSameReading(d1, h1);
+
+    // Declared final height and tolerances, set the device's way and the manifest's way.
+    cfg.hFinalMm = 7.6, cfg.nTol = 0.02, cfg.toleranceMu = 0.02, cfg.toleranceRel = 0.04, cfg.mmPerPxTolRel = 0.01;
+    const fw::FlatObject d2 = deviceResult("synth-0002.jpg", cfg, *model);
+    const fw::FlatObject h2 = hostResult("id,image,n,k_mpa,mm_per_px,h_final_mm,n_tol,tolerance_mu,tolerance_rel,mm_per_px_tol\n"
+                                         "a,images/synth-0002.jpg,0.1742,647,0.0153924,7.6,0.02,0.02,0.04,0.01\n",
+                                         *model);
+    expectSameReading(d2, h2);
+    EXPECT_NE(d1.find("mu_sigma")->text, d2.find("mu_sigma")->text); // the declarations changed the budget
+    EXPECT_EQ(d2.find("tolerance_mu")->number, 0.02);
+}

@@ -1,0 +1,261 @@
+#include "reading_interpreter.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "model/aspect_corrected_model.h"
+#include "plane_calibration.h"
+#include "model/radii_consistency.h"
+#include "model/reduction_corrected_model.h"
+
+namespace icacam::vision {
+
+namespace {
+
+// A barrel's silhouette lies outside the contact edge, and not far: R_max/R_o spans
+// 1.02–1.15 over the FE's (n, μ) at 40–60 % reduction. Outside these bounds the edge taken
+// is a highlight's flank, the fixture or a second edge, not the barrel.
+constexpr double kSilhouetteOverContactMin = 1.005, kSilhouetteOverContactMax = 1.3;
+// The per-ray silhouette fit must see the barrel on half the rays at least.
+constexpr double kSilhouetteMinCoverage = 0.5;
+// Beyond 3 σ the silhouette contradicts a declared final height and scale outright.
+constexpr double kContradictionChi2 = 9.0;
+
+// μ as a function of the inputs the budget varies: the ring u (mm) read at reduction r with
+// exponent n, carried to the model's 50 % (through the FE slope for a model that does not
+// carry itself).
+class MuFunction {
+public:
+    MuFunction(const SpecimenSpec &spec, const FrictionModel &model)
+        : spec_(spec), model_(model), carry_(model, model.name())
+    {
+    }
+    double at(double u, double r, double n) const { return estimate(u, r, n).mu; }
+    ModelEstimate estimate(double u, double r, double n) const
+    {
+        const ModelInputs in{u, n, spec_.kMpa, spec_.d0Mm, spec_.h0Mm, spec_.h0Mm * (1 - r)};
+        return model_.correctsReduction() ? model_.estimate(in) : carry_.estimate(in);
+    }
+
+private:
+    const SpecimenSpec &spec_;
+    const FrictionModel &model_;
+    ReductionCorrectedModel carry_;
+};
+
+struct ScaleAndReduction {
+    double dk = 0, dr = 0;      // corrections: relative scale error, reduction offset
+    double pk, pr, pkr = 0;     // their (co)variances
+    double ambiguity = 0;       // μ: half the gap between "all reduction" and "all scale"
+};
+
+} // namespace
+
+double silhouetteRelSigma() { return std::hypot(kFeRMaxRelSigma, kMeasuredRMaxRelSigma); }
+
+void interpretEndFace(const SpecimenSpec &spec, const FrictionModel &model, Measurement *m)
+{
+    if (m->error != ErrorCode::None) {
+        m->status = Status::Error;
+        return;
+    }
+    const DeclaredTolerances &tol = spec.tolerances;
+    const bool declared = spec.hFinalMm > 0 && spec.hFinalMm < spec.h0Mm;
+    const double r0 = declared ? 1.0 - spec.hFinalMm / spec.h0Mm : kNominalReduction;
+    const double sigmaR0 = declared ? tol.hFinalMm / spec.h0Mm : kUndeclaredReductionSigma;
+    double sigmaK0 = tol.scaleRel;
+
+    // Geometry in millimetres.
+    double s = spec.mmPerPx;
+    m->rInnerMm = m->inner.rEqPx * s;
+    m->rOuterMm = m->outer.rEqPx * s;
+    m->rMaxMm = m->rMaxPx * s;
+    m->uPx = m->outer.rEqPx - m->inner.rEqPx;
+    m->uMm = m->uPx * s;
+    double planeOffsetPx = -1;
+    if (spec.calibration) {
+        // Each boundary mapped point by point into the end-face plane (undistorted, tilt
+        // removed, at the specimen's height); s becomes the contact edge's effective scale.
+        PlaneCalibration plane = *spec.calibration;
+        plane.heightMm = spec.h0Mm * (1.0 - r0);
+        const PlaneOutline pi = planeOutline(m->inner, m->centreX, m->centreY, plane);
+        const PlaneOutline po = planeOutline(m->outer, m->centreX, m->centreY, plane);
+        if (!(pi.valid && po.valid && m->outer.rEqPx > 0)) {
+            m->status = Status::Error;
+            m->error = ErrorCode::BadSpecimen;
+            return;
+        }
+        m->rInnerMm = pi.rEqMm, m->rOuterMm = po.rEqMm, m->uMm = po.rEqMm - pi.rEqMm;
+        s = po.rEqMm / m->outer.rEqPx;
+        // The shape checks judge the end face itself, not the camera's view of it.
+        m->inner.ellipticity = pi.ellipticity, m->inner.axisDeg = pi.axisDeg;
+        m->outer.ellipticity = po.ellipticity, m->outer.axisDeg = po.axisDeg;
+        planeOffsetPx = std::hypot(pi.centroidX - po.centroidX, pi.centroidY - po.centroidY) / s;
+        // The barrel is widest about half-way down: its silhouette maps at half the height.
+        BoundaryFit silhouette;
+        silhouette.a0 = m->rMaxPx;
+        PlaneCalibration mid = plane;
+        mid.heightMm *= 0.5;
+        m->rMaxMm = m->rMaxPx > 0 ? equivalentRadiusMm(silhouette, m->centreX, m->centreY, mid) : 0;
+        // The plane's height is as uncertain as the reduction: its part of the scale.
+        const double dh = spec.h0Mm * sigmaR0;
+        PlaneCalibration up = plane, down = plane;
+        up.heightMm += dh, down.heightMm -= dh;
+        const double sUp = planeScaleAt(up, m->centreX, m->centreY);
+        const double sDown = planeScaleAt(down, m->centreX, m->centreY);
+        const double heightPart = sUp > 0 && sDown > 0 ? std::fabs(sUp - sDown) / (sUp + sDown) : 0.01;
+        sigmaK0 = std::hypot(tol.calibrationScaleRel, heightPart);
+    }
+
+    // u's own uncertainty: the fits' scatter and a 0.1 px location floor per boundary; an
+    // uncalibrated camera's tilt shrinks the equal-area radii by up to e/2 (e the shared
+    // ellipticity), which the declared scale may or may not have absorbed.
+    const double sigPx = std::sqrt(m->inner.rEqSigmaPx * m->inner.rEqSigmaPx +
+                                   m->outer.rEqSigmaPx * m->outer.rEqSigmaPx + 2 * 0.1 * 0.1);
+    m->uSigmaMm = sigPx * s;
+    const double axisDiff = std::fabs(std::remainder(m->inner.axisDeg - m->outer.axisDeg, 180.0));
+    const bool sharedEllipse = m->inner.ellipticity > 0.012 && m->outer.ellipticity > 0.012 && axisDiff < 20;
+    double uSigmaEdges = m->uSigmaMm;
+    if (!spec.calibration && sharedEllipse) {
+        const double e = std::min(m->inner.ellipticity, m->outer.ellipticity);
+        uSigmaEdges = std::hypot(uSigmaEdges, m->uMm * e / (2 * std::sqrt(3.0)));
+    }
+
+    // Image-quality flags.
+    uint32_t f = m->flags;
+    const double r0Px = 0.5 * spec.d0Mm / s;
+    if (std::min(m->inner.coverage, m->outer.coverage) < 0.6) f |= kFlagLowCoverage;
+    if (std::max(m->inner.scatterPx, m->outer.scatterPx) > std::max(1.5, 0.006 * r0Px)) f |= kFlagHighScatter;
+    if (std::fabs(m->inner.contrast) < 5.0) f |= kFlagLowContrast;
+    m->centreOffsetPx = planeOffsetPx >= 0 ? planeOffsetPx
+                                           : std::hypot(m->inner.centreX - m->outer.centreX,
+                                                        m->inner.centreY - m->outer.centreY);
+    if (m->centreOffsetPx > std::max(3.0, 0.012 * r0Px)) f |= kFlagCentreOffset;
+    if (sharedEllipse) f |= kFlagElliptical;
+    if (m->uPx < 3.0) f |= kFlagNarrowRing;
+    if (m->edgeWidthPx > 2.6) f |= kFlagBlurred;
+    if (m->saturatedFraction > 0.02) f |= kFlagSaturated;
+
+    const MuFunction F(spec, model);
+    const double u = m->uMm, n = spec.n;
+    const double mu0 = F.at(u, r0, n);
+
+    // The silhouette as an observation of scale and reduction (see the header).
+    ScaleAndReduction sr;
+    sr.pk = sigmaK0 * sigmaK0;
+    sr.pr = sigmaR0 * sigmaR0;
+    double d = 0, beta = 0;
+    bool usable = false;
+    if (spec.calibration) {
+        // Calibrated: R_max is reported, not held against the model.
+    } else if (m->rMaxPx > 0) {
+        const RadiiCheck rc = checkRadii(m->rMaxMm, n, mu0, spec.d0Mm, r0, spec.h0Mm);
+        m->rMaxZ = rc.z;
+        m->reductionEst = rc.reductionEst;
+        if (rc.inconsistent()) f |= declared ? kFlagRadiiInconsistent : kFlagScaleSuspect;
+        const RadiiCheck up = checkRadii(m->rMaxMm, n, mu0, spec.d0Mm, r0 + 0.01, spec.h0Mm);
+        const RadiiCheck down = checkRadii(m->rMaxMm, n, mu0, spec.d0Mm, r0 - 0.01, spec.h0Mm);
+        const double overContact = m->rMaxMm / m->rOuterMm;
+        usable = rc.valid && up.valid && down.valid && m->silhouetteCoverage >= kSilhouetteMinCoverage &&
+                 overContact > kSilhouetteOverContactMin && overContact < kSilhouetteOverContactMax;
+        if (usable) {
+            d = std::log(m->rMaxMm / rc.rMaxFeMm);
+            beta = std::log(up.rMaxFeMm / down.rMaxFeMm) / 0.02;
+            usable = beta > 0.1;
+        }
+        if (!usable) f |= kFlagSilhouetteUnreliable;
+    } else {
+        f |= kFlagNoSilhouette;
+    }
+    if (usable) {
+        const double se = silhouetteRelSigma();
+        const double S = sr.pk + beta * beta * sr.pr + se * se;
+        const double chi2 = d * d / S;
+        if (declared && chi2 > kContradictionChi2) {
+            // Declared scale and height cannot both be right: neither is corrected, and each
+            // is widened to explain the whole discrepancy alone.
+            sr.pk = std::max(sr.pk, d * d);
+            sr.pr = std::max(sr.pr, d * d / (beta * beta));
+        } else {
+            sr.dk = sr.pk / S * d;
+            sr.dr = beta * sr.pr / S * d;
+            const double w = std::max(1.0, chi2);
+            const double pk = sr.pk - sr.pk * sr.pk / S;
+            const double pr = sr.pr - beta * beta * sr.pr * sr.pr / S;
+            sr.pkr = -w * beta * sr.pk * sr.pr / S;
+            sr.pk = w * pk;
+            sr.pr = w * pr;
+        }
+    }
+    double uF = u * std::exp(-sr.dk), rF = r0 + sr.dr;
+    if (usable && !declared) {
+        // Pressed further, or a scale too large? Midway, with half the gap as its uncertainty.
+        const double muA = F.at(uF, rF, n), muB = F.at(u * std::exp(-d), r0, n);
+        sr.ambiguity = 0.5 * std::fabs(muA - muB);
+        uF = u * std::exp(-0.5 * (sr.dk + d));
+        rF = r0 + 0.5 * sr.dr;
+    }
+    m->reduction = rF;
+    m->reductionSigma = std::sqrt(sr.pr);
+    m->scaleFactor = uF / u;
+    m->rInnerMm *= m->scaleFactor, m->rOuterMm *= m->scaleFactor, m->rMaxMm *= m->scaleFactor;
+    m->uMm = uF;
+
+    // The reading: a model that carries u to 50 % itself reads at rF; one that does not (the
+    // paper's fit as published) reads as is, and the carry it leaves out is in the budget.
+    ModelEstimate est;
+    double bias = 0;
+    if (model.correctsReduction()) {
+        est = F.estimate(uF, rF, n);
+        if (!declared) est.range &= ~uint32_t(kModelReductionOutside); // the inferred reduction is budgeted
+    } else {
+        est = model.estimate({uF, n, spec.kMpa, spec.d0Mm, spec.h0Mm, 0});
+        bias = F.at(uF, rF, n) - est.mu;
+    }
+    m->mu = est.mu;
+
+    // Sensitivities by central differences of the model at the reading's inputs.
+    const double hu = std::max(1e-4, 0.01 * uF), hr = 0.005, hn = std::max(1e-4, tol.n);
+    const double gU = (F.at(uF + hu, rF, n) - F.at(std::max(0.0, uF - hu), rF, n)) / (uF + hu - std::max(0.0, uF - hu));
+    const double gR = (F.at(uF, rF + hr, n) - F.at(uF, rF - hr, n)) / (2 * hr);
+    const double gN = (F.at(uF, rF, n + hn) - F.at(uF, rF, n - hn)) / (2 * hn);
+    const double a = -uF * gU; // per unit relative scale error
+    // The carry's own error: a quarter of its effect (the FE slope is resolution-limited).
+    const double carry = 0.25 * std::fabs(F.at(uF, rF, n) - F.at(uF, kNominalReduction, n));
+    UncertaintyBudget &b = m->budget;
+    b.edges = std::fabs(gU) * uSigmaEdges;
+    b.scale = std::fabs(a) * std::sqrt(sr.pk);
+    b.reduction = std::sqrt(gR * gR * sr.pr + carry * carry + sr.ambiguity * sr.ambiguity + bias * bias);
+    b.n = std::fabs(gN) * tol.n;
+    b.model = model.estimate({uF, n, spec.kMpa, spec.d0Mm, spec.h0Mm, 0}).modelSigma;
+    const double var = b.edges * b.edges + b.scale * b.scale + b.reduction * b.reduction + b.n * b.n +
+                       b.model * b.model + 2 * a * gR * sr.pkr;
+    const double floor = std::max({b.edges, b.scale, b.reduction, b.n, b.model});
+    m->muSigma = std::sqrt(std::max(var, floor * floor));
+
+    if (est.range & (kModelNBelow | kModelNAbove)) f |= kFlagNOutOfRange;
+    if (est.range & kModelKOutside) f |= kFlagKOutOfRange;
+    if (est.range & kModelMuBelow) f |= kFlagMuBelowRange;
+    if (est.range & kModelMuAbove) f |= kFlagMuAboveRange;
+    if (est.range & kModelUOutside) f |= kFlagUOutsideModel;
+    if (est.range & kModelAspectOutside) f |= kFlagAspectOutside;
+    if (model.correctsReduction()) {
+        if (est.range & kModelReductionOutside) f |= kFlagReductionOutside;
+    } else if (declared && std::fabs(r0 - kNominalReduction) > 0.01) {
+        f |= kFlagReductionOutside;
+    }
+
+    // Status from the budget.
+    m->toleranceMu = spec.tolerance.at(std::fabs(m->mu));
+    if (spec.tolerance.coverage * m->muSigma > m->toleranceMu) {
+        const double parts[5] = {b.edges, b.scale, b.reduction, b.n, b.model};
+        const uint32_t names[5] = {kFlagEdgesUncertain, kFlagScaleUncertain, kFlagReductionUncertain,
+                                   kFlagNUncertain, kFlagModelUncertain};
+        f |= names[std::max_element(parts, parts + 5) - parts];
+    }
+    m->flags = f;
+    m->status = f ? Status::Warn : Status::Ok;
+    m->error = ErrorCode::None;
+}
+
+} // namespace icacam::vision

@@ -1,0 +1,48 @@
+#pragma once
+// The second half of a measurement: the end face's geometry (boundaries and silhouette in
+// pixels, image-quality flags) and what the instrument was told (SpecimenSpec) → radii in
+// mm, u, μ, its uncertainty budget, status and flags. The device, `icacam measure` and
+// `icacam loop` all read through this one function (docs/uncertainty.md).
+//
+// The budget follows the GUM (JCGM 100): every component is a standard uncertainty of an
+// input carried into μ by the friction model's own sensitivity (central differences of the
+// model, never a hand-derived slope):
+//   edges      u's scatter from the boundary fits, a 0.1 px edge-location floor per
+//              boundary, and an uncalibrated camera's tilt (the boundaries' shared ellipticity);
+//   scale      mm_per_px's tolerance, or the calibration's own and the end-face plane's
+//              height (which follows the reduction);
+//   reduction  the final height: declared with its tolerance, or inferred (below), and the
+//              carry to 50 % itself (the FE slope is not exact);
+//   n          the declared n's tolerance;
+//   model      the 50 % model's own fit error.
+//
+// The silhouette R_max ties scale and reduction together: ln(R_max / R_max,FE) = δk + β·δr
+// (δk the scale's relative error, β = ∂ln R_max,FE/∂r). A silhouette that fits the FE's
+// shape (R_max/R_o within what the FE and the edges allow) is one observation of δk + β·δr;
+// with the priors of the declared scale and reduction it gives their posterior (a linear
+// Gaussian update; past χ² = 1 the posterior is widened by χ², as for a Birge ratio). With a
+// declared final height the discrepancy is mostly the scale's. Without one the silhouette
+// cannot tell a specimen pressed further from a scale that is too large: the reading takes
+// the midpoint of the two explanations (all reduction, per the update; all scale) and half
+// their difference as an uncertainty, so that either truth lies within the budget. A
+// calibrated scale is not checked by the silhouette (a camera close enough to need a
+// calibration sees the barrel's widest section partly hidden behind the end face's rim).
+//
+// Status: ok when no check flags the reading and coverage·σ_μ ≤ the tolerance
+// (SpecimenSpec::tolerance); else warn, with the budget's leading component named by a flag
+// (edges_uncertain, scale_uncertain, reduction_uncertain, n_uncertain, model_uncertain).
+// Pure C++20: no heap, no OS calls, no exceptions.
+#include "model/friction_model.h"
+#include "measurement.h"
+#include "specimen_spec.h"
+
+namespace icacam::vision {
+
+// Fills m's radii, u, μ, budget, status and flags from its geometry. m comes from
+// EndFaceAnalyzer::measureFace; one whose error is set stays an error.
+void interpretEndFace(const SpecimenSpec &spec, const FrictionModel &model, Measurement *m);
+
+// The silhouette's relative 1-σ error against the FE (measurement and FE, radii_consistency.h).
+double silhouetteRelSigma();
+
+} // namespace icacam::vision

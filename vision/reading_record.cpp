@@ -1,0 +1,143 @@
+#include "reading_record.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+
+namespace icacam::vision {
+
+namespace {
+
+enum class Field : uint8_t { Status, Flags, Message, Model, Number };
+
+struct FieldSpec {
+    const char *name;
+    Field kind;
+    int decimals;
+    // Value of a numeric field; NaN when the reading has none (a silhouette not found …).
+    double (*value)(const Measurement &m);
+};
+
+double nan() { return std::nan(""); }
+
+// PRODUCT.md §6 columns, then the budget and what the reading was read at, then diagnostics.
+const FieldSpec kFields[] = {
+    {"status", Field::Status, 0, nullptr},
+    {"r_inner_mm", Field::Number, 5, [](const Measurement &m) { return m.rInnerMm; }},
+    {"r_outer_mm", Field::Number, 5, [](const Measurement &m) { return m.rOuterMm; }},
+    {"u_mm", Field::Number, 5, [](const Measurement &m) { return m.uMm; }},
+    {"mu", Field::Number, 5, [](const Measurement &m) { return m.mu; }},
+    {"mu_sigma", Field::Number, 5, [](const Measurement &m) { return m.muSigma; }},
+    {"flags", Field::Flags, 0, nullptr},
+    {"message", Field::Message, 0, nullptr},
+    {"sigma_edges", Field::Number, 5, [](const Measurement &m) { return m.budget.edges; }},
+    {"sigma_scale", Field::Number, 5, [](const Measurement &m) { return m.budget.scale; }},
+    {"sigma_reduction", Field::Number, 5, [](const Measurement &m) { return m.budget.reduction; }},
+    {"sigma_n", Field::Number, 5, [](const Measurement &m) { return m.budget.n; }},
+    {"sigma_model", Field::Number, 5, [](const Measurement &m) { return m.budget.model; }},
+    {"tolerance_mu", Field::Number, 5, [](const Measurement &m) { return m.toleranceMu; }},
+    {"reduction", Field::Number, 4, [](const Measurement &m) { return m.reduction; }},
+    {"reduction_sigma", Field::Number, 4, [](const Measurement &m) { return m.reductionSigma; }},
+    {"scale_factor", Field::Number, 5, [](const Measurement &m) { return m.scaleFactor; }},
+    {"model", Field::Model, 0, nullptr},
+    {"u_px", Field::Number, 3, [](const Measurement &m) { return m.uPx; }},
+    {"u_sigma_mm", Field::Number, 5, [](const Measurement &m) { return m.uSigmaMm; }},
+    {"r_max_mm", Field::Number, 4, [](const Measurement &m) { return m.rMaxPx > 0 ? m.rMaxMm : nan(); }},
+    {"centre_x_px", Field::Number, 2, [](const Measurement &m) { return m.centreX; }},
+    {"centre_y_px", Field::Number, 2, [](const Measurement &m) { return m.centreY; }},
+    {"centre_offset_px", Field::Number, 3, [](const Measurement &m) { return m.centreOffsetPx; }},
+    {"edge_width_px", Field::Number, 3, [](const Measurement &m) { return m.edgeWidthPx; }},
+    {"saturated_fraction", Field::Number, 4, [](const Measurement &m) { return m.saturatedFraction; }},
+    {"inner_contrast", Field::Number, 2, [](const Measurement &m) { return m.inner.contrast; }},
+    {"outer_contrast", Field::Number, 2, [](const Measurement &m) { return m.outer.contrast; }},
+    {"inner_coverage", Field::Number, 3, [](const Measurement &m) { return m.inner.coverage; }},
+    {"outer_coverage", Field::Number, 3, [](const Measurement &m) { return m.outer.coverage; }},
+    {"inner_scatter_px", Field::Number, 3, [](const Measurement &m) { return m.inner.scatterPx; }},
+    {"outer_scatter_px", Field::Number, 3, [](const Measurement &m) { return m.outer.scatterPx; }},
+    {"inner_ellipticity", Field::Number, 5, [](const Measurement &m) { return m.inner.ellipticity; }},
+    {"outer_ellipticity", Field::Number, 5, [](const Measurement &m) { return m.outer.ellipticity; }},
+    {"inner_axis_deg", Field::Number, 1, [](const Measurement &m) { return m.inner.axisDeg; }},
+    {"outer_axis_deg", Field::Number, 1, [](const Measurement &m) { return m.outer.axisDeg; }},
+    {"silhouette_coverage", Field::Number, 3, [](const Measurement &m) { return m.rMaxPx > 0 ? m.silhouetteCoverage : nan(); }},
+    {"reduction_est", Field::Number, 4, [](const Measurement &m) { return m.reductionEst >= 0 ? m.reductionEst : nan(); }},
+    {"r_max_z", Field::Number, 2, [](const Measurement &m) { return m.rMaxPx > 0 ? m.rMaxZ : nan(); }},
+};
+constexpr int kFieldCount = int(sizeof kFields / sizeof kFields[0]);
+
+// What to declare or improve when a budget component leads past the tolerance.
+const char *remedy(uint32_t flags)
+{
+    if (flags & kFlagReductionUncertain) return "declare h_final_mm (the final height) for a reading within tolerance";
+    if (flags & kFlagScaleUncertain) return "check mm_per_px on the end-face plane, or calibrate the camera";
+    if (flags & kFlagEdgesUncertain) return "edges scatter: clean the end face, relight or refocus";
+    if (flags & kFlagNUncertain) return "n's tolerance dominates: a closer n is needed";
+    if (flags & kFlagModelUncertain) return "the friction model's own error exceeds the tolerance here";
+    return nullptr;
+}
+
+} // namespace
+
+int readingFieldCount() { return kFieldCount; }
+const char *readingFieldName(int i) { return i >= 0 && i < kFieldCount ? kFields[i].name : ""; }
+bool readingFieldNumeric(int i) { return i >= 0 && i < kFieldCount && kFields[i].kind == Field::Number; }
+
+void flagList(uint32_t flags, char *buf, size_t size)
+{
+    if (size == 0) return;
+    size_t n = 0;
+    buf[0] = 0;
+    for (int bit = 0; bit < kFlagCount; ++bit) {
+        if (!(flags & (1u << bit))) continue;
+        const int w = std::snprintf(buf + n, size - n, "%s%s", n ? ";" : "", flagName(bit));
+        if (w < 0 || size_t(w) >= size - n) {
+            buf[n] = 0; // a name that does not fit is left out whole
+            break;
+        }
+        n += size_t(w);
+    }
+}
+
+void readingMessage(const Measurement &m, char *buf, size_t size)
+{
+    if (size == 0) return;
+    buf[0] = 0;
+    if (m.status == Status::Error) {
+        std::snprintf(buf, size, "%s", errorMessage(m.error));
+        return;
+    }
+    if (m.status == Status::Ok) return;
+    char flags[512];
+    flagList(m.flags, flags, sizeof flags);
+    const char *hint = remedy(m.flags);
+    if (hint)
+        std::snprintf(buf, size, "check flags: %s; 2 mu_sigma %.4f beyond the tolerance %.4f: %s", flags,
+                      2 * m.muSigma, m.toleranceMu, hint);
+    else
+        std::snprintf(buf, size, "check flags: %s", flags);
+}
+
+void writeReading(const Measurement *m, std::string_view message, std::string_view model, RecordSink &sink)
+{
+    const bool value = m && m->hasValue();
+    char flags[512], words[768];
+    flags[0] = words[0] = 0;
+    if (value) flagList(m->flags, flags, sizeof flags);
+    if (message.empty() && m) {
+        readingMessage(*m, words, sizeof words);
+        message = words;
+    }
+    for (const FieldSpec &f : kFields) {
+        switch (f.kind) {
+        case Field::Status: sink.text(f.name, m ? statusName(m->status) : "error"); break;
+        case Field::Flags: sink.text(f.name, flags); break;
+        case Field::Message: sink.text(f.name, message); break;
+        case Field::Model: sink.text(f.name, model); break;
+        case Field::Number:
+            if (value && std::isfinite(f.value(*m))) sink.number(f.name, f.value(*m), f.decimals);
+            else sink.absent(f.name);
+            break;
+        }
+    }
+}
+
+} // namespace icacam::vision
