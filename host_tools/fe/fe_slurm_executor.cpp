@@ -127,7 +127,7 @@ std::vector<SlurmExecutor::Task> SlurmExecutor::submit(const std::vector<FeCase>
     // The task → case list under the job's id: what a restarted sweep finds its tasks by.
     fs::rename(list, jobs / (job + ".cases"));
     fs::rename(script, jobs / (job + ".sh"));
-    std::cout << "slurm: submitted job " << job << " (" << jobName_ << "): " << cases.size() << " cases, array "
+    std::cout << "slurm: submitted job " << job << " (" << jobName_ << "): " << cases.size() << (cases.size() == 1 ? " case" : " cases") << ", array "
               << array.substr(8) << "; script " << (jobs / (job + ".sh")).string() << "\n";
     std::vector<Task> tasks;
     for (size_t i = 0; i < cases.size(); ++i) tasks.push_back({job, int(i), cases[i]});
