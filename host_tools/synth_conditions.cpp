@@ -94,9 +94,8 @@ void reframe(EndFaceScene &s, Rng &rng, int width, int height, double mmPerPx, d
     s.cyPx = uniform(rng, rPx + margin, std::max(rPx + margin + 1, height - rPx - margin));
 }
 
+// One rendered record: the specimen, what the lab declares, what was true, the image.
 struct Record {
-    std::string id, image;
-    SynthCondition condition = SynthCondition::Declared;
     Specimen spec;
     double declaredMmPerPx = 0; // 0: not declared (the calibration gives it)
     bool calibrated = false;
@@ -181,7 +180,6 @@ CalibratedCamera makeCalibratedCamera(Rng &rng, const fs::path &dir)
 Record renderRecord(SynthCondition cond, Rng &rng, bool hard, const CalibratedCamera *calib)
 {
     Record rec;
-    rec.condition = cond;
     const bool reduced = cond == SynthCondition::Reduction;
     rec.spec = drawSpecimen(rng, reduced ? 0.45 : 0.5, reduced ? 0.55 : 0.5);
     const Specimen &sp = rec.spec;
@@ -236,8 +234,7 @@ Record renderRecord(SynthCondition cond, Rng &rng, bool hard, const CalibratedCa
             if (specimenInFrame(cam, at.x, at.y, faceHeight, sp.rMaxMm)) break;
             if (tries > 50) throw std::runtime_error("synth: the specimen does not fit the tilted camera's frame");
         }
-        const cv::Vec3d rv = cam.fixtureRvec;
-        rec.tiltDeg = cv::norm(rv) * 180 / M_PI;
+        rec.tiltDeg = cv::norm(cam.fixtureRvec) * 180 / M_PI; // the rotation's axis lies in the fixture plane
         rec.k1 = cam.k1;
         rec.focalPx = cam.fx;
         rec.workingDistanceMm = std::fabs(cam.fixtureTvec[2]);
