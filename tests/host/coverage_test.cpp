@@ -115,7 +115,7 @@ TEST(Score, TakesTheBudgetWithoutTheModelTermWhenTheTruthIsTheModelsOwn)
 }
 
 // Every condition's set holds what its truth says: parameters in the stated ranges, and,
-// measured with the condition declared (the final height, the true scale, the true camera),
+// measured with everything declared (the final height, the true scale, the true camera),
 // read like the development set's kind. A truth that did not match its images would shift
 // every reading of a condition.
 TEST(SynthConditions, TruthMatchesTheImagesWhenTheConditionIsDeclared)
@@ -137,12 +137,14 @@ TEST(SynthConditions, TruthMatchesTheImagesWhenTheConditionIsDeclared)
         ASSERT_FALSE(img.empty()) << t.get("id");
         EXPECT_EQ(img.cols, int(num(t, "width")));
         EXPECT_EQ(img.rows, int(num(t, "height")));
-        double mmPerPx = num(m, "mm_per_px"), hFinal = 0;
+        // Declared: the final height always (else the reading infers the reduction from a
+        // silhouette the perspective or a coarse frame moves), the true scale or camera.
+        double mmPerPx = num(m, "mm_per_px");
+        const double hFinal = 15 * (1 - num(t, "reduction"));
         std::string calib;
         if (cond == "reduction") {
             EXPECT_GE(num(t, "reduction"), 0.45);
             EXPECT_LE(num(t, "reduction"), 0.55);
-            hFinal = 15 * (1 - num(t, "reduction"));
         } else EXPECT_EQ(num(t, "reduction"), 0.5) << t.get("id");
         if (cond == "fixture_scale") {
             EXPECT_GE(wd, 70);
@@ -167,7 +169,7 @@ TEST(SynthConditions, TruthMatchesTheImagesWhenTheConditionIsDeclared)
         }
         declared << t.get("id") << "," << m.get("image") << "," << m.get("n") << "," << m.get("k_mpa") << ",10,15,";
         if (calib.empty()) declared << mmPerPx;
-        declared << "," << (hFinal > 0 ? std::to_string(hFinal) : "") << "," << calib << "\n";
+        declared << "," << hFinal << "," << calib << "\n";
     }
     EXPECT_FALSE(set.manifest.rows[0].has("h_final_mm")) << "the reduction is not declared";
     // Measured with the condition declared.
