@@ -1,6 +1,7 @@
 #include "loop_physics.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <map>
 #include <set>
@@ -175,6 +176,11 @@ vision::ModelInputs inputsOf(const LoopRecord &r)
 GroupReading readingOf(const std::vector<LoopRecord> &usable, const Candidate &g)
 {
     if (g.kind != "categorical" || g.levels.size() != usable.size()) return GroupReading::Scale;
+    // Named as a material: its records may declare n per batch, the shift is per material.
+    std::string name = g.name;
+    for (char &ch : name) ch = char(std::tolower(static_cast<unsigned char>(ch)));
+    for (const char *word : {"material", "alloy", "grade"})
+        if (name.find(word) != std::string::npos) return GroupReading::N;
     std::map<std::string, std::set<long>> nPerLevel;
     std::set<long> all;
     for (size_t i = 0; i < usable.size(); ++i) {

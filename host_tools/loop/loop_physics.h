@@ -18,8 +18,9 @@ enum class GroupReading {
 };
 const char *formName(GroupReading reading); // the ranking's form: "factor" or "n"
 
-// A grouping whose every level carries one declared n (and at least two levels differ) is a
-// material: its physical form is n. Any other grouping is read as images grouped by camera.
+// A grouping named as a material (material, alloy, grade), or whose every level carries one
+// declared n (and at least two levels differ), is a material: its physical form is a shift of
+// n. Any other grouping is read as images grouped by camera.
 GroupReading readingOf(const std::vector<LoopRecord> &usable, const Candidate &grouping);
 
 struct GroupFit {
