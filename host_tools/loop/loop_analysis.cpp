@@ -415,6 +415,8 @@ std::vector<RankedCandidate> rankCandidates(const std::vector<Candidate> &candid
                 formSens = formList[fi].sens;
             }
         }
+        const std::string patchForm = form;
+        const double cvRmsPatch = rms(e1);
         // The chosen form's nested test: the in-sample fit against the form's baseline.
         int p0 = 0, p1 = 0;
         double sse0 = inSample(nullptr, formSens, &p0), sse1 = inSample(&c, formSens, &p1);
@@ -447,6 +449,8 @@ std::vector<RankedCandidate> rankCandidates(const std::vector<Candidate> &candid
         r.kind = c.kind;
         r.symptom = c.symptom;
         r.form = form;
+        r.patchForm = patchForm;
+        r.cvRmsPatch = cvRmsPatch;
         r.cvRmsBefore = rms(*e0);
         r.cvRmsAfter = rms(e1);
         r.gain = r.cvRmsBefore - r.cvRmsAfter;

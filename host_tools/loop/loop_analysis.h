@@ -51,6 +51,10 @@ struct RankedCandidate {
     std::string form = "mu";
     double cvRmsBefore = 0; // k-fold RMS of the residual with a constant offset only
     double cvRmsAfter = 0;  // k-fold RMS with the one-candidate model
+    // The best plain regression of the residual (forms mu, scale, u): the patch the physical
+    // forms are compared with.
+    std::string patchForm = "mu";
+    double cvRmsPatch = 0;
     double gain = 0;        // cvRmsBefore - cvRmsAfter
     double z = 0;           // nested F test of the form against its baseline, as a normal z
     double correlation = 0; // numeric: Pearson r with the residual (for reading only)

@@ -362,7 +362,7 @@ LoopSummary runLoopOn(const Manifest &manifest, const std::string &source, const
     const Candidate *lead = nullptr;
     for (const Candidate &c : cands)
         if (c.name == s.chosen) lead = &c;
-    if (lead) s.cvRmsPatch = s.ranking.front().cvRmsAfter;
+    if (lead) s.cvRmsPatch = s.ranking.front().cvRmsPatch;
     if (s.physical) s.reading = "fe_slope";
     else if (lead && (isReduction || lead->symptom)) s.reading = "patch";
     else if (lead && lead->kind == "categorical") {
@@ -461,8 +461,9 @@ LoopSummary runLoopOn(const Manifest &manifest, const std::string &source, const
         f << "| before (model as is) | " << f4(s.rmsBefore) << " |\n";
         f << "| constant offset only (k-fold) | " << f4(s.cvRmsOffset) << " |\n";
         if (!s.ranking.empty())
-            f << "| best one-candidate regression of the residual (" << s.ranking.front().name << ", k-fold) | "
-              << f4(s.ranking.front().cvRmsAfter) << " |\n";
+            f << "| regression patch: the best linear model of the residual in " << s.ranking.front().name
+              << " (form `" << s.ranking.front().patchForm << "`, k-fold) | " << f4(s.ranking.front().cvRmsPatch)
+              << " |\n";
         if (s.physical) {
             f << "| **after: u carried to 50 % with FE du/dr, μ = model(u50, n)** (no parameter fitted here) | **"
               << f4(s.rmsPhysical) << "** |\n";

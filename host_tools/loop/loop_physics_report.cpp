@@ -71,12 +71,12 @@ void writePhysicalCsv(const std::string &path, const LoopSummary &s)
 void writePhysicalSection(std::ostream &f, const LoopSummary &s)
 {
     const RankedCandidate &lead = s.ranking.front();
-    f << "`" << s.chosen << "` (" << lead.kind << ", best regression form `" << lead.form << "`).\n\n";
+    f << "`" << s.chosen << "` (" << lead.kind << ", ranked in form `" << lead.form << "`).\n\n";
     f << "| held-out error in μ (k-fold) | RMS |\n|---|---|\n";
     f << "| before (model as is) | " << fmt(s.rmsBefore) << " |\n";
     f << "| constant offset only | " << fmt(s.cvRmsOffset) << " |\n";
-    f << "| patch: one-candidate regression of the residual (form `" << lead.form << "`) | " << fmt(s.cvRmsPatch)
-      << " |\n";
+    f << "| patch: the best linear regression of the residual (form `" << lead.patchForm << "`) | "
+      << fmt(s.cvRmsPatch) << " |\n";
     if (s.reading == "scale" || s.reading == "n")
         f << "| **physical: " << (s.reading == "scale" ? "a length factor per group" : "an n per material")
           << "** | **" << fmt(s.cvRmsAfter) << "** |\n";
@@ -84,9 +84,10 @@ void writePhysicalSection(std::ostream &f, const LoopSummary &s)
     if (s.reading == "scale") {
         f << "Read as a length scale per group of images (`" << s.chosen
           << "`): every length a group's camera measures is off by one factor s (measured/true), so μ = "
-             "model(u/s, n). s fitted per group by least squares against μ_ref; uncertainty from the pooled "
-             "scatter after the fit ("
-          << fmt(s.grouping.scatter) << " in μ); U = " << kCoverage << " σ (≈ 95 %).\n\n";
+             "model(u/s, n). s fitted per group by least squares against μ_ref; σ the larger of the pooled "
+             "scatter's (after the fit, "
+          << fmt(s.grouping.scatter) << " in μ) and the jackknife's over the group's records; U = " << kCoverage
+          << " σ (≈ 95 %).\n\n";
         f << "| " << s.chosen << " | records | factor s (measured/true) | σ | U (k = 2) | fix mm_per_px by × | verdict |\n"
              "|---|---|---|---|---|---|---|\n";
         for (const GroupFit &g : s.grouping.groups)
@@ -98,10 +99,11 @@ void writePhysicalSection(std::ostream &f, const LoopSummary &s)
              "with 1 show what the model itself contributes.\n";
     } else if (s.reading == "n") {
         f << "Read as the strain-hardening exponent per material (`" << s.chosen
-          << "`: every level carries one declared n): the n that makes that material's records consistent, "
-             "μ = model(u, n), fitted by least squares against μ_ref; uncertainty from the pooled scatter after the "
-             "fit ("
-          << fmt(s.grouping.scatter) << " in μ); U = " << kCoverage << " σ (≈ 95 %).\n\n";
+          << "`): the n that makes that material's records consistent, "
+             "μ = model(u, n + Δn), Δn fitted by least squares against μ_ref; σ the larger of the pooled "
+             "scatter's (after the fit, "
+          << fmt(s.grouping.scatter) << " in μ) and the jackknife's over the material's records; U = " << kCoverage
+          << " σ (≈ 95 %).\n\n";
         f << "| " << s.chosen << " | records | declared n | fitted n | σ | U (k = 2) | verdict |\n|---|---|---|---|---|---|---|\n";
         for (const GroupFit &g : s.grouping.groups)
             f << "| " << g.level << " | " << g.records << " | " << fmt(g.declared) << " | " << fmt(g.value) << " | "
