@@ -94,9 +94,11 @@ std::string joinKey(const std::string &id)
     return id;
 }
 
-// What the device measured: renamed so that it is a symptom and not taken for a radii record.
-const char *const kMeasured[] = {"mu", "mu_sigma", "u_mm", "r_inner_mm", "r_outer_mm", "reduction_est",
-                                 "status", "flags", "message", "ms"};
+// The device's principal results (vision/reading_record.h): renamed device_* so that they
+// are symptoms and not taken for a radii record. Its per-edge diagnostics are left out: the
+// re-measurement's diag_* carry the current pipeline's.
+const char *const kMeasured[] = {"mu", "mu_sigma", "u_mm", "r_inner_mm", "r_outer_mm", "r_max_mm", "reduction",
+                                 "reduction_est", "scale_factor", "status", "flags", "message", "ms"};
 // Settings and conditions the device recorded with each result.
 const char *const kConditions[] = {"n", "k_mpa", "mm_per_px", "h_final_mm", "material", "calibration", "trigger"};
 
