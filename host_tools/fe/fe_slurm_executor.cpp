@@ -202,9 +202,11 @@ size_t SlurmExecutor::solve(const std::vector<FeCase> &cases, const GatherFn &ga
             else ++it;
         if (flying.empty()) break;
         const QueueView now = queuedTasks(jobName_);
-        std::map<std::string, std::string> state; // "job_task" → state
+        std::map<std::string, std::string> state; // "job_task" → state (why, while pending)
         if (now.ok)
-            for (const QueuedTask &t : now.tasks) state[taskKey(t.jobId, t.index)] = t.state;
+            for (const QueuedTask &t : now.tasks)
+                state[taskKey(t.jobId, t.index)] =
+                    t.state + (t.state == "PENDING" && t.reason != "None" && !t.reason.empty() ? " (" + t.reason + ")" : "");
         else
             std::cout << "slurm: squeue did not answer (" << now.error << "); waiting\n";
         std::map<std::string, int> counts;
