@@ -120,15 +120,33 @@ bool readJournalManifest(const std::string &journalDir, const std::string &refer
     *info = {};
     Manifest ref;
     if (!readManifest(referenceCsv, &ref, error)) return false;
-    if (std::find(ref.columns.begin(), ref.columns.end(), "id") == ref.columns.end()) {
-        *error = "reference CSV '" + referenceCsv + "' has no id column";
+    auto hasColumn = [&](const char *c) { return std::find(ref.columns.begin(), ref.columns.end(), c) != ref.columns.end(); };
+    const std::string idColumn = hasColumn("id") ? "id" : hasColumn("record_id") ? "record_id" : "";
+    if (idColumn.empty()) {
+        *error = "reference CSV '" + referenceCsv + "' has no id (or record_id) column";
         return false;
     }
     std::map<std::string, const ManifestRow *> byId;
     for (const ManifestRow &r : ref.rows) {
         if (!r.error.empty()) { info->skipped.push_back("reference line " + std::to_string(r.line) + ": " + r.error); continue; }
-        byId[joinKey(r.get("id"))] = &r;
+        byId[joinKey(r.get(idColumn))] = &r;
     }
+    // D0 and H0: the result records do not carry them.
+    std::map<std::string, std::string> settings;
+    {
+        std::ifstream conf(fs::path(journalDir) / "settings.conf");
+        std::string l;
+        while (std::getline(conf, l)) {
+            const size_t eq = l.find(" = ");
+            if (eq != std::string::npos) settings[l.substr(0, eq)] = l.substr(eq + 3);
+        }
+    }
+    const bool refGeometry = hasColumn("d0_mm") && hasColumn("h0_mm");
+    const bool savedGeometry = settings.count("d0_mm") && settings.count("h0_mm");
+    info->geometry = refGeometry     ? "d0_mm and h0_mm from the reference CSV"
+                     : savedGeometry ? "d0_mm " + settings["d0_mm"] + " and h0_mm " + settings["h0_mm"] +
+                                           " from the device's settings.conf as it is now (the records do not carry them)"
+                                     : "d0_mm and h0_mm not recorded: 10 and 15 mm assumed";
     const fs::path journal = fs::path(journalDir) / "journal.jsonl";
     std::ifstream in(journal);
     if (!in) {
@@ -169,8 +187,9 @@ bool readJournalManifest(const std::string &journalDir, const std::string &refer
         row.cells["image"] = f["image"];
         for (const char *c : kConditions) row.cells[c] = f[c];
         for (const char *c : kMeasured) row.cells[std::string("device_") + c] = f[c];
+        if (!refGeometry && savedGeometry) row.cells["d0_mm"] = settings["d0_mm"], row.cells["h0_mm"] = settings["h0_mm"];
         for (const auto &[k, v] : it->second->cells) {
-            if (k == "id") continue;
+            if (k == idColumn) continue;
             const bool journalHas = row.cells.count(k) > 0;
             const bool journalEmpty = journalHas && (row.cells[k].empty() || (k == "h_final_mm" && row.cells[k] == "0"));
             if (!journalHas || journalEmpty) row.cells[k] = v;
@@ -180,7 +199,10 @@ bool readJournalManifest(const std::string &journalDir, const std::string &refer
         ++info->joined;
     }
     for (const auto &[key, row] : byId)
-        if (!used.count(key)) info->skipped.push_back("reference id " + row->get("id") + ": not in the journal");
+        if (!used.count(key)) info->skipped.push_back("reference id " + row->get(idColumn) + ": not in the journal");
+    if (!refGeometry && savedGeometry)
+        for (const char *c : {"d0_mm", "h0_mm"})
+            if (std::find(out->columns.begin(), out->columns.end(), c) == out->columns.end()) out->columns.push_back(c);
     return true;
 }
 

@@ -17,6 +17,9 @@ struct JournalJoin {
     int joined = 0;      // results with a reference row and a saved frame: the manifest's rows
     int scaleChecks = 0; // scale-check lines (not measurements)
     std::vector<std::string> skipped; // "what: why", one per line or reference row left out
+    // Where D0 and H0 came from: the result records do not carry them (the reference CSV's
+    // d0_mm/h0_mm, else the device's settings.conf as it is now, else 10 and 15 mm).
+    std::string geometry;
 };
 
 // Columns of the manifest: id (the journal's record id), image (the saved frame), the
@@ -27,7 +30,7 @@ struct JournalJoin {
 // press speed, ...). A reference column the journal also has fills it where the journal's is
 // empty (an undeclared h_final_mm of 0 counts as empty) and is kept as ref_<name> otherwise.
 // Ids join by number (12 = 000012) or else as text. False only when the journal or the CSV
-// cannot be read.
+// cannot be read. The reference's id column is `id` (or `record_id`).
 bool readJournalManifest(const std::string &journalDir, const std::string &referenceCsv, Manifest *out,
                          JournalJoin *info, std::string *error);
 

@@ -215,7 +215,7 @@ LoopSummary runJournalLoop(const std::string &journalDir, const std::string &ref
                                " scale checks), joined by record id with `" + referenceCsv + "`: " +
                                std::to_string(join.joined) + " records with a reference value and a saved frame, "
                                "re-measured with the current pipeline (the device's own results are the device_* "
-                               "columns)";
+                               "columns); " + join.geometry;
     LoopSummary s = runLoopOn(manifest, source, join.skipped, reportDir, modelName, opt, feSweeps);
     s.journal = join;
     return s;

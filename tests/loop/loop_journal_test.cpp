@@ -134,6 +134,9 @@ TEST(LoopJournal, DeviceRecordsReMeasuredAndTheLensFound)
     EXPECT_FALSE(first.get("mm_per_px").empty());
     EXPECT_FALSE(first.get("lens").empty());
     EXPECT_FALSE(first.has("r_inner_mm"));
+    // D0 and H0 are not in the records: the device's saved settings give them.
+    EXPECT_EQ(first.get("d0_mm"), "10");
+    EXPECT_NE(join.geometry.find("settings.conf"), std::string::npos) << join.geometry;
     EXPECT_TRUE(isSymptom("device_mu") && isSymptom("device_r_outer_mm"));
 
     RankingOptions ro;
