@@ -164,7 +164,8 @@ std::vector<FeCase> expandGrid(const FeCase &base, const std::string &grid)
 
 int sweep(const Parsed &p)
 {
-    if (p.out.empty() || p.grid.empty()) throw std::runtime_error("sweep needs --grid and --out");
+    // --cancel only needs to know the sweep (its CSV or directory), not its cases.
+    if (p.out.empty() || (p.grid.empty() && !p.sweep.cancel)) throw std::runtime_error("sweep needs --grid and --out");
     const auto cases = expandGrid(p.c, p.grid);
     // A case leaves this process as `icacam fe run` options (Slurm tasks): they must make
     // the same case again.

@@ -64,6 +64,11 @@ SlurmExecutor::SlurmExecutor(const RunOptions &run, const SlurmOptions &slurm) :
     jobName_ = jobNameFor(dir_);
     if (slurm_.icacam.empty()) slurm_.icacam = fs::read_symlink("/proc/self/exe").string();
     for (const char *sub : {"results", "logs", "jobs"}) fs::create_directories(fs::path(dir_) / sub);
+}
+
+void SlurmExecutor::lockDirectory()
+{
+    if (lock_ >= 0) return;
     const std::string lockFile = (fs::path(dir_) / "sweep.lock").string();
     lock_ = ::open(lockFile.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
     if (lock_ < 0) throw std::runtime_error("cannot open " + lockFile);
@@ -71,6 +76,7 @@ SlurmExecutor::SlurmExecutor(const RunOptions &run, const SlurmOptions &slurm) :
         const int why = errno;
         if (why == EWOULDBLOCK) {
             ::close(lock_);
+            lock_ = -1;
             throw std::runtime_error("another sweep command watches " + dir_ + " (" + lockFile + " is locked)");
         }
         // A filesystem without flock (some parallel filesystems): say so and go on unguarded.
@@ -159,6 +165,7 @@ std::string SlurmExecutor::logTail(const Task &t) const
 
 size_t SlurmExecutor::solve(const std::vector<FeCase> &cases, const GatherFn &gather)
 {
+    lockDirectory();
     // 1. Results already on the shared filesystem (tasks that finished while no sweep
     // was watching): gathered, never run again.
     std::vector<FeCase> open;

@@ -17,14 +17,17 @@ namespace icacam::host::fe {
 
 class SlurmExecutor : public SweepExecutor {
 public:
-    // Throws when another sweep command watches the same directory (it would gather the same
-    // results into the CSV twice).
     SlurmExecutor(const RunOptions &run, const SlurmOptions &slurm);
     ~SlurmExecutor() override;
     SlurmExecutor(const SlurmExecutor &) = delete;
     SlurmExecutor &operator=(const SlurmExecutor &) = delete;
+    // Makes this command the directory's one watcher (flock on <dir>/sweep.lock, held until
+    // destruction); throws when another command watches it (both would gather the same
+    // results into the CSV). solve() takes it too.
+    void lockDirectory();
     size_t solve(const std::vector<FeCase> &cases, const GatherFn &gather) override;
-    // scancel this sweep's tasks still in the queue; returns how many there were.
+    // scancel this sweep's tasks still in the queue (also while another command watches
+    // them); returns how many there were.
     size_t cancel();
     // Moves a case's result aside (results/<case>.csv.old) so the case runs again.
     void forget(const FeCase &c) const;

@@ -80,6 +80,7 @@ int runSweep(const std::vector<FeCase> &cases, const std::string &out, const Run
         slurm->cancel();
         return 0;
     }
+    if (slurm) slurm->lockDirectory(); // before the CSV or the results are touched
     if (o.resubmitFailed) {
         std::set<std::string> again;
         for (const auto &[label, st] : failedCases(cases, out, run)) again.insert(label);

@@ -46,12 +46,15 @@ done
 # A second command on the same sweep would gather the same results twice: refused.
 if "${lost[@]}" > "$work/second-watcher.log" 2>&1; then fail "a second sweep command watched the same directory"; fi
 grep -q "another sweep command watches" "$work/second-watcher.log" || { cat "$work/second-watcher.log"; fail "no reason given"; }
-scancel -n "$name"
+# --cancel from another command while the sweep waits (a lab member stopping a sweep).
+"$icacam" fe sweep --executor slurm --out "$work/lost.csv" --cancel 1 | tee "$work/cancel.log"
+grep -q "cancelled 1 tasks" "$work/cancel.log" || fail "--cancel did not cancel the running task"
 rc=0
 wait "$pid" || rc=$?
 cat "$work/lost.log"
 [ "$rc" = 1 ] || fail "a sweep with a case left without rows exited $rc, not 1"
 grep -q "no result: task .* ended CANCELLED" "$work/lost.log" || fail "the task's end (CANCELLED) is not listed"
 [ ! -s "$work/lost.csv" ] || [ "$(tail -n +2 "$work/lost.csv" | wc -l)" = 0 ] || fail "rows for a cancelled case"
-"${lost[@]}" --cancel 1 | grep -q "cancelled 0 tasks" || fail "--cancel found tasks of a finished sweep"
+"$icacam" fe sweep --executor slurm --out "$work/lost.csv" --cancel 1 | grep -q "cancelled 0 tasks" ||
+    fail "--cancel found tasks of a finished sweep"
 echo "PASS: $(echo "$failed" | wc -l) failed case(s) listed and resubmitted alone; a cancelled task listed; a second watcher refused"
