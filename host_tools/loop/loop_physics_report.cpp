@@ -120,7 +120,9 @@ void writePhysicalSection(std::ostream &f, const LoopSummary &s)
               : e.form == "scale" ? "a relative change of u, linear in it"
                                   : "an offset in μ, linear in it")
           << "): " << fmt(e.slope, "%.4g") << " ± " << fmt(e.sigma, "%.2g") << " (1 σ) " << unit << " per unit of `"
-          << s.chosen << "`; over the recorded range " << fmt(e.xMin, "%.3g") << "–" << fmt(e.xMax, "%.3g")
+          << s.chosen << "`"
+          << (e.form == "scale" ? " (u changes by " + fmt(100 * e.slope, "%.2f") + " % per unit)" : std::string())
+          << "; over the recorded range " << fmt(e.xMin, "%.3g") << "–" << fmt(e.xMax, "%.3g")
           << " it moves μ by about " << fmt(e.muSpan) << ". It is applied here as that regression (the patch); "
              "there is no physical form to add yet.\n\n";
         f << "Next step: " << nextStudy(s.chosen) << ".\n";
