@@ -7,6 +7,7 @@
 #include "calibrate_command.h"
 #include "ctl_command.h"
 #include "fe/fe_command.h"
+#include "fe/fe_tables.h"
 #include "loop/loop_command.h"
 #include "measure_command.h"
 #include "score_command.h"
@@ -36,6 +37,9 @@ int main(int argc, char **argv)
         if (cmd == "synth") return icacam::host::synthCommand(args);
         if (cmd == "score") return icacam::host::scoreCommand(args);
         if (cmd == "calibrate") return icacam::host::calibrateCommand(args);
+        // `fe tables` needs the loop's du/dr fit as well as the FE readers: linked here, above both.
+        if (cmd == "fe" && !args.empty() && args[0] == "tables")
+            return icacam::host::fe::tablesCommand({args.begin() + 1, args.end()});
         if (cmd == "fe") return icacam::host::feCommand(args);
         if (cmd == "loop") return icacam::host::loopCommand(args);
         if (cmd == "ctl") return icacam::host::ctlCommand(args);

@@ -1,12 +1,14 @@
 #pragma once
 // The slenderness carry (issue 5, "beyond the paper": H0/D0 1.0–2.0): how much wider the ICA
 // of a specimen of another H0/D0 is than that of the paper's 10 x 15 mm one at the same n, μ
-// and height reduction, from FE runs at other H0 (docs/fe.md). `icacam fe aspect` writes it as
+// and height reduction, from FE runs at other H0 (docs/fe.md). `icacam fe tables` writes it as
 // vision/model/aspect_table.h for vision/model/aspect_corrected_model.h.
 #include <map>
 #include <string>
 #include <tuple>
 #include <vector>
+
+#include "fe_table_sources.h"
 
 namespace icacam::host::fe {
 
@@ -22,6 +24,8 @@ struct AspectRatios {
 };
 AspectRatios aspectRatios(const std::vector<std::string> &in, double minU = 0.1);
 
-int aspectCommand(const std::vector<std::string> &in, const std::string &out);
+// The header's text from src.aspect (repository names, read under sourceDir: "" or a path
+// ending in '/'); summary: one line on what it holds. Throws without a usable ratio.
+std::string aspectTableText(const TableSources &src, const std::string &sourceDir, std::string *summary);
 
 } // namespace icacam::host::fe

@@ -10,9 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "fe_aspect.h"
 #include "fe_compare.h"
-#include "fe_fit.h"
 #include "fe_report.h"
 #include "fe_runner.h"
 #include "fe_slurm_script.h"
@@ -27,7 +25,7 @@ using namespace icacam::host::fe;
 namespace {
 
 const char *kUsage =
-    "usage: icacam fe <run|sweep|fit|aspect|report|compare|deck> [options]\n"
+    "usage: icacam fe <run|sweep|tables|report|compare|deck> [options]\n"
     "  deck    --k MPa --n N --mu MU [case options]           print the CalculiX deck\n"
     "  run     [case options] [--out CSV] [--work DIR]       one case: ccx, R_i R_o R_max u force\n"
     "  sweep   --grid 'k=500;n=0.25,0.05;mu=0.05,0.1' [case options] --out CSV [--jobs 1]\n"
@@ -37,9 +35,9 @@ const char *kUsage =
     "          [--partition P] [--time 30:00] [--cpus-per-task 1] [--sbatch '--account=x --mem=2G']\n"
     "          [--setup 'module load calculix'] [--slurm-config FILE (key = value, the same keys)]\n"
     "          [--slurm-dir DIR] [--icacam PATH] [--array-limit N] [--poll 15] [--cancel 1]\n"
-    "  fit     --in CSV [--in CSV2] --out vision/model/fe_model_table.h [--reduction 0.5]\n"
+    "  tables  --base CSV [--k-family CSV]... [--aspect CSV]... [--out vision/model]\n"
+    "          every generated table of the friction models from one FE base (icacam fe tables --help)\n"
     "  report  --in CSV --out DIR                             Table 1 / Fig. 3 comparison\n"
-    "  aspect  --in ASPECT.csv --in BASE.csv --out vision/model/aspect_table.h   u(H0/D0)/u(1.5) table\n"
     "  compare --in REF.csv --in OTHER.csv [--out MD] [--min-u 0.1] [--bar 0.05] [--edge interp|track]\n"
     "          [--across-material 1] (K and E left out of the match: the independence checks)\n"
     "          u of the same cases on other meshes/solvers (mesh study, independent model)\n"
@@ -197,14 +195,8 @@ int feCommand(const std::vector<std::string> &args)
         return r.status == "ok" ? 0 : 1;
     }
     if (sub == "sweep") return sweep(p);
-    if (sub == "fit") {
-        if (p.in.empty() || p.out.empty()) throw std::runtime_error("fit needs --in and --out");
-        return fitCommand(p.in, p.out, p.reduction);
-    }
-    if (sub == "aspect") {
-        if (p.in.empty() || p.out.empty()) throw std::runtime_error("aspect needs --in CSV (other H0 and the base) and --out FILE");
-        return aspectCommand(p.in, p.out);
-    }
+    if (sub == "fit" || sub == "aspect")
+        throw std::runtime_error("the generated tables are made by `icacam fe tables` from one FE base (data/fe/README.md)");
     if (sub == "compare") return compareCommand(p.in, p.out, p.minU, p.bar, p.edge == "track", p.acrossMaterial);
     if (sub == "report") {
         if (p.in.empty() || p.out.empty()) throw std::runtime_error("report needs --in and --out");

@@ -1,14 +1,20 @@
 #pragma once
-// `icacam fe fit`: the generated model table (vision/model/fe_model_table.h) from the FE base data.
+// The FE model's generated table (vision/model/fe_model_table.h), part of `icacam fe tables`.
 #include <string>
 #include <vector>
 
 #include "fe_rows.h"
+#include "fe_table_sources.h"
 
 namespace icacam::host::fe {
 
-// Tables of u, R_i, R_o, R_max over [reduction 30–60 %][n][μ] from the base points of `in`;
-// `reduction` is the model's own when none is given (must have base data).
-int fitCommand(const std::vector<std::string> &in, const std::string &out, double reduction);
+// u, R_i, R_o, R_max over [reduction 30–60 %][n][μ] from the runs of src.base (chosen among
+// them as chooseBase does), and the K carry from the runs of src.kFamily (kCarry over base and
+// family); files by their repository names, read under sourceDir ("" or a path ending in
+// '/'). `reduction` is the model's own when none is given (must have base data). The header's
+// text; summary: one line on what it holds. Throws when a file cannot be read or the base has
+// no usable rows.
+std::string feModelTableText(const TableSources &src, const std::string &sourceDir, double reduction,
+                             std::string *summary);
 
 } // namespace icacam::host::fe

@@ -1,5 +1,5 @@
 // The slenderness carry (vision/model/aspect_corrected_model.h) and its generated table
-// (vision/model/aspect_table.h) against the committed FE runs its provenance names.
+// (vision/model/aspect_table.h) against the committed FE runs it names.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -19,7 +19,7 @@ using namespace icacam;
 namespace t = icacam::vision::aspect_table;
 
 namespace {
-std::vector<std::string> tableInputs() { return test::provenanceInputs(t::kProvenance); }
+std::vector<std::string> tableInputs() { return test::repositoryPaths(t::kInputs); }
 int index(const double *axis, int count, double x)
 {
     for (int i = 0; i < count; ++i)
@@ -39,14 +39,14 @@ TEST(AspectTable, MatchesCommittedData)
         for (int n = 0; n < t::kNCount; ++n)
             for (int r = 0; r < t::kRCount; ++r)
                 for (int m = 0; m < t::kMuCount; ++m) simulated += t::kSimulated[a][n][r][m];
-    EXPECT_EQ(size_t(simulated), ar.ratio.size()) << "stale table: rerun icacam fe aspect";
+    EXPECT_EQ(size_t(simulated), ar.ratio.size()) << "stale table: rerun icacam fe tables";
     for (const auto &[k, v] : ar.ratio) {
         const auto [a, n, r, mu] = k;
         const int ia = index(t::kAspect, t::kACount, a), in_ = index(t::kN, t::kNCount, n),
                   ir = index(t::kR, t::kRCount, r), im = index(t::kMu, t::kMuCount, mu);
-        ASSERT_TRUE(ia >= 0 && in_ >= 0 && ir >= 0 && im >= 0) << "run not in the table: rerun icacam fe aspect";
+        ASSERT_TRUE(ia >= 0 && in_ >= 0 && ir >= 0 && im >= 0) << "run not in the table: rerun icacam fe tables";
         EXPECT_TRUE(t::kSimulated[ia][in_][ir][im]);
-        EXPECT_NEAR(t::kURatio[ia][in_][ir][im], v, 2e-5) << "stale table: rerun icacam fe aspect";
+        EXPECT_NEAR(t::kURatio[ia][in_][ir][im], v, 2e-5) << "stale table: rerun icacam fe tables";
         // The lookup returns the simulated ratio at a simulated point.
         EXPECT_NEAR(vision::AspectCorrectedModel::uRatio(a, n, r, mu), v, 2e-5);
     }
@@ -56,7 +56,7 @@ TEST(AspectTable, MatchesCommittedData)
         const int ia = index(t::kAspect, t::kACount, a), in_ = index(t::kN, t::kNCount, n),
                   ir = index(t::kR, t::kRCount, r), im = index(t::kMu, t::kMuCount, mu);
         if (ia < 0 || in_ < 0 || ir < 0 || im < 0) continue; // a reduction outside the u table's axis
-        EXPECT_NEAR(t::kRMaxRatio[ia][in_][ir][im], v, 2e-5) << "stale table: rerun icacam fe aspect";
+        EXPECT_NEAR(t::kRMaxRatio[ia][in_][ir][im], v, 2e-5) << "stale table: rerun icacam fe tables";
         EXPECT_NEAR(vision::AspectCorrectedModel::rMaxRatio(a, n, r, mu), v, 2e-5);
         ++rMaxChecked;
     }

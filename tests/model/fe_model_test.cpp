@@ -1,5 +1,5 @@
 // The generated model (vision/model/fe_model_table.h) against the committed FE data
-// (the CSVs its provenance names): the table is current, and μ is reproduced within 1 % in range.
+// (the base and K family it names): the table is current, and μ is reproduced within 1 % in range.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -18,20 +18,28 @@ using namespace icacam;
 namespace t = icacam::vision::fe_table;
 
 namespace {
-std::vector<std::string> tableInputs() { return test::provenanceInputs(t::kProvenance); }
+// The files the table names: its base, and the base with the K family (the carry's runs).
+std::vector<std::string> baseFile() { return test::repositoryPaths(t::kBase); }
+std::vector<std::string> tableInputs()
+{
+    std::vector<std::string> in = baseFile();
+    for (const std::string &f : test::repositoryPaths(t::kKFamily)) in.push_back(f);
+    return in;
+}
 
-// (n, μ) → u of the base data at one reduction, selected exactly as `icacam fe fit` selects it.
+// (n, μ) → u of the base data at one reduction, selected exactly as `icacam fe tables` selects it.
 std::map<std::pair<double, double>, double> baseU(double reduction)
 {
     std::map<std::pair<double, double>, double> out;
-    for (const auto &[k, p] : host::fe::basePoints(tableInputs(), reduction)) out[k] = p.u;
+    for (const auto &[k, p] : host::fe::basePoints(baseFile(), reduction)) out[k] = p.u;
     return out;
 }
 
 bool haveInputs()
 {
     const auto in = tableInputs();
-    return !in.empty() && std::all_of(in.begin(), in.end(), [](const std::string &p) { return std::filesystem::exists(p); });
+    return in.size() >= 2 &&
+           std::all_of(in.begin(), in.end(), [](const std::string &p) { return std::filesystem::exists(p); });
 }
 } // namespace
 
@@ -44,28 +52,29 @@ TEST(FeModel, TableMatchesCommittedData)
         size_t inTable = 0;
         for (int i = 0; i < t::kNCount; ++i)
             for (int j = 0; j < t::kMuCount; ++j) {
-                if (t::kU[r][i][j] < 0) continue;
+                if (std::isnan(t::kU[r][i][j])) continue;
                 const auto it = base.find({t::kN[i], t::kMu[j]});
                 ASSERT_NE(it, base.end()) << "table point n=" << t::kN[i] << " mu=" << t::kMu[j] << " r=" << t::kR[r]
                                           << " not in CSV";
-                EXPECT_NEAR(t::kU[r][i][j], it->second, 2e-5) << "stale table: rerun icacam fe fit";
+                EXPECT_NEAR(t::kU[r][i][j], it->second, 2e-5) << "stale table: rerun icacam fe tables";
                 ++found;
                 ++inTable;
             }
-        EXPECT_EQ(inTable, base.size()) << "the CSV has points the table lacks at r=" << t::kR[r] << ": rerun icacam fe fit";
+        EXPECT_EQ(inTable, base.size()) << "the CSV has points the table lacks at r=" << t::kR[r] << ": rerun icacam fe tables";
     }
     EXPECT_GE(found, 1);
 }
 
 TEST(FeModel, KCarryMatchesCommittedData)
 {
-    // The K carry (u and the radii at K minus at the base's K) is what `fe fit` takes from the
+    // The K carry (u and the radii at K minus at the base's K) is what `fe tables` takes from the
     // CSVs: a stale table or a changed selection fails here.
     ASSERT_TRUE(haveInputs()) << t::kProvenance;
     const auto rows = host::fe::readSweepCsvs(tableInputs());
+    const auto baseRows = host::fe::readSweepCsvs(baseFile());
     int checked = 0;
     for (int r = 0; r < t::kRCount; ++r) {
-        const auto c = host::fe::kCarry(rows, t::kR[r], host::fe::chooseBase(rows, t::kR[r]));
+        const auto c = host::fe::kCarry(rows, t::kR[r], host::fe::chooseBase(baseRows, t::kR[r]));
         ASSERT_TRUE(c.found) << "the committed data hold the factorial: a K carry is expected";
         ASSERT_EQ(int(c.k.size()), t::kKCount);
         for (int q = 0; q < t::kKCount; ++q) {
@@ -75,7 +84,7 @@ TEST(FeModel, KCarryMatchesCommittedData)
                     const auto &d = c.delta.at(t::kK[q]);
                     const auto it = d.find({t::kN[i], t::kMu[j]});
                     if (it == d.end()) continue;
-                    EXPECT_NEAR(t::kDU[q][r][i][j], it->second.u, 2e-5) << "stale table: rerun icacam fe fit";
+                    EXPECT_NEAR(t::kDU[q][r][i][j], it->second.u, 2e-5) << "stale table: rerun icacam fe tables";
                     EXPECT_NEAR(t::kDRi[q][r][i][j], it->second.ri, 2e-5);
                     EXPECT_NEAR(t::kDRmax[q][r][i][j], it->second.rMax, 2e-5);
                     ++checked;
@@ -95,7 +104,7 @@ TEST(FeModel, ReadsUAtTheSpecimensK)
         for (int r = 0; r < t::kRCount; ++r)
             for (int i = 0; i < t::kNCount; ++i)
                 for (int j = 0; j < t::kMuCount; ++j) {
-                    if (t::kU[r][i][j] < 0) continue;
+                    if (std::isnan(t::kU[r][i][j])) continue;
                     const double u = model.uAt(t::kN[i], t::kMu[j], t::kR[r], t::kK[q]);
                     EXPECT_NEAR(u, std::max(0.0, t::kU[r][i][j] + t::kDU[q][r][i][j]), 1e-12);
                     const auto rad = model.radii(t::kN[i], t::kMu[j], 10, t::kR[r], t::kK[q]);
@@ -182,7 +191,7 @@ TEST(FeModel, BaseRunsTrackedACleanContactZone)
     // The runner says in a run's message when a node inside the contact zone lifted off (the
     // tracked edge lags there, fe_contact_track.h). The model's base must not contain such runs.
     ASSERT_TRUE(haveInputs()) << t::kProvenance;
-    const auto rows = host::fe::readSweepCsvs(tableInputs());
+    const auto rows = host::fe::readSweepCsvs(baseFile());
     int checked = 0;
     for (int r = 0; r < t::kRCount; ++r) {
         const auto base = host::fe::chooseBase(rows, t::kR[r]);

@@ -6,11 +6,11 @@
 
 #include "aspect_corrected_model.h"
 #include "grid.h"
-#include "reduction_table.h"
+#include "fe_model_table.h"
 
 namespace icacam::vision {
 
-namespace t = reduction_table;
+namespace t = fe_table; // the base's radii at every snapshot (K: the base's)
 
 namespace {
 
@@ -32,9 +32,9 @@ bool feRadiusAt(FeRadius which, double n, double mu, double reduction, double *m
     if (reduction > radiiReductionMax() + 1e-9) return false;
     // n and μ held at the simulated ends (R_max saturates at high μ), the reduction continued
     // past the last snapshot (up to radiiReductionMax) but not before the first.
-    constexpr std::array<GridAxis, 3> axes{GridAxis{t::kN, t::kNCount}, GridAxis{t::kMu, t::kMuCount},
-                                          GridAxis{t::kR, t::kRCount, Beyond::Nothing, Beyond::Extend}};
-    const double v = gridValue(&tab[0][0][0], axes, {n, mu, reduction});
+    constexpr std::array<GridAxis, 3> axes{GridAxis{t::kR, t::kRCount, Beyond::Nothing, Beyond::Extend},
+                                          GridAxis{t::kN, t::kNCount}, GridAxis{t::kMu, t::kMuCount}};
+    const double v = gridValue(&tab[0][0][0], axes, {reduction, n, mu});
     if (!(v == v)) return false; // no data there
     *mm = v;
     return true;

@@ -3,7 +3,7 @@
 //
 // The barrel silhouette R_max of an upset specimen is fixed by the height reduction r (volume
 // constancy) and, less, by the friction μ and the hardening n (barrelling). The FE snapshots
-// (vision/model/reduction_table.h, every 5 % of reduction) give R_max over (n, μ, r); R_max is the
+// (vision/model/fe_model_table.h, every 5 % of reduction from 30 %) give R_max over (n, μ, r); R_max is the
 // FE's best-resolved radius (it moves by < 0.015 mm between meshes, docs/fe.md). With μ from
 // the measured u, R_max checks the declared scale and reduction: a scale error of a few percent
 // moves R_max by as much, a reduction off by 0.01 moves it by ≈ 1 %. Without a declared final
