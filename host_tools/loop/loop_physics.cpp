@@ -6,6 +6,8 @@
 #include <map>
 #include <set>
 
+#include "vision/model/radii_consistency.h"
+
 namespace icacam::host::loop {
 
 namespace {
@@ -135,6 +137,47 @@ double reported(const GroupFit &f, GroupReading reading)
     return reading == GroupReading::Scale ? f.value : f.declared + f.value;
 }
 
+// The silhouette check of a length factor: per record R_max measured over the FE's R_max (D0
+// scaled) at the declared n, μ_ref and the recorded reduction (else the model's 50 %); per
+// group the mean ratio over the mean of the other groups whose μ finds their scale right (the
+// FE's own bias cancels), σ from the two means' standard errors.
+void silhouetteCheck(const std::vector<LoopRecord> &usable, const Candidate &g, std::vector<GroupFit> *groups)
+{
+    std::map<std::string, std::vector<double>> ratios;
+    for (size_t i = 0; i < usable.size(); ++i) {
+        const LoopRecord &r = usable[i];
+        const auto it = r.diagnostics.find("diag_rmax_over_r0");
+        double fe = 0;
+        if (it == r.diagnostics.end() ||
+            !vision::feRadiusAt(vision::FeRadius::Max, r.n, r.muRef, r.reduction >= 0 ? r.reduction : 0.5, &fe) || !(fe > 0))
+            continue;
+        ratios[g.levels[i]].push_back(it->second * 5.0 / fe); // R_max/R0 · 5 mm against the D0 = 10 FE
+    }
+    auto meanSe = [](const std::vector<double> &v, double *se) {
+        double m = 0, q = 0;
+        for (double x : v) m += x;
+        m /= double(v.size());
+        for (double x : v) q += (x - m) * (x - m);
+        *se = v.size() > 1 ? std::sqrt(q / double(v.size() - 1) / double(v.size())) : 0;
+        return m;
+    };
+    // The reference: the groups whose μ says their scale is right (factor within 2σ of 1).
+    std::set<std::string> reference;
+    for (const GroupFit &f : *groups)
+        if (f.fitted && std::fabs(f.value - 1) <= 2 * f.sigma) reference.insert(f.level);
+    for (GroupFit &f : *groups) {
+        const auto own = ratios.find(f.level);
+        std::vector<double> others;
+        for (const auto &[level, v] : ratios)
+            if (level != f.level && reference.count(level)) others.insert(others.end(), v.begin(), v.end());
+        if (own == ratios.end() || own->second.size() < 3 || others.size() < 3) continue;
+        double se1 = 0, se2 = 0;
+        const double m1 = meanSe(own->second, &se1), m2 = meanSe(others, &se2);
+        f.silhouette = m1 / m2;
+        f.silhouetteSigma = f.silhouette * std::sqrt(se1 * se1 / (m1 * m1) + se2 * se2 / (m2 * m2));
+    }
+}
+
 } // namespace
 
 const char *formName(GroupReading reading) { return reading == GroupReading::Scale ? "factor" : "n"; }
@@ -206,6 +249,7 @@ PhysicalFit fitGrouping(const vision::FrictionModel &model, const std::vector<Lo
         f.value = reported(f, reading);
         out.groups.push_back(f);
     }
+    if (reading == GroupReading::Scale) silhouetteCheck(usable, g, &out.groups);
     out.cvErrors.assign(usable.size(), 0);
     for (int k = 0; k < folds; ++k) {
         std::vector<bool> train(usable.size());

@@ -30,6 +30,10 @@ struct GroupFit {
     double sigma = 0;    // standard uncertainty of value (1 σ, from the pooled scatter)
     double declared = 0; // what the records declared: 1 for a factor, the level's n
     bool fitted = false; // fewer than 3 records: left at the declared value
+    // Scale reading, radii with a silhouette: the group's R_max against the FE's R_max at its
+    // records' n, μ_ref and reduction, relative to the other groups whose factor is consistent
+    // with 1 (a check from the geometry alone, independent of μ); 0 when there is none.
+    double silhouette = 0, silhouetteSigma = 0;
 };
 
 struct PhysicalFit {

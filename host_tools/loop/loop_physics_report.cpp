@@ -53,19 +53,20 @@ std::string nextStudy(const std::string &name)
 void writePhysicalCsv(const std::string &path, const LoopSummary &s)
 {
     std::ofstream f(path);
-    f << "candidate,reading,level,records,declared,value,sigma,expanded,verdict\n";
+    f << "candidate,reading,level,records,declared,value,sigma,expanded,verdict,silhouette,silhouette_sigma\n";
     if (s.reading == "scale" || s.reading == "n")
         for (const GroupFit &g : s.grouping.groups)
             f << s.chosen << "," << s.reading << "," << g.level << "," << g.records << "," << fmt(g.declared) << ","
               << fmt(g.value, "%.5f") << "," << fmt(g.sigma, "%.5f") << "," << fmt(kCoverage * g.sigma, "%.5f") << ","
               << (!g.fitted ? "too_few_records" : differs(g) ? (s.reading == "scale" ? "recalibrate" : "revise_n") : "consistent")
-              << "\n";
+              << "," << (g.silhouette > 0 ? fmt(g.silhouette, "%.5f") : "") << ","
+              << (g.silhouette > 0 ? fmt(g.silhouetteSigma, "%.5f") : "") << "\n";
     else if (s.reading == "process")
         f << s.chosen << ",process_" << s.linear.form << ",," << s.usable << ",0," << fmt(s.linear.slope, "%.6g") << ","
-          << fmt(s.linear.sigma, "%.6g") << "," << fmt(kCoverage * s.linear.sigma, "%.6g") << ",fe_study\n";
+          << fmt(s.linear.sigma, "%.6g") << "," << fmt(kCoverage * s.linear.sigma, "%.6g") << ",fe_study,,\n";
     else if (s.reading == "fe_slope")
         f << s.chosen << ",fe_slope_scale,," << s.usable << ",1," << fmt(s.slopeScale, "%.5f") << ",,,"
-          << (std::fabs(s.slopeScale - 1) <= 0.15 ? "consistent" : "fe_slope_off") << "\n";
+          << (std::fabs(s.slopeScale - 1) <= 0.15 ? "consistent" : "fe_slope_off") << ",,\n";
 }
 
 void writePhysicalSection(std::ostream &f, const LoopSummary &s)
@@ -88,15 +89,26 @@ void writePhysicalSection(std::ostream &f, const LoopSummary &s)
              "scatter's (after the fit, "
           << fmt(s.grouping.scatter) << " in μ) and the jackknife's over the group's records; U = " << kCoverage
           << " σ (≈ 95 %).\n\n";
-        f << "| " << s.chosen << " | records | factor s (measured/true) | σ | U (k = 2) | fix mm_per_px by × | verdict |\n"
-             "|---|---|---|---|---|---|---|\n";
+        f << "| " << s.chosen << " | records | factor s (measured/true) | σ | U (k = 2) | fix mm_per_px by × | verdict | "
+             "silhouette check: R_max against the consistent groups' (± 2σ) |\n"
+             "|---|---|---|---|---|---|---|---|\n";
         for (const GroupFit &g : s.grouping.groups)
             f << "| " << g.level << " | " << g.records << " | " << fmt(g.value) << " | " << fmt(g.sigma) << " | "
               << fmt(kCoverage * g.sigma) << " | " << fmt(1 / g.value) << " | "
-              << (!g.fitted ? "too few records" : differs(g) ? "**recalibrate**" : "consistent with 1") << " |\n";
+              << (!g.fitted ? "too few records" : differs(g) ? "**recalibrate**" : "consistent with 1")
+              << (g.silhouette > 0 && g.fitted && differs(g)
+                      ? (std::fabs(g.silhouette - 1) > kCoverage * g.silhouetteSigma && (g.silhouette - 1) * (g.value - 1) > 0
+                             ? " (the silhouette agrees)"
+                             : " (the silhouette does not: check before recalibrating)")
+                      : "")
+              << " | " << (g.silhouette > 0 ? fmt(g.silhouette) + " ± " + fmt(kCoverage * g.silhouetteSigma) : std::string("—"))
+              << " |\n";
         f << "\nRecommended: for every group marked *recalibrate*, recalibrate that camera (`icacam calibrate`, its "
              "calibration file) or multiply its `mm_per_px` by 1/s; its lengths read s × true. Groups consistent "
-             "with 1 show what the model itself contributes.\n";
+             "with 1 show what the model itself contributes. The silhouette check uses the geometry alone (the "
+             "measured R_max against the FE's at each record's n, μ_ref and reduction, relative to the other "
+             "groups whose factor is consistent with 1, ± 2σ statistical): a camera's scale moves it by the same "
+             "factor, a friction or model effect does not.\n";
     } else if (s.reading == "n") {
         f << "Read as the strain-hardening exponent per material (`" << s.chosen
           << "`): the n that makes that material's records consistent, "
