@@ -63,6 +63,33 @@ const KeyDef kKeys[] = {
      "capture watchdog"},
     {"camera.loop", nullptr, nullptr, &Config::cameraLoop, nullptr, 0, 1, nullptr, false,
      "file backend: 1 = start over after the last image"},
+    {"camera.device", nullptr, nullptr, nullptr, &Config::cameraDevice, 0, 4096, nullptr, false,
+     "v4l2: capture node (\"\" = /dev/icacam-camera from the udev rule, else /dev/video0)"},
+    {"camera.id", nullptr, nullptr, nullptr, &Config::cameraId, 0, 256, nullptr, false,
+     "libcamera: camera id (`cam --list`) or part of the sensor model, e.g. imx708 (\"\" = the first)"},
+    {"camera.width", nullptr, nullptr, &Config::cameraWidth, nullptr, 0, 16384, nullptr, false,
+     "stream width (0 = the sensor's largest mode / the device's largest size within max_width)"},
+    {"camera.height", nullptr, nullptr, &Config::cameraHeight, nullptr, 0, 16384, nullptr, false,
+     "stream height (0 = as for width)"},
+    {"camera.exposure_us", nullptr, nullptr, &Config::exposureUs, nullptr, -1, 10000000, nullptr, false,
+     "manual exposure, auto-exposure off (-1: libcamera 10000, v4l2 left as is; v4l2 sets 100 us steps)"},
+    {"camera.analogue_gain", nullptr, &Config::analogueGain, nullptr, nullptr, -1, 1000, nullptr, false,
+     "sensor gain (-1: libcamera 1.0, v4l2 left as is; v4l2: the device's gain units)"},
+    {"camera.red_gain", nullptr, &Config::redGain, nullptr, nullptr, -1, 10000, nullptr, false,
+     "colour gain of red, auto white balance off (-1: libcamera 1.6; v4l2: red_balance units)"},
+    {"camera.blue_gain", nullptr, &Config::blueGain, nullptr, nullptr, -1, 10000, nullptr, false,
+     "colour gain of blue, as red_gain"},
+    {"camera.lens_position", nullptr, &Config::lensPosition, nullptr, nullptr, -1, 10000, nullptr, false,
+     "autofocus off at this lens position (libcamera: dioptres = 1 / distance in m, Camera Module 3; "
+     "v4l2: focus_absolute units; -1: leave the lens)"},
+    {"camera.sharpness", nullptr, &Config::sharpness, nullptr, nullptr, -1, 1000, nullptr, false,
+     "ISP sharpening (libcamera: 0 off, 1 default; it shifts edges, 0 is advised; -1: leave)"},
+    {"camera.noise_reduction", nullptr, nullptr, nullptr, &Config::noiseReduction, 0, 0,
+     "default|off|fast|high_quality", false, "ISP noise reduction (libcamera)"},
+    {"camera.stamp_delay_us", nullptr, nullptr, &Config::stampDelayUs, nullptr, -1, 1000000, nullptr, false,
+     "v4l2: most time from a frame's exposure end to its buffer timestamp (-1: one frame interval)"},
+    {"camera.retry_ms", nullptr, nullptr, &Config::cameraRetryMs, nullptr, 100, 600000, nullptr, false,
+     "a missing or silent camera is looked for again this often"},
     {"trigger.backend", nullptr, nullptr, nullptr, &Config::triggerBackend, 0, 0, "file|gpiod", false, "button driver"},
     {"trigger.script", nullptr, nullptr, nullptr, &Config::triggerScript, 0, 4096, nullptr, false,
      "file backend: trigger script file or FIFO"},
@@ -70,12 +97,22 @@ const KeyDef kKeys[] = {
      "presses shorter than this are bounce"},
     {"trigger.long_press_ms", nullptr, nullptr, &Config::longPressMs, nullptr, 100, 60000, nullptr, false,
      "held this long: shows the settings page instead of measuring"},
-    {"trigger.gpio_chip", nullptr, nullptr, nullptr, &Config::gpioChip, 0, 256, nullptr, false, "gpiod: chip device"},
-    {"trigger.gpio_line", nullptr, nullptr, &Config::triggerLine, nullptr, 0, 1023, nullptr, false,
-     "gpiod: button line (pull-up, active low)"},
+    {"trigger.gpio_chip", nullptr, nullptr, nullptr, &Config::gpioChip, 0, 256, nullptr, false,
+     "gpiod: chip device (a line given by name is looked for on every chip)"},
+    {"trigger.gpio_line", nullptr, nullptr, nullptr, &Config::triggerLine, 1, 64, nullptr, false,
+     "gpiod: button line, by name (GPIO17) or offset on gpio_chip (17)"},
+    {"trigger.active", nullptr, nullptr, nullptr, &Config::triggerActive, 0, 0, "low|high", false,
+     "gpiod: the level of a pressed button (low: button to ground)"},
+    {"trigger.bias", nullptr, nullptr, nullptr, &Config::triggerBias, 0, 0, "pull-up|pull-down|disabled|as-is", false,
+     "gpiod: the SoC's resistor on the button line"},
     {"led.backend", nullptr, nullptr, nullptr, &Config::ledBackend, 0, 0, "file|gpiod", false, "LED ring driver"},
     {"led.log", nullptr, nullptr, nullptr, &Config::ledLog, 0, 4096, nullptr, false, "file backend: LED state log"},
-    {"led.gpio_line", nullptr, nullptr, &Config::ledLine, nullptr, 0, 1023, nullptr, false, "gpiod: LED ring line"},
+    {"led.gpio_chip", nullptr, nullptr, nullptr, &Config::ledChip, 0, 256, nullptr, false,
+     "gpiod: chip of the LED line (\"\" = trigger.gpio_chip)"},
+    {"led.gpio_line", nullptr, nullptr, nullptr, &Config::ledLine, 1, 64, nullptr, false,
+     "gpiod: LED ring line, by name (GPIO27) or offset"},
+    {"led.active", nullptr, nullptr, nullptr, &Config::ledActive, 0, 0, "high|low", false,
+     "gpiod: the level that lights the ring (high: through an N-MOSFET)"},
     {"led.settle_ms", nullptr, nullptr, &Config::ledSettleMs, nullptr, 0, 1000, nullptr, false,
      "wait after switching the ring on before capturing"},
     {"display.backend", nullptr, nullptr, nullptr, &Config::displayBackend, 0, 0, "file|ssd1306|none", false,
@@ -87,6 +124,12 @@ const KeyDef kKeys[] = {
     {"display.i2c_bus", nullptr, nullptr, &Config::i2cBus, nullptr, 0, 255, nullptr, false, "ssd1306: /dev/i2c-N"},
     {"display.i2c_address", nullptr, nullptr, &Config::i2cAddress, nullptr, 3, 119, nullptr, false,
      "ssd1306: 7-bit address (60 = 0x3C)"},
+    {"display.driver", nullptr, nullptr, nullptr, &Config::displayDriver, 0, 0, "ssd1306|sh1106", false,
+     "ssd1306: the controller (sh1106: the 1.3 inch panels sold as SSD1306)"},
+    {"display.rotate", nullptr, nullptr, &Config::displayRotate, nullptr, 0, 180, nullptr, false,
+     "ssd1306: 0 or 180 degrees"},
+    {"display.contrast", nullptr, nullptr, &Config::displayContrast, nullptr, 0, 255, nullptr, false,
+     "ssd1306: contrast 0-255"},
     {"serial.backend", nullptr, nullptr, nullptr, &Config::serialBackend, 0, 0, "pty|uart", false, "serial driver"},
     {"serial.link", nullptr, nullptr, nullptr, &Config::serialLink, 0, 4096, nullptr, false,
      "pty backend: symlink to the pty for the host side"},
@@ -205,6 +248,20 @@ std::string liveKeyName(std::string_view key)
     return k && k->live ? k->alias : "";
 }
 
+hal::CameraControls cameraControlsOf(const Config &cfg)
+{
+    return {cfg.exposureUs, cfg.analogueGain, cfg.redGain, cfg.blueGain, cfg.lensPosition, cfg.sharpness,
+            noiseReductionLevel(cfg.noiseReduction)};
+}
+
+int noiseReductionLevel(std::string_view name)
+{
+    if (name == "off") return 0;
+    if (name == "fast") return 1;
+    if (name == "high_quality") return 2;
+    return -1;
+}
+
 std::string configHelp()
 {
     std::string out;
@@ -272,6 +329,10 @@ std::vector<ConfigIssue> parseConfig(std::string_view text, Config *cfg)
         issues.push_back({0, "camera.frames is required with camera.backend = file"});
     if (cfg->displayBackend == "file" && cfg->displayDir.empty())
         issues.push_back({0, "display.dir is required with display.backend = file"});
+    if (cfg->displayRotate != 0 && cfg->displayRotate != 180)
+        issues.push_back({0, "display.rotate must be 0 or 180"});
+    if ((cfg->redGain < 0) != (cfg->blueGain < 0))
+        issues.push_back({0, "camera.red_gain and camera.blue_gain are set together (both or neither)"});
     if (cfg->serialBackend == "pty" && cfg->serialLink.empty())
         issues.push_back({0, "serial.link is required with serial.backend = pty"});
     return issues;

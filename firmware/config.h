@@ -8,6 +8,8 @@
 #include <string_view>
 #include <vector>
 
+#include "hal/camera.h"
+
 namespace icacam::fw {
 
 struct Config {
@@ -31,12 +33,29 @@ struct Config {
     int cameraStrideAlign = 1;
     int captureTimeoutMs = 2000;
     int cameraLoop = 0;
+    std::string cameraDevice;            // v4l2: node ("" = /dev/icacam-camera, else /dev/video0)
+    std::string cameraId;                // libcamera: id or part of the sensor model ("" = first)
+    int cameraWidth = 0, cameraHeight = 0; // 0 = the sensor's largest mode within max_*
+    // Imaging controls; -1 = not set (libcamera: its fixed defaults; v4l2: left as it is).
+    int exposureUs = -1;
+    double analogueGain = -1;
+    double redGain = -1, blueGain = -1;
+    double lensPosition = -1;
+    double sharpness = -1;
+    std::string noiseReduction = "default"; // default | off | fast | high_quality
+    int stampDelayUs = -1;               // v4l2: stamp after exposure end (-1: a frame interval)
+    int cameraRetryMs = 2000;            // a missing camera is looked for again this often
     // [trigger] and [led]
     std::string triggerBackend = "file";
     std::string triggerScript;           // file backend: script file or FIFO ("" = serial only)
     int debounceMs = 30, longPressMs = 1500;
     std::string gpioChip = "/dev/gpiochip0";
-    int triggerLine = 17, ledLine = 27;
+    std::string triggerLine = "GPIO17";  // line name (GPIO17) or offset on gpio_chip (17)
+    std::string triggerActive = "low";   // the level that means pressed
+    std::string triggerBias = "pull-up"; // pull-up | pull-down | disabled | as-is
+    std::string ledChip;                 // "" = trigger.gpio_chip
+    std::string ledLine = "GPIO27";
+    std::string ledActive = "high";      // the level that lights the ring
     std::string ledBackend = "file";
     std::string ledLog;
     int ledSettleMs = 20;
@@ -45,6 +64,9 @@ struct Config {
     std::string displayDir;
     int displayScale = 1;
     int i2cBus = 1, i2cAddress = 0x3C;
+    std::string displayDriver = "ssd1306"; // ssd1306 | sh1106 (the 1.3 inch panels)
+    int displayRotate = 0;               // 0 | 180
+    int displayContrast = 127;
     // [serial]
     std::string serialBackend = "pty";
     std::string serialLink;              // pty backend: symlink to the slave
@@ -80,5 +102,9 @@ std::string specimenIssue(const Config &cfg);
 // The serial name of a live key given by its full name or serial name ("" if none).
 std::string liveKeyName(std::string_view key);
 std::string configHelp();
+// The imaging controls the config asks for (-1 where not set).
+hal::CameraControls cameraControlsOf(const Config &cfg);
+// camera.noise_reduction as libcamera's level (-1 default, 0 off, 1 fast, 2 high quality).
+int noiseReductionLevel(std::string_view name);
 
 } // namespace icacam::fw

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <ctime>
 
+#include "firmware/capture_fields.h"
 #include "firmware/scale_check.h"
 #include "firmware/screen.h"
 #include "vision/model/paper_model.h"
@@ -64,7 +65,12 @@ const char *Device::stateName(State s)
 }
 
 Device::Device(DeviceHal hal, Config cfg, const vision::FrictionModel &model)
-    : hal_(hal), cfg_(std::move(cfg)), model_(model), journal_(hal.storage, cfg_.journalMemory),
+    : hal_(hal), cfg_(std::move(cfg)), model_(model),
+      cameraHealth_(hal.camera, hal.clock,
+                    {cfg_.cameraFormat == "rgb24" ? vision::PixelFormat::RGB24 : vision::PixelFormat::Grey8,
+                     cfg_.cameraMaxWidth, cfg_.cameraMaxHeight},
+                    cfg_.cameraRetryMs),
+      journal_(hal.storage, cfg_.journalMemory),
       debouncer_(cfg_.debounceMs, cfg_.longPressMs), lines_(kMaxLine)
 {
 }
@@ -79,7 +85,8 @@ hal::Error Device::start()
     lumaScratchBytes_ = vision::lumaScratchBytes(fmt, cfg_.cameraMaxWidth, cfg_.cameraMaxHeight);
     if (lumaScratchBytes_ > 0) lumaScratch_ = std::make_unique<uint8_t[]>(lumaScratchBytes_);
     if (cfg_.journalImages == "pgm") image_.reserve(size_t(cfg_.cameraMaxWidth) * size_t(cfg_.cameraMaxHeight) + 64);
-    if (hal::Error e = hal_.camera.configure({fmt, cfg_.cameraMaxWidth, cfg_.cameraMaxHeight}); !e.ok()) return e;
+    // A camera that is not there yet is reported and looked for again; the device runs.
+    cameraHealth_.open();
     // icacam-fw --check reports a bad calibration file first; a device started without
     // that check refuses it here.
     if (std::string e = loadDeviceCalibration(cfg_, &cal_); !e.empty()) return hal::Error::make(hal::Errc::Invalid, e);
@@ -112,15 +119,16 @@ hal::Error Device::start()
     if (!cal_.present && !(cfg_.mmPerPx > 0))
         return hal::Error::make(hal::Errc::Invalid, "no scale: calibration.mm_per_px or calibration.file is required");
     out_.clear();
-    JsonBuilder(&out_)
-        .str("type", "hello")
+    JsonBuilder j0(&out_);
+    j0.str("type", "hello")
         .str("version", "0.1.0")
         .str("model", model_.name())
         .integer("records", rec.records)
         .integer("last_id", rec.lastId)
         .integer("recovered_cut_bytes", static_cast<long long>(rec.cutBytes))
-        .integer("temp_files_removed", rec.tempFilesRemoved)
-        .end();
+        .integer("temp_files_removed", rec.tempFilesRemoved);
+    appendCameraStatus(j0);
+    j0.end();
     send(out_);
     if (rec.cutBytes > 0) note = "journal tail repaired";
     showIdle(note);
@@ -131,6 +139,27 @@ void Device::tick()
 {
     pollButton();
     pollSerial();
+    pollCamera();
+}
+
+void Device::pollCamera()
+{
+    if (!cameraHealth_.poll()) return;
+    out_.clear();
+    JsonBuilder j(&out_);
+    j.str("type", "camera");
+    appendCameraStatus(j);
+    j.end();
+    send(out_);
+    showIdle("camera found");
+}
+
+void Device::appendCameraStatus(JsonBuilder &j) const
+{
+    j.str("camera", CameraHealth::stateName(cameraHealth_.state()));
+    if (!cameraHealth_.ok()) j.str("camera_problem", cameraHealth_.problem());
+    j.str("camera_info", cameraHealth_.describe());
+    j.integer("camera_latency_us", cameraHealth_.lastLatencyUs());
 }
 
 void Device::pollButton()
@@ -205,6 +234,7 @@ void Device::handleCommand(const Command &c)
             .integer("free_bytes", free.ok() ? (long long)free.value : -1)
             .boolean("led", hal_.led.isOn())
             .str("model", model_.name());
+        appendCameraStatus(j);
         break;
     }
     case CommandKind::Trigger:
@@ -328,12 +358,21 @@ void Device::measure(const char *origin, const std::string &tag)
 bool Device::captureFrame(hal::CapturedFrame *frame, vision::LumaView *luma, std::string *problem)
 {
     bool captured = false;
+    triggerMs_ = hal_.clock.monotonicMs();
+    if (!cameraHealth_.ready()) {
+        *problem = std::string("camera ") + CameraHealth::stateName(cameraHealth_.state()) + ": " + cameraHealth_.problem();
+        return false;
+    }
     state_ = State::LedOn;
     if (hal::Error e = hal_.led.set(true); !e.ok()) *problem = "LED: " + e.message;
     hal_.clock.sleepMs(cfg_.ledSettleMs);
+    // From here on the ring is lit and steady: only a frame exposed after now is measured.
+    const int64_t litMs = hal_.clock.monotonicMs();
     state_ = State::Capture;
     if (problem->empty()) {
-        if (hal::Error e = hal_.camera.capture(cfg_.captureTimeoutMs, frame); !e.ok())
+        const hal::Error e = hal_.camera.capture({litMs, cfg_.captureTimeoutMs}, frame);
+        cameraHealth_.onCapture(e, e.ok() ? frame : nullptr);
+        if (!e.ok())
             *problem = std::string("camera ") + hal::errcName(e.code) + ": " + e.message;
         else
             captured = true;
@@ -441,6 +480,7 @@ void Device::buildRecord(long id, const char *origin, const std::string &tag, co
     j.str("calibration", cal_.present ? cal_.name : "");
     if (cal_.present && m.hasValue()) j.num("plane_height_mm", cfg_.h0Mm * (1 - m.reduction), 4);
     j.str("material", cfg_.material).str("trigger", origin).integer("ms", ms);
+    if (frame) appendCaptureFields(j, *frame, triggerMs_);
     if (!tag.empty()) j.str("tag", tag);
     j.end();
 }
@@ -475,6 +515,13 @@ void Device::persistSettings()
 
 void Device::showIdle(std::string_view note)
 {
+    if (!cameraHealth_.ok()) {
+        const std::string words = cameraHealth_.problem() + " - looking again every " +
+                                  std::to_string((cfg_.cameraRetryMs + 999) / 1000) + " s";
+        drawProblem(&screen_, "icacam: no camera", words);
+        showOrLog(screen_);
+        return;
+    }
     drawIdle(&screen_, cfg_, journal_.count(), note);
     showOrLog(screen_);
 }

@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 
+#include "firmware/camera_health.h"
 #include "firmware/command.h"
 #include "firmware/config.h"
 #include "firmware/debouncer.h"
@@ -53,6 +54,7 @@ public:
     const Config &config() const { return cfg_; }
     long lastId() const { return lastId_; }
     State state() const { return state_; }
+    const CameraHealth &camera() const { return cameraHealth_; }
 
 private:
     void pollButton();
@@ -68,6 +70,9 @@ private:
     void sendError(const char *code, std::string_view message, std::string_view tag);
     void send(std::string_view line);
     void showIdle(std::string_view note);
+    // The camera's state for `hello`, `status` and the camera line sent when it comes back.
+    void appendCameraStatus(JsonBuilder &j) const;
+    void pollCamera();
     void buildRecord(long id, const char *origin, const std::string &tag, const vision::Measurement &m,
                      std::string_view problem, const hal::CapturedFrame *frame, std::string_view image, long ms);
     hal::Error saveImage(std::string_view name, const vision::LumaView &v);
@@ -78,6 +83,8 @@ private:
     Config cfg_;
     const vision::FrictionModel &model_;
     vision::EndFaceAnalyzer analyzer_;
+    CameraHealth cameraHealth_;
+    int64_t triggerMs_ = 0; // when the frame being measured was asked for
     Journal journal_;
     Debouncer debouncer_;
     LineAssembler lines_;

@@ -3,7 +3,8 @@
 //
 // Exit codes suit systemd (Restart=on-failure, RestartPreventExitStatus=78):
 //   0 stopped by a signal, 64 bad command line, 78 bad configuration (restarting cannot
-//   help), 69 a device could not be opened, 70 internal error.
+//   help), 69 a device other than the camera could not be opened, 70 internal error. A
+//   missing camera is not an exit: the device shows it and looks for it again.
 #include <csignal>
 #include <cstdio>
 #include <cstring>
@@ -150,7 +151,9 @@ int main(int argc, char **argv)
     if (checkOnly) { std::printf("%s: ok\n", configPath.c_str()); return 0; }
 
     hal::SystemClock clock;
-    hal::FileCamera camera(clock, {resolve(base, cfg.cameraFrames), cfg.cameraStrideAlign, cfg.cameraLoop != 0, 0});
+    // Imaging controls as configured; the file camera reports them back with each frame.
+    const hal::CameraControls asked = fw::cameraControlsOf(cfg);
+    hal::FileCamera camera(clock, {resolve(base, cfg.cameraFrames), cfg.cameraStrideAlign, cfg.cameraLoop != 0, 0, asked});
     hal::FileTrigger fileTrigger(clock);
     if (cfg.triggerBackend == "file" && !cfg.triggerScript.empty())
         if (hal::Error e = fileTrigger.open(resolve(base, cfg.triggerScript)); !e.ok()) return unavailable("trigger", e);
@@ -161,14 +164,28 @@ int main(int argc, char **argv)
     hal::TriggerButton *triggerUsed = &fileTrigger;
     hal::LedRing *ledUsed = &fileLed;
 #ifdef ICACAM_HAVE_V4L2
-    // A UVC camera: the udev rule (deploy/) names it /dev/icacam-camera; else the first one.
-    const std::string videoNode = std::filesystem::exists("/dev/icacam-camera") ? "/dev/icacam-camera" : "/dev/video0";
-    hal::V4l2Camera v4l2Camera(clock, {videoNode, 4});
+    // A UVC camera: camera.device, else the udev rule's /dev/icacam-camera (deploy/), else
+    // the first one.
+    const std::string videoNode = !cfg.cameraDevice.empty()                          ? cfg.cameraDevice
+                                  : std::filesystem::exists("/dev/icacam-camera") ? "/dev/icacam-camera"
+                                                                                  : "/dev/video0";
+    hal::V4l2Camera v4l2Camera(clock, {videoNode, 4, asked, cfg.cameraWidth, cfg.cameraHeight, cfg.stampDelayUs});
     if (cfg.cameraBackend == "v4l2") cameraUsed = &v4l2Camera;
 #endif
 #ifdef ICACAM_HAVE_LIBCAMERA
-    // A CSI camera: fixed exposure and gain, locked colour gains (LibcameraOptions defaults).
-    hal::LibcameraCamera csiCamera(clock, {});
+    // A CSI camera: fixed exposure and gain, locked colour gains; unset ones keep the
+    // LibcameraOptions defaults (auto-exposure and AWB stay off either way).
+    hal::LibcameraOptions csi;
+    csi.camera = cfg.cameraId;
+    csi.width = cfg.cameraWidth;
+    csi.height = cfg.cameraHeight;
+    if (asked.exposureUs >= 0) csi.controls.exposureUs = asked.exposureUs;
+    if (asked.analogueGain >= 0) csi.controls.analogueGain = asked.analogueGain;
+    if (asked.redGain >= 0) csi.controls.redGain = asked.redGain, csi.controls.blueGain = asked.blueGain;
+    csi.controls.lensPosition = asked.lensPosition;
+    csi.controls.sharpness = asked.sharpness;
+    csi.controls.noiseReduction = asked.noiseReduction;
+    hal::LibcameraCamera csiCamera(clock, csi);
     if (cfg.cameraBackend == "libcamera") cameraUsed = &csiCamera;
 #endif
 #ifdef ICACAM_HAVE_GPIOD
@@ -176,14 +193,24 @@ int main(int argc, char **argv)
     // transistor (on = high). docs/hardware.md has the wiring.
     hal::GpiodTrigger gpioTrigger(clock);
     if (cfg.triggerBackend == "gpiod") {
-        if (hal::Error e = gpioTrigger.open({cfg.gpioChip, unsigned(cfg.triggerLine), true, true}); !e.ok())
-            return unavailable("trigger", e);
+        hal::GpioLineSpec button;
+        button.chipPath = cfg.gpioChip;
+        hal::parseGpioLine(cfg.triggerLine, &button);
+        button.activeLow = cfg.triggerActive == "low";
+        button.pullUp = cfg.triggerBias == "pull-up";
+        button.pullDown = cfg.triggerBias == "pull-down";
+        button.biasOff = cfg.triggerBias == "disabled";
+        button.debounceUs = cfg.debounceMs * 1000 / 2; // the kernel takes the bounce, the firmware the rest
+        if (hal::Error e = gpioTrigger.open(button); !e.ok()) return unavailable("trigger", e);
         triggerUsed = &gpioTrigger;
     }
     hal::GpiodLed gpioLed;
     if (cfg.ledBackend == "gpiod") {
-        if (hal::Error e = gpioLed.open({cfg.gpioChip, unsigned(cfg.ledLine), false, false}); !e.ok())
-            return unavailable("LED", e);
+        hal::GpioLineSpec ring;
+        ring.chipPath = cfg.ledChip.empty() ? cfg.gpioChip : cfg.ledChip;
+        hal::parseGpioLine(cfg.ledLine, &ring);
+        ring.activeLow = cfg.ledActive == "low";
+        if (hal::Error e = gpioLed.open(ring); !e.ok()) return unavailable("LED", e);
         ledUsed = &gpioLed;
     }
 #endif

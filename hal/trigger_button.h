@@ -20,6 +20,10 @@ public:
     // Copies up to cap edges that have happened by now into out, oldest first, and returns
     // how many. Never blocks. Errors: Io, Closed.
     virtual Result<size_t> readEdges(ButtonEdge *out, size_t cap) = 0;
+    // The button's level now (true = pressed). After a measurement the firmware reads it
+    // again, so a release lost in a full event queue (libgpiod 1.6 drops the newest event)
+    // does not leave the button "held". Backends without a level: Invalid.
+    virtual Result<bool> pressed() { return Result<bool>::fail(Errc::Invalid, "no level"); }
 };
 
 } // namespace icacam::hal

@@ -69,10 +69,21 @@ Error FileCamera::configure(const CameraFormat &fmt)
     return {};
 }
 
-Error FileCamera::capture(int timeoutMs, CapturedFrame *out)
+std::string FileCamera::describe() const
+{
+    return "file camera: " + opts_.source + " (" + std::to_string(files_.size()) + " frames)";
+}
+
+Error FileCamera::capture(const CaptureRequest &req, CapturedFrame *out)
 {
     if (!buffer_) return Error::make(Errc::Invalid, "camera not configured");
-    const int64_t start = clock_.monotonicMs();
+    const int timeoutMs = req.timeoutMs;
+    int64_t start = clock_.monotonicMs();
+    if (req.notBeforeMs != CaptureRequest::kAtCall && req.notBeforeMs > start) {
+        clock_.sleepMs(req.notBeforeMs - start);
+        start = clock_.monotonicMs();
+    }
+    const int64_t notBefore = req.notBeforeMs == CaptureRequest::kAtCall ? start : req.notBeforeMs;
     if (next_ >= files_.size() && opts_.loop) next_ = 0;
     if (next_ >= files_.size() || files_[next_] == "!timeout") {
         if (next_ < files_.size()) ++next_;
@@ -107,7 +118,12 @@ Error FileCamera::capture(int timeoutMs, CapturedFrame *out)
     out->view.height = img.height;
     out->view.stride = stride;
     out->view.bytes = size_t(stride) * size_t(img.height);
-    out->timestampMs = clock_.monotonicMs();
+    out->timestampMs = start;
+    out->latencyUs = (start - notBefore) * 1000;
+    out->exposureUs = opts_.controls.exposureUs >= 0 ? opts_.controls.exposureUs : int64_t(opts_.exposureMs) * 1000;
+    out->sequence = uint32_t(next_);
+    out->staleFrames = 0;
+    out->controls = opts_.controls;
     out->source = fs::path(path).filename().string();
     return {};
 }

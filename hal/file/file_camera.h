@@ -20,6 +20,7 @@ struct FileCameraOptions {
     int strideAlign = 1;    // rows padded to a multiple of this many bytes (e.g. 64)
     bool loop = false;      // start over at the end instead of timing out
     int exposureMs = 0;     // simulated capture latency
+    CameraControls controls; // reported back on every frame, as a sensor reports what it used
 };
 
 class FileCamera final : public Camera {
@@ -27,7 +28,10 @@ public:
     FileCamera(Clock &clock, FileCameraOptions opts) : clock_(clock), opts_(std::move(opts)) {}
 
     Error configure(const CameraFormat &fmt) override;
-    Error capture(int timeoutMs, CapturedFrame *out) override;
+    using Camera::capture;
+    // The "exposure" starts when the call is made (or at req.notBeforeMs, waited for, if later).
+    Error capture(const CaptureRequest &req, CapturedFrame *out) override;
+    std::string describe() const override;
 
     size_t frameCount() const { return files_.size(); }
     size_t position() const { return next_; }

@@ -7,8 +7,11 @@
 #include <poll.h>
 #include <time.h>
 
+#include <cctype>
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
+#include <string>
 
 namespace icacam::hal {
 
@@ -37,7 +40,30 @@ int64_t toClockMs(const Clock &clock, int64_t edgeNs)
     return clock.monotonicMs() - (ageNs > 0 ? ageNs / 1000000 : 0);
 }
 
+// The chips a named line is looked for on: the configured one first, then all.
+template <typename Fn> bool forEachChip(const std::string &first, Fn &&fn)
+{
+    if (fn(first)) return true;
+    for (int i = 0; i < 16; ++i) {
+        const std::string p = "/dev/gpiochip" + std::to_string(i);
+        if (p != first && fn(p)) return true;
+    }
+    return false;
+}
+
 } // namespace
+
+void parseGpioLine(const std::string &text, GpioLineSpec *spec)
+{
+    bool digits = !text.empty();
+    for (char c : text) digits = digits && std::isdigit(static_cast<unsigned char>(c));
+    if (digits) {
+        spec->offset = unsigned(std::strtoul(text.c_str(), nullptr, 10));
+        spec->name.clear();
+    } else {
+        spec->name = text;
+    }
+}
 
 #if ICACAM_GPIOD_API >= 2
 // ---- libgpiod 2.x --------------------------------------------------------------------
@@ -46,6 +72,7 @@ struct LineRequest {
     gpiod_line_request *request = nullptr;
     gpiod_edge_event_buffer *events = nullptr;
     unsigned offset = 0;
+    std::string chipPath;
 
     LineRequest() = default;
     LineRequest(const LineRequest &) = delete;
@@ -61,8 +88,26 @@ struct LineRequest {
     int open(const GpioLineSpec &spec, const char *consumer, bool output)
     {
         offset = spec.offset;
-        chip = gpiod_chip_open(spec.chipPath.c_str());
-        if (!chip) return errno;
+        if (!spec.name.empty()) {
+            const bool found = forEachChip(spec.chipPath, [&](const std::string &path) {
+                gpiod_chip *c = gpiod_chip_open(path.c_str());
+                if (!c) return false;
+                const int off = gpiod_chip_get_line_offset_from_name(c, spec.name.c_str());
+                if (off < 0) {
+                    gpiod_chip_close(c);
+                    return false;
+                }
+                chip = c;
+                offset = unsigned(off);
+                chipPath = path;
+                return true;
+            });
+            if (!found) return ENOENT;
+        } else {
+            chip = gpiod_chip_open(spec.chipPath.c_str());
+            if (!chip) return errno;
+            chipPath = spec.chipPath;
+        }
         gpiod_line_settings *settings = gpiod_line_settings_new();
         gpiod_line_config *lineCfg = gpiod_line_config_new();
         gpiod_request_config *reqCfg = gpiod_request_config_new();
@@ -77,6 +122,11 @@ struct LineRequest {
                 gpiod_line_settings_set_edge_detection(settings, GPIOD_LINE_EDGE_BOTH);
                 gpiod_line_settings_set_event_clock(settings, GPIOD_LINE_CLOCK_MONOTONIC);
                 if (spec.pullUp) gpiod_line_settings_set_bias(settings, GPIOD_LINE_BIAS_PULL_UP);
+                else if (spec.pullDown) gpiod_line_settings_set_bias(settings, GPIOD_LINE_BIAS_PULL_DOWN);
+                else if (spec.biasOff) gpiod_line_settings_set_bias(settings, GPIOD_LINE_BIAS_DISABLED);
+                // The kernel filters bounce before it stamps the edge (v2 only).
+                if (spec.debounceUs > 0)
+                    gpiod_line_settings_set_debounce_period_us(settings, static_cast<unsigned long>(spec.debounceUs));
             }
             gpiod_request_config_set_consumer(reqCfg, consumer);
             if (gpiod_line_config_add_line_settings(lineCfg, &offset, 1, settings) != 0) err = errno;
@@ -100,6 +150,13 @@ struct LineRequest {
         return gpiod_line_request_set_value(request, offset, high ? GPIOD_LINE_VALUE_ACTIVE : GPIOD_LINE_VALUE_INACTIVE) == 0
                    ? 0 : errno;
     }
+    // 1 high, 0 low, -errno.
+    int getRaw()
+    {
+        const gpiod_line_value v = gpiod_line_request_get_value(request, offset);
+        if (v == GPIOD_LINE_VALUE_ERROR) return -errno;
+        return v == GPIOD_LINE_VALUE_ACTIVE ? 1 : 0;
+    }
     // Reads up to cap edges into (rising, ns) pairs; returns the count or -errno.
     int readEdges(bool *rising, int64_t *ns, int cap)
     {
@@ -119,6 +176,8 @@ struct LineRequest {
     gpiod_chip *chip = nullptr;
     gpiod_line *line = nullptr; // owned by chip
     gpiod_line_event events[kEventBatch] = {};
+    unsigned offset = 0;
+    std::string chipPath;
 
     LineRequest() = default;
     LineRequest(const LineRequest &) = delete;
@@ -130,21 +189,48 @@ struct LineRequest {
 
     int open(const GpioLineSpec &spec, const char *consumer, bool output)
     {
-        chip = gpiod_chip_open(spec.chipPath.c_str());
-        if (!chip) return errno;
-        line = gpiod_chip_get_line(chip, spec.offset);
-        if (!line) return errno;
+        if (!spec.name.empty()) {
+            const bool found = forEachChip(spec.chipPath, [&](const std::string &path) {
+                gpiod_chip *c = gpiod_chip_open(path.c_str());
+                if (!c) return false;
+                gpiod_line *l = gpiod_chip_find_line(c, spec.name.c_str());
+                if (!l) {
+                    gpiod_chip_close(c);
+                    return false;
+                }
+                chip = c;
+                line = l;
+                chipPath = path;
+                return true;
+            });
+            if (!found) return ENOENT;
+        } else {
+            chip = gpiod_chip_open(spec.chipPath.c_str());
+            if (!chip) return errno;
+            chipPath = spec.chipPath;
+            line = gpiod_chip_get_line(chip, spec.offset);
+            if (!line) return errno;
+        }
+        offset = gpiod_line_offset(line);
         int rc;
         if (output) {
             rc = gpiod_line_request_output(line, consumer, spec.activeLow ? 1 : 0);
         } else {
-            const int flags = spec.pullUp ? GPIOD_LINE_REQUEST_FLAG_BIAS_PULL_UP : 0;
+            const int flags = spec.pullUp     ? GPIOD_LINE_REQUEST_FLAG_BIAS_PULL_UP
+                              : spec.pullDown ? GPIOD_LINE_REQUEST_FLAG_BIAS_PULL_DOWN
+                              : spec.biasOff  ? GPIOD_LINE_REQUEST_FLAG_BIAS_DISABLE
+                                              : 0;
             rc = gpiod_line_request_both_edges_events_flags(line, consumer, flags);
         }
         return rc == 0 ? 0 : errno;
     }
     int fd() const { return gpiod_line_event_get_fd(line); }
     int setRaw(bool high) { return gpiod_line_set_value(line, high ? 1 : 0) == 0 ? 0 : errno; }
+    int getRaw()
+    {
+        const int v = gpiod_line_get_value(line);
+        return v < 0 ? -errno : v;
+    }
     int readEdges(bool *rising, int64_t *ns, int cap)
     {
         const int n = gpiod_line_event_read_multiple(line, events, unsigned(cap));
@@ -173,10 +259,20 @@ Error GpiodTrigger::open(const GpioLineSpec &spec, const char *consumer)
     // The request is raw (no kernel active-low): which edge is a press is decided here, the
     // same way for both API versions.
     if (const int err = lines->open(spec, consumer, false))
-        return fromErrno("trigger line", spec.chipPath + ":" + std::to_string(spec.offset), err);
+        return fromErrno("trigger line", spec.name.empty() ? spec.chipPath + ":" + std::to_string(spec.offset)
+                                                          : spec.name + " (on any /dev/gpiochipN)", err);
     activeLow_ = spec.activeLow;
+    where_ = lines->chipPath + ":" + std::to_string(lines->offset);
     lines_ = std::move(lines);
     return {};
+}
+
+Result<bool> GpiodTrigger::pressed()
+{
+    if (!lines_) return Result<bool>::fail(Errc::Invalid, "trigger line not open");
+    const int v = lines_->getRaw();
+    if (v < 0) return Result<bool>::fail(Errc::Io, std::string("trigger level: ") + std::strerror(-v));
+    return Result<bool>{(v == 1) != activeLow_, {}};
 }
 
 Result<size_t> GpiodTrigger::readEdges(ButtonEdge *out, size_t cap)
@@ -216,7 +312,8 @@ Error GpiodLed::open(const GpioLineSpec &spec, const char *consumer)
     lines_.reset();
     auto lines = std::make_unique<Lines>();
     if (const int err = lines->open(spec, consumer, true))
-        return fromErrno("LED line", spec.chipPath + ":" + std::to_string(spec.offset), err);
+        return fromErrno("LED line", spec.name.empty() ? spec.chipPath + ":" + std::to_string(spec.offset)
+                                                      : spec.name + " (on any /dev/gpiochipN)", err);
     lines_ = std::move(lines);
     on_ = false;
     activeLow_ = spec.activeLow;

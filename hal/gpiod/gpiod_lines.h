@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <memory>
 #include <string>
+#include <utility>
 
 #include "hal/clock.h"
 #include "hal/led_ring.h"
@@ -14,11 +15,26 @@
 namespace icacam::hal {
 
 struct GpioLineSpec {
+    GpioLineSpec() = default;
+    GpioLineSpec(std::string chip, unsigned line, bool activeLowLevel = false, bool withPullUp = false)
+        : chipPath(std::move(chip)), offset(line), activeLow(activeLowLevel), pullUp(withPullUp) {}
+
     std::string chipPath = "/dev/gpiochip0";
     unsigned offset = 0;
     bool activeLow = false; // true: the logical "on"/"pressed" is the low level
     bool pullUp = false;    // input only: enable the SoC's pull-up
+    bool pullDown = false;  // input only: enable the pull-down instead
+    bool biasOff = false;   // input only: no resistor (an external one is fitted)
+    // A line name ("GPIO17" on a Raspberry Pi): looked up on chipPath, then on every
+    // /dev/gpiochipN; offset is then ignored.
+    std::string name;
+    // Input only: the kernel's debounce (libgpiod 2.x; 1.6 has none: the firmware's
+    // debouncer does it either way).
+    int debounceUs = 0;
 };
+
+// "GPIO17" / "17" as a spec's name or offset.
+void parseGpioLine(const std::string &text, GpioLineSpec *spec);
 
 // The trigger: both edges with kernel timestamps, read without blocking. For the usual
 // wiring (button to ground, pull-up) use activeLow = true and pullUp = true.
@@ -30,10 +46,15 @@ public:
     Error open(const GpioLineSpec &spec, const char *consumer = "icacam-trigger");
     void close();
     Result<size_t> readEdges(ButtonEdge *out, size_t cap) override;
+    // The button's level now (true = pressed).
+    Result<bool> pressed() override;
+    // Where the line was found ("/dev/gpiochip0:17"), after open().
+    const std::string &where() const { return where_; }
 
 private:
     struct Lines; // the libgpiod objects of the compiled API version
     const Clock &clock_;
+    std::string where_;
     std::unique_ptr<Lines> lines_;
     bool activeLow_ = false;
 };

@@ -4,6 +4,7 @@
 //  * 0.6: FrameBuffer::planes() is a Span (only iterated and indexed here: no #if needed);
 //    addBuffer's fence argument changes type (not passed here).
 //  * 0.7: Request::metadata() is const (only FrameMetadata is read here).
+//  * 0.6+: string properties may be string_views: the model is copied into a std::string.
 // libcamera does not throw; its errors are negative errno values turned into hal::Error.
 #include "hal/libcamera/libcamera_camera.h"
 
@@ -12,6 +13,7 @@
 #include <libcamera/control_ids.h>
 #include <libcamera/controls.h>
 #include <libcamera/formats.h>
+#include <libcamera/property_ids.h>
 #include <libcamera/framebuffer.h>
 #include <libcamera/framebuffer_allocator.h>
 #include <libcamera/request.h>
@@ -23,9 +25,12 @@
 #include <array>
 #include <chrono>
 #include <condition_variable>
+#include <cstdio>
 #include <cstring>
 #include <mutex>
 #include <vector>
+
+#include "hal/fresh_frame.h"
 
 #define ICACAM_LIBCAMERA_AT_LEAST(maj, min)                                                        \
     (LIBCAMERA_VERSION_MAJOR > (maj) || (LIBCAMERA_VERSION_MAJOR == (maj) && LIBCAMERA_VERSION_MINOR >= (min)))
@@ -36,11 +41,46 @@ namespace lc = libcamera;
 
 namespace {
 
-int64_t monotonicNs()
+std::string modelOf(const lc::Camera &cam)
 {
-    timespec ts{};
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return int64_t(ts.tv_sec) * 1000000000 + ts.tv_nsec;
+    const auto model = cam.properties().get(lc::properties::Model);
+    return model ? std::string(*model) : std::string();
+}
+
+// The camera the options name: an exact id, else a part of the sensor's model name.
+std::shared_ptr<lc::Camera> pickCamera(lc::CameraManager &manager, const std::string &want)
+{
+    auto cams = manager.cameras();
+    if (cams.empty()) return nullptr;
+    if (want.empty()) return cams.front();
+    if (auto byId = manager.get(want)) return byId;
+    for (const auto &c : cams)
+        if (modelOf(*c).find(want) != std::string::npos) return c;
+    return nullptr;
+}
+
+// The largest size the sensor offers for this format (its modes, as the pipeline lists them)
+// that fits the maximum; the pixel array itself when nothing is listed.
+lc::Size sensorSize(const lc::Camera &cam, const lc::StreamConfiguration &sc, const lc::PixelFormat &pf, int maxW,
+                    int maxH)
+{
+    lc::Size best;
+    for (const lc::Size &sz : sc.formats().sizes(pf))
+        if (int(sz.width) <= maxW && int(sz.height) <= maxH && uint64_t(sz.width) * sz.height > uint64_t(best.width) * best.height)
+            best = sz;
+    if (best.width == 0)
+        if (const auto array = cam.properties().get(lc::properties::PixelArraySize))
+            if (int(array->width) <= maxW && int(array->height) <= maxH) best = *array;
+    return best;
+}
+
+bool supports(const lc::Camera &cam, const lc::ControlId &id) { return cam.controls().find(id.id()) != cam.controls().end(); }
+
+std::string fmtNum(double v)
+{
+    char b[32];
+    std::snprintf(b, sizeof b, "%g", v);
+    return b;
 }
 
 bool lumaFormat(const lc::PixelFormat &pf, vision::PixelFormat *out)
@@ -138,10 +178,9 @@ Error LibcameraCamera::configure(const CameraFormat &fmt)
     auto s = std::make_unique<Session>();
     if (int r = s->manager.start(); r < 0)
         return Error::make(Errc::Io, std::string("libcamera: camera manager: ") + std::strerror(-r));
-    auto cams = s->manager.cameras();
-    if (cams.empty()) return Error::make(Errc::NotFound, "libcamera: no camera found");
-    s->camera = options_.cameraId.empty() ? cams.front() : s->manager.get(options_.cameraId);
-    if (!s->camera) return Error::make(Errc::NotFound, "libcamera: no camera '" + options_.cameraId + "'");
+    if (s->manager.cameras().empty()) return Error::make(Errc::NotFound, "libcamera: no camera found");
+    s->camera = pickCamera(s->manager, options_.camera);
+    if (!s->camera) return Error::make(Errc::NotFound, "libcamera: no camera '" + options_.camera + "' (by id or model)");
     if (s->camera->acquire() < 0) return Error::make(Errc::Io, "libcamera: camera in use by another program");
     s->acquired = true;
 
@@ -154,7 +193,10 @@ Error LibcameraCamera::configure(const CameraFormat &fmt)
     bool ok = false;
     for (const lc::PixelFormat &pf : prefer) {
         sc.pixelFormat = pf;
-        sc.size = lc::Size(unsigned(fmt.maxWidth), unsigned(fmt.maxHeight));
+        lc::Size size(unsigned(options_.width), unsigned(options_.height));
+        if (options_.width <= 0 || options_.height <= 0) size = sensorSize(*s->camera, sc, pf, fmt.maxWidth, fmt.maxHeight);
+        if (size.width == 0) size = lc::Size(unsigned(fmt.maxWidth), unsigned(fmt.maxHeight));
+        sc.size = size;
         sc.bufferCount = unsigned(options_.bufferCount);
         const auto status = s->config->validate();
         if (status != lc::CameraConfiguration::Invalid && lumaFormat(sc.pixelFormat, &s->format)) {
@@ -194,19 +236,36 @@ Error LibcameraCamera::configure(const CameraFormat &fmt)
         s->requests.push_back(std::move(req));
     }
 
-    // Measurement needs the same brightness every shot: fixed exposure and gain, AWB off
-    // with locked colour gains.
+    // Measurement needs the same picture every shot: fixed exposure and gain, AWB off with
+    // locked colour gains, the lens held where it was focused, and the ISP's sharpening
+    // (it shifts edges) and noise reduction as configured.
+    const CameraControls &want = options_.controls;
     lc::ControlList controls(lc::controls::controls);
     controls.set(lc::controls::AeEnable, false);
 #if ICACAM_LIBCAMERA_AT_LEAST(0, 5)
     controls.set(lc::controls::ExposureTimeMode, lc::controls::ExposureTimeModeManual);
     controls.set(lc::controls::AnalogueGainMode, lc::controls::AnalogueGainModeManual);
 #endif
-    controls.set(lc::controls::ExposureTime, int32_t(options_.exposureUs));
-    controls.set(lc::controls::AnalogueGain, options_.analogueGain);
-    controls.set(lc::controls::AwbEnable, false);
-    const std::array<float, 2> gains{options_.redGain, options_.blueGain};
-    controls.set(lc::controls::ColourGains, lc::Span<const float, 2>(gains));
+    if (want.exposureUs >= 0) controls.set(lc::controls::ExposureTime, int32_t(want.exposureUs));
+    if (want.analogueGain >= 0) controls.set(lc::controls::AnalogueGain, float(want.analogueGain));
+    if (want.redGain >= 0 && want.blueGain >= 0) {
+        controls.set(lc::controls::AwbEnable, false);
+        const std::array<float, 2> gains{float(want.redGain), float(want.blueGain)};
+        controls.set(lc::controls::ColourGains, lc::Span<const float, 2>(gains));
+    }
+    std::string notes;
+    if (want.lensPosition >= 0) {
+        if (supports(*s->camera, lc::controls::AfMode) && supports(*s->camera, lc::controls::LensPosition)) {
+            controls.set(lc::controls::AfMode, lc::controls::AfModeManual);
+            controls.set(lc::controls::LensPosition, float(want.lensPosition));
+        } else {
+            notes += ", no lens control (fixed focus)";
+        }
+    }
+    if (want.sharpness >= 0 && supports(*s->camera, lc::controls::Sharpness))
+        controls.set(lc::controls::Sharpness, float(want.sharpness));
+    if (want.noiseReduction >= 0 && supports(*s->camera, lc::controls::draft::NoiseReductionMode))
+        controls.set(lc::controls::draft::NoiseReductionMode, int32_t(want.noiseReduction));
 
     s->camera->requestCompleted.connect(s.get(), &Session::onCompleted);
     s->camera->disconnected.connect(s.get(), &Session::onDisconnected);
@@ -215,21 +274,26 @@ Error LibcameraCamera::configure(const CameraFormat &fmt)
     s->started = true;
     for (auto &req : s->requests)
         if (s->camera->queueRequest(req.get()) < 0) return Error::make(Errc::Io, "libcamera: queueRequest failed");
+    description_ = "libcamera " + s->camera->id() + " " + modelOf(*s->camera) + " " + sc.size.toString() + " " +
+                   sc.pixelFormat.toString() + ", exposure " + std::to_string(want.exposureUs) + " us, gain " +
+                   fmtNum(want.analogueGain) + notes;
     session_ = std::move(s);
     return {};
 }
 
-Error LibcameraCamera::capture(int timeoutMs, CapturedFrame *out)
+Error LibcameraCamera::capture(const CaptureRequest &req, CapturedFrame *out)
 {
     if (!configured_) return Error::make(Errc::Invalid, "camera: not configured");
     if (!session_)
         if (Error e = configure(wanted_); !e.ok()) return e;
     Session &s = *session_;
-    const int64_t startNs = monotonicNs();
+    const int timeoutMs = req.timeoutMs;
+    const int64_t notBeforeNs = notBeforeOnMonotonicNs(clock_, req.notBeforeMs);
     auto requeue = [&s](lc::Request *r) {
         r->reuse(lc::Request::ReuseBuffers);
         return s.camera->queueRequest(r) >= 0;
     };
+    int stale = 0;
     std::unique_lock<std::mutex> lock(s.m);
     if (s.held && !requeue(std::exchange(s.held, nullptr))) return Error::make(Errc::Io, "libcamera: requeue failed");
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(timeoutMs);
@@ -237,6 +301,7 @@ Error LibcameraCamera::capture(int timeoutMs, CapturedFrame *out)
         if (s.gone) {
             lock.unlock();
             stop(); // the next capture() looks for the camera again
+            description_ = "libcamera: camera disconnected";
             return Error::make(Errc::Closed, "libcamera: camera disconnected");
         }
         while (!s.done.empty()) {
@@ -244,21 +309,50 @@ Error LibcameraCamera::capture(int timeoutMs, CapturedFrame *out)
             s.done.erase(s.done.begin());
             lc::FrameBuffer *fb = r->buffers().begin()->second;
             const lc::FrameMetadata &md = fb->metadata();
-            // The first frame exposed after the trigger, never a stale one.
-            if (r->status() != lc::Request::RequestComplete || md.status != lc::FrameMetadata::FrameSuccess ||
-                int64_t(md.timestamp) < startNs) {
+            if (r->status() != lc::Request::RequestComplete || md.status != lc::FrameMetadata::FrameSuccess) {
+                if (!requeue(r)) return Error::make(Errc::Io, "libcamera: requeue failed");
+                continue;
+            }
+            // The exposure's start from the sensor's own timestamp (fresh_frame.h); a
+            // pipeline that reports neither falls back to the buffer's, with the asked exposure.
+            const auto &meta = r->metadata();
+            const auto sensorNs = meta.get(lc::controls::SensorTimestamp);
+            const auto exposureUs = meta.get(lc::controls::ExposureTime);
+            FrameStamp stamp;
+            stamp.stampNs = sensorNs ? *sensorNs : int64_t(md.timestamp);
+            stamp.exposureNs = int64_t(exposureUs ? *exposureUs : std::max(options_.controls.exposureUs, 0)) * 1000;
+            if (!exposedAfter(stamp, notBeforeNs)) {
+                ++stale;
                 if (!requeue(r)) return Error::make(Errc::Io, "libcamera: requeue failed");
                 continue;
             }
             s.held = r;
             const Mapping &map = *s.maps[size_t(r->cookie())];
             out->view = {s.format, map.luma, s.width, s.height, s.stride, map.lumaBytes};
-            out->timestampMs = clock_.monotonicMs() - (monotonicNs() - int64_t(md.timestamp)) / 1000000;
+            const int64_t startNs = exposureStartNs(stamp);
+            out->timestampMs = monotonicNsOnClockMs(clock_, startNs);
+            out->latencyUs = (startNs - notBeforeNs) / 1000;
+            out->exposureUs = stamp.exposureNs / 1000;
+            out->sequence = md.sequence;
+            out->staleFrames = stale;
+            CameraControls &got = out->controls;
+            got = {};
+            if (exposureUs) got.exposureUs = *exposureUs;
+            if (const auto g = meta.get(lc::controls::AnalogueGain)) got.analogueGain = *g;
+            if (const auto cg = meta.get(lc::controls::ColourGains)) {
+                got.redGain = (*cg)[0];
+                got.blueGain = (*cg)[1];
+            }
+            if (const auto lens = meta.get(lc::controls::LensPosition)) got.lensPosition = *lens;
+            got.sharpness = options_.controls.sharpness;         // not reported per frame
+            got.noiseReduction = options_.controls.noiseReduction;
             out->source = "libcamera:" + s.camera->id();
             return {};
         }
         if (s.cv.wait_until(lock, deadline) == std::cv_status::timeout && s.done.empty() && !s.gone)
-            return Error::make(Errc::Timeout, "libcamera: no frame within " + std::to_string(timeoutMs) + " ms");
+            return Error::make(Errc::Timeout, "libcamera: no frame exposed after the LED settled within " +
+                                                  std::to_string(timeoutMs) + " ms (" + std::to_string(stale) +
+                                                  " earlier frames refused)");
     }
 }
 

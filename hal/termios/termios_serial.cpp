@@ -37,12 +37,41 @@ int64_t nowMs()
 
 } // namespace
 
-Error TermiosSerial::open(const std::string &device, int baud, int writeTimeoutMs)
+Error TermiosSerial::open(const std::string &device, int baud, int writeTimeoutMs, int reopenMs)
 {
     speed_t speed{};
     if (!speedOf(baud, &speed)) return Error::make(Errc::Invalid, "serial: unsupported baud rate " + std::to_string(baud));
     device_ = device;
+    baud_ = baud;
     writeTimeoutMs_ = writeTimeoutMs;
+    reopenMs_ = reopenMs;
+    reopenAtMs_ = -1;
+    return openNow();
+}
+
+void TermiosSerial::hungUp()
+{
+    fd_.reset();
+    reopenAtMs_ = nowMs() + reopenMs_;
+}
+
+bool TermiosSerial::reopenDue()
+{
+    if (reopenAtMs_ < 0 || nowMs() < reopenAtMs_) return false;
+    if (!openNow().ok()) {
+        reopenAtMs_ = nowMs() + reopenMs_;
+        return false;
+    }
+    reopenAtMs_ = -1;
+    ++reopened_;
+    return true;
+}
+
+Error TermiosSerial::openNow()
+{
+    const std::string &device = device_;
+    speed_t speed{};
+    (void)speedOf(baud_, &speed);
     fd_.reset(::open(device.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC));
     if (!fd_.valid())
         return Error::make(errno == ENOENT ? Errc::NotFound : Errc::Io, "serial " + device + ": " + std::strerror(errno));
@@ -70,25 +99,36 @@ Error TermiosSerial::open(const std::string &device, int baud, int writeTimeoutM
 
 Result<size_t> TermiosSerial::read(char *buf, size_t cap)
 {
-    if (!fd_.valid()) return Result<size_t>::fail(Errc::Invalid, "serial not open");
+    if (!fd_.valid() && !reopenDue()) {
+        if (reopenAtMs_ >= 0) return {}; // hung up: nothing to read until it is back
+        return Result<size_t>::fail(Errc::Invalid, "serial not open");
+    }
     const ssize_t n = ::read(fd_.get(), buf, cap);
     if (n > 0) return Result<size_t>{size_t(n), {}};
     if (n == 0) {
         // With VMIN = 0 "nothing yet" and "hung up" both read 0 bytes; poll tells them apart.
         pollfd p{fd_.get(), POLLIN, 0};
-        if (::poll(&p, 1, 0) > 0 && (p.revents & POLLHUP))
+        if (::poll(&p, 1, 0) > 0 && (p.revents & POLLHUP)) {
+            hungUp();
             return Result<size_t>::fail(Errc::Closed, "serial " + device_ + ": hung up");
+        }
         return {};
     }
     if (errno == EAGAIN || errno == EINTR) return {};
     // A hung-up line (USB gadget unplugged, pty closed) reads EIO.
-    if (errno == EIO) return Result<size_t>::fail(Errc::Closed, "serial " + device_ + ": hung up");
+    if (errno == EIO) {
+        hungUp();
+        return Result<size_t>::fail(Errc::Closed, "serial " + device_ + ": hung up");
+    }
     return Result<size_t>::fail(Errc::Io, "serial " + device_ + ": " + std::strerror(errno));
 }
 
 Error TermiosSerial::write(std::string_view data)
 {
-    if (!fd_.valid()) return Error::make(Errc::Invalid, "serial not open");
+    if (!fd_.valid() && !reopenDue()) {
+        if (reopenAtMs_ >= 0) return Error::make(Errc::Closed, "serial " + device_ + ": hung up, reopening");
+        return Error::make(Errc::Invalid, "serial not open");
+    }
     const int64_t deadline = nowMs() + writeTimeoutMs_;
     size_t done = 0;
     while (done < data.size()) {
@@ -98,7 +138,10 @@ Error TermiosSerial::write(std::string_view data)
             continue;
         }
         if (n < 0 && errno != EAGAIN && errno != EINTR) {
-            if (errno == EIO) return Error::make(Errc::Closed, "serial " + device_ + ": hung up");
+            if (errno == EIO) {
+                hungUp();
+                return Error::make(Errc::Closed, "serial " + device_ + ": hung up");
+            }
             return Error::make(Errc::Io, "serial " + device_ + ": " + std::strerror(errno));
         }
         const int64_t left = deadline - nowMs();

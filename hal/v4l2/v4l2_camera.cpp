@@ -10,9 +10,15 @@
 #include <sys/mman.h>
 #include <time.h>
 
+#include <cstdio>
+
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <iterator>
+
+#include "hal/fresh_frame.h"
+#include "hal/v4l2/mjpeg_luma.h"
 
 namespace icacam::hal {
 
@@ -52,11 +58,80 @@ bool fromFourcc(uint32_t cc, vision::PixelFormat *f)
     }
 }
 
-int64_t monotonicNs()
+int64_t monotonicNs() { return monotonicNowNs(); }
+
+// Preference among formats of equal size: in place before decoded.
+const uint32_t kFormats[] = {V4L2_PIX_FMT_GREY, V4L2_PIX_FMT_NV12, V4L2_PIX_FMT_YUYV, V4L2_PIX_FMT_MJPEG};
+
+bool listed(int fd, uint32_t cc, bool *enumerated)
 {
-    timespec ts{};
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return int64_t(ts.tv_sec) * 1000000000 + ts.tv_nsec;
+    *enumerated = false;
+    for (uint32_t i = 0; i < 64; ++i) {
+        v4l2_fmtdesc d{};
+        d.index = i;
+        d.type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
+        if (xioctl(fd, VIDIOC_ENUM_FMT, &d) < 0) break;
+        *enumerated = true;
+        if (d.pixelformat == cc) return true;
+    }
+    return false;
+}
+
+// The largest size the device lists for a format within maxW × maxH (0 × 0 when none; the
+// maximum itself when the device does not list sizes: S_FMT then adjusts).
+void largestSize(int fd, uint32_t cc, int maxW, int maxH, uint32_t *w, uint32_t *h)
+{
+    *w = *h = 0;
+    for (uint32_t i = 0; i < 256; ++i) {
+        v4l2_frmsizeenum f{};
+        f.index = i;
+        f.pixel_format = cc;
+        if (xioctl(fd, VIDIOC_ENUM_FRAMESIZES, &f) < 0) {
+            if (i == 0) *w = uint32_t(maxW), *h = uint32_t(maxH);
+            return;
+        }
+        uint32_t cw = 0, ch = 0;
+        if (f.type == V4L2_FRMSIZE_TYPE_DISCRETE) {
+            cw = f.discrete.width;
+            ch = f.discrete.height;
+        } else { // stepwise / continuous: the largest step within the maximum
+            cw = f.stepwise.max_width < uint32_t(maxW) ? f.stepwise.max_width : uint32_t(maxW);
+            ch = f.stepwise.max_height < uint32_t(maxH) ? f.stepwise.max_height : uint32_t(maxH);
+        }
+        if (cw <= uint32_t(maxW) && ch <= uint32_t(maxH) && uint64_t(cw) * ch > uint64_t(*w) * *h) *w = cw, *h = ch;
+        if (f.type != V4L2_FRMSIZE_TYPE_DISCRETE) return;
+    }
+}
+
+bool setControl(int fd, uint32_t id, int32_t value)
+{
+    v4l2_ext_control c{};
+    c.id = id;
+    c.value = value;
+    v4l2_ext_controls cs{};
+    cs.which = V4L2_CTRL_WHICH_CUR_VAL;
+    cs.count = 1;
+    cs.controls = &c;
+    return xioctl(fd, VIDIOC_S_EXT_CTRLS, &cs) == 0;
+}
+
+bool getControl(int fd, uint32_t id, int32_t *value)
+{
+    v4l2_ext_control c{};
+    c.id = id;
+    v4l2_ext_controls cs{};
+    cs.which = V4L2_CTRL_WHICH_CUR_VAL;
+    cs.count = 1;
+    cs.controls = &c;
+    if (xioctl(fd, VIDIOC_G_EXT_CTRLS, &cs) < 0) return false;
+    *value = c.value;
+    return true;
+}
+
+std::string fourccName(uint32_t cc)
+{
+    const char n[5] = {char(cc & 0xff), char((cc >> 8) & 0xff), char((cc >> 16) & 0xff), char((cc >> 24) & 0xff), 0};
+    return n;
 }
 
 class MmapMapper final : public V4l2BufferMapper {
@@ -107,7 +182,7 @@ Error V4l2Camera::configure(const CameraFormat &fmt)
     if (fmt.maxWidth <= 0 || fmt.maxHeight <= 0)
         return Error::make(Errc::Invalid, "camera: maximum frame size must be positive");
     if (!fourcc(fmt.format))
-        return Error::make(Errc::BadFormat, "camera: V4L2 delivers GREY, YUYV or NV12 only");
+        return Error::make(Errc::BadFormat, "camera: V4L2 delivers grey8, YUYV or NV12 frames");
     if (options_.bufferCount < 2 || options_.bufferCount > kMaxBuffers)
         return Error::make(Errc::Invalid, "camera: buffer count must be 2…8");
     stop();
@@ -120,8 +195,11 @@ Error V4l2Camera::openAndStart()
 {
     const std::string &dev = options_.device;
     fd_.reset(::open(dev.c_str(), O_RDWR | O_NONBLOCK | O_CLOEXEC));
-    if (!fd_.valid())
-        return Error::make(errno == ENOENT ? Errc::NotFound : Errc::Io, sysError("camera " + dev));
+    if (!fd_.valid()) {
+        const Error e = Error::make(errno == ENOENT ? Errc::NotFound : Errc::Io, sysError("camera " + dev));
+        description_ = "v4l2 " + e.message;
+        return e;
+    }
 
     v4l2_capability cap{};
     if (xioctl(fd_.get(), VIDIOC_QUERYCAP, &cap) < 0) {
@@ -135,51 +213,11 @@ Error V4l2Camera::openAndStart()
         return Error::make(Errc::BadFormat, "camera " + dev + ": no streaming video capture");
     }
 
-    // Negotiation: the configured format first, then the other formats vision views in
-    // place. The driver answers S_FMT with what it will do; accept only those formats and
-    // sizes within the configured maximum.
-    const vision::PixelFormat order[] = {wanted_.format, vision::PixelFormat::Grey8, vision::PixelFormat::NV12,
-                                         vision::PixelFormat::YUYV};
-    bool agreed = false;
-    v4l2_format f{};
-    for (size_t k = 0; k < std::size(order); ++k) {
-        const vision::PixelFormat want = order[k];
-        if (k > 0 && want == wanted_.format) continue; // asked for already
-        f = {};
-        f.type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
-        f.fmt.pix.width = uint32_t(wanted_.maxWidth);
-        f.fmt.pix.height = uint32_t(wanted_.maxHeight);
-        f.fmt.pix.pixelformat = fourcc(want);
-        f.fmt.pix.field = V4L2_FIELD_NONE;
-        if (xioctl(fd_.get(), VIDIOC_S_FMT, &f) < 0) {
-            if (errno == EBUSY || unplugged(errno)) break;
-            continue;
-        }
-        // Drivers adjust rather than refuse: any answer vision can view in place will do
-        // (a UVC camera without GREY answers YUYV); MJPEG and the like mean "try the next".
-        if (fromFourcc(f.fmt.pix.pixelformat, &format_)) {
-            agreed = true;
-            break;
-        }
-    }
-    if (!agreed) {
+    if (Error e = negotiate(); !e.ok()) {
         stop();
-        return Error::make(Errc::BadFormat, "camera " + dev + ": none of GREY, NV12, YUYV accepted");
+        return e;
     }
-    width_ = int(f.fmt.pix.width);
-    height_ = int(f.fmt.pix.height);
-    const int minStride = format_ == vision::PixelFormat::YUYV ? 2 * width_ : width_;
-    stride_ = f.fmt.pix.bytesperline ? int(f.fmt.pix.bytesperline) : minStride;
-    imageBytes_ = f.fmt.pix.sizeimage;
-    if (width_ > wanted_.maxWidth || height_ > wanted_.maxHeight) {
-        stop();
-        return Error::make(Errc::TooLarge, "camera " + dev + ": driver chose " + std::to_string(width_) + "x" +
-                                               std::to_string(height_) + ", above the configured maximum");
-    }
-    if (stride_ < minStride) {
-        stop();
-        return Error::make(Errc::BadStride, "camera " + dev + ": stride " + std::to_string(stride_) + " too short");
-    }
+    applyControls();
 
     v4l2_requestbuffers rb{};
     rb.count = uint32_t(options_.bufferCount);
@@ -221,7 +259,130 @@ Error V4l2Camera::openAndStart()
         return e;
     }
     streaming_ = true;
+    char mode[160];
+    std::snprintf(mode, sizeof mode, "v4l2 %s %dx%d %s%s, %.1f fps", dev.c_str(), width_, height_,
+                  mjpeg_ ? "MJPEG" : fourccName(fourcc(format_)).c_str(), mjpeg_ ? " (decoded to luma)" : "",
+                  1e6 / double(frameIntervalUs_));
+    description_ = mode;
+    if (!refused_.empty()) description_ += ", refused: " + refused_;
     return {};
+}
+
+Error V4l2Camera::negotiate()
+{
+    const std::string &dev = options_.device;
+    const int fd = fd_.get();
+    // The format and size: listed sizes first (the largest within the maximum, or the one
+    // configured), ties to the in-place formats; a device that lists nothing is asked with
+    // S_FMT in the same order and its answer taken as it comes.
+    uint32_t order[5];
+    size_t n = 0;
+    order[n++] = fourcc(wanted_.format);
+    for (uint32_t cc : kFormats)
+        if (cc != order[0]) order[n++] = cc;
+    uint32_t bestCc = 0, bestW = 0, bestH = 0;
+    bool enumerated = false;
+    for (size_t k = 0; k < n; ++k) {
+        bool any = false;
+        if (!listed(fd, order[k], &any)) {
+            enumerated = enumerated || any;
+            continue;
+        }
+        enumerated = true;
+        uint32_t w = 0, h = 0;
+        if (options_.width > 0 && options_.height > 0) w = uint32_t(options_.width), h = uint32_t(options_.height);
+        else largestSize(fd, order[k], wanted_.maxWidth, wanted_.maxHeight, &w, &h);
+        if (uint64_t(w) * h > uint64_t(bestW) * bestH) bestCc = order[k], bestW = w, bestH = h;
+    }
+    if (enumerated && !bestCc)
+        return Error::make(Errc::BadFormat, "camera " + dev + ": lists none of GREY, NV12, YUYV, MJPEG");
+    v4l2_format f{};
+    bool agreed = false;
+    for (size_t k = 0; k < n && !agreed; ++k) {
+        const uint32_t cc = enumerated ? bestCc : order[k];
+        f = {};
+        f.type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
+        f.fmt.pix.width = enumerated ? bestW : uint32_t(options_.width > 0 ? options_.width : wanted_.maxWidth);
+        f.fmt.pix.height = enumerated ? bestH : uint32_t(options_.height > 0 ? options_.height : wanted_.maxHeight);
+        f.fmt.pix.pixelformat = cc;
+        f.fmt.pix.field = V4L2_FIELD_NONE;
+        if (xioctl(fd, VIDIOC_S_FMT, &f) < 0) {
+            if (errno == EBUSY || unplugged(errno) || enumerated) break;
+            continue;
+        }
+        // Drivers adjust rather than refuse: any answer vision can view in place, or MJPEG.
+        mjpeg_ = f.fmt.pix.pixelformat == V4L2_PIX_FMT_MJPEG;
+        agreed = mjpeg_ || fromFourcc(f.fmt.pix.pixelformat, &format_);
+        if (enumerated) break;
+    }
+    if (!agreed) return Error::make(Errc::BadFormat, "camera " + dev + ": none of GREY, NV12, YUYV, MJPEG accepted");
+    width_ = int(f.fmt.pix.width);
+    height_ = int(f.fmt.pix.height);
+    imageBytes_ = f.fmt.pix.sizeimage;
+    if (width_ > wanted_.maxWidth || height_ > wanted_.maxHeight)
+        return Error::make(Errc::TooLarge, "camera " + dev + ": driver chose " + std::to_string(width_) + "x" +
+                                               std::to_string(height_) + ", above the configured maximum");
+    if (mjpeg_) {
+        format_ = vision::PixelFormat::Grey8;
+        stride_ = width_;
+        const size_t need = size_t(width_) * size_t(height_);
+        if (need > decodedBytes_) {
+            decoded_ = std::make_unique<uint8_t[]>(need);
+            decodedBytes_ = need;
+        }
+    } else {
+        const int minStride = format_ == vision::PixelFormat::YUYV ? 2 * width_ : width_;
+        stride_ = f.fmt.pix.bytesperline ? int(f.fmt.pix.bytesperline) : minStride;
+        if (stride_ < minStride)
+            return Error::make(Errc::BadStride, "camera " + dev + ": stride " + std::to_string(stride_) + " too short");
+    }
+    // The frame interval bounds the exposure and the stamp's delay when nothing better is known.
+    v4l2_streamparm parm{};
+    parm.type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
+    if (xioctl(fd, VIDIOC_G_PARM, &parm) == 0 && parm.parm.capture.timeperframe.denominator > 0 &&
+        parm.parm.capture.timeperframe.numerator > 0)
+        frameIntervalUs_ = int64_t(parm.parm.capture.timeperframe.numerator) * 1000000 /
+                           parm.parm.capture.timeperframe.denominator;
+    return {};
+}
+
+void V4l2Camera::applyControls()
+{
+    const int fd = fd_.get();
+    const CameraControls &c = options_.controls;
+    refused_.clear();
+    auto set = [&](uint32_t id, double v, const char *name) {
+        if (!setControl(fd, id, int32_t(std::lround(v)))) refused_ += std::string(refused_.empty() ? "" : " ") + name;
+    };
+    // Manual exposure: auto off first (the absolute value is ignored while it is on), and no
+    // frame-rate priority, which would let the camera stretch the exposure.
+    if (c.exposureUs >= 0) {
+        set(V4L2_CID_EXPOSURE_AUTO, V4L2_EXPOSURE_MANUAL, "exposure_auto");
+        set(V4L2_CID_EXPOSURE_AUTO_PRIORITY, 0, "exposure_auto_priority");
+        set(V4L2_CID_EXPOSURE_ABSOLUTE, c.exposureUs / 100.0, "exposure_absolute");
+    }
+    if (c.analogueGain >= 0) set(V4L2_CID_GAIN, c.analogueGain, "gain");
+    if (c.redGain >= 0 && c.blueGain >= 0) {
+        set(V4L2_CID_AUTO_WHITE_BALANCE, 0, "white_balance_automatic");
+        set(V4L2_CID_RED_BALANCE, c.redGain, "red_balance");
+        set(V4L2_CID_BLUE_BALANCE, c.blueGain, "blue_balance");
+    }
+    if (c.lensPosition >= 0) {
+        set(V4L2_CID_FOCUS_AUTO, 0, "focus_automatic_continuous");
+        set(V4L2_CID_FOCUS_ABSOLUTE, c.lensPosition, "focus_absolute");
+    }
+    if (c.sharpness >= 0) set(V4L2_CID_SHARPNESS, c.sharpness, "sharpness");
+    // What the device reports now: journaled with each frame.
+    reported_ = {};
+    int32_t v = 0;
+    bool manual = false;
+    if (getControl(fd, V4L2_CID_EXPOSURE_AUTO, &v)) manual = v == V4L2_EXPOSURE_MANUAL;
+    if (manual && getControl(fd, V4L2_CID_EXPOSURE_ABSOLUTE, &v)) reported_.exposureUs = v * 100;
+    if (getControl(fd, V4L2_CID_GAIN, &v)) reported_.analogueGain = v;
+    if (getControl(fd, V4L2_CID_RED_BALANCE, &v)) reported_.redGain = v;
+    if (getControl(fd, V4L2_CID_BLUE_BALANCE, &v)) reported_.blueGain = v;
+    if (getControl(fd, V4L2_CID_FOCUS_ABSOLUTE, &v)) reported_.lensPosition = v;
+    if (getControl(fd, V4L2_CID_SHARPNESS, &v)) reported_.sharpness = v;
 }
 
 Error V4l2Camera::requeueHeld()
@@ -235,7 +396,7 @@ Error V4l2Camera::requeueHeld()
     return {};
 }
 
-Error V4l2Camera::capture(int timeoutMs, CapturedFrame *out)
+Error V4l2Camera::capture(const CaptureRequest &req, CapturedFrame *out)
 {
     if (!configured_) return Error::make(Errc::Invalid, "camera: not configured");
     if (!streaming_) {
@@ -243,10 +404,18 @@ Error V4l2Camera::capture(int timeoutMs, CapturedFrame *out)
         // under the same node, through the udev rule's stable symlink).
         if (Error e = openAndStart(); !e.ok()) return e;
     }
+    const int timeoutMs = req.timeoutMs;
     const int64_t startNs = monotonicNs();
+    const int64_t notBeforeNs = notBeforeOnMonotonicNs(clock_, req.notBeforeMs);
     const int64_t deadline = clock_.monotonicMs() + timeoutMs;
     // Also bounded in real time: a test's manual clock does not move while poll() waits.
     const int64_t realDeadlineNs = startNs + int64_t(timeoutMs) * 1000000;
+    // Without a manual exposure read back, the exposure is at most one frame interval.
+    FrameStamp stamp;
+    stamp.exposureNs = (reported_.exposureUs > 0 ? int64_t(reported_.exposureUs) : frameIntervalUs_) * 1000;
+    stamp.stampDelayNs = (options_.stampDelayUs >= 0 ? int64_t(options_.stampDelayUs) : frameIntervalUs_) * 1000;
+    int stale = 0;
+    std::string corrupt;
     Error failure;
     if (Error e = requeueHeld(); !e.ok()) failure = e;
     while (failure.ok()) {
@@ -254,17 +423,35 @@ Error V4l2Camera::capture(int timeoutMs, CapturedFrame *out)
         b.type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
         b.memory = V4L2_MEMORY_MMAP;
         if (xioctl(fd_.get(), VIDIOC_DQBUF, &b) == 0) {
-            const int64_t stampNs = int64_t(b.timestamp.tv_sec) * 1000000000 + int64_t(b.timestamp.tv_usec) * 1000;
-            const bool stale = stampNs < startNs; // exposed before the trigger: hand it back
-            if (stale || (b.flags & V4L2_BUF_FLAG_ERROR) || int(b.index) >= bufferCount_) {
+            stamp.stampNs = int64_t(b.timestamp.tv_sec) * 1000000000 + int64_t(b.timestamp.tv_usec) * 1000;
+            // Filled before the light settled, or in flight across it: hand it back.
+            const bool early = !exposedAfter(stamp, notBeforeNs);
+            bool usable = !early && !(b.flags & V4L2_BUF_FLAG_ERROR) && int(b.index) < bufferCount_;
+            stale += early ? 1 : 0;
+            const size_t used = b.bytesused ? b.bytesused : imageBytes_;
+            const size_t bytes = int(b.index) < bufferCount_ && used > buffers_[b.index].length ? buffers_[b.index].length : used;
+            if (usable && mjpeg_) {
+                const Error d = decodeMjpegLuma(static_cast<const uint8_t *>(buffers_[b.index].addr), bytes,
+                                                decoded_.get(), decodedBytes_, width_, height_, stride_);
+                if (!d.ok()) {
+                    corrupt = d.message; // a torn frame at stream start: the next one will do
+                    usable = false;
+                }
+            }
+            if (!usable) {
                 if (xioctl(fd_.get(), VIDIOC_QBUF, &b) < 0) failure = Error::make(Errc::Io, sysError("camera: QBUF"));
                 continue;
             }
             held_ = int(b.index);
-            const size_t used = b.bytesused ? b.bytesused : imageBytes_;
-            out->view = {format_, static_cast<const uint8_t *>(buffers_[held_].addr), width_, height_, stride_,
-                         used < buffers_[held_].length ? used : buffers_[held_].length};
-            out->timestampMs = clock_.monotonicMs() - (monotonicNs() - stampNs) / 1000000;
+            const uint8_t *pixels = mjpeg_ ? decoded_.get() : static_cast<const uint8_t *>(buffers_[held_].addr);
+            out->view = {format_, pixels, width_, height_, stride_, mjpeg_ ? decodedBytes_ : bytes};
+            const int64_t exposedNs = exposureStartNs(stamp);
+            out->timestampMs = monotonicNsOnClockMs(clock_, exposedNs);
+            out->latencyUs = (exposedNs - notBeforeNs) / 1000;
+            out->exposureUs = stamp.exposureNs / 1000;
+            out->sequence = b.sequence;
+            out->staleFrames = stale;
+            out->controls = reported_;
             out->source = options_.device;
             return {};
         }
@@ -276,7 +463,10 @@ Error V4l2Camera::capture(int timeoutMs, CapturedFrame *out)
         int64_t left = deadline - clock_.monotonicMs();
         const int64_t realLeft = (realDeadlineNs - monotonicNs()) / 1000000;
         if (realLeft < left) left = realLeft;
-        if (left <= 0) return Error::make(Errc::Timeout, "camera: no frame within " + std::to_string(timeoutMs) + " ms");
+        if (left <= 0)
+            return Error::make(Errc::Timeout, "camera: no frame exposed after the LED settled within " +
+                                                  std::to_string(timeoutMs) + " ms (" + std::to_string(stale) +
+                                                  " earlier frames refused" + (corrupt.empty() ? "" : "; " + corrupt) + ")");
         pollfd p{fd_.get(), POLLIN, 0};
         const int pr = ::poll(&p, 1, int(left < 20 ? left : 20)); // short slices: the deadline rules
         if (pr < 0 && errno != EINTR) failure = Error::make(Errc::Io, sysError("camera: poll"));
@@ -284,6 +474,7 @@ Error V4l2Camera::capture(int timeoutMs, CapturedFrame *out)
             failure = Error::make(Errc::Closed, "camera " + options_.device + " unplugged");
     }
     stop(); // reopened by the next capture()
+    description_ = "v4l2 " + options_.device + ": " + failure.message;
     return failure;
 }
 

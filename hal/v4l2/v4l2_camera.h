@@ -1,10 +1,14 @@
 #pragma once
-// A V4L2 capture device (a USB UVC camera) behind the Camera seam: format negotiation
-// (GREY, NV12, YUYV: luma viewed in place by vision::lumaOf), mmap streaming with buffers
-// allocated once in configure(), dequeue with a poll timeout, and recovery after an unplug:
-// capture() reports Errc::Closed once, then reopens the device on the next call.
+// A V4L2 capture device (a USB UVC camera) behind the Camera seam: the frame size chosen
+// from the sizes the device lists (the largest within the configured maximum, or the one
+// configured), GREY / NV12 / YUYV viewed in place by vision::lumaOf or MJPEG decoded to luma
+// (libjpeg-turbo), imaging controls set through VIDIOC_S_EXT_CTRLS and read back, mmap
+// streaming with buffers allocated once in configure(), dequeue with a poll timeout, only
+// frames exposed after the LED settled handed out (fresh_frame.h), and recovery after an
+// unplug: capture() reports Errc::Closed once, then reopens the device on the next call.
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 
 #include "hal/camera.h"
@@ -25,6 +29,13 @@ public:
 struct V4l2Options {
     std::string device = "/dev/video0";
     int bufferCount = 4;
+    // Exposure (100 µs steps on UVC), gain, red/blue balance, focus and sharpness in the
+    // device's own units (`v4l2-ctl -L` lists them); -1 leaves a control as it is.
+    CameraControls controls;
+    int width = 0, height = 0; // 0 × 0: the largest listed size within the maximum
+    // Most time from the end of a frame's exposure to its buffer timestamp (uvcvideo: the
+    // first USB packet); -1: one frame interval, which covers readout and MJPEG encoding.
+    int stampDelayUs = -1;
 };
 
 class V4l2Camera final : public Camera {
@@ -38,13 +49,18 @@ public:
     V4l2Camera &operator=(const V4l2Camera &) = delete;
 
     Error configure(const CameraFormat &fmt) override;
-    Error capture(int timeoutMs, CapturedFrame *out) override;
+    using Camera::capture;
+    Error capture(const CaptureRequest &req, CapturedFrame *out) override;
+    std::string describe() const override { return description_; }
 
     // What the driver agreed to (valid after configure()).
     vision::PixelFormat format() const { return format_; }
     int width() const { return width_; }
     int height() const { return height_; }
     int stride() const { return stride_; }
+    bool mjpeg() const { return mjpeg_; }
+    int64_t frameIntervalUs() const { return frameIntervalUs_; }
+    const CameraControls &reported() const { return reported_; }
 
 private:
     struct Buffer {
@@ -52,6 +68,8 @@ private:
         size_t length = 0;
     };
     Error openAndStart();
+    Error negotiate();
+    void applyControls();
     void stop(); // stream off, unmap, close; safe to call twice
     Error requeueHeld();
 
@@ -68,6 +86,13 @@ private:
     vision::PixelFormat format_ = vision::PixelFormat::Grey8;
     int width_ = 0, height_ = 0, stride_ = 0;
     size_t imageBytes_ = 0;
+    bool mjpeg_ = false;
+    std::unique_ptr<uint8_t[]> decoded_; // MJPEG frames' luma, sized in configure()
+    size_t decodedBytes_ = 0;
+    int64_t frameIntervalUs_ = 33333;
+    CameraControls reported_;            // read back after setting
+    std::string description_ = "v4l2: not opened";
+    std::string refused_;                // controls the device did not take
 };
 
 } // namespace icacam::hal

@@ -73,7 +73,7 @@ struct Rig {
     void frame(const std::string &name, const cv::Mat &img) { cv::imwrite((dir / "frames" / name).string(), img); }
     bool start()
     {
-        camera = std::make_unique<hal::FileCamera>(clock, hal::FileCameraOptions{(dir / "frames").string(), 1, false, 0});
+        camera = std::make_unique<hal::FileCamera>(clock, hal::FileCameraOptions{(dir / "frames").string(), 1, false, 0, {}});
         EXPECT_TRUE(storage.open((dir / "journal").string()).ok());
         device = std::make_unique<fw::Device>(fw::DeviceHal{*camera, trigger, led, display, serial, storage, clock},
                                               cfg, model);

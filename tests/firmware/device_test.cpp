@@ -45,7 +45,7 @@ struct Rig {
     std::unique_ptr<fw::Device> device;
 
     explicit Rig(const std::string &frames, uint64_t quota = 0)
-        : dir(makeDir()), camera(clock, {frames.empty() ? dir : frames, 1, false, 0})
+        : dir(makeDir()), camera(clock, {frames.empty() ? dir : frames, 1, false, 0, {}})
     {
         EXPECT_TRUE(storage.open(dir + "/journal", quota).ok());
         fw::Config cfg;
@@ -173,4 +173,73 @@ TEST(Device, FinalHeightIsALiveJournaledKeyCheckedAgainstTheInitialHeight)
     rig.device->tick();
     EXPECT_NE(rig.serial.out.find("\"h_final_mm\":7.3"), std::string::npos) << rig.serial.out;
     EXPECT_NE(rig.serial.out.find("\"model\":\"paper\""), std::string::npos) << rig.serial.out;
+}
+
+// The imaging controls set in the config reach the camera, and what the camera reports for
+// the frame is journaled with the result, with the capture's latency.
+TEST(Device, ConfiguredImagingControlsAreJournaledWithEachResult)
+{
+    fw::Config parsed;
+    const auto issues = fw::parseConfig("[specimen]\nn = 0.2\n[calibration]\nmm_per_px = 0.0125\n"
+                                        "[camera]\nframes = x\nexposure_us = 12000\nanalogue_gain = 2.5\n"
+                                        "red_gain = 1.9\nblue_gain = 1.4\nlens_position = 3.5\nsharpness = 0\n"
+                                        "noise_reduction = off\n[display]\ndir = d\n[serial]\nlink = l\n"
+                                        "[journal]\ndir = j\n",
+                                        &parsed);
+    ASSERT_TRUE(issues.empty()) << issues.front().message;
+    const hal::CameraControls asked = fw::cameraControlsOf(parsed);
+    EXPECT_EQ(asked.noiseReduction, 0);
+    Rig rig("");
+    writeGrey(rig.dir + "/a.pgm", 64, 64, 0);
+    hal::FileCamera camera(rig.clock, {rig.dir, 1, false, 0, asked});
+    fw::Config cfg = rig.device->config();
+    cfg.ledSettleMs = 25;
+    fw::Device device({camera, rig.trigger, rig.led, rig.display, rig.serial, rig.storage, rig.clock}, cfg, rig.model);
+    ASSERT_TRUE(device.start().ok());
+    rig.serial.in = "trigger\n";
+    device.tick();
+    const fw::FlatObject r = rig.serial.last("result");
+    ASSERT_TRUE(r.find("exposure_us")) << rig.serial.out;
+    EXPECT_EQ(r.find("exposure_us")->number, 12000);
+    EXPECT_EQ(r.find("gain")->number, 2.5);
+    EXPECT_EQ(r.find("red_gain")->number, 1.9);
+    EXPECT_EQ(r.find("blue_gain")->number, 1.4);
+    EXPECT_EQ(r.find("lens_position")->number, 3.5);
+    EXPECT_EQ(r.find("latency_us")->number, 0);        // the file camera starts when asked
+    EXPECT_EQ(r.find("trigger_latency_ms")->number, 25); // the LED's settle time
+    // The journal holds the same line.
+    EXPECT_NE(rig.storage.read(fw::Journal::kFile).value.find("\"exposure_us\":12000"), std::string::npos);
+}
+
+// A camera missing at start: the device runs, says so on the display, in `hello` and in
+// `status`, refuses to measure with a reason, and measures once the camera appears.
+TEST(Device, MissingCameraIsShownAndMeasuringStartsWhenItAppears)
+{
+    Rig rig(""); // the frame folder is empty: the file camera has nothing to open
+    ASSERT_TRUE(rig.device->start().ok());
+    EXPECT_NE(rig.serial.out.find("\"camera\":\"missing\""), std::string::npos) << rig.serial.out;
+    EXPECT_EQ(rig.display.row(0), "icacam: no camera");
+    rig.serial.out.clear();
+    rig.serial.in = "status\n";
+    rig.device->tick();
+    const fw::FlatObject st = rig.serial.last("status");
+    ASSERT_TRUE(st.find("camera"));
+    EXPECT_EQ(st.find("camera")->text, "missing");
+    EXPECT_NE(st.find("camera_problem")->text.find("no images"), std::string::npos);
+    rig.serial.in = "trigger\n";
+    rig.device->tick();
+    EXPECT_NE(rig.serial.out.find("camera missing"), std::string::npos) << rig.serial.out;
+    EXPECT_FALSE(rig.led.isOn());
+
+    writeGrey(rig.dir + "/a.pgm", 64, 64, 0); // the camera appears
+    rig.serial.out.clear();
+    rig.clock.advance(rig.device->config().cameraRetryMs);
+    rig.device->tick();
+    EXPECT_NE(rig.serial.out.find("\"type\":\"camera\",\"camera\":\"ok\""), std::string::npos) << rig.serial.out;
+    EXPECT_EQ(rig.display.row(0), "icacam  ready");
+    rig.serial.in = "trigger\n";
+    rig.device->tick();
+    const fw::FlatObject r = rig.serial.last("result");
+    ASSERT_TRUE(r.find("source")) << rig.serial.out;
+    EXPECT_EQ(r.find("source")->text, "a.pgm");
 }

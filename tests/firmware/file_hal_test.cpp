@@ -48,7 +48,7 @@ TEST(FileCamera, DeliversFramesWithPaddedStrideThenTimesOut)
         list << "# frames\na.pgm\n!timeout\nb.png\n";
     }
     hal::ManualClock clock;
-    hal::FileCamera cam(clock, {dir.path + "/frames.txt", 64, false, 0});
+    hal::FileCamera cam(clock, {dir.path + "/frames.txt", 64, false, 0, {}});
     ASSERT_TRUE(cam.configure({vision::PixelFormat::Grey8, 64, 64}).ok());
     hal::CapturedFrame f;
     ASSERT_TRUE(cam.capture(500, &f).ok());
@@ -68,11 +68,11 @@ TEST(FileCamera, RefusesFramesLargerThanConfigured)
     TempDir dir;
     writePgm(dir.path + "/big.pgm", 100, 10);
     hal::ManualClock clock;
-    hal::FileCamera cam(clock, {dir.path, 1, true, 0});
+    hal::FileCamera cam(clock, {dir.path, 1, true, 0, {}});
     ASSERT_TRUE(cam.configure({vision::PixelFormat::Grey8, 64, 64}).ok());
     hal::CapturedFrame f;
     EXPECT_EQ(cam.capture(100, &f).code, hal::Errc::TooLarge);
-    hal::FileCamera none(clock, {dir.path + "/missing", 1, false, 0});
+    hal::FileCamera none(clock, {dir.path + "/missing", 1, false, 0, {}});
     EXPECT_EQ(none.configure({vision::PixelFormat::Grey8, 64, 64}).code, hal::Errc::NotFound);
 }
 

@@ -8,7 +8,9 @@
 #include <termios.h>
 #include <unistd.h>
 
+#include <memory>
 #include <string>
+#include <utility>
 
 #include "hal/termios/termios_serial.h"
 
@@ -92,6 +94,50 @@ TEST(TermiosSerial, HangUpIsClosed)
     char buf[8];
     auto r = serial.read(buf, sizeof buf);
     EXPECT_EQ(r.error.code, hal::Errc::Closed) << r.error.message;
+}
+
+// The USB gadget unplugged and plugged back: the tty comes back under the same name (here a
+// symlink repointed to a new pseudo-terminal) and the port is opened again by itself.
+TEST(TermiosSerial, HungUpPortIsReopenedWhenTheDeviceComesBack)
+{
+    char t[] = "/tmp/icacam-tty-XXXXXX";
+    const std::string dir = ::mkdtemp(t);
+    const std::string link = dir + "/ttyGS0";
+    auto first = std::make_unique<Pty>();
+    ASSERT_EQ(::symlink(first->path.c_str(), link.c_str()), 0);
+    hal::TermiosSerial serial;
+    ASSERT_TRUE(serial.open(link, 115200, 200, 20).ok());
+    ::close(std::exchange(first->slave, -1));
+    ::close(std::exchange(first->master, -1)); // unplugged
+    char buf[16];
+    EXPECT_EQ(serial.read(buf, sizeof buf).error.code, hal::Errc::Closed);
+    auto quiet = serial.read(buf, sizeof buf); // while it is away: nothing, no error
+    EXPECT_TRUE(quiet.ok()) << quiet.error.message;
+    EXPECT_EQ(quiet.value, 0u);
+
+    Pty second; // plugged back in
+    ::unlink(link.c_str());
+    ASSERT_EQ(::symlink(second.path.c_str(), link.c_str()), 0);
+    ::usleep(30000);
+    ASSERT_TRUE(serial.read(buf, sizeof buf).ok()); // reopens (and flushes what was pending)
+    EXPECT_EQ(serial.reopened(), 1);
+    ASSERT_EQ(::write(second.master, "status\n", 7), 7);
+    size_t got = 0;
+    for (int i = 0; i < 50 && got == 0; ++i) {
+        auto r = serial.read(buf, sizeof buf);
+        ASSERT_TRUE(r.ok()) << r.error.message;
+        got = r.value;
+        if (!got) ::usleep(10000);
+    }
+    EXPECT_EQ(std::string(buf, got), "status\n");
+    EXPECT_EQ(serial.reopened(), 1);
+    EXPECT_TRUE(serial.write("ok\n").ok());
+    char back[8] = {};
+    ::usleep(10000);
+    EXPECT_EQ(::read(second.master, back, sizeof back), 3);
+    EXPECT_EQ(std::string(back, 3), "ok\n");
+    ::unlink(link.c_str());
+    ::rmdir(dir.c_str());
 }
 
 TEST(TermiosSerial, BadBaudAndMissingDevice)

@@ -2,7 +2,13 @@
 // (QUERYCAP, S_FMT, REQBUFS, QUERYBUF, QBUF, STREAMON, DQBUF, STREAMOFF) is answered here the
 // way a UVC driver would; the buffer memory comes from the test through the mapper seam,
 // since umockdev does not wrap mmap (PLATFORM.md). Exits 77 without the preload library.
+//
+// Frames are "exposed" with the timestamps uvcvideo gives them (the first USB packet: after
+// the exposure), so the tests can hold stale ones, ones in flight when the LED settled and
+// fresh ones in the driver's queue, in the order the driver delivers them.
 #include <gtest/gtest.h>
+
+#include <jpeglib.h>
 
 #include <linux/videodev2.h>
 #include <time.h>
@@ -13,7 +19,9 @@
 #include <cstring>
 #include <deque>
 #include <filesystem>
+#include <map>
 #include <mutex>
+#include <utility>
 #include <vector>
 
 #include "firmware/device.h"
@@ -47,7 +55,13 @@ struct FakeVideo {
     std::vector<bool> queued;
     struct Frame { int64_t ns; uint8_t fill; };
     std::deque<Frame> exposures; // frames the sensor will deliver, into the next queued buffer
+    std::vector<uint8_t> jpeg;   // MJPEG: every frame's bytes
     bool streaming = false, unplugged = false;
+    // What a UVC camera lists: formats with their discrete sizes (empty: ENUM_FMT unsupported).
+    std::vector<std::pair<uint32_t, std::vector<std::pair<uint32_t, uint32_t>>>> listed;
+    std::map<uint32_t, int32_t> controls; // supported controls and their values
+    uint32_t intervalNum = 0, intervalDen = 0; // G_PARM (0: unsupported)
+    uint32_t sequence = 0;
     uint32_t pixfmt = 0;
     std::vector<unsigned long> seen; // request codes, in order
 };
@@ -64,6 +78,52 @@ gboolean onIoctl(UMockdevIoctlBase *, UMockdevIoctlClient *client, gpointer user
     };
     if (v->unplugged) return done(ENODEV);
     switch (req) {
+    case VIDIOC_ENUM_FMT: {
+        auto *d = test::ioctlArg<v4l2_fmtdesc>(client);
+        if (!d) return done(EFAULT);
+        if (v->listed.empty()) return done(ENOTTY);
+        if (d->index >= v->listed.size()) return done(EINVAL);
+        d->pixelformat = v->listed[d->index].first;
+        return done(0);
+    }
+    case VIDIOC_ENUM_FRAMESIZES: {
+        auto *f = test::ioctlArg<v4l2_frmsizeenum>(client);
+        if (!f) return done(EFAULT);
+        for (const auto &l : v->listed)
+            if (l.first == f->pixel_format && f->index < l.second.size()) {
+                f->type = V4L2_FRMSIZE_TYPE_DISCRETE;
+                f->discrete.width = l.second[f->index].first;
+                f->discrete.height = l.second[f->index].second;
+                return done(0);
+            }
+        return done(EINVAL);
+    }
+    case VIDIOC_G_PARM: {
+        auto *p = test::ioctlArg<v4l2_streamparm>(client);
+        if (!p) return done(EFAULT);
+        if (!v->intervalDen) return done(ENOTTY);
+        p->parm.capture.timeperframe.numerator = v->intervalNum;
+        p->parm.capture.timeperframe.denominator = v->intervalDen;
+        return done(0);
+    }
+    case VIDIOC_S_EXT_CTRLS:
+    case VIDIOC_G_EXT_CTRLS: {
+        // The control array is a pointer inside the argument: resolved from the struct.
+        UMockdevIoctlData *arg = umockdev_ioctl_client_get_arg(client);
+        UMockdevIoctlData *sd = arg ? umockdev_ioctl_data_resolve(arg, 0, sizeof(v4l2_ext_controls), nullptr) : nullptr;
+        if (!sd) return done(EFAULT);
+        auto *cs = reinterpret_cast<v4l2_ext_controls *>(sd->data);
+        if (cs->count != 1) return done(EINVAL);
+        UMockdevIoctlData *cd = umockdev_ioctl_data_resolve(sd, offsetof(v4l2_ext_controls, controls),
+                                                            sizeof(v4l2_ext_control), nullptr);
+        if (!cd) return done(EFAULT);
+        auto *c = reinterpret_cast<v4l2_ext_control *>(cd->data);
+        auto it = v->controls.find(c->id);
+        if (it == v->controls.end()) return done(EINVAL);
+        if (req == VIDIOC_S_EXT_CTRLS) it->second = c->value;
+        else c->value = it->second;
+        return done(0);
+    }
     case VIDIOC_QUERYCAP: {
         auto *c = test::ioctlArg<v4l2_capability>(client);
         if (!c) return done(EFAULT);
@@ -124,9 +184,15 @@ gboolean onIoctl(UMockdevIoctlBase *, UMockdevIoctlClient *client, gpointer user
         const FakeVideo::Frame fr = v->exposures.front();
         v->exposures.pop_front();
         v->queued[i] = false;
-        std::fill(v->memory[i].begin(), v->memory[i].end(), fr.fill);
         b->index = uint32_t(i);
-        b->bytesused = v->width * v->height * 2;
+        if (v->pixfmt == V4L2_PIX_FMT_MJPEG) {
+            std::copy(v->jpeg.begin(), v->jpeg.end(), v->memory[i].begin());
+            b->bytesused = uint32_t(v->jpeg.size());
+        } else {
+            std::fill(v->memory[i].begin(), v->memory[i].end(), fr.fill);
+            b->bytesused = v->width * v->height * 2;
+        }
+        b->sequence = v->sequence++;
         b->flags = V4L2_BUF_FLAG_TIMESTAMP_MONOTONIC;
         b->timestamp.tv_sec = fr.ns / 1000000000;
         b->timestamp.tv_usec = (fr.ns % 1000000000) / 1000;
@@ -151,6 +217,47 @@ struct TestMapper final : hal::V4l2BufferMapper {
     }
     void unmap(void *, size_t) override { --mapped; }
 };
+
+hal::V4l2Options opts(const char *device, int buffers)
+{
+    hal::V4l2Options o;
+    o.device = device;
+    o.bufferCount = buffers;
+    return o;
+}
+
+// A grey gradient as one baseline JPEG, as a UVC camera sends it.
+std::vector<uint8_t> encodeJpeg(int w, int h)
+{
+    std::vector<uint8_t> grey(size_t(w) * size_t(h));
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) grey[size_t(y) * size_t(w) + size_t(x)] = uint8_t((x + y) / 5 % 256);
+    jpeg_compress_struct c;
+    jpeg_error_mgr err;
+    c.err = jpeg_std_error(&err);
+    jpeg_create_compress(&c);
+    unsigned char *mem = nullptr;
+    unsigned long size = 0;
+    jpeg_mem_dest(&c, &mem, &size);
+    c.image_width = JDIMENSION(w);
+    c.image_height = JDIMENSION(h);
+    c.input_components = 3;
+    c.in_color_space = JCS_RGB;
+    jpeg_set_defaults(&c);
+    jpeg_set_quality(&c, 95, TRUE);
+    jpeg_start_compress(&c, TRUE);
+    std::vector<uint8_t> row(size_t(w) * 3);
+    while (c.next_scanline < c.image_height) {
+        for (int x = 0; x < w; ++x) row[size_t(x) * 3] = row[size_t(x) * 3 + 1] = row[size_t(x) * 3 + 2] = grey[size_t(c.next_scanline) * size_t(w) + size_t(x)];
+        JSAMPROW r = row.data();
+        jpeg_write_scanlines(&c, &r, 1);
+    }
+    jpeg_finish_compress(&c);
+    std::vector<uint8_t> out(mem, mem + size);
+    jpeg_destroy_compress(&c);
+    free(mem);
+    return out;
+}
 
 class V4l2Mock : public ::testing::Test {
 protected:
@@ -190,7 +297,7 @@ protected:
 
 TEST_F(V4l2Mock, NegotiatesAFormatTheDriverHasAndStreams)
 {
-    hal::V4l2Camera cam(clock_, {"/dev/video0", 3}, &mapper_);
+    hal::V4l2Camera cam(clock_, opts("/dev/video0", 3), &mapper_);
     hal::Error e = cam.configure({vision::PixelFormat::Grey8, 640, 480});
     ASSERT_TRUE(e.ok()) << e.message;
     // GREY asked for, the driver only has YUYV: taken, luma viewed with a pixel step of 2.
@@ -201,30 +308,112 @@ TEST_F(V4l2Mock, NegotiatesAFormatTheDriverHasAndStreams)
     {
         std::lock_guard<std::mutex> lock(video_.m);
         EXPECT_TRUE(video_.streaming);
+        // The streaming sequence (the enumeration and control queries between are optional).
+        std::vector<unsigned long> seen;
+        for (unsigned long r : video_.seen)
+            if (r != VIDIOC_ENUM_FMT && r != VIDIOC_G_PARM && r != VIDIOC_S_EXT_CTRLS && r != VIDIOC_G_EXT_CTRLS)
+                seen.push_back(r);
         const std::vector<unsigned long> start{VIDIOC_QUERYCAP, VIDIOC_S_FMT, VIDIOC_REQBUFS,
                                                VIDIOC_QUERYBUF, VIDIOC_QBUF, VIDIOC_QUERYBUF, VIDIOC_QBUF,
                                                VIDIOC_QUERYBUF, VIDIOC_QBUF, VIDIOC_STREAMON};
-        EXPECT_EQ(video_.seen, start);
+        EXPECT_EQ(seen, start);
     }
 }
 
-TEST_F(V4l2Mock, RefusesACameraWithoutAnInPlaceFormat)
+TEST_F(V4l2Mock, MjpegOnlyCameraIsDecodedToLumaAtTheLargestListedSizeThatFits)
 {
     {
         std::lock_guard<std::mutex> lock(video_.m);
         video_.formats = {V4L2_PIX_FMT_MJPEG};
+        video_.width = 1280;
+        video_.height = 720;
+        // Uncompressed only at a small size, MJPEG up to 720p: MJPEG 640x480 is the largest
+        // within an 800x600 maximum.
+        video_.listed = {{V4L2_PIX_FMT_YUYV, {{320, 240}}},
+                         {V4L2_PIX_FMT_MJPEG, {{320, 240}, {640, 480}, {1280, 720}}}};
+        video_.jpeg = encodeJpeg(640, 480);
     }
-    hal::V4l2Camera cam(clock_, {"/dev/video0", 2}, &mapper_);
-    hal::Error e = cam.configure({vision::PixelFormat::Grey8, 640, 480});
-    EXPECT_EQ(e.code, hal::Errc::BadFormat) << e.message;
-    std::lock_guard<std::mutex> lock(video_.m);
-    EXPECT_EQ(std::count(video_.seen.begin(), video_.seen.end(), VIDIOC_S_FMT), 3); // GREY, NV12, YUYV
-    EXPECT_FALSE(video_.streaming);
+    hal::V4l2Camera cam(clock_, opts("/dev/video0", 2), &mapper_);
+    hal::Error e = cam.configure({vision::PixelFormat::Grey8, 800, 600});
+    ASSERT_TRUE(e.ok()) << e.message;
+    EXPECT_TRUE(cam.mjpeg());
+    EXPECT_EQ(cam.width(), 640);
+    EXPECT_EQ(cam.height(), 480);
+    EXPECT_EQ(cam.format(), vision::PixelFormat::Grey8);
+    expose(nowNs() + 1000000000, 0);
+    hal::CapturedFrame frame;
+    e = cam.capture(500, &frame);
+    ASSERT_TRUE(e.ok()) << e.message;
+    ASSERT_EQ(frame.view.width, 640);
+    // The decoded luma is the gradient that was encoded (JPEG's error is a few levels).
+    int worst = 0;
+    for (int y = 0; y < 480; y += 37)
+        for (int x = 0; x < 640; x += 41)
+            worst = std::max(worst, std::abs(int(frame.view.data[size_t(y) * 640 + size_t(x)]) - (x + y) / 5 % 256));
+    EXPECT_LE(worst, 6);
+}
+
+TEST_F(V4l2Mock, CorruptMjpegFrameIsSkippedNotMeasured)
+{
+    {
+        std::lock_guard<std::mutex> lock(video_.m);
+        video_.formats = {V4L2_PIX_FMT_MJPEG};
+        video_.listed = {{V4L2_PIX_FMT_MJPEG, {{64, 48}}}};
+        video_.jpeg = encodeJpeg(64, 48);
+        video_.jpeg.resize(video_.jpeg.size() / 3); // torn in transfer
+    }
+    hal::V4l2Camera cam(clock_, opts("/dev/video0", 2), &mapper_);
+    ASSERT_TRUE(cam.configure({vision::PixelFormat::Grey8, 640, 480}).ok());
+    expose(nowNs() + 1000000000, 0);
+    hal::CapturedFrame frame;
+    const hal::Error e = cam.capture(150, &frame);
+    EXPECT_EQ(e.code, hal::Errc::Timeout) << e.message;
+    EXPECT_NE(e.message.find("MJPEG"), std::string::npos) << e.message;
+}
+
+TEST_F(V4l2Mock, ImagingControlsAreSetAndReadBack)
+{
+    {
+        std::lock_guard<std::mutex> lock(video_.m);
+        video_.controls = {{V4L2_CID_EXPOSURE_AUTO, V4L2_EXPOSURE_APERTURE_PRIORITY},
+                           {V4L2_CID_EXPOSURE_AUTO_PRIORITY, 1},
+                           {V4L2_CID_EXPOSURE_ABSOLUTE, 156},
+                           {V4L2_CID_GAIN, 0},
+                           {V4L2_CID_AUTO_WHITE_BALANCE, 1},
+                           {V4L2_CID_FOCUS_AUTO, 1},
+                           {V4L2_CID_FOCUS_ABSOLUTE, 0}};
+    }
+    hal::V4l2Options o = opts("/dev/video0", 2);
+    o.controls.exposureUs = 8000;
+    o.controls.analogueGain = 12;
+    o.controls.redGain = 1.5; // this camera has no red/blue balance: refused, not fatal
+    o.controls.blueGain = 1.5;
+    o.controls.lensPosition = 250;
+    hal::V4l2Camera cam(clock_, o, &mapper_);
+    ASSERT_TRUE(cam.configure({vision::PixelFormat::YUYV, 640, 480}).ok());
+    {
+        std::lock_guard<std::mutex> lock(video_.m);
+        EXPECT_EQ(video_.controls[V4L2_CID_EXPOSURE_AUTO], V4L2_EXPOSURE_MANUAL);
+        EXPECT_EQ(video_.controls[V4L2_CID_EXPOSURE_AUTO_PRIORITY], 0);
+        EXPECT_EQ(video_.controls[V4L2_CID_EXPOSURE_ABSOLUTE], 80); // 100 us steps
+        EXPECT_EQ(video_.controls[V4L2_CID_AUTO_WHITE_BALANCE], 0);
+        EXPECT_EQ(video_.controls[V4L2_CID_FOCUS_AUTO], 0);
+        EXPECT_EQ(video_.controls[V4L2_CID_FOCUS_ABSOLUTE], 250);
+        video_.controls[V4L2_CID_GAIN] = 11; // the camera rounds: what it reports is journaled
+    }
+    EXPECT_NE(cam.describe().find("red_balance"), std::string::npos) << cam.describe();
+    hal::CapturedFrame frame;
+    expose(nowNs() + 1000000000, 5);
+    ASSERT_TRUE(cam.capture(500, &frame).ok());
+    EXPECT_EQ(frame.controls.exposureUs, 8000);
+    EXPECT_EQ(frame.controls.lensPosition, 250);
+    EXPECT_EQ(frame.controls.analogueGain, 12); // read back right after setting
+    EXPECT_LT(frame.controls.redGain, 0);       // not reported
 }
 
 TEST_F(V4l2Mock, SkipsFramesExposedBeforeTheTriggerAndRecyclesBuffers)
 {
-    hal::V4l2Camera cam(clock_, {"/dev/video0", 2}, &mapper_);
+    hal::V4l2Camera cam(clock_, opts("/dev/video0", 2), &mapper_);
     ASSERT_TRUE(cam.configure({vision::PixelFormat::YUYV, 640, 480}).ok());
     const int64_t t = nowNs();
     expose(t - 50000000, 11); // stale: exposed 50 ms before capture() was called
@@ -244,9 +433,45 @@ TEST_F(V4l2Mock, SkipsFramesExposedBeforeTheTriggerAndRecyclesBuffers)
     }
 }
 
+// The LED settles at L; uvcvideo's queue holds a frame exposed long before, then the frame
+// whose exposure began 3 ms before L (in flight: stamped after L), then one begun 3 ms after.
+// Only the last is measured, with its latency and the count of refused ones.
+TEST_F(V4l2Mock, OnlyAFrameExposedAfterTheLedSettledIsHandedOut)
+{
+    {
+        std::lock_guard<std::mutex> lock(video_.m);
+        video_.controls = {{V4L2_CID_EXPOSURE_AUTO, V4L2_EXPOSURE_MANUAL}, {V4L2_CID_EXPOSURE_ABSOLUTE, 100}};
+        video_.intervalNum = 1;
+        video_.intervalDen = 30;
+    }
+    hal::V4l2Options o = opts("/dev/video0", 4);
+    o.controls.exposureUs = 10000;
+    o.stampDelayUs = 2000; // this camera's first packet: within 2 ms of the exposure's end
+    hal::V4l2Camera cam(clock_, o, &mapper_);
+    ASSERT_TRUE(cam.configure({vision::PixelFormat::YUYV, 640, 480}).ok());
+    EXPECT_EQ(cam.frameIntervalUs(), 33333);
+    const int64_t settleInMs = 40;
+    const int64_t litMs = clock_.monotonicMs() + settleInMs;
+    const int64_t L = nowNs() + settleInMs * 1000000; // the same instant on the kernel's clock (±1 ms)
+    const int64_t exposure = 10000000, delay = 2000000;
+    expose(L - 60000000, 1);                          // stale: filled before the LED came on
+    expose(L - 3000000 + exposure + delay, 2);        // in flight: began 3 ms before L
+    expose(L + 3000000 + exposure + delay, 3);        // fresh: began 3 ms after L
+    expose(L + 3000000 + exposure + delay + 33333333, 4);
+    hal::CapturedFrame frame;
+    const hal::Error e = cam.capture({litMs, 500}, &frame);
+    ASSERT_TRUE(e.ok()) << e.message;
+    EXPECT_EQ(frame.view.data[0], 3);
+    EXPECT_EQ(frame.staleFrames, 2);
+    EXPECT_EQ(frame.sequence, 2u);
+    EXPECT_NEAR(double(frame.latencyUs), 3000, 1500);
+    EXPECT_EQ(frame.exposureUs, 10000);
+    EXPECT_EQ(frame.controls.exposureUs, 10000);
+}
+
 TEST_F(V4l2Mock, CaptureTimesOutWithoutBlocking)
 {
-    hal::V4l2Camera cam(clock_, {"/dev/video0", 2}, &mapper_);
+    hal::V4l2Camera cam(clock_, opts("/dev/video0", 2), &mapper_);
     ASSERT_TRUE(cam.configure({vision::PixelFormat::YUYV, 640, 480}).ok());
     hal::CapturedFrame frame;
     const int64_t t0 = clock_.monotonicMs();
@@ -260,7 +485,7 @@ TEST_F(V4l2Mock, CaptureTimesOutWithoutBlocking)
 TEST_F(V4l2Mock, CaptureTimesOutEvenWithAManualClock)
 {
     hal::ManualClock manual(5000); // does not move while the camera waits
-    hal::V4l2Camera cam(manual, {"/dev/video0", 2}, &mapper_);
+    hal::V4l2Camera cam(manual, opts("/dev/video0", 2), &mapper_);
     ASSERT_TRUE(cam.configure({vision::PixelFormat::YUYV, 640, 480}).ok());
     hal::CapturedFrame frame;
     EXPECT_EQ(cam.capture(100, &frame).code, hal::Errc::Timeout);
@@ -268,7 +493,7 @@ TEST_F(V4l2Mock, CaptureTimesOutEvenWithAManualClock)
 
 TEST_F(V4l2Mock, UnplugIsAnErrorAndCaptureResumesAfterReplug)
 {
-    hal::V4l2Camera cam(clock_, {"/dev/video0", 2}, &mapper_);
+    hal::V4l2Camera cam(clock_, opts("/dev/video0", 2), &mapper_);
     ASSERT_TRUE(cam.configure({vision::PixelFormat::YUYV, 640, 480}).ok());
     hal::CapturedFrame frame;
     {
@@ -295,7 +520,7 @@ TEST_F(V4l2Mock, UnplugIsAnErrorAndCaptureResumesAfterReplug)
 
 TEST_F(V4l2Mock, NoCameraIsNotFound)
 {
-    hal::V4l2Camera cam(clock_, {"/dev/video5", 2}, &mapper_);
+    hal::V4l2Camera cam(clock_, opts("/dev/video5", 2), &mapper_);
     hal::Error e = cam.configure({vision::PixelFormat::YUYV, 640, 480});
     EXPECT_EQ(e.code, hal::Errc::NotFound) << e.message;
     hal::CapturedFrame frame;
@@ -322,7 +547,7 @@ TEST_F(V4l2Mock, FirmwareReportsUnplugAndMeasuresAgainAfterReplug)
 {
     char t[] = "/tmp/icacam-v4l2-fw-XXXXXX";
     const std::string dir = ::mkdtemp(t);
-    hal::V4l2Camera cam(clock_, {"/dev/video0", 2}, &mapper_);
+    hal::V4l2Camera cam(clock_, opts("/dev/video0", 2), &mapper_);
     QuietTrigger trigger;
     PlainLed led;
     RecordingDisplay display;

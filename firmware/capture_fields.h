@@ -1,0 +1,17 @@
+#pragma once
+// What the journal and the serial line carry about how a frame was taken: when its exposure
+// started relative to the light and the trigger, how many earlier frames were refused, and
+// the control values the camera reports it used (not the ones asked for).
+#include <cstdint>
+
+#include "firmware/json_line.h"
+#include "hal/camera.h"
+
+namespace icacam::fw {
+
+// latency_us: LED settled → exposure start; trigger_latency_ms: trigger → exposure start;
+// stale_frames, frame_seq; exposure_us, gain, red_gain, blue_gain, lens_position when the
+// camera reports them.
+void appendCaptureFields(JsonBuilder &j, const hal::CapturedFrame &f, int64_t triggerMs);
+
+} // namespace icacam::fw
