@@ -234,7 +234,7 @@ int main(int argc, char **argv)
     hal::Display *displayUsed = &display;
 #ifdef ICACAM_HAVE_SSD1306
     hal::I2cDevBus i2c;
-    hal::Ssd1306Display oled(i2c);
+    hal::Ssd1306Display oled(i2c, {cfg.displayDriver == "sh1106", cfg.displayRotate == 180, cfg.displayContrast});
     if (cfg.displayBackend == "ssd1306") {
         // A display that does not answer now is reported by each show(), not fatal: the
         // measurement still goes out on serial and into the journal.

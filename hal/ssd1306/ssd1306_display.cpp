@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <initializer_list>
 
 namespace icacam::hal {
 
@@ -54,29 +55,44 @@ Error Ssd1306Display::commands(const uint8_t *cmds, size_t n)
     return bus_.write(buf, n + 1);
 }
 
+Error Ssd1306Display::writePage(int page, const uint8_t *bytes, size_t n, int firstColumn)
+{
+    const uint8_t at[] = {uint8_t(0xB0 | page), uint8_t(firstColumn & 0x0F), uint8_t(0x10 | (firstColumn >> 4))};
+    if (Error e = commands(at, sizeof at); !e.ok()) return e;
+    uint8_t buf[1 + 132];
+    buf[0] = kDataStream;
+    std::memcpy(buf + 1, bytes, n);
+    return bus_.write(buf, n + 1);
+}
+
 Error Ssd1306Display::init()
 {
-    // Datasheet §10 and application note "charge pump": 128 × 64, internal VCC.
-    static const uint8_t kInit[] = {
-        0xAE,       // display off
-        0xD5, 0x80, // clock divide / oscillator
-        0xA8, 0x3F, // multiplex ratio 64
-        0xD3, 0x00, // display offset 0
-        0x40,       // start line 0
-        0x8D, 0x14, // charge pump on
-        0x20, 0x00, // horizontal addressing: 1024 bytes fill the screen page by page
-        0xA1,       // segment remap (column 127 = SEG0): picture not mirrored
-        0xC8,       // COM scan descending: picture not upside down
-        0xDA, 0x12, // COM pins: alternative, for 64 rows
-        0x81, 0x7F, // contrast
-        0xD9, 0xF1, // pre-charge
-        0xDB, 0x40, // VCOMH deselect
-        0xA4,       // show RAM
-        0xA6,       // normal (not inverted)
-        0xAF,       // display on
+    // Datasheet §10: 128 × 64, internal VCC, page addressing. The SH1106 has no addressing
+    // modes (always pages) and its own DC-DC command instead of the charge pump.
+    const bool flip = options_.rotate180;
+    uint8_t init[32];
+    size_t n = 0;
+    auto add = [&](std::initializer_list<uint8_t> bytes) {
+        for (uint8_t b : bytes) init[n++] = b;
     };
+    add({0xAE, 0xD5, 0x80, 0xA8, 0x3F, 0xD3, 0x00, 0x40}); // off, clock, 64 rows, offset 0, line 0
+    if (options_.sh1106) add({0xAD, 0x8B});                // DC-DC converter on
+    else add({0x8D, 0x14, 0x20, 0x02});                      // charge pump on, page addressing
+    add({uint8_t(flip ? 0xA0 : 0xA1),                        // segment remap: not mirrored (or turned 180°)
+         uint8_t(flip ? 0xC0 : 0xC8),                        // COM scan: not upside down (or turned)
+         0xDA, 0x12,                                         // COM pins: alternative, for 64 rows
+         0x81, uint8_t(options_.contrast & 0xFF),            // contrast
+         0xD9, 0xF1, 0xDB, 0x40,                             // pre-charge, VCOMH deselect
+         0xA4, 0xA6});                                       // show RAM, not inverted
     ready_ = false;
-    if (Error e = commands(kInit, sizeof kInit); !e.ok()) return e;
+    if (Error e = commands(init, n); !e.ok()) return e;
+    // Clear the whole RAM (the SH1106's 132 columns too) before the panel is switched on.
+    static const uint8_t kBlank[132] = {};
+    const size_t columns = options_.sh1106 ? 132 : 128;
+    for (int page = 0; page < 8; ++page)
+        if (Error e = writePage(page, kBlank, columns, 0); !e.ok()) return e;
+    static const uint8_t kOn[] = {0xAF};
+    if (Error e = commands(kOn, sizeof kOn); !e.ok()) return e;
     ready_ = true;
     return {};
 }
@@ -85,15 +101,11 @@ Error Ssd1306Display::show(const MonoBitmap &picture)
 {
     if (!ready_)
         if (Error e = init(); !e.ok()) return e;
-    static const uint8_t kWindow[] = {0x21, 0, 127, 0x22, 0, 7}; // whole column and page range
-    Error e = commands(kWindow, sizeof kWindow);
-    uint8_t buf[1 + kChunk];
-    buf[0] = kDataStream;
+    const int firstColumn = options_.sh1106 ? 2 : 0; // the SH1106 panel sits on RAM columns 2…129
     const auto &bytes = picture.bytes();
-    for (size_t off = 0; e.ok() && off < bytes.size(); off += kChunk) {
-        std::memcpy(buf + 1, bytes.data() + off, kChunk);
-        e = bus_.write(buf, sizeof buf);
-    }
+    Error e;
+    for (int page = 0; e.ok() && page < 8; ++page)
+        e = writePage(page, bytes.data() + size_t(page) * kChunk, kChunk, firstColumn);
     if (!e.ok()) ready_ = false;
     return e;
 }

@@ -593,6 +593,68 @@ TEST_F(V4l2Mock, FirmwareReportsUnplugAndMeasuresAgainAfterReplug)
     std::filesystem::remove_all(dir);
 }
 
+// The bar for a camera that is not there at start: a V4L2 node that does not exist. The
+// device runs, says so on the display, in `hello` and in `status`, and measures once the
+// node appears.
+TEST_F(V4l2Mock, FirmwareStartsWithoutItsCameraAndMeasuresOnceTheNodeAppears)
+{
+    char t[] = "/tmp/icacam-v4l2-missing-XXXXXX";
+    const std::string dir = ::mkdtemp(t);
+    hal::V4l2Camera cam(clock_, opts("/dev/video1", 2), &mapper_);
+    QuietTrigger trigger;
+    PlainLed led;
+    RecordingDisplay display;
+    RecordingSerial serial;
+    hal::FolderStorage storage;
+    ASSERT_TRUE(storage.open(dir, 0).ok());
+    fw::Config cfg;
+    cfg.n = 0.2;
+    cfg.mmPerPx = 0.0125;
+    cfg.cameraMaxWidth = 640;
+    cfg.cameraMaxHeight = 480;
+    cfg.captureTimeoutMs = 300;
+    cfg.cameraRetryMs = 100;
+    cfg.journalImages = "none";
+    vision::PaperModel model;
+    fw::Device device({cam, trigger, led, display, serial, storage, clock_}, cfg, model);
+    ASSERT_TRUE(device.start().ok());
+    const fw::FlatObject hello = serial.last("hello");
+    ASSERT_TRUE(hello.find("camera")) << serial.out;
+    EXPECT_EQ(hello.find("camera")->text, "missing");
+    EXPECT_NE(hello.find("camera_problem")->text.find("/dev/video1"), std::string::npos);
+    EXPECT_EQ(fw::readRow(display.last, 0), "icacam: no camera");
+    EXPECT_NE(fw::readRow(display.last, 2).find("/dev/video1"), std::string::npos) << fw::readRow(display.last, 2);
+    serial.in = "status\n";
+    device.tick();
+    EXPECT_EQ(serial.last("status").find("camera")->text, "missing");
+
+    // The camera is plugged in: its node appears.
+    GError *err = nullptr;
+    const char *dev = "P: /devices/pci0000:00/usb1/1-2/1-2:1.0/video4linux/video1\n"
+                      "N: video1\n"
+                      "E: SUBSYSTEM=video4linux\n"
+                      "E: DEVNAME=/dev/video1\n"
+                      "A: dev=81:1\\n\n";
+    ASSERT_TRUE(umockdev_testbed_add_from_string(bed_, dev, &err)) << (err ? err->message : "");
+    ASSERT_TRUE(umockdev_testbed_attach_ioctl(bed_, "/dev/video1", handler_, &err)) << (err ? err->message : "");
+    ::usleep(150000);
+    serial.out.clear();
+    device.tick();
+    const fw::FlatObject back = serial.last("camera");
+    ASSERT_TRUE(back.find("camera")) << serial.out;
+    EXPECT_EQ(back.find("camera")->text, "ok");
+    EXPECT_EQ(fw::readRow(display.last, 0), "icacam  ready");
+    expose(nowNs() + 1000000000, 90);
+    serial.in = "trigger\n";
+    device.tick();
+    const fw::FlatObject r = serial.last("result");
+    ASSERT_TRUE(r.find("source")) << serial.out;
+    EXPECT_EQ(r.find("source")->text, "/dev/video1");
+    ASSERT_TRUE(r.find("latency_us"));
+    EXPECT_GE(r.find("latency_us")->number, 0);
+    std::filesystem::remove_all(dir);
+}
+
 bool preloadLoaded()
 {
     std::FILE *f = std::fopen("/proc/self/maps", "r");
