@@ -21,7 +21,7 @@ bool kindOf(std::string_view name, CommandKind *k)
     static const struct { const char *name; CommandKind kind; } kNames[] = {
         {"help", CommandKind::Help}, {"status", CommandKind::Status}, {"trigger", CommandKind::Trigger},
         {"get", CommandKind::Get},   {"set", CommandKind::Set},       {"results", CommandKind::Results},
-        {"scalecheck", CommandKind::ScaleCheck},
+        {"scalecheck", CommandKind::ScaleCheck}, {"aim", CommandKind::Aim}, {"snapshot", CommandKind::Snapshot},
     };
     for (const auto &n : kNames)
         if (name == n.name) { *k = n.kind; return true; }
@@ -98,6 +98,14 @@ CommandParse parseCommand(std::string_view line)
                 return fail("bad_argument", "\"n\" must be a whole number from 1 to 1000");
         }
         if (p.cmd.kind == CommandKind::Set && p.cmd.key.empty()) return fail("bad_argument", "set needs \"key\"");
+        if (p.cmd.kind == CommandKind::Aim) {
+            if (const JsonField *sec = obj.find("seconds")) {
+                if (sec->type != JsonField::Type::Number || !(sec->number >= 0 && sec->number <= kMaxAimSeconds) ||
+                    sec->number != std::floor(sec->number))
+                    return fail("bad_argument", "\"seconds\" must be a whole number from 0 (off) to 600");
+                p.cmd.aimSeconds = int(sec->number);
+            }
+        }
         if (p.cmd.kind == CommandKind::ScaleCheck) {
             const struct { const char *key; double lo, hi; double *dst; bool required; } fields[] = {
                 {"diameter_mm", 1, 300, &p.cmd.diameterMm, true},
@@ -142,6 +150,14 @@ CommandParse parseCommand(std::string_view line)
             if (!wordNumber(words[k], &v)) return fail("bad_argument", std::string(kScaleUsage) + " (" + names[k - 1] + " is not a number)");
             if (std::string e = scaleNumber(names[k - 1], v, lo[k - 1], hi[k - 1], dst[k - 1]); !e.empty())
                 return fail("bad_argument", e);
+        }
+    } else if (p.cmd.kind == CommandKind::Aim) {
+        if (nw > 2) return fail("bad_argument", "usage: aim [SECONDS | off]");
+        if (nw == 2) {
+            double v = 0;
+            if (words[1] == "off") p.cmd.aimSeconds = 0;
+            else if (wordNumber(words[1], &v) && v >= 0 && v <= kMaxAimSeconds && v == std::floor(v)) p.cmd.aimSeconds = int(v);
+            else return fail("bad_argument", "usage: aim [SECONDS | off] (SECONDS a whole number up to 600)");
         }
     } else if (p.cmd.kind == CommandKind::Set) {
         if (nw != 3) return fail("bad_argument", "usage: set KEY VALUE");

@@ -10,7 +10,7 @@
 
 namespace icacam::fw {
 
-enum class CommandKind { Help, Status, Trigger, Get, Set, Results, ScaleCheck };
+enum class CommandKind { Help, Status, Trigger, Get, Set, Results, ScaleCheck, Aim, Snapshot };
 
 struct Command {
     CommandKind kind = CommandKind::Help;
@@ -20,6 +20,7 @@ struct Command {
     // scalecheck: the reference disc's declared diameter, the tolerance (percent) and the
     // disc's thickness (its edge is measured in its top face)
     double diameterMm = 0, tolerancePct = 0.5, thicknessMm = 0;
+    int aimSeconds = 60; // aim: how long the live view runs (0: `aim off`)
     std::string tag;   // the request's "id", echoed in the answer
 };
 
@@ -31,6 +32,7 @@ struct CommandParse {
 };
 
 constexpr int kMaxResultsAsked = 1000;
+constexpr int kMaxAimSeconds = 600;
 CommandParse parseCommand(std::string_view line);
 
 // Splits a byte stream into lines of at most maxLine bytes. A longer line is reported once

@@ -17,6 +17,12 @@ public:
     Press onEdge(const hal::ButtonEdge &e);
     Press poll(int64_t nowMs); // long presses fire while the button is still held
     bool isDown() const { return down_; }
+    // The line's level read directly: a button found up while held here was released
+    // without its edge reaching us (a full event queue); no press is reported for it.
+    void resync(bool pressedNow)
+    {
+        if (!pressedNow) down_ = false;
+    }
 
 private:
     int64_t debounce_, long_;

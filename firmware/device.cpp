@@ -140,7 +140,10 @@ void Device::tick()
     pollButton();
     pollSerial();
     pollCamera();
+    if (aimUntilMs_ >= 0) aimTick();
 }
+
+
 
 void Device::pollCamera()
 {
@@ -164,6 +167,11 @@ void Device::appendCameraStatus(JsonBuilder &j) const
 
 void Device::pollButton()
 {
+    // Held here since an earlier batch: the level is read before the queue is drained, so a
+    // release that happened is either in the queue or was lost (libgpiod 1.6 drops the newest
+    // event when the queue is full, e.g. while a measurement ran).
+    hal::Result<bool> level = hal::Result<bool>::fail(hal::Errc::Invalid, "");
+    if (debouncer_.isDown()) level = hal_.trigger.pressed();
     hal::ButtonEdge edges[16];
     hal::Result<size_t> r = hal_.trigger.readEdges(edges, 16);
     if (!r.ok()) {
@@ -175,11 +183,23 @@ void Device::pollButton()
     }
     for (size_t i = 0; i < r.value; ++i) {
         const Press p = debouncer_.onEdge(edges[i]);
-        if (p == Press::Short) measure("button", "");
+        if (p != Press::Short) continue;
+        if (aimUntilMs_ >= 0) { // a press ends aiming; it does not measure
+            stopAim("button");
+            continue;
+        }
+        measure("button", "");
     }
+    if (level.ok() && !level.value && r.value == 0) debouncer_.resync(false);
     if (debouncer_.poll(hal_.clock.monotonicMs()) == Press::Long) {
-        drawSettings(&screen_, cfg_);
-        showOrLog(screen_);
+        // Long press: aim mode; held again while aiming: the settings page.
+        if (aimUntilMs_ < 0) {
+            startAim(60, "");
+        } else {
+            stopAim("button");
+            drawSettings(&screen_, cfg_);
+            showOrLog(screen_);
+        }
     }
 }
 
@@ -220,7 +240,7 @@ void Device::handleCommand(const Command &c)
     case CommandKind::Help:
         j.str("type", "help")
             .str("commands", "status | trigger | get [KEY] | set KEY VALUE | results [N] | "
-                             "scalecheck DIAMETER_MM [TOLERANCE_PCT [THICKNESS_MM]] | help; "
+                             "scalecheck DIAMETER_MM [TOLERANCE_PCT [THICKNESS_MM]] | aim [SECONDS | off] | snapshot | help; "
                              "as words or JSON {\"cmd\":\"set\",\"key\":\"n\",\"value\":0.2,\"id\":\"x\"}")
             .str("keys", liveKeyList());
         break;
@@ -238,7 +258,16 @@ void Device::handleCommand(const Command &c)
         break;
     }
     case CommandKind::Trigger:
+        if (aimUntilMs_ >= 0) stopAim("measurement");
         measure("serial", c.tag);
+        return;
+    case CommandKind::Aim:
+        if (c.aimSeconds == 0) stopAim("serial");
+        else startAim(c.aimSeconds, c.tag);
+        return;
+    case CommandKind::Snapshot:
+        if (aimUntilMs_ >= 0) stopAim("snapshot");
+        snapshot(c);
         return;
     case CommandKind::Get: {
         j.str("type", "settings");
@@ -298,6 +327,7 @@ void Device::handleCommand(const Command &c)
         return;
     }
     case CommandKind::ScaleCheck:
+        if (aimUntilMs_ >= 0) stopAim("scalecheck");
         scaleCheck(c);
         return;
     }

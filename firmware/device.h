@@ -70,6 +70,18 @@ private:
     void sendError(const char *code, std::string_view message, std::string_view tag);
     void send(std::string_view line);
     void showIdle(std::string_view note);
+    // Aim mode (device_aim.cpp): the LED ring on and the live picture on the display with
+    // the found end face, a focus score and a hint, a line on serial per picture; ended
+    // by `aim off`, a press, a measurement or its time running out.
+    void startAim(int seconds, const std::string &tag);
+    void stopAim(const char *why);
+    void aimTick();
+    // `snapshot`: a frame (lit as for a measurement) with the boundaries drawn, as a PNG in
+    // the journal folder; answers its name.
+    void snapshot(const Command &c);
+    // Measures the frame in luma for aim and snapshot (the same specimen and scale as a
+    // measurement).
+    vision::Measurement measureForSetup(const vision::LumaView &luma);
     // The camera's state for `hello`, `status` and the camera line sent when it comes back.
     void appendCameraStatus(JsonBuilder &j) const;
     void pollCamera();
@@ -85,6 +97,10 @@ private:
     vision::EndFaceAnalyzer analyzer_;
     CameraHealth cameraHealth_;
     int64_t triggerMs_ = 0; // when the frame being measured was asked for
+    int64_t aimUntilMs_ = -1; // aim mode runs until then (-1: off)
+    int64_t aimNextMs_ = 0, aimLitMs_ = 0;
+    long aimFrames_ = 0;
+    std::string aimTag_;
     Journal journal_;
     Debouncer debouncer_;
     LineAssembler lines_;

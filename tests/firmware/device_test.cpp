@@ -44,8 +44,8 @@ struct Rig {
     vision::PaperModel model;
     std::unique_ptr<fw::Device> device;
 
-    explicit Rig(const std::string &frames, uint64_t quota = 0)
-        : dir(makeDir()), camera(clock, {frames.empty() ? dir : frames, 1, false, 0, {}})
+    explicit Rig(const std::string &frames, uint64_t quota = 0, bool loop = false)
+        : dir(makeDir()), camera(clock, {frames.empty() ? dir : frames, 1, loop, 0, {}})
     {
         EXPECT_TRUE(storage.open(dir + "/journal", quota).ok());
         fw::Config cfg;
@@ -129,9 +129,9 @@ TEST(Device, SettingsSurviveARestart)
     EXPECT_DOUBLE_EQ(again.config().n, 0.37);
 }
 
-TEST(Device, LongPressShowsSettingsAndBounceDoesNotMeasure)
+TEST(Device, LongPressAimsASecondShowsSettingsAndBounceDoesNotMeasure)
 {
-    Rig rig("");
+    Rig rig("", 0, true); // the live view takes a picture every 250 ms
     writeGrey(rig.dir + "/a.pgm", 64, 64, 0);
     ASSERT_TRUE(rig.device->start().ok());
     rig.trigger.feed("0 down\n3 up\n6 down\n9 up\n"); // bounce only
@@ -142,13 +142,24 @@ TEST(Device, LongPressShowsSettingsAndBounceDoesNotMeasure)
     rig.clock.advance(1);
     rig.device->tick();
     rig.clock.advance(1600);
+    rig.device->tick(); // held: aim mode, the ring on and the live picture
+    EXPECT_NE(rig.serial.out.find("\"type\":\"aim\",\"state\":\"on\""), std::string::npos) << rig.serial.out;
+    EXPECT_TRUE(rig.led.isOn());
+    EXPECT_EQ(rig.display.row(0).substr(rig.display.row(0).find('F'), 2), "F0"); // a blank frame: no focus
+    rig.clock.advance(1000);
+    rig.device->tick(); // released: aiming goes on
+    rig.trigger.feed("press 2000\n");
+    rig.clock.advance(1);
     rig.device->tick();
+    rig.clock.advance(1600);
+    rig.device->tick(); // held again: the settings page, aiming over
     EXPECT_EQ(rig.display.row(0), "settings");
     EXPECT_EQ(rig.display.row(2), "n     0.2000");
+    EXPECT_FALSE(rig.led.isOn());
     rig.clock.advance(1000);
     rig.device->tick();
     EXPECT_EQ(rig.serial.out.find("\"type\":\"result\""), std::string::npos);
-    EXPECT_EQ(rig.led.switchCount(), 0);
+    EXPECT_EQ(rig.led.switchCount(), 2);
 }
 
 TEST(Device, FinalHeightIsALiveJournaledKeyCheckedAgainstTheInitialHeight)
