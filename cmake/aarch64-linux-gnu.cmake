@@ -6,9 +6,10 @@
 #      cmake -S . -B build-aarch64 --toolchain cmake/aarch64-linux-gnu.cmake \
 #            -DICACAM_HOST_TOOLS=OFF -DICACAM_BENCH=OFF
 #  * A sysroot copied from the board (a real deployment links against the board's own
-#    libraries, e.g. Raspberry Pi's libcamera fork):
-#      rsync -a --relative pi@board:/usr/include pi@board:/usr/lib pi@board:/lib /opt/pi-sysroot
-#      cmake ... -DICACAM_SYSROOT=/opt/pi-sysroot   (or the environment variable)
+#    libraries, e.g. Raspberry Pi's libcamera fork). One command does the copy, the build
+#    and the tests:  ICACAM_BOARD=pi@board bash .ci/cross   (docs/hardware.md). By hand:
+#      cmake ... -DICACAM_SYSROOT=/opt/pi-sysroot   (or the environment variable, or
+#      -DCMAKE_SYSROOT=/opt/pi-sysroot: the same)
 # Tests run through qemu-aarch64-static (CMAKE_CROSSCOMPILING_EMULATOR), so ctest and
 # gtest_discover_tests work on the build machine without binfmt_misc.
 set(CMAKE_SYSTEM_NAME Linux)
@@ -21,6 +22,9 @@ set(CMAKE_CXX_COMPILER ${ICACAM_CROSS_PREFIX}g++)
 
 if(NOT DEFINED ICACAM_SYSROOT AND DEFINED ENV{ICACAM_SYSROOT})
     set(ICACAM_SYSROOT "$ENV{ICACAM_SYSROOT}")
+endif()
+if(NOT ICACAM_SYSROOT AND CMAKE_SYSROOT)
+    set(ICACAM_SYSROOT "${CMAKE_SYSROOT}")
 endif()
 # try_compile projects re-read this file: pass the sysroot choice on to them.
 list(APPEND CMAKE_TRY_COMPILE_PLATFORM_VARIABLES ICACAM_SYSROOT ICACAM_CROSS_PREFIX)

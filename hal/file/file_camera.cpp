@@ -41,6 +41,7 @@ Error FileCamera::configure(const CameraFormat &fmt)
     if (opts_.strideAlign < 1 || opts_.strideAlign > 4096)
         return Error::make(Errc::Invalid, "stride alignment must be 1..4096");
     std::error_code ec;
+    const std::vector<std::string> before = std::move(files_);
     files_.clear();
     if (fs::is_directory(opts_.source, ec)) {
         for (const auto &e : fs::directory_iterator(opts_.source, ec))
@@ -65,7 +66,9 @@ Error FileCamera::configure(const CameraFormat &fmt)
     capacity_ = (row + a - 1) / a * a * size_t(fmt.maxHeight);
     buffer_ = std::make_unique<uint8_t[]>(capacity_);
     fmt_ = fmt;
-    next_ = 0;
+    // Configured again over the same frames (a device re-acquiring a camera that timed out):
+    // carry on where it was, as a sensor would, rather than start the sequence over.
+    if (files_ != before) next_ = 0;
     return {};
 }
 

@@ -4,10 +4,13 @@
 // ISPs pad it, and once the list is exhausted (or at a "!timeout" entry) a capture waits its
 // full timeout and fails with Errc::Timeout.
 //
+// configure() again over the same frames carries on at the same position.
+//
 // Source: a folder (its .png/.jpg/.jpeg/.pgm files in name order) or a list file (one path a
 // line, relative to the list's folder; '#' comments; "!timeout" simulates a hung sensor).
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "hal/camera.h"
@@ -16,6 +19,10 @@
 namespace icacam::hal {
 
 struct FileCameraOptions {
+    FileCameraOptions() = default;
+    FileCameraOptions(std::string src, int align = 1, bool loopAtEnd = false, int latencyMs = 0, CameraControls reported = {})
+        : source(std::move(src)), strideAlign(align), loop(loopAtEnd), exposureMs(latencyMs), controls(reported) {}
+
     std::string source;     // folder or list file
     int strideAlign = 1;    // rows padded to a multiple of this many bytes (e.g. 64)
     bool loop = false;      // start over at the end instead of timing out

@@ -22,6 +22,7 @@
 #include <sys/mman.h>
 #include <time.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <condition_variable>
@@ -59,18 +60,21 @@ std::shared_ptr<lc::Camera> pickCamera(lc::CameraManager &manager, const std::st
     return nullptr;
 }
 
-// The largest size the sensor offers for this format (its modes, as the pipeline lists them)
-// that fits the maximum; the pixel array itself when nothing is listed.
+// The largest size the pipeline lists for this format that fits the maximum and is not
+// larger than the sensor's pixel array: the ISP can scale up to its buffer limit, which
+// adds no detail and costs memory (a 4096 × 3072 buffer is ~19 MB of CMA).
 lc::Size sensorSize(const lc::Camera &cam, const lc::StreamConfiguration &sc, const lc::PixelFormat &pf, int maxW,
                     int maxH)
 {
+    if (const auto array = cam.properties().get(lc::properties::PixelArraySize)) {
+        maxW = std::min(maxW, int(array->width));
+        maxH = std::min(maxH, int(array->height));
+    }
     lc::Size best;
     for (const lc::Size &sz : sc.formats().sizes(pf))
         if (int(sz.width) <= maxW && int(sz.height) <= maxH && uint64_t(sz.width) * sz.height > uint64_t(best.width) * best.height)
             best = sz;
-    if (best.width == 0)
-        if (const auto array = cam.properties().get(lc::properties::PixelArraySize))
-            if (int(array->width) <= maxW && int(array->height) <= maxH) best = *array;
+    if (best.width == 0 && maxW > 0 && maxH > 0) best = lc::Size(unsigned(maxW), unsigned(maxH));
     return best;
 }
 

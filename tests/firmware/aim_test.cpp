@@ -20,7 +20,7 @@
 #include "hal/file/image_decoder.h"
 #include "tests/firmware/recording_serial.h"
 #include "vision/end_face_analyzer.h"
-#include "vision/paper_model.h"
+#include "vision/model/paper_model.h"
 
 using namespace icacam;
 namespace fs = std::filesystem;
