@@ -125,6 +125,11 @@ mm_per_px = 0.0125
 [camera]
 frames = frames.txt
 timeout_ms = 3000
+exposure_us = 12000
+analogue_gain = 2
+red_gain = 1.5
+blue_gain = 1.8
+lens_position = 4
 [trigger]
 script = trigger.fifo
 [led]
@@ -166,6 +171,11 @@ dir = journal
             fail("no result for " + r["id"])
         if res["source"] != os.path.basename(r["image"]):
             fail("frame order: got %s for %s" % (res["source"], r["id"]))
+        # The imaging controls of the config, as the (file) camera reports them, and when the
+        # frame was taken relative to the light.
+        got = tuple(res.get(k) for k in ("exposure_us", "gain", "red_gain", "blue_gain", "lens_position"))
+        if got != (12000, 2, 1.5, 1.8, 4) or res.get("latency_us", -1) < 0 or res.get("stale_frames") != 0:
+            fail("capture fields of %s: %r latency %r" % (r["id"], got, res.get("latency_us")))
         true_mu = float(truth[r["id"]]["mu"])
         # Within the devset bound, or a clear warning whose budget covers the truth (no final
         # height is declared here: the reduction comes from the silhouette).
@@ -265,7 +275,59 @@ dir = journal
     if surplus not in (1, 2) or "on on" in " ".join(leds) or leds[-1] != "off":
         fail("LED log does not alternate: %r" % leds[-12:])
     subprocess.run(["rm", "-rf", work])
+    missing_camera(fw, screen_tool)
     print("PASS")
+
+
+def missing_camera(fw, screen_tool):
+    """4. A V4L2 camera node that does not exist: the program stays up and says so on the
+    display, in `hello` and in `status` (a build without the V4L2 backend refuses the config)."""
+    work = tempfile.mkdtemp(prefix="icacam-fw-nocam-")
+    with open(os.path.join(work, "device.conf"), "w") as f:
+        f.write("""[specimen]
+n = 0.3
+[calibration]
+mm_per_px = 0.0125
+[camera]
+backend = v4l2
+device = %s
+retry_ms = 200
+[display]
+dir = display
+[serial]
+link = tty
+[journal]
+dir = journal
+""" % os.path.join(work, "video7"))
+    check = subprocess.run(EMULATOR + [fw, "--check", "--config", os.path.join(work, "device.conf")],
+                           capture_output=True, text=True)
+    if check.returncode != 0:
+        print("missing camera: no V4L2 backend in this build (%s): not checked" % check.stderr.strip())
+        return
+    log = open(os.path.join(work, "fw.log"), "ab")
+    proc = subprocess.Popen(EMULATOR + [fw, "--config", os.path.join(work, "device.conf")], stdout=log, stderr=log)
+    PROCS.append(proc)
+    ser = Serial(os.path.join(work, "tty"))
+    hello = ser.line()
+    if not hello or hello.get("camera") != "missing" or "video7" not in hello.get("camera_problem", ""):
+        fail("hello without the missing camera: %r" % hello)
+    time.sleep(1.0)  # several retries later it still runs
+    ser.send("status\n")
+    st = ser.until(lambda m: m["type"] == "status")
+    if proc.poll() is not None or not st or st.get("camera") != "missing":
+        fail("status with a missing camera: %r (running: %s)" % (st, proc.poll() is None))
+    shown = screen_text(screen_tool, os.path.join(work, "display", "screen-latest.png"))
+    if not shown or shown[0] != "icacam: no camera" or "video7" not in " ".join(shown):
+        fail("display with a missing camera shows %r" % shown)
+    ser.send("trigger\n")
+    err = ser.until(lambda m: m["type"] == "error")
+    if not err or "camera missing" not in err.get("message", ""):
+        fail("trigger without a camera: %r" % err)
+    proc.send_signal(signal.SIGTERM)
+    if proc.wait(timeout=10) != 0:
+        fail("icacam-fw without a camera did not exit 0 on SIGTERM")
+    subprocess.run(["rm", "-rf", work])
+    print("missing camera: shown on the display, in hello and status; the program kept running")
 
 
 if __name__ == "__main__":
