@@ -20,6 +20,15 @@ constexpr double kSilhouetteOverContactMin = 1.005, kSilhouetteOverContactMax = 
 constexpr double kSilhouetteMinCoverage = 0.5;
 // Beyond 3 σ the silhouette contradicts a declared final height and scale outright.
 constexpr double kContradictionChi2 = 9.0;
+// Without a declared final height the silhouette weighs two explanations, equally likely
+// beforehand: the specimen pressed to another height (the undeclared reduction's prior, the
+// scale within its tolerance), or the test's nominal half height (a press stopped at it:
+// σ 0.003, 0.045 mm on 15 mm) read through a scale grossly off (one measured on the fixture
+// rather than the end face, or on a wrong edge, is 5–12 % off at 70–150 mm working
+// distance: σ 8 %). A third, the nominal height with the scale as declared, is the first
+// one's centre and would only narrow σ where the truth may still be either.
+constexpr double kNominalReductionSigma = 0.003;
+constexpr double kGrossScaleSigma = 0.08;
 
 // μ as a function of the inputs the budget varies: the ring u (mm) read at reduction r with
 // exponent n, carried to the model's 50 % (through the FE slope for a model that does not
@@ -44,10 +53,26 @@ private:
 };
 
 struct ScaleAndReduction {
-    double dk = 0, dr = 0;      // corrections: relative scale error, reduction offset
-    double pk, pr, pkr = 0;     // their (co)variances
-    double ambiguity = 0;       // μ: half the gap between "all reduction" and "all scale"
+    double dk = 0, dr = 0;          // corrections: relative scale error, reduction offset
+    double pk = 0, pr = 0, pkr = 0; // their (co)variances
 };
+
+// The silhouette's observation d = δk + β·δr + e (e: silhouetteRelSigma) applied to a prior
+// on (δk, δr): the posterior mean and covariance (a linear Gaussian update), widened by χ²
+// where d lies further out than the prior and e explain (as for a Birge ratio).
+ScaleAndReduction update(const ScaleAndReduction &prior, double d, double beta)
+{
+    const double se = silhouetteRelSigma();
+    const double S = prior.pk + beta * beta * prior.pr + se * se;
+    const double w = std::max(1.0, d * d / S);
+    ScaleAndReduction p;
+    p.dk = prior.pk / S * d;
+    p.dr = beta * prior.pr / S * d;
+    p.pk = w * (prior.pk - prior.pk * prior.pk / S);
+    p.pr = w * (prior.pr - beta * beta * prior.pr * prior.pr / S);
+    p.pkr = -w * beta * prior.pk * prior.pr / S;
+    return p;
+}
 
 } // namespace
 
@@ -167,34 +192,48 @@ void interpretEndFace(const SpecimenSpec &spec, const FrictionModel &model, Meas
     } else {
         f |= kFlagNoSilhouette;
     }
-    if (usable) {
-        const double se = silhouetteRelSigma();
-        const double S = sr.pk + beta * beta * sr.pr + se * se;
-        const double chi2 = d * d / S;
-        if (declared && chi2 > kContradictionChi2) {
+    if (usable && declared) {
+        const double S = sr.pk + beta * beta * sr.pr + silhouetteRelSigma() * silhouetteRelSigma();
+        if (d * d / S > kContradictionChi2) {
             // Declared scale and height cannot both be right: neither is corrected, and each
             // is widened to explain the whole discrepancy alone.
             sr.pk = std::max(sr.pk, d * d);
             sr.pr = std::max(sr.pr, d * d / (beta * beta));
         } else {
-            sr.dk = sr.pk / S * d;
-            sr.dr = beta * sr.pr / S * d;
-            const double w = std::max(1.0, chi2);
-            const double pk = sr.pk - sr.pk * sr.pk / S;
-            const double pr = sr.pr - beta * beta * sr.pr * sr.pr / S;
-            sr.pkr = -w * beta * sr.pk * sr.pr / S;
-            sr.pk = w * pk;
-            sr.pr = w * pr;
+            sr = update(sr, d, beta);
         }
+    } else if (usable) {
+        // Two explanations of the silhouette's discrepancy (see kGrossScaleSigma): each
+        // one's posterior, weighted by how well it predicts d, and their mixture's moments.
+        constexpr int kExplanations = 2;
+        const double se2 = silhouetteRelSigma() * silhouetteRelSigma();
+        ScaleAndReduction prior[kExplanations];
+        prior[0] = sr;                                                 // pressed to another height
+        prior[1].pk = kGrossScaleSigma * kGrossScaleSigma;             // half height, a scale off
+        prior[1].pr = kNominalReductionSigma * kNominalReductionSigma;
+        ScaleAndReduction post[kExplanations];
+        double w[kExplanations], wSum = 0;
+        for (int h = 0; h < kExplanations; ++h) {
+            const double S = prior[h].pk + beta * beta * prior[h].pr + se2;
+            w[h] = std::exp(-0.5 * d * d / S) / std::sqrt(S);
+            wSum += w[h];
+            post[h] = update(prior[h], d, beta);
+        }
+        sr = ScaleAndReduction{};
+        for (int h = 0; h < kExplanations; ++h) {
+            w[h] = wSum > 0 ? w[h] / wSum : 1.0 / kExplanations;
+            sr.dk += w[h] * post[h].dk;
+            sr.dr += w[h] * post[h].dr;
+        }
+        for (int h = 0; h < kExplanations; ++h) {
+            const double gk = post[h].dk - sr.dk, gr = post[h].dr - sr.dr;
+            sr.pk += w[h] * (post[h].pk + gk * gk);
+            sr.pr += w[h] * (post[h].pr + gr * gr);
+            sr.pkr += w[h] * (post[h].pkr + gk * gr);
+        }
+        m->scaleExplained = w[1];
     }
-    double uF = u * std::exp(-sr.dk), rF = r0 + sr.dr;
-    if (usable && !declared) {
-        // Pressed further, or a scale too large? Midway, with half the gap as its uncertainty.
-        const double muA = F.at(uF, rF, n), muB = F.at(u * std::exp(-d), r0, n);
-        sr.ambiguity = 0.5 * std::fabs(muA - muB);
-        uF = u * std::exp(-0.5 * (sr.dk + d));
-        rF = r0 + 0.5 * sr.dr;
-    }
+    const double uF = u * std::exp(-sr.dk), rF = r0 + sr.dr;
     m->reduction = rF;
     m->reductionSigma = std::sqrt(sr.pr);
     m->scaleFactor = uF / u;
@@ -224,14 +263,15 @@ void interpretEndFace(const SpecimenSpec &spec, const FrictionModel &model, Meas
     const double carry = 0.25 * std::fabs(F.at(uF, rF, n) - F.at(uF, kNominalReduction, n));
     UncertaintyBudget &b = m->budget;
     b.edges = std::fabs(gU) * uSigmaEdges;
-    b.scale = std::fabs(a) * std::sqrt(sr.pk);
-    b.reduction = std::sqrt(gR * gR * sr.pr + carry * carry + sr.ambiguity * sr.ambiguity + bias * bias);
+    // Scale and reduction are correlated through the silhouette: their covariance term is
+    // shared between the two, so that the components add in quadrature to mu_sigma.
+    const double cross = a * gR * sr.pkr;
+    b.scale = std::sqrt(std::max(0.0, a * a * sr.pk + cross));
+    b.reduction = std::sqrt(std::max(0.0, gR * gR * sr.pr + cross) + carry * carry + bias * bias);
     b.n = std::fabs(gN) * tol.n;
     b.model = model.estimate({uF, n, spec.kMpa, spec.d0Mm, spec.h0Mm, 0}).modelSigma;
-    const double var = b.edges * b.edges + b.scale * b.scale + b.reduction * b.reduction + b.n * b.n +
-                       b.model * b.model + 2 * a * gR * sr.pkr;
-    const double floor = std::max({b.edges, b.scale, b.reduction, b.n, b.model});
-    m->muSigma = std::sqrt(std::max(var, floor * floor));
+    m->muSigma = std::sqrt(b.edges * b.edges + b.scale * b.scale + b.reduction * b.reduction + b.n * b.n +
+                           b.model * b.model);
 
     if (est.range & (kModelNBelow | kModelNAbove)) f |= kFlagNOutOfRange;
     if (est.range & kModelKOutside) f |= kFlagKOutOfRange;

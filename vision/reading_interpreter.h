@@ -21,12 +21,15 @@
 // shape (R_max/R_o within what the FE and the edges allow) is one observation of δk + β·δr;
 // with the priors of the declared scale and reduction it gives their posterior (a linear
 // Gaussian update; past χ² = 1 the posterior is widened by χ², as for a Birge ratio). With a
-// declared final height the discrepancy is mostly the scale's. Without one the silhouette
-// cannot tell a specimen pressed further from a scale that is too large: the reading takes
-// the midpoint of the two explanations (all reduction, per the update; all scale) and half
-// their difference as an uncertainty, so that either truth lies within the budget. A
-// calibrated scale is not checked by the silhouette (a camera close enough to need a
-// calibration sees the barrel's widest section partly hidden behind the end face's rim).
+// declared final height the discrepancy is mostly the scale's (and past 3 σ neither is
+// corrected: both are widened to explain it alone). Without one the silhouette cannot tell
+// a specimen pressed further (the undeclared reduction's prior, 45–55 %) from the nominal
+// half height read through a scale grossly off (measured on the fixture, or a wrong edge):
+// the reading is the mixture of the two posteriors, weighted by how well each predicts the
+// discrepancy, and its covariance includes their spread, so that whichever is true lies
+// within the budget. A calibrated scale is not checked by the silhouette (a camera
+// close enough to need a calibration sees the barrel's widest section partly hidden behind
+// the end face's rim).
 //
 // Status: ok when no check flags the reading and coverage·σ_μ ≤ the tolerance
 // (SpecimenSpec::tolerance); else warn, with the budget's leading component named by a flag

