@@ -33,6 +33,9 @@ const KeyDef kKeys[] = {
      "final height after upsetting, below h0_mm (0 = not given: the model's 50 % reduction)"},
     {"specimen.material", "material", nullptr, nullptr, &Config::material, 0, 32, nullptr, true,
      "material label, up to 32 characters"},
+    {"reading.model", nullptr, nullptr, nullptr, &Config::model, 0, 0, "paper_reduction|paper|fe_reduction|fe", false,
+     "friction model, as icacam measure --model (paper_reduction: the paper's fit carried to 50 % "
+     "reduction and H0/D0 1.5; fe: the project's CalculiX tables)"},
     {"tolerance.mu", "tolerance_mu", &Config::toleranceMu, nullptr, nullptr, 0, 1, nullptr, true,
      "status ok only when 2 sigma of mu is within max(tolerance.mu, tolerance.rel * mu)"},
     {"tolerance.rel", "tolerance_rel", &Config::toleranceRel, nullptr, nullptr, 0, 1, nullptr, true,

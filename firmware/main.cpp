@@ -23,9 +23,7 @@
 #include "hal/file/folder_storage.h"
 #include "hal/file/png_display.h"
 #include "hal/file/pty_serial.h"
-#include "vision/model/aspect_corrected_model.h"
-#include "vision/model/paper_model.h"
-#include "vision/model/reduction_corrected_model.h"
+#include "vision/model/friction_models.h"
 #ifdef ICACAM_HAVE_GPIOD
 #include "hal/gpiod/gpiod_lines.h"
 #endif
@@ -250,15 +248,13 @@ int main(int argc, char **argv)
     struct NoDisplay final : hal::Display {
         hal::Error show(const hal::MonoBitmap &) override { return {}; }
     } noDisplay;
-    // The paper's fit, with u carried to 50 % reduction when specimen.h_final_mm is given
-    // (docs/loop.md) and to the paper's H0/D0 1.5 from another slenderness (docs/fe.md); the
-    // same default as `icacam measure`.
-    vision::PaperModel paper;
-    vision::ReductionCorrectedModel carry(paper, "paper_reduction");
-    vision::AspectCorrectedModel model(carry);
+    // The friction model by name, the same set and default as `icacam measure --model`
+    // (reading.model: the config check refused any other name).
+    const vision::FrictionModel *model = vision::frictionModel(cfg.model);
+    if (!model) return unavailable("model", hal::Error::make(hal::Errc::Invalid, "unknown reading.model " + cfg.model));
     fw::Device device({*cameraUsed, *triggerUsed, *ledUsed, cfg.displayBackend == "none" ? static_cast<hal::Display &>(noDisplay) : *displayUsed,
                        *serialUsed, storage, clock},
-                      cfg, model);
+                      cfg, *model);
     std::signal(SIGTERM, onSignal);
     std::signal(SIGINT, onSignal);
     std::signal(SIGPIPE, SIG_IGN);

@@ -120,3 +120,26 @@ TEST(OneInstrument, DeviceAndMeasureGiveTheSameReading)
     EXPECT_NE(d1.find("mu_sigma")->text, d2.find("mu_sigma")->text); // the declarations changed the budget
     EXPECT_EQ(d2.find("tolerance_mu")->number, 0.02);
 }
+
+TEST(OneInstrument, TheDeviceRunsAnyModelByName)
+{
+    fw::Config cfg;
+    cfg.n = 0.1742, cfg.kMpa = 647, cfg.mmPerPx = 0.0153924, cfg.hFinalMm = 7.5;
+    cfg.cameraMaxWidth = 2048, cfg.cameraMaxHeight = 1536;
+    for (const char *name : {"fe", "fe_reduction", "paper"}) {
+        // The config names the model as `icacam measure --model` does.
+        fw::Config c = cfg;
+        ASSERT_EQ(fw::setConfigKey(&c, "reading.model", name, false), "") << name;
+        const vision::FrictionModel *model = vision::frictionModel(c.model);
+        ASSERT_NE(model, nullptr) << name;
+        const fw::FlatObject d = deviceResult("synth-0002.jpg", c, *model);
+        const fw::FlatObject h = hostResult("id,image,n,k_mpa,mm_per_px,h_final_mm\n"
+                                            "a,images/synth-0002.jpg,0.1742,647,0.0153924,7.5\n",
+                                            *model);
+        ASSERT_NE(d.find("model"), nullptr);
+        EXPECT_EQ(d.find("model")->text, name);
+        expectSameReading(d, h);
+    }
+    fw::Config bad = cfg;
+    EXPECT_NE(fw::setConfigKey(&bad, "reading.model", "cubic", false), "");
+}
