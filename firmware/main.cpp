@@ -102,7 +102,7 @@ int main(int argc, char **argv)
         return true;
     };
     bool ok = issues.empty();
-    // Hardware backends compiled into this build (hal/gpiod, hal/v4l2: issue 4).
+    // Hardware backends compiled into this build (hal/gpiod, hal/v4l2).
     auto built = [&](const char *key, const std::string &v, const char *hw, bool have) {
         return (have && v == hw) || onlyFile(key, v, "file");
     };

@@ -1,5 +1,5 @@
 #pragma once
-// The slenderness carry (issue 5, "beyond the paper": H0/D0 1.0–2.0): how much wider the ICA
+// The slenderness carry ("beyond the paper": H0/D0 1.0–2.0): how much wider the ICA
 // of a specimen of another H0/D0 is than that of the paper's 10 x 15 mm one at the same n, μ
 // and height reduction, from FE runs at other H0 (docs/fe.md). `icacam fe tables` writes it as
 // vision/model/aspect_table.h for vision/model/aspect_corrected_model.h.

@@ -1,4 +1,4 @@
-// `icacam fe`: deck generation, ccx runs, sweeps, the model fit and the report (issue 5).
+// `icacam fe`: deck generation, ccx runs, sweeps, the model fit and the report.
 #include "fe_command.h"
 
 #include <algorithm>

@@ -3,6 +3,6 @@
 #include <vector>
 
 namespace icacam::host {
-// `icacam fe run|sweep|fit|report`: our own μ model from CalculiX (issue 5, docs/fe.md).
+// `icacam fe run|sweep|fit|report`: our own μ model from CalculiX (docs/fe.md).
 int feCommand(const std::vector<std::string> &args);
 } // namespace icacam::host

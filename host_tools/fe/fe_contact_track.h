@@ -1,5 +1,5 @@
 #pragma once
-// The contact edge between the nodes, tracked through the run (issue 5, docs/fe.md).
+// The contact edge between the nodes, tracked through the run (docs/fe.md).
 //
 // At one snapshot the contact edge R_o is only known to one node spacing of the former
 // lateral surface: the outermost node on the platen. Along the run, though, every node's

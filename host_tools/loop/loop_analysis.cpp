@@ -494,7 +494,7 @@ std::vector<RankedCandidate> rankCandidates(const std::vector<Candidate> &candid
         order.insert(order.begin() + long(pos), moved);
     }
     // A significant symptom still leads: it established that there is an effect, and the
-    // question left is its name. A cause not significant on its own takes the lead when it
+    // question left is its name. A cause not significant on its own comes first when it
     // explains the residual as well as every symptom above it (paired z < 2), passes the test
     // of a single comparison (z above the one-sided α quantile, the same minimum gain), and
     // explains the leading symptom itself (the symptom's own values, F test at α): of such

@@ -1,4 +1,4 @@
-// μ through a tilted, distorting camera (issue 7's bar): end faces rendered through the
+// μ through a tilted, distorting camera: end faces rendered through the
 // example camera are measured with the calibration that `icacam calibrate` recovers from
 // rendered board photos, and without it (one mm/px number). Both errors are printed; the
 // calibrated one must meet the devset bounds (median 0.002, max 0.008) with status ok (the

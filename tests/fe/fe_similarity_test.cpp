@@ -1,4 +1,4 @@
-// Other diameters by geometric similarity (issue 5, docs/fe.md): the committed FE case at
+// Other diameters by geometric similarity (docs/fe.md): the committed FE case at
 // D0 20, H0 30 mm (every length of the deck ×2, mesh included) against the base case at
 // D0 10, H0 15, and the generated model reading it. Rate-independent plasticity has no
 // length scale, so lengths scale by s = D0/10 and force by s² — once the contact penalty and
