@@ -11,16 +11,17 @@
 namespace icacam::fw {
 
 struct AimReading {
-    double focus = 0;       // RMS luma gradient, grey levels per pixel, over the specimen (higher: sharper)
+    double focus = 0;       // the steepest edges' gradient, grey levels per pixel (higher: sharper)
     bool found = false;     // the end face's boundaries were found
     double centreX = 0, centreY = 0, rOuterPx = 0, rInnerPx = 0, rMaxPx = 0;
     double edgeSigmaPx = 0; // blur of the contact edge the pipeline measured (0: not found)
     const char *hint = "";  // what to do next, in a few words
 };
 
-// The RMS Sobel gradient on a grid of at most 160 × 160 points: inside the specimen's
-// silhouette when found, else over the middle half of the frame. Turning the focus ring
-// towards sharp raises it; lighting changes it too, so compare readings of one set-up.
+// The mean of the strongest 2 % of Sobel gradients on a grid of at most 160 × 160 points:
+// inside the specimen's silhouette when found, else over the middle half of the frame. The
+// edges' steepness: turning the focus ring towards sharp raises it; the light and the
+// specimen's contrast change it too, so compare readings of one set-up.
 double focusScore(const vision::LumaView &v, const vision::Measurement &m);
 
 // Reading and hint from a measurement: "no specimen: centre it", "move left/right/up/down"

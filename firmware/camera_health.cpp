@@ -44,6 +44,7 @@ void CameraHealth::onCapture(const hal::Error &e, const hal::CapturedFrame *fram
         timeouts_ = 0;
         if (frame) {
             lastLatencyUs_ = frame->latencyUs;
+            lastControls_ = frame->controls;
             staleFrames_ = frame->staleFrames;
         }
         return;

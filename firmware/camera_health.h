@@ -37,6 +37,8 @@ public:
     static const char *stateName(State s);
     std::string describe() const { return camera_.describe(); }
     int64_t lastLatencyUs() const { return lastLatencyUs_; }
+    // The controls the camera reported for the last frame.
+    const hal::CameraControls &lastControls() const { return lastControls_; }
     int staleFrames() const { return staleFrames_; }
     long reacquired() const { return reacquired_; }
 
@@ -50,6 +52,7 @@ private:
     std::string problem_;
     int64_t nextTryMs_ = 0;
     int64_t lastLatencyUs_ = -1;
+    hal::CameraControls lastControls_;
     int staleFrames_ = 0;
     long reacquired_ = 0;
     int timeouts_ = 0;

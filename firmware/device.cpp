@@ -163,6 +163,12 @@ void Device::appendCameraStatus(JsonBuilder &j) const
     if (!cameraHealth_.ok()) j.str("camera_problem", cameraHealth_.problem());
     j.str("camera_info", cameraHealth_.describe());
     j.integer("camera_latency_us", cameraHealth_.lastLatencyUs());
+    // What the camera reported for its last frame (-1: not reported, or no frame yet).
+    const hal::CameraControls &c = cameraHealth_.lastControls();
+    char controls[160];
+    std::snprintf(controls, sizeof controls, "exposure_us %d gain %.3f red_gain %.3f blue_gain %.3f lens_position %.3f",
+                  c.exposureUs, c.analogueGain, c.redGain, c.blueGain, c.lensPosition);
+    j.str("camera_controls", controls);
 }
 
 void Device::pollButton()

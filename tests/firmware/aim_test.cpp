@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -255,7 +256,8 @@ TEST(AimView, FocusScoreFallsWithBlurAndHintPointsToTheCentre)
     const vision::LumaView sharp{grey.data(), 1456, 1088, 1456, 1}, soft{blurred.data(), 1456, 1088, 1456, 1};
     const vision::Measurement m = analyzer.measure(sharp, {0.1742, 647, 10, 15, 0.0153924, 0}, model);
     const double fs1 = fw::focusScore(sharp, m), fs2 = fw::focusScore(soft, m);
-    EXPECT_LT(fs2, 0.7 * fs1) << fs1 << " vs " << fs2;
+    std::printf("focus score: sharp %.2f, 9 x 9 box blur %.2f\n", fs1, fs2);
+    EXPECT_LT(fs2, 0.6 * fs1) << fs1 << " vs " << fs2;
     vision::Measurement left = m;
     left.centreX = 200; // the specimen far left in the frame
     EXPECT_STREQ(fw::aimReading(sharp, left).hint, "move right");

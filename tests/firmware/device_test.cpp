@@ -218,8 +218,14 @@ TEST(Device, ConfiguredImagingControlsAreJournaledWithEachResult)
     EXPECT_EQ(r.find("lens_position")->number, 3.5);
     EXPECT_EQ(r.find("latency_us")->number, 0);        // the file camera starts when asked
     EXPECT_EQ(r.find("trigger_latency_ms")->number, 25); // the LED's settle time
-    // The journal holds the same line.
+    // The journal holds the same line; `status` the controls of the last frame.
     EXPECT_NE(rig.storage.read(fw::Journal::kFile).value.find("\"exposure_us\":12000"), std::string::npos);
+    rig.serial.in = "status\n";
+    device.tick();
+    const fw::FlatObject st = rig.serial.last("status");
+    ASSERT_TRUE(st.find("camera_controls"));
+    EXPECT_EQ(st.find("camera_controls")->text, "exposure_us 12000 gain 2.500 red_gain 1.900 blue_gain 1.400 lens_position 3.500");
+    EXPECT_EQ(st.find("camera_latency_us")->number, 0);
 }
 
 // A camera missing at start: the device runs, says so on the display, in `hello` and in
