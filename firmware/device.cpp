@@ -510,7 +510,7 @@ void Device::buildRecord(long id, const char *origin, const std::string &tag, co
     vision::writeReading(problem.empty() ? &m : nullptr, problem, model_.name(), sink);
     j.str("time", when);
     j.str("image", image).str("source", frame ? std::string_view(frame->source) : std::string_view());
-    j.num("n", cfg_.n).num("k_mpa", cfg_.kMpa).num("mm_per_px", cfg_.mmPerPx, 8);
+    j.num("n", cfg_.n).num("k_mpa", cfg_.kMpa).num("d0_mm", cfg_.d0Mm).num("h0_mm", cfg_.h0Mm).num("mm_per_px", cfg_.mmPerPx, 8);
     j.num("h_final_mm", cfg_.hFinalMm);
     // Which calibration mapped the boundaries, and the plane it mapped them into.
     j.str("calibration", cal_.present ? cal_.name : "");
