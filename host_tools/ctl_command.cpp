@@ -19,7 +19,8 @@ namespace {
 
 const char *kUsage =
     "usage: icacam ctl --port DEVICE [--baud 115200] [--timeout-ms 3000] COMMAND [ARG...]\n"
-    "Sends one request (help, status, trigger, get [KEY], set KEY VALUE, results [N]) and\n"
+    "Sends one request (help, status, trigger, get [KEY], set KEY VALUE, results [N],\n"
+    "scalecheck DIAMETER_MM [TOLERANCE_PCT [THICKNESS_MM]], aim, snapshot) and\n"
     "prints the device's answer lines. Unprompted lines (hello, results of button presses)\n"
     "that arrive meanwhile are printed too.\n";
 
