@@ -1,5 +1,5 @@
 // libgpiod backends. ICACAM_GPIOD_API (from pkg-config's version, hal/gpiod/CMakeLists.txt)
-// selects libgpiod 1.6's API (line objects owned by the chip) or 2.x's (line requests built
+// selects libgpiod 1.6's API (line objects that belong to the chip) or 2.x's (line requests built
 // from settings); above the #if both present the same small set of operations.
 #include "hal/gpiod/gpiod_lines.h"
 
@@ -174,7 +174,7 @@ struct LineRequest {
 // ---- libgpiod 1.6 --------------------------------------------------------------------
 struct LineRequest {
     gpiod_chip *chip = nullptr;
-    gpiod_line *line = nullptr; // owned by chip
+    gpiod_line *line = nullptr; // belongs to the chip
     gpiod_line_event events[kEventBatch] = {};
     unsigned offset = 0;
     std::string chipPath;
