@@ -116,7 +116,6 @@ struct Measurement {
     double reduction = 0.5;      // height reduction u was read at (declared, inferred or nominal)
     double reductionSigma = 0;   // its standard uncertainty
     double scaleFactor = 1;      // correction the silhouette applied to the declared scale
-    double scaleExplained = 0;   // no final height: the weight of "the scale is grossly off"
     double toleranceMu = 0;      // the lab's tolerance for this reading (status ok: 2σ within it)
 
     // Edge points of each boundary (one per ray, valid or not) for overlays and tests.

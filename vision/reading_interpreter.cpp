@@ -231,7 +231,6 @@ void interpretEndFace(const SpecimenSpec &spec, const FrictionModel &model, Meas
             sr.pr += w[h] * (post[h].pr + gr * gr);
             sr.pkr += w[h] * (post[h].pkr + gk * gr);
         }
-        m->scaleExplained = w[1];
     }
     const double uF = u * std::exp(-sr.dk), rF = r0 + sr.dr;
     m->reduction = rF;

@@ -79,7 +79,6 @@ const char *remedy(uint32_t flags)
 
 int readingFieldCount() { return kFieldCount; }
 const char *readingFieldName(int i) { return i >= 0 && i < kFieldCount ? kFields[i].name : ""; }
-bool readingFieldNumeric(int i) { return i >= 0 && i < kFieldCount && kFields[i].kind == Field::Number; }
 
 void flagList(uint32_t flags, char *buf, size_t size)
 {

@@ -31,8 +31,6 @@ void writeReading(const Measurement *m, std::string_view message, std::string_vi
 // The fields writeReading emits, in order (a CSV header is "id" and these).
 int readingFieldCount();
 const char *readingFieldName(int i);
-// True for fields whose value is a number (JSON writes them bare or null).
-bool readingFieldNumeric(int i);
 
 // Flag names joined by ';' into buf (always terminated; cut at a whole name when full).
 void flagList(uint32_t flags, char *buf, size_t size);
