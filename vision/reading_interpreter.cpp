@@ -20,13 +20,14 @@ constexpr double kSilhouetteOverContactMin = 1.005, kSilhouetteOverContactMax = 
 constexpr double kSilhouetteMinCoverage = 0.5;
 // Beyond 3 σ the silhouette contradicts a declared final height and scale outright.
 constexpr double kContradictionChi2 = 9.0;
-// Without a declared final height the silhouette weighs two explanations, equally likely
-// beforehand: the specimen pressed to another height (the undeclared reduction's prior, the
-// scale within its tolerance), or the test's nominal half height (a press stopped at it:
-// σ 0.003, 0.045 mm on 15 mm) read through a scale grossly off (one measured on the fixture
-// rather than the end face, or on a wrong edge, is 5–12 % off at 70–150 mm working
-// distance: σ 8 %). A third, the nominal height with the scale as declared, is the first
-// one's centre and would only narrow σ where the truth may still be either.
+// Without a declared final height the silhouette weighs three explanations, equally likely
+// beforehand: the test's nominal half height (a press stopped at it: σ 0.003, 0.045 mm on
+// 15 mm) with the scale as declared; the specimen pressed to another height (the undeclared
+// reduction's prior, the scale within its tolerance); or the nominal height read through a
+// scale grossly off (one measured on the fixture rather than the end face, or on a wrong
+// edge, is 5–12 % off at 70–150 mm working distance: σ 8 %). Where the silhouette agrees with
+// half height the first dominates and the reduction is known to the press's tolerance; where
+// it does not, the others take over, and the mixture's spread covers the step between them.
 constexpr double kNominalReductionSigma = 0.003;
 constexpr double kGrossScaleSigma = 0.08;
 
@@ -203,14 +204,16 @@ void interpretEndFace(const SpecimenSpec &spec, const FrictionModel &model, Meas
             sr = update(sr, d, beta);
         }
     } else if (usable) {
-        // Two explanations of the silhouette's discrepancy (see kGrossScaleSigma): each
+        // Three explanations of the silhouette's discrepancy (see kNominalReductionSigma): each
         // one's posterior, weighted by how well it predicts d, and their mixture's moments.
-        constexpr int kExplanations = 2;
+        constexpr int kExplanations = 3;
         const double se2 = silhouetteRelSigma() * silhouetteRelSigma();
         ScaleAndReduction prior[kExplanations];
         prior[0] = sr;                                                 // pressed to another height
         prior[1].pk = kGrossScaleSigma * kGrossScaleSigma;             // half height, a scale off
         prior[1].pr = kNominalReductionSigma * kNominalReductionSigma;
+        prior[2].pk = sr.pk;                                           // half height, scale as declared
+        prior[2].pr = kNominalReductionSigma * kNominalReductionSigma;
         ScaleAndReduction post[kExplanations];
         double w[kExplanations], wSum = 0;
         for (int h = 0; h < kExplanations; ++h) {
