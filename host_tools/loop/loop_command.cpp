@@ -14,6 +14,7 @@
 #include "loop_physics_report.h"
 #include "loop_plot.h"
 #include "manifest.h"
+#include "record_measurer.h"
 #include "reduction_table.h"
 #include "vision/end_face_analyzer.h"
 
@@ -78,15 +79,16 @@ namespace loop {
 
 namespace {
 
-// The one place the loop measures an image (a manifest's image record, a journal's saved
-// frame): the current pipeline's measurement and its diagnostics.
-bool measureImage(const std::string &path, const SpecimenSpec &spec, const FrictionModel &model,
-                  EndFaceAnalyzer &analyzer, LoopRecord *r, std::string *why)
+// The loop measures an image record (a manifest's, a journal's saved frame) as `icacam
+// measure` does (host_tools/record_measurer.h: the row's declared inputs, tolerances and
+// calibration), and keeps the pipeline's diagnostics.
+bool measureImage(const ManifestRow &row, const Manifest &manifest, host::RecordMeasurer &measurer, LoopRecord *r,
+                  std::string *why)
 {
-    LumaImage img;
-    if (std::string e = loadLuma(path, &img); !e.empty()) { *why = e; return false; }
-    const LumaView view{img.luma.data, img.luma.cols, img.luma.rows, int(img.luma.step[0]), 1};
-    const Measurement m = analyzer.measure(view, spec, model);
+    host::RecordReading reading;
+    measurer.measure(row, manifest, &reading);
+    if (!reading.measured) { *why = reading.message; return false; }
+    const Measurement &m = reading.m;
     if (!m.hasValue()) { *why = errorMessage(m.error); return false; }
     // u at the declared scale: the loop looks for what was not declared, so the reading's
     // own silhouette correction (reading_interpreter.h) is taken back out.
@@ -116,7 +118,7 @@ bool measureImage(const std::string &path, const SpecimenSpec &spec, const Frict
 }
 
 bool measureRecord(const ManifestRow &row, const Manifest &manifest, const FrictionModel &model,
-                   EndFaceAnalyzer &analyzer, LoopRecord *r, std::string *why)
+                   host::RecordMeasurer &measurer, LoopRecord *r, std::string *why)
 {
     auto num = [&](const char *key, double fallback, double *out) {
         if (!row.has(key) || row.get(key).empty()) { *out = fallback; return true; }
@@ -141,16 +143,7 @@ bool measureRecord(const ManifestRow &row, const Manifest &manifest, const Frict
         if (row.has("r_bulge_mm") && parseNumber(row.get("r_bulge_mm"), &rb))
             r->diagnostics["diag_rmax_over_r0"] = rb / (0.5 * r->d0Mm);
     } else if (row.has("image")) {
-        SpecimenSpec spec;
-        spec.n = r->n;
-        spec.kMpa = r->kMpa;
-        spec.d0Mm = r->d0Mm;
-        spec.h0Mm = r->h0Mm;
-        spec.hFinalMm = hFinal;
-        if (!num("mm_per_px", 0, &spec.mmPerPx) || !(spec.mmPerPx > 0)) { *why = "no mm_per_px"; return false; }
-        fs::path p = row.get("image");
-        if (p.is_relative()) p = fs::path(manifest.baseDir) / p;
-        if (!measureImage(p.string(), spec, model, analyzer, r, why)) return false;
+        if (!measureImage(row, manifest, measurer, r, why)) return false;
     } else {
         *why = "neither image nor r_inner_mm/r_outer_mm";
         return false;
@@ -229,15 +222,14 @@ LoopSummary runLoopOn(const Manifest &manifest, const std::string &source, const
     if (!model) throw std::runtime_error("unknown model '" + modelName + "' (known: " + kKnownModels + ")");
     fs::create_directories(reportDir);
 
-    EndFaceAnalyzer analyzer;
-    analyzer.configure(16384, 16384);
+    host::RecordMeasurer measurer(*model, SpecimenSpec{});
     std::vector<LoopRecord> usable;
     std::vector<std::string> skipped = skippedBefore;
     for (const ManifestRow &row : manifest.rows) {
         LoopRecord r;
         r.id = row.get("id", "line" + std::to_string(row.line));
         std::string why;
-        if (measureRecord(row, manifest, *model, analyzer, &r, &why)) usable.push_back(std::move(r));
+        if (measureRecord(row, manifest, *model, measurer, &r, &why)) usable.push_back(std::move(r));
         else skipped.push_back(r.id + ": " + why);
     }
     LoopSummary s;
