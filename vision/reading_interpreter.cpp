@@ -30,6 +30,10 @@ constexpr double kContradictionChi2 = 9.0;
 // it does not, the others take over, and the mixture's spread covers the step between them.
 constexpr double kNominalReductionSigma = 0.003;
 constexpr double kGrossScaleSigma = 0.08;
+// The edge model's own error, beyond the fits' scatter: against the drawn boundaries of the
+// development set's photographs the pipeline's R_i lies 0.005 mm (1 σ) off the truth's
+// equivalent radius and R_o 0.001 mm (a ragged texture boundary, not a step, on the inside).
+constexpr double kInnerEdgeModelMm = 0.005, kOuterEdgeModelMm = 0.001;
 
 // μ as a function of the inputs the budget varies: the ring u (mm) read at reduction r with
 // exponent n, carried to the model's 50 % (through the FE slope for a model that does not
@@ -133,15 +137,16 @@ void interpretEndFace(const SpecimenSpec &spec, const FrictionModel &model, Meas
         sigmaK0 = std::hypot(tol.calibrationScaleRel, heightPart);
     }
 
-    // u's own uncertainty: the fits' scatter and a 0.1 px location floor per boundary; an
-    // uncalibrated camera's tilt shrinks the equal-area radii by up to e/2 (e the shared
-    // ellipticity), which the declared scale may or may not have absorbed.
+    // u's own uncertainty: the fits' scatter and a 0.1 px location floor per boundary, and the
+    // edge model's error in millimetres; an uncalibrated camera's tilt shrinks the equal-area
+    // radii by up to e/2 (e the shared ellipticity), which the declared scale may or may not
+    // have absorbed.
     const double sigPx = std::sqrt(m->inner.rEqSigmaPx * m->inner.rEqSigmaPx +
                                    m->outer.rEqSigmaPx * m->outer.rEqSigmaPx + 2 * 0.1 * 0.1);
     m->uSigmaMm = sigPx * s;
     const double axisDiff = std::fabs(std::remainder(m->inner.axisDeg - m->outer.axisDeg, 180.0));
     const bool sharedEllipse = m->inner.ellipticity > 0.012 && m->outer.ellipticity > 0.012 && axisDiff < 20;
-    double uSigmaEdges = m->uSigmaMm;
+    double uSigmaEdges = std::hypot(m->uSigmaMm, std::hypot(kInnerEdgeModelMm, kOuterEdgeModelMm));
     if (!spec.calibration && sharedEllipse) {
         const double e = std::min(m->inner.ellipticity, m->outer.ellipticity);
         uSigmaEdges = std::hypot(uSigmaEdges, m->uMm * e / (2 * std::sqrt(3.0)));

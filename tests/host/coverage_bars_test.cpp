@@ -43,6 +43,27 @@ void expectBars(const std::string &condition, uint32_t seed, bool nothingUndecla
 
 } // namespace
 
+// Where the lab declares what the renderer holds exact (the final height, n and the scale,
+// each to a small tolerance), σ is the edges' and the reading must neither inflate it nor
+// leave the edge model's own error out: the σ-ratio bar runs here always.
+TEST(CoverageBars, EverythingDeclaredExactly)
+{
+#ifdef ICACAM_SANITIZED
+    GTEST_SKIP() << "coverage bars are not run under a sanitizer";
+#endif
+    const test::ScoredSet set =
+        test::renderMeasureScore("bars-exact", "declared", 120, 9107, {},
+                                 {{"h_final_mm", "7.5"}, {"h_final_tol_mm", "0.005"}, {"n_tol", "0.001"},
+                                  {"mm_per_px_tol", "0.001"}});
+    const host::ConditionScore *c = set.report.find("declared");
+    ASSERT_TRUE(c);
+    EXPECT_EQ(c->silentWrong, 0) << "worst ok " << c->worstOkDmu << " (" << c->worstOkId << ")";
+    EXPECT_GE(c->withinFraction(), 0.9) << c->withinK << " of " << c->measured << " within 2 σ";
+    EXPECT_GE(c->medianRatio, 0.3) << "σ inflated";
+    EXPECT_LE(c->medianRatio, 1.0) << "σ too small";
+    std::filesystem::remove_all(set.dir);
+}
+
 TEST(CoverageBars, Declared) { expectBars("declared", 9101, true); }
 TEST(CoverageBars, LowResolution) { expectBars("lowres", 9102, true); }
 TEST(CoverageBars, ReductionNotDeclared) { expectBars("reduction", 9103, false); }

@@ -4,8 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "coverage_score.h"
@@ -22,10 +24,25 @@ struct ScoredSet {
     host::ScoreReport report;
 };
 
+// Adds the columns `declare` (name, value) to every row of a rendered manifest: what the lab
+// tells the instrument beyond what `icacam synth` writes.
+inline void declareColumns(const std::string &manifest, const std::vector<std::pair<std::string, std::string>> &declare)
+{
+    std::ifstream in(manifest);
+    std::string text, line;
+    for (bool header = true; std::getline(in, line); header = false) {
+        for (const auto &[name, value] : declare) line += "," + (header ? name : value);
+        text += line + "\n";
+    }
+    in.close();
+    std::ofstream(manifest) << text;
+}
+
 // Renders `count` records of each condition (seeded), measures them with the given
 // `icacam measure` arguments (default model unless --model is among them) and scores them.
 inline ScoredSet renderMeasureScore(const std::string &name, const std::string &conditions, int count, uint32_t seed,
-                                    const std::vector<std::string> &measureArgs = {})
+                                    const std::vector<std::string> &measureArgs = {},
+                                    const std::vector<std::pair<std::string, std::string>> &declare = {})
 {
     ScoredSet s;
     s.dir = tempDir(name);
@@ -35,6 +52,7 @@ inline ScoredSet renderMeasureScore(const std::string &name, const std::string &
     opt.seed = seed;
     opt.quiet = true;
     const std::string manifest = host::writeConditionSet(s.dir.string(), opt);
+    if (!declare.empty()) declareColumns(manifest, declare);
     const std::string results = (s.dir / "results.csv").string();
     std::vector<std::string> args{"--manifest", manifest, "--out", results};
     args.insert(args.end(), measureArgs.begin(), measureArgs.end());
