@@ -100,7 +100,8 @@ std::string joinKey(const std::string &id)
 const char *const kMeasured[] = {"mu", "mu_sigma", "u_mm", "r_inner_mm", "r_outer_mm", "r_max_mm", "reduction",
                                  "reduction_est", "scale_factor", "status", "flags", "message", "ms"};
 // Settings and conditions the device recorded with each result.
-const char *const kConditions[] = {"n", "k_mpa", "mm_per_px", "h_final_mm", "material", "calibration", "trigger"};
+const char *const kConditions[] = {"n",          "k_mpa",    "d0_mm",       "h0_mm",  "mm_per_px",
+                                   "h_final_mm", "material", "calibration", "trigger"};
 
 } // namespace
 
@@ -131,7 +132,9 @@ bool readJournalManifest(const std::string &journalDir, const std::string &refer
         if (!r.error.empty()) { info->skipped.push_back("reference line " + std::to_string(r.line) + ": " + r.error); continue; }
         byId[joinKey(r.get(idColumn))] = &r;
     }
-    // D0 and H0: the result records do not carry them.
+    // D0 and H0: each result record carries what the device was told; a journal written
+    // before the records carried them falls back on the reference CSV, then on the device's
+    // settings.conf as it is now.
     std::map<std::string, std::string> settings;
     {
         std::ifstream conf(fs::path(journalDir) / "settings.conf");
@@ -143,10 +146,7 @@ bool readJournalManifest(const std::string &journalDir, const std::string &refer
     }
     const bool refGeometry = hasColumn("d0_mm") && hasColumn("h0_mm");
     const bool savedGeometry = settings.count("d0_mm") && settings.count("h0_mm");
-    info->geometry = refGeometry     ? "d0_mm and h0_mm from the reference CSV"
-                     : savedGeometry ? "d0_mm " + settings["d0_mm"] + " and h0_mm " + settings["h0_mm"] +
-                                           " from the device's settings.conf as it is now (the records do not carry them)"
-                                     : "d0_mm and h0_mm not recorded: 10 and 15 mm assumed";
+    int fromRecords = 0, fromElsewhere = 0;
     const fs::path journal = fs::path(journalDir) / "journal.jsonl";
     std::ifstream in(journal);
     if (!in) {
@@ -187,7 +187,11 @@ bool readJournalManifest(const std::string &journalDir, const std::string &refer
         row.cells["image"] = f["image"];
         for (const char *c : kConditions) row.cells[c] = f[c];
         for (const char *c : kMeasured) row.cells[std::string("device_") + c] = f[c];
-        if (!refGeometry && savedGeometry) row.cells["d0_mm"] = settings["d0_mm"], row.cells["h0_mm"] = settings["h0_mm"];
+        const bool recordGeometry = !f["d0_mm"].empty() && !f["h0_mm"].empty();
+        if (recordGeometry) ++fromRecords;
+        else ++fromElsewhere;
+        if (!recordGeometry && !refGeometry && savedGeometry)
+            row.cells["d0_mm"] = settings["d0_mm"], row.cells["h0_mm"] = settings["h0_mm"];
         for (const auto &[k, v] : it->second->cells) {
             if (k == idColumn) continue;
             const bool journalHas = row.cells.count(k) > 0;
@@ -200,9 +204,14 @@ bool readJournalManifest(const std::string &journalDir, const std::string &refer
     }
     for (const auto &[key, row] : byId)
         if (!used.count(key)) info->skipped.push_back("reference id " + row->get(idColumn) + ": not in the journal");
-    if (!refGeometry && savedGeometry)
-        for (const char *c : {"d0_mm", "h0_mm"})
-            if (std::find(out->columns.begin(), out->columns.end(), c) == out->columns.end()) out->columns.push_back(c);
+    const std::string older = refGeometry     ? "from the reference CSV"
+                              : savedGeometry ? "from the device's settings.conf as it is now (d0_mm " + settings["d0_mm"] +
+                                                    ", h0_mm " + settings["h0_mm"] + ")"
+                                              : "not recorded: 10 and 15 mm assumed";
+    info->geometry = fromElsewhere == 0 ? "d0_mm and h0_mm as each record carries them"
+                                        : "d0_mm and h0_mm as each record carries them; for " +
+                                              std::to_string(fromElsewhere) + " of " +
+                                              std::to_string(fromRecords + fromElsewhere) + " records " + older;
     return true;
 }
 

@@ -134,9 +134,9 @@ TEST(LoopJournal, DeviceRecordsReMeasuredAndTheLensFound)
     EXPECT_FALSE(first.get("mm_per_px").empty());
     EXPECT_FALSE(first.get("lens").empty());
     EXPECT_FALSE(first.has("r_inner_mm"));
-    // D0 and H0 are not in the records: the device's saved settings give them.
+    // D0 and H0: each record carries what the device was told.
     EXPECT_EQ(first.get("d0_mm"), "10");
-    EXPECT_NE(join.geometry.find("settings.conf"), std::string::npos) << join.geometry;
+    EXPECT_EQ(join.geometry, "d0_mm and h0_mm as each record carries them");
     EXPECT_TRUE(isSymptom("device_mu") && isSymptom("device_r_outer_mm"));
 
     RankingOptions ro;
@@ -168,4 +168,48 @@ TEST(LoopJournal, CrcIsTheJournalsCrc32)
 {
     // The IEEE CRC-32 check value.
     EXPECT_EQ(journalCrc32("123456789"), 0xCBF43926u);
+}
+
+// A record written without D0 and H0 (an older journal) takes them from the device's saved
+// settings, and the join says for how many records it did.
+TEST(LoopJournal, ARecordWithoutGeometryTakesTheSavedSettings)
+{
+    const fs::path dir = fs::temp_directory_path() / ("icacam_loop_geometry_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    const int count = labSession(dir, LoopEffect::Null, 5, 6);
+    {
+        std::string text;
+        {
+            std::ifstream f(dir / "journal" / "journal.jsonl");
+            text.assign(std::istreambuf_iterator<char>(f), {});
+        }
+        // The first result record without its d0_mm and h0_mm fields, its CRC made again.
+        const size_t begin = text.find("{\"type\":\"result\"");
+        ASSERT_NE(begin, std::string::npos);
+        const size_t end = text.find('\n', begin);
+        std::string line = text.substr(begin, end - begin);
+        for (const char *key : {"\"d0_mm\":", "\"h0_mm\":"}) {
+            const size_t at = line.find(key);
+            ASSERT_NE(at, std::string::npos) << key;
+            line.erase(at, line.find(',', at) + 1 - at);
+        }
+        const size_t crc = line.rfind(",\"crc32\":\"");
+        char hex[9];
+        std::snprintf(hex, sizeof hex, "%08x", journalCrc32(line.substr(0, crc)));
+        line = line.substr(0, crc) + ",\"crc32\":\"" + hex + "\"}";
+        text.replace(begin, end - begin, line);
+        std::ofstream(dir / "journal" / "journal.jsonl") << text;
+    }
+    Manifest joined;
+    JournalJoin join;
+    std::string err;
+    ASSERT_TRUE(readJournalManifest((dir / "journal").string(), (dir / "reference.csv").string(), &joined, &join, &err))
+        << err;
+    EXPECT_EQ(join.joined, count);
+    EXPECT_NE(join.geometry.find("for 1 of " + std::to_string(count) + " records"), std::string::npos) << join.geometry;
+    EXPECT_NE(join.geometry.find("settings.conf"), std::string::npos) << join.geometry;
+    ASSERT_FALSE(joined.rows.empty());
+    EXPECT_EQ(joined.rows.front().get("d0_mm"), "10");
+    EXPECT_EQ(joined.rows.back().get("d0_mm"), "10");
+    fs::remove_all(dir);
 }
