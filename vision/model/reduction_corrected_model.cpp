@@ -53,8 +53,8 @@ ModelEstimate ReductionCorrectedModel::estimate(const ModelInputs &in) const
     m.hFinalMm = 0;
     m.uMm = uAtBaseReduction(in, r);
     e = base_.estimate(m);
-    // The carry's own error: the FE slope is resolution-limited (docs/fe.md: u low by 7–10 %
-    // at μ 0.2, more at low μ); a quarter of the correction as one σ covers that spread.
+    // The carry's own error: the FE slope is resolution-limited (docs/fe.md, "Stated error and
+    // what limits it"); a quarter of the correction as one σ covers that spread.
     const double geo = in.d0Mm > 0 ? in.d0Mm / t::kD0Mm : 1.0;
     const double carrySigmaU = 0.25 * std::fabs(geo * slopeAt(in.n, e.mu) * (r - t::kBaseReduction));
     e.modelSigma = std::hypot(e.modelSigma, e.dMuDu * carrySigmaU);
