@@ -35,6 +35,27 @@ using namespace icacam::host::loop;
 
 namespace {
 
+// Rewrites the journal of a lab session through `edit` (a test's damage or an older format).
+template <typename Edit> void editJournal(const fs::path &dir, Edit edit)
+{
+    const fs::path path = dir / "journal" / "journal.jsonl";
+    std::string text;
+    {
+        std::ifstream f(path);
+        text.assign(std::istreambuf_iterator<char>(f), {});
+    }
+    edit(text);
+    std::ofstream(path) << text;
+}
+
+// Reads the joined manifest of a lab session's journal and its reference CSV.
+void joinJournal(const fs::path &dir, Manifest *joined, JournalJoin *info)
+{
+    std::string err;
+    ASSERT_TRUE(readJournalManifest((dir / "journal").string(), (dir / "reference.csv").string(), joined, info, &err))
+        << err;
+}
+
 const std::vector<std::string> kSweep = icacam::test::repositoryPaths(icacam::vision::reduction_table::kFeSources);
 
 struct NullDisplay final : hal::Display {
@@ -101,21 +122,13 @@ TEST(LoopJournal, DeviceRecordsReMeasuredAndTheLensFound)
     ASSERT_TRUE(fs::exists(dir / "journal" / "img-000001.pgm"));
     // A torn line in the middle of the journal (a byte flipped): skipped with its reason, the
     // batch goes on.
-    {
-        std::string text;
-        {
-            std::ifstream f(dir / "journal" / "journal.jsonl");
-            text.assign(std::istreambuf_iterator<char>(f), {});
-        }
+    editJournal(dir, [](std::string &text) {
         const size_t second = text.find('\n') + 1;
         text[text.find("\"mu\"", second) + 2] = 'v';
-        std::ofstream(dir / "journal" / "journal.jsonl") << text;
-    }
+    });
     Manifest joined;
     JournalJoin join;
-    std::string err;
-    ASSERT_TRUE(readJournalManifest((dir / "journal").string(), (dir / "reference.csv").string(), &joined, &join, &err))
-        << err;
+    joinJournal(dir, &joined, &join);
     EXPECT_EQ(join.results, count - 1);
     EXPECT_EQ(join.joined, count - 1);
     int damaged = 0, notInJournal = 0;
@@ -177,12 +190,7 @@ TEST(LoopJournal, ARecordWithoutGeometryTakesTheSavedSettings)
     const fs::path dir = fs::temp_directory_path() / ("icacam_loop_geometry_" + std::to_string(::getpid()));
     fs::remove_all(dir);
     const int count = labSession(dir, LoopEffect::Null, 5, 6);
-    {
-        std::string text;
-        {
-            std::ifstream f(dir / "journal" / "journal.jsonl");
-            text.assign(std::istreambuf_iterator<char>(f), {});
-        }
+    editJournal(dir, [](std::string &text) {
         // The first result record without its d0_mm and h0_mm fields, its CRC made again.
         const size_t begin = text.find("{\"type\":\"result\"");
         ASSERT_NE(begin, std::string::npos);
@@ -198,13 +206,10 @@ TEST(LoopJournal, ARecordWithoutGeometryTakesTheSavedSettings)
         std::snprintf(hex, sizeof hex, "%08x", journalCrc32(line.substr(0, crc)));
         line = line.substr(0, crc) + ",\"crc32\":\"" + hex + "\"}";
         text.replace(begin, end - begin, line);
-        std::ofstream(dir / "journal" / "journal.jsonl") << text;
-    }
+    });
     Manifest joined;
     JournalJoin join;
-    std::string err;
-    ASSERT_TRUE(readJournalManifest((dir / "journal").string(), (dir / "reference.csv").string(), &joined, &join, &err))
-        << err;
+    joinJournal(dir, &joined, &join);
     EXPECT_EQ(join.joined, count);
     EXPECT_NE(join.geometry.find("for 1 of " + std::to_string(count) + " records"), std::string::npos) << join.geometry;
     EXPECT_NE(join.geometry.find("settings.conf"), std::string::npos) << join.geometry;
