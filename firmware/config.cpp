@@ -22,6 +22,13 @@ struct KeyDef {
     const char *help;
 };
 
+// reading.model's choices: the factory's names (vision/model/friction_models.h), '|' separated.
+const std::string kModelChoices = [] {
+    std::string c;
+    for (std::string_view name : vision::kModelNames) (c += c.empty() ? "" : "|") += name;
+    return c;
+}();
+
 const KeyDef kKeys[] = {
     {"specimen.n", "n", &Config::n, nullptr, nullptr, 0.001, 1.0, nullptr, true,
      "strain-hardening exponent (required; the μ model covers 0.05-0.5)"},
@@ -33,7 +40,7 @@ const KeyDef kKeys[] = {
      "final height after upsetting, below h0_mm (0 = not given: the model's 50 % reduction)"},
     {"specimen.material", "material", nullptr, nullptr, &Config::material, 0, 32, nullptr, true,
      "material label, up to 32 characters"},
-    {"reading.model", nullptr, nullptr, nullptr, &Config::model, 0, 0, "paper_reduction|paper|fe_reduction|fe", false,
+    {"reading.model", nullptr, nullptr, nullptr, &Config::model, 0, 0, kModelChoices.c_str(), false,
      "friction model, as icacam measure --model (paper_reduction: the paper's fit carried to 50 % "
      "reduction and H0/D0 1.5; fe: the project's CalculiX tables)"},
     {"tolerance.mu", "tolerance_mu", &Config::toleranceMu, nullptr, nullptr, 0, 1, nullptr, true,
@@ -267,6 +274,7 @@ int noiseReductionLevel(std::string_view name)
 
 std::string configHelp()
 {
+    const Config defaults;
     std::string out;
     for (const KeyDef &k : kKeys) {
         out += "  ";
@@ -274,6 +282,10 @@ std::string configHelp()
         out += std::string(size_t(std::max(1, 24 - int(std::string_view(k.key).size()))), ' ');
         out += k.help;
         if (k.choices) out += std::string(" (") + k.choices + ")";
+        char value[64] = "";
+        if (k.number) std::snprintf(value, sizeof value, "%g", defaults.*k.number);
+        else if (k.integer) std::snprintf(value, sizeof value, "%d", defaults.*k.integer);
+        out += std::string(" [default ") + (k.text ? "\"" + defaults.*k.text + "\"" : std::string(value)) + "]";
         if (k.live) out += " [settable over serial]";
         out += '\n';
     }

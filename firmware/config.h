@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "hal/camera.h"
+#include "vision/model/friction_models.h"
 
 namespace icacam::fw {
 
@@ -20,7 +21,7 @@ struct Config {
     double hFinalMm = 0;     // final height after upsetting; 0 = not given (50 % assumed)
     std::string material;
     // [reading] the friction model (vision/model/friction_models.h), as `icacam measure --model`
-    std::string model = "paper_reduction";
+    std::string model = vision::kDefaultModel;
     // [tolerance] the lab's tolerance on μ and the declared inputs' (1 σ); changeable over serial
     double toleranceMu = 0.01, toleranceRel = 0.05; // ok: 2 σ_μ within max(abs, rel · μ)
     double nTol = 0.01, hFinalTolMm = 0.05, mmPerPxTolRel = 0.005;

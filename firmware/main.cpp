@@ -47,11 +47,22 @@ void onSignal(int) { gStop = 1; }
 
 constexpr int kExitUsage = 64, kExitUnavailable = 69, kExitConfig = 78;
 
-const char *kUsage =
-    "usage: icacam-fw --config FILE [--check]\n"
-    "       icacam-fw --help-config\n"
-    "Runs the icacam device program. --check validates the config and exits.\n"
-    "See docs/firmware.md for the config keys, the serial protocol and the journal.\n";
+std::string usage()
+{
+    std::string models;
+    for (std::string_view name : icacam::vision::kModelNames) (models += models.empty() ? "" : ", ") += name;
+    return std::string("usage: icacam-fw --config FILE [--check]\n"
+                       "       icacam-fw --help-config\n"
+                       "Runs the icacam device program on the backends the config names.\n"
+                       "  --config FILE  the device configuration (key = value lines; no default)\n"
+                       "  --check        validate the config (and the calibration file it names) and exit\n"
+                       "  --help-config  every config key with its default\n"
+                       "The friction model is the config's reading.model (default ") +
+           icacam::vision::kDefaultModel + "; known: " + models +
+           ").\n"
+           "Exit codes: 0 stopped by a signal, 64 bad command line, 78 bad configuration, 69 a device\n"
+           "could not be opened. See docs/firmware.md for the keys, the serial protocol and the journal.\n";
+}
 
 std::string resolve(const std::string &base, const std::string &p)
 {
@@ -72,15 +83,24 @@ int main(int argc, char **argv)
     using namespace icacam;
     std::string configPath;
     bool checkOnly = false;
+    // The same forms as the icacam subcommands: --config FILE or --config=FILE.
+    auto usageError = [](const std::string &why) {
+        std::fprintf(stderr, "icacam-fw: error: %s\n%s", why.c_str(), usage().c_str());
+        return kExitUsage;
+    };
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
-        if (a == "--config" && i + 1 < argc) configPath = argv[++i];
-        else if (a == "--check") checkOnly = true;
+        if (a == "--config" || a.rfind("--config=", 0) == 0) {
+            if (a.size() > 8) configPath = a.substr(9);
+            else if (i + 1 < argc) configPath = argv[++i];
+            else return usageError("--config needs a value");
+            if (configPath.empty()) return usageError("--config needs a value");
+        } else if (a == "--check") checkOnly = true;
         else if (a == "--help-config") { std::printf("config keys:\n%s", fw::configHelp().c_str()); return 0; }
-        else if (a == "-h" || a == "--help") { std::printf("%s", kUsage); return 0; }
-        else { std::fprintf(stderr, "icacam-fw: unknown argument '%s'\n%s", a.c_str(), kUsage); return kExitUsage; }
+        else if (a == "-h" || a == "--help") { std::printf("%s", usage().c_str()); return 0; }
+        else return usageError((a.size() > 1 && a[0] == '-' ? "unknown option '" : "unexpected argument '") + a + "'");
     }
-    if (configPath.empty()) { std::fprintf(stderr, "%s", kUsage); return kExitUsage; }
+    if (configPath.empty()) return usageError("--config is required");
 
     std::ifstream in(configPath);
     if (!in) { std::fprintf(stderr, "icacam-fw: cannot read config '%s'\n", configPath.c_str()); return kExitConfig; }

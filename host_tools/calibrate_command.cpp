@@ -12,6 +12,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "calibration/calibration_file.h"
+#include "cli_options.h"
 #include "image_file.h"
 #include "manifest.h"
 
@@ -175,28 +176,22 @@ int calibrateCommand(const std::vector<std::string> &args)
     std::string dir, boardSpec, flat, outPath;
     double thickness = 0, maxBlur = 0, maxRms = 0.5;
     bool freeK3 = false;
-    for (size_t i = 0; i < args.size(); ++i) {
-        auto value = [&]() -> std::string {
-            if (i + 1 >= args.size()) throw std::runtime_error(args[i] + " needs a value");
-            return args[++i];
-        };
-        auto number = [&](double *v) {
-            const std::string opt = args[i], s = value();
-            if (!parseNumber(s, v) || *v < 0) throw std::runtime_error(opt + " needs a non-negative number");
-        };
-        if (args[i] == "--images") dir = value();
-        else if (args[i] == "--board") boardSpec = value();
-        else if (args[i] == "--flat") flat = value();
-        else if (args[i] == "--out") outPath = value();
-        else if (args[i] == "--board-thickness") number(&thickness);
-        else if (args[i] == "--max-blur") number(&maxBlur);
-        else if (args[i] == "--max-rms") number(&maxRms);
-        else if (args[i] == "--free-k3") freeK3 = true;
-        else if (args[i] == "-h" || args[i] == "--help") { std::cout << kUsage; return 0; }
-        else throw std::runtime_error("unknown option '" + args[i] + "'\n" + kUsage);
+    cli::OptionReader opts(args, kUsage);
+    auto number = [&](double *v) { *v = opts.number(0, 1e9); };
+    while (opts.next()) {
+        if (opts.isHelp()) { std::cout << kUsage; return 0; }
+        else if (opts.is("--images")) dir = opts.value();
+        else if (opts.is("--board")) boardSpec = opts.value();
+        else if (opts.is("--flat")) flat = opts.value();
+        else if (opts.is("--out")) outPath = opts.value();
+        else if (opts.is("--board-thickness")) number(&thickness);
+        else if (opts.is("--max-blur")) number(&maxBlur);
+        else if (opts.is("--max-rms")) number(&maxRms);
+        else if (opts.is("--free-k3")) freeK3 = opts.flag();
+        else opts.unknown();
     }
     if (dir.empty() || boardSpec.empty() || flat.empty() || outPath.empty())
-        throw std::runtime_error(std::string("--images, --board, --flat and --out are required\n") + kUsage);
+        opts.missing("each of --images, --board, --flat and --out");
     const Board board = parseBoard(boardSpec);
     if (!fs::is_directory(dir)) throw std::runtime_error("--images: '" + dir + "' is not a folder");
     fs::path flatPath = flat;

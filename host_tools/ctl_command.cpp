@@ -11,7 +11,7 @@
 #include <termios.h>
 #include <unistd.h>
 
-#include "manifest.h"
+#include "cli_options.h"
 
 namespace icacam::host {
 
@@ -35,7 +35,8 @@ speed_t baudConstant(long baud)
     case 230400: return B230400;
     case 460800: return B460800;
     case 921600: return B921600;
-    default: throw std::runtime_error("unsupported baud rate " + std::to_string(baud));
+    default: throw cli::UsageError("--baud: unsupported rate " + std::to_string(baud) +
+                                   " (9600, 19200, 38400, 57600, 115200, 230400, 460800, 921600)", kUsage);
     }
 }
 
@@ -70,23 +71,19 @@ int ctlCommand(const std::vector<std::string> &args)
     std::string port;
     double baud = 115200, timeoutMs = 3000;
     std::vector<std::string> words;
-    for (size_t i = 0; i < args.size(); ++i) {
-        auto value = [&]() -> std::string {
-            if (i + 1 >= args.size()) throw std::runtime_error(args[i] + " needs a value");
-            return args[++i];
-        };
-        if (words.empty() && args[i] == "--port") port = value();
-        else if (words.empty() && args[i] == "--baud") {
-            if (!parseNumber(value(), &baud)) throw std::runtime_error("bad --baud");
-        } else if (words.empty() && args[i] == "--timeout-ms") {
-            if (!parseNumber(value(), &timeoutMs) || timeoutMs < 1) throw std::runtime_error("bad --timeout-ms");
-        } else if (words.empty() && (args[i] == "-h" || args[i] == "--help")) {
-            std::cout << kUsage;
-            return 0;
-        } else words.push_back(args[i]);
+    // Options come before the device command; everything from the command on is sent.
+    cli::OptionReader opts(args, kUsage);
+    while (opts.next()) {
+        if (!opts.isOption()) { words = opts.rest(); break; }
+        if (opts.isHelp()) { std::cout << kUsage; return 0; }
+        else if (opts.is("--port")) port = opts.value();
+        else if (opts.is("--baud")) {
+            baud = double(opts.wholeNumber(1, 4000000));
+            baudConstant(long(baud)); // refused here, before the port is opened
+        } else if (opts.is("--timeout-ms")) timeoutMs = double(opts.wholeNumber(1, 3600000));
+        else opts.unknown();
     }
-    if (port.empty() || words.empty()) throw std::runtime_error(std::string("--port and a command are required\n") + kUsage);
-
+    if (port.empty() || words.empty()) opts.missing("--port and a command");
     Port p;
     p.fd = ::open(port.c_str(), O_RDWR | O_NOCTTY | O_CLOEXEC);
     if (p.fd < 0) throw std::runtime_error("cannot open " + port + ": " + std::strerror(errno));

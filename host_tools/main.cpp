@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "calibrate_command.h"
+#include "cli_options.h"
 #include "ctl_command.h"
 #include "fe/fe_command.h"
 #include "fe/fe_tables.h"
@@ -29,7 +30,7 @@ const char *kHelp =
 
 int main(int argc, char **argv)
 {
-    if (argc < 2) { std::cerr << kHelp; return 2; }
+    if (argc < 2) { std::cerr << "icacam: a command is needed\n" << kHelp; return 2; }
     const std::string cmd = argv[1];
     const std::vector<std::string> args(argv + 2, argv + argc);
     try {
@@ -45,6 +46,10 @@ int main(int argc, char **argv)
         if (cmd == "ctl") return icacam::host::ctlCommand(args);
         if (cmd == "-h" || cmd == "--help" || cmd == "help") { std::cout << kHelp; return 0; }
         std::cerr << "icacam: unknown command '" << cmd << "'\n" << kHelp;
+        return 2;
+    } catch (const icacam::host::cli::UsageError &e) {
+        // A mistake on the command line: what it is, then how the command is used.
+        std::cerr << "icacam " << cmd << ": error: " << e.what() << "\n" << e.usage();
         return 2;
     } catch (const std::exception &e) {
         std::cerr << "icacam " << cmd << ": error: " << e.what() << "\n";

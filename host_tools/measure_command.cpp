@@ -10,8 +10,10 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "vision/model/friction_models.h"
+#include "cli_options.h"
 #include "manifest.h"
+#include "number_text.h"
+#include "vision/model/friction_models.h"
 #include "record_measurer.h"
 #include "result_writer.h"
 
@@ -22,24 +24,38 @@ using namespace icacam::vision;
 
 namespace {
 
-const char *kUsage =
-    "usage: icacam measure --manifest FILE [--out FILE] [--format csv|jsonl]\n"
-    "                      [--overlay DIR] [--repeat N] [--model paper_reduction]\n"
-    "                      [--tolerance ABS[,REL]]\n"
-    "Measures every record of a manifest (columns id,image,n,mm_per_px; optional k_mpa,\n"
-    "d0_mm, h0_mm, h_final_mm). One bad record never stops the batch: it gets status=error.\n"
-    "Models: paper_reduction (default: the paper's fit with u carried to 50 % reduction by the\n"
-    "FE du/dr, from h_final_mm or from the reduction the silhouette implies), paper (the\n"
-    "published reference, 50 % only), fe, fe_reduction (docs/loop.md, docs/fe.md).\n"
-    "A 'calibration' column (a file from 'icacam calibrate', relative to the manifest) may\n"
-    "stand beside or instead of mm_per_px; the end face is then taken at h_final_mm above\n"
-    "the fixture, or at the reduction the reading assumes when none is given (docs/calibration.md).\n"
-    "Every row carries mu_sigma and its budget (sigma_edges, sigma_scale, sigma_reduction, sigma_n,\n"
-    "sigma_model); status ok only when 2 mu_sigma is within the tolerance, by default\n"
-    "max(0.01, 5 % of mu) (--tolerance, or the columns tolerance_mu and tolerance_rel). Declared\n"
-    "inputs' tolerances (1 sigma): mm_per_px_tol (relative, default 0.005), h_final_tol_mm\n"
-    "(0.05), n_tol (0.01); without h_final_mm the reduction is inferred from the silhouette\n"
-    "(docs/uncertainty.md).\n";
+std::string usage()
+{
+    const ReadingTolerance t;
+    const DeclaredTolerances d;
+    return std::string(
+               "usage: icacam measure --manifest FILE [--out FILE] [--format csv|jsonl]\n"
+               "                      [--overlay DIR] [--repeat N] [--model NAME] [--tolerance ABS[,REL]]\n"
+               "  --manifest FILE  the records: columns id,image,n,mm_per_px; optional k_mpa, d0_mm,\n"
+               "                   h0_mm, h_final_mm\n"
+               "  --out FILE       the results (default: standard output)\n"
+               "  --format         csv (default) or jsonl\n"
+               "  --overlay DIR    also draw each measured image's boundaries into DIR/<id>.png\n"
+               "  --repeat N       measure each image N times (default 1: timing and profiling)\n"
+               "  --model NAME     the friction model (default ") +
+           vision::kDefaultModel + "; known: " + cli::modelNames() +
+           ")\n"
+           "  --tolerance ABS[,REL]  status ok only when 2 mu_sigma is within max(ABS, REL * mu)\n"
+           "                   (default " + numberText("%g", t.absMu) + "," + numberText("%g", t.relMu) +
+           "; the columns tolerance_mu, tolerance_rel per record)\n"
+           "One bad record never stops the batch: it gets status=error.\n"
+           "Models: paper_reduction, the paper's fit with u carried to 50 % reduction by the FE du/dr\n"
+           "(from h_final_mm or from the reduction the silhouette implies); paper, the published\n"
+           "reference (50 % only); fe, fe_reduction: the project's CalculiX tables (docs/loop.md, docs/fe.md).\n"
+           "A 'calibration' column (a file from 'icacam calibrate', relative to the manifest) may\n"
+           "stand beside or instead of mm_per_px; the end face is then taken at h_final_mm above\n"
+           "the fixture, or at the reduction the reading assumes when none is given (docs/calibration.md).\n"
+           "Every row carries mu_sigma and its budget (sigma_edges, sigma_scale, sigma_reduction, sigma_n,\n"
+           "sigma_model). Declared inputs' tolerances (1 sigma, columns): mm_per_px_tol (relative, default " +
+           numberText("%g", d.scaleRel) + "),\nh_final_tol_mm (" + numberText("%g", d.hFinalMm) + "), n_tol (" +
+           numberText("%g", d.n) + "); without h_final_mm the reduction is inferred from the silhouette\n"
+           "(docs/uncertainty.md).\n";
+}
 
 void drawOverlay(const cv::Mat &luma, const Measurement &m, const std::string &path)
 {
@@ -79,31 +95,25 @@ int measureCommand(const std::vector<std::string> &args)
     std::string manifestPath, outPath, format = "csv", overlayDir, modelName = kDefaultModel;
     long repeat = 1;
     SpecimenSpec defaults;
-    for (size_t i = 0; i < args.size(); ++i) {
-        auto value = [&]() -> std::string {
-            if (i + 1 >= args.size()) throw std::runtime_error(args[i] + " needs a value");
-            return args[++i];
-        };
-        if (args[i] == "--manifest") manifestPath = value();
-        else if (args[i] == "--out") outPath = value();
-        else if (args[i] == "--format") format = value();
-        else if (args[i] == "--overlay") overlayDir = value();
-        else if (args[i] == "--model") modelName = value();
-        else if (args[i] == "--tolerance") {
-            if (!parseTolerance(value(), &defaults.tolerance))
-                throw std::runtime_error("--tolerance needs ABS or ABS,REL (e.g. 0.01,0.05)");
-        } else if (args[i] == "--repeat") {
-            double r;
-            if (!parseNumber(value(), &r) || r < 1 || r > 100000 || r != std::floor(r))
-                throw std::runtime_error("--repeat needs a whole number from 1 to 100000");
-            repeat = long(r);
-        } else if (args[i] == "-h" || args[i] == "--help") { std::cout << kUsage; return 0; }
-        else throw std::runtime_error("unknown option '" + args[i] + "'\n" + kUsage);
+    cli::OptionReader opts(args, usage());
+    while (opts.next()) {
+        if (opts.isHelp()) { std::cout << usage(); return 0; }
+        else if (opts.is("--manifest")) manifestPath = opts.value();
+        else if (opts.is("--out")) outPath = opts.value();
+        else if (opts.is("--format")) {
+            format = opts.value();
+            if (format != "csv" && format != "jsonl") opts.fail("csv or jsonl, not '" + format + "'");
+        } else if (opts.is("--overlay")) overlayDir = opts.value();
+        else if (opts.is("--model")) {
+            modelName = opts.value();
+            if (!frictionModel(modelName)) opts.fail("unknown model '" + modelName + "' (known: " + cli::modelNames() + ")");
+        } else if (opts.is("--tolerance")) {
+            if (!parseTolerance(opts.value(), &defaults.tolerance)) opts.fail("ABS or ABS,REL (e.g. 0.01,0.05)");
+        } else if (opts.is("--repeat")) repeat = opts.wholeNumber(1, 100000);
+        else opts.unknown();
     }
-    if (manifestPath.empty()) throw std::runtime_error(std::string("--manifest is required\n") + kUsage);
-    if (format != "csv" && format != "jsonl") throw std::runtime_error("--format must be csv or jsonl");
-    auto model = frictionModel(modelName);
-    if (!model) throw std::runtime_error("unknown model '" + modelName + "' (known: " + kKnownModels + ")");
+    if (manifestPath.empty()) opts.missing("--manifest");
+    const FrictionModel *model = frictionModel(modelName);
 
     Manifest manifest;
     std::string err;

@@ -3,55 +3,60 @@
 #include <iostream>
 #include <stdexcept>
 
+#include "cli_options.h"
 #include "coverage_score.h"
 #include "manifest.h"
+#include "number_text.h"
 
 namespace icacam::host {
 
 namespace {
-const char *kUsage =
-    "usage: icacam score --results FILE --truth FILE [--tolerance ABS[,REL]] [--k K]\n"
-    "                    [--model-sigma auto|keep|drop] [--markdown]\n"
-    "Per condition (the truth's 'condition' column; one line without it): records measured,\n"
-    "status ok, silent wrong answers (ok with |dmu| > max(ABS, REL * mu); default 0.01,0.05),\n"
-    "the fraction within K sigma (default 2), the median |dmu|/sigma and |dmu|, the worst dmu.\n"
-    "sigma: mu_sigma; with the budget columns and a paper model measured against the paper's\n"
-    "truth, sqrt(mu_sigma^2 - sigma_model^2) (--model-sigma auto; keep or drop to force).\n"
-    "See docs/uncertainty.md.\n";
+std::string usage()
+{
+    const ScoreOptions d;
+    return "usage: icacam score --results FILE --truth FILE [--tolerance ABS[,REL]] [--k K]\n"
+           "                    [--model-sigma auto|keep|drop] [--markdown]\n"
+           "Per condition (the truth's 'condition' column; one line without it): records measured,\n"
+           "status ok, silent wrong answers (ok with |dmu| > max(ABS, REL * mu); default " +
+           numberText("%g", d.toleranceAbs) + "," + numberText("%g", d.toleranceRel) +
+           "),\nthe fraction within K sigma (default " + numberText("%g", d.k) +
+           "), the median |dmu|/sigma and |dmu|, the worst dmu.\n"
+           "sigma: mu_sigma; with the budget columns and a paper model measured against the paper's\n"
+           "truth, sqrt(mu_sigma^2 - sigma_model^2) (--model-sigma auto, the default; keep or drop to\n"
+           "force). --markdown: the table as Markdown. See docs/uncertainty.md.\n";
 }
+} // namespace
 
 int scoreCommand(const std::vector<std::string> &args)
 {
     std::string resultsPath, truthPath;
     ScoreOptions opt;
     bool markdown = false;
-    for (size_t i = 0; i < args.size(); ++i) {
-        auto value = [&]() -> std::string {
-            if (i + 1 >= args.size()) throw std::runtime_error(args[i] + " needs a value");
-            return args[++i];
-        };
-        if (args[i] == "--results") resultsPath = value();
-        else if (args[i] == "--truth") truthPath = value();
-        else if (args[i] == "--markdown") markdown = true;
-        else if (args[i] == "--k") {
-            if (!parseNumber(value(), &opt.k) || !(opt.k > 0)) throw std::runtime_error("--k needs a positive number");
-        } else if (args[i] == "--tolerance") {
-            const std::string v = value();
+    cli::OptionReader opts(args, usage());
+    while (opts.next()) {
+        if (opts.isHelp()) { std::cout << usage(); return 0; }
+        else if (opts.is("--results")) resultsPath = opts.value();
+        else if (opts.is("--truth")) truthPath = opts.value();
+        else if (opts.is("--markdown")) markdown = opts.flag();
+        else if (opts.is("--k")) {
+            opt.k = opts.number();
+            if (!(opt.k > 0)) opts.fail("a positive number");
+        } else if (opts.is("--tolerance")) {
+            const std::string v = opts.value();
             const size_t comma = v.find(',');
-            if (!parseNumber(v.substr(0, comma), &opt.toleranceAbs) || opt.toleranceAbs < 0 ||
-                (comma != std::string::npos && (!parseNumber(v.substr(comma + 1), &opt.toleranceRel) || opt.toleranceRel < 0)))
-                throw std::runtime_error("--tolerance needs ABS or ABS,REL (non-negative numbers)");
-        } else if (args[i] == "--model-sigma") {
-            const std::string v = value();
+            if (!cli::parseFinite(v.substr(0, comma), &opt.toleranceAbs) || opt.toleranceAbs < 0 ||
+                (comma != std::string::npos &&
+                 (!cli::parseFinite(v.substr(comma + 1), &opt.toleranceRel) || opt.toleranceRel < 0)))
+                opts.fail("ABS or ABS,REL (non-negative numbers), not '" + v + "'");
+        } else if (opts.is("--model-sigma")) {
+            const std::string v = opts.value();
             if (v == "auto") opt.modelSigma = ModelSigma::Auto;
             else if (v == "keep") opt.modelSigma = ModelSigma::Keep;
             else if (v == "drop") opt.modelSigma = ModelSigma::Drop;
-            else throw std::runtime_error("--model-sigma: auto, keep or drop");
-        } else if (args[i] == "-h" || args[i] == "--help") { std::cout << kUsage; return 0; }
-        else throw std::runtime_error("unknown option '" + args[i] + "'\n" + kUsage);
+            else opts.fail("auto, keep or drop, not '" + v + "'");
+        } else opts.unknown();
     }
-    if (resultsPath.empty() || truthPath.empty())
-        throw std::runtime_error(std::string("--results and --truth are required\n") + kUsage);
+    if (resultsPath.empty() || truthPath.empty()) opts.missing("each of --results and --truth");
     Manifest results, truth;
     std::string err;
     if (!readManifest(resultsPath, &results, &err)) throw std::runtime_error("--results: " + err);

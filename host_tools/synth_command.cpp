@@ -8,8 +8,10 @@
 #include <iostream>
 #include <stdexcept>
 
+#include "cli_options.h"
 #include "end_face_renderer.h"
 #include "manifest.h"
+#include "number_text.h"
 #include "synth_conditions.h"
 #include "synth_loop_set.h"
 #include "vision/model/paper_model.h"
@@ -29,45 +31,54 @@ double uForMu(double mu, double n)
     return 0.5 * (lo + hi);
 }
 
+namespace {
+// The image count unless --count says otherwise (per condition with --condition).
+constexpr double kDefaultCount = 10;
+
+std::string usage()
+{
+    return "usage: icacam synth --out DIR [--count N] [--seed S] [--hard]\n"
+           "       icacam synth --out DIR --condition all|NAME[,NAME...] [--count N] [--seed S] [--hard]\n"
+           "       icacam synth --out DIR --effect process|optical|camera|material|speed|null\n"
+           "                    [--radii] [--count N] [--seed S]\n"
+           "  --out DIR     where DIR/images/*, DIR/manifest.csv and DIR/truth.csv are written\n"
+           "  --count N     records (default " + numberText("%g", kDefaultCount) + "; per condition with --condition)\n"
+           "  --seed S      the random seed (default 1): the same seed, the same set\n"
+           "  --hard        the rendering nuisances (blur, noise, contrast …) at their limits\n"
+           "  --effect E    a record set for `icacam loop` (mu_ref and recorded columns) carrying that\n"
+           "                hidden effect, as images or (--radii) as measured radii (docs/loop.md)\n"
+           "  --condition   records under conditions a manifest does not declare (" + conditionNames() + "),\n"
+           "                truth.csv naming the condition and its true parameters; score a measurement\n"
+           "                with `icacam score` (docs/uncertainty.md)\n";
+}
+} // namespace
+
 int synthCommand(const std::vector<std::string> &args)
 {
     std::string outDir, effect, conditions;
-    double count = 10, seed = 1;
+    double count = kDefaultCount, seed = 1;
     bool hard = false, radii = false;
-    for (size_t i = 0; i < args.size(); ++i) {
-        auto value = [&]() -> std::string {
-            if (i + 1 >= args.size()) throw std::runtime_error(args[i] + " needs a value");
-            return args[++i];
-        };
-        if (args[i] == "--out") outDir = value();
-        else if (args[i] == "--count") { if (!parseNumber(value(), &count) || count < 1) throw std::runtime_error("bad --count"); }
-        else if (args[i] == "--seed") { if (!parseNumber(value(), &seed)) throw std::runtime_error("bad --seed"); }
-        else if (args[i] == "--hard") hard = true;
-        else if (args[i] == "--effect") effect = value();
-        else if (args[i] == "--radii") radii = true;
-        else if (args[i] == "--condition") conditions = value();
-        else if (args[i] == "-h" || args[i] == "--help") {
-            std::cout << "usage: icacam synth --out DIR [--count N] [--seed S] [--hard]\n"
-                         "       icacam synth --out DIR --condition all|NAME[,NAME...] [--count N] [--seed S] [--hard]\n"
-                         "       icacam synth --out DIR --effect process|optical|camera|material|speed|null\n"
-                         "                    [--radii] [--count N] [--seed S]\n"
-                         "Writes DIR/images/*, DIR/manifest.csv and DIR/truth.csv. With --effect: a record\n"
-                         "set for `icacam loop` (mu_ref and recorded columns) carrying that hidden effect,\n"
-                         "as images or (--radii) as measured radii (docs/loop.md). With --condition: N records\n"
-                         "per condition a manifest does not declare (" + conditionNames() + "),\n"
-                         "truth.csv naming the condition and its true parameters; score a measurement with\n"
-                         "`icacam score` (docs/uncertainty.md).\n";
-            return 0;
-        } else throw std::runtime_error("unknown option '" + args[i] + "'");
+    cli::OptionReader opts(args, usage());
+    while (opts.next()) {
+        if (opts.isHelp()) { std::cout << usage(); return 0; }
+        else if (opts.is("--out")) outDir = opts.value();
+        else if (opts.is("--count")) count = double(opts.wholeNumber(1, 100000));
+        else if (opts.is("--seed")) seed = double(opts.wholeNumber(0, 4294967295L));
+        else if (opts.is("--hard")) hard = opts.flag();
+        else if (opts.is("--effect")) effect = opts.value();
+        else if (opts.is("--radii")) radii = opts.flag();
+        else if (opts.is("--condition")) conditions = opts.value();
+        else opts.unknown();
     }
-    if (outDir.empty()) throw std::runtime_error("--out is required");
-    if (radii && effect.empty()) throw std::runtime_error("--radii applies to --effect sets");
-    if (!effect.empty() && !conditions.empty()) throw std::runtime_error("--effect and --condition do not combine");
+    if (outDir.empty()) opts.missing("--out");
+    if (radii && effect.empty()) throw cli::UsageError("--radii applies to --effect sets", usage());
+    if (!effect.empty() && !conditions.empty()) throw cli::UsageError("--effect and --condition do not combine", usage());
     if (!effect.empty()) {
         LoopSetOptions opt;
         if (!parseLoopEffect(effect, &opt.effect))
-            throw std::runtime_error("--effect: process, optical, camera, material, speed or null");
-        if (hard) throw std::runtime_error("--hard does not apply to --effect sets");
+            throw cli::UsageError("--effect: process, optical, camera, material, speed or null, not '" + effect + "'",
+                                  usage());
+        if (hard) throw cli::UsageError("--hard does not apply to --effect sets", usage());
         opt.count = int(count);
         opt.seed = uint32_t(seed);
         opt.radii = radii;
@@ -79,7 +90,7 @@ int synthCommand(const std::vector<std::string> &args)
     if (!conditions.empty()) {
         ConditionSetOptions opt;
         if (!parseConditions(conditions, &opt.conditions))
-            throw std::runtime_error("--condition: all, or a comma-separated list of " + conditionNames());
+            throw cli::UsageError("--condition: all, or a comma-separated list of " + conditionNames(), usage());
         opt.countPerCondition = int(count);
         opt.seed = uint32_t(seed);
         opt.hard = hard;

@@ -10,12 +10,16 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "cli_options.h"
+#include "fe_base_setup.h"
 #include "fe_compare.h"
 #include "fe_report.h"
+#include "fe_slurm_options.h"
 #include "fe_runner.h"
 #include "fe_slurm_script.h"
 #include "fe_sweep.h"
 #include "fe_sweep_csv.h"
+#include "host_tools/number_text.h"
 
 namespace icacam::host {
 
@@ -24,36 +28,62 @@ using namespace icacam::host::fe;
 
 namespace {
 
-const char *kUsage =
-    "usage: icacam fe <run|sweep|tables|report|compare|deck> [options]\n"
-    "  deck    --k MPa --n N --mu MU [case options]           print the CalculiX deck\n"
-    "  run     [case options] [--out CSV] [--work DIR]       one case: ccx, R_i R_o R_max u force\n"
-    "  sweep   --grid 'k=500;n=0.25,0.05;mu=0.05,0.1' [case options] --out CSV [--jobs 1]\n"
-    "          resumable: cases already in CSV are skipped; grid keys: k n mu e d0 h0 red elem\n"
-    "          [--executor local|slurm] [--resubmit-failed 1] (the cases whose rows say failed, alone)\n"
-    "          slurm (docs/fe-cluster.md): one job array, a case per task, results in <CSV>.slurm/:\n"
-    "          [--partition P] [--time 30:00] [--cpus-per-task 1] [--sbatch '--account=x --mem=2G']\n"
-    "          [--setup 'module load calculix'] [--slurm-config FILE (key = value, the same keys)]\n"
-    "          [--slurm-dir DIR] [--icacam PATH] [--array-limit N] [--poll 15] [--cancel 1]\n"
-    "  tables  --base CSV [--k-family CSV]... [--aspect CSV]... [--out vision/model]\n"
-    "          every generated table of the friction models from one FE base (icacam fe tables --help)\n"
-    "  report  --in CSV --out DIR                             Table 1 / Fig. 3 comparison\n"
-    "  compare --in REF.csv --in OTHER.csv [--out MD] [--min-u 0.1] [--bar 0.05] [--edge interp|track]\n"
-    "          [--across-material 1] (K and E left out of the match: the independence checks)\n"
-    "          u of the same cases on other meshes/solvers (mesh study, independent model)\n"
-    "case options: --k 500 --n 0.25 --mu 0.2 --e 210000 --d0 10 --h0 15 --reduction 0.5\n"
-    "              --elem 0.2 --corner 0 --contact-slope 1e5 --stick-slope 1e4 --fallback-stick-slope 1e3\n"
-    "              --inc-max 0.01 --element CAX4R|CAX8R --platen 0 (master segment, mm)\n"
-    "              --fold-zone 0 (mm of side kept at the corner size)\n"
-    "              --contact node|surface (NODE TO SURFACE, the base; SURFACE TO SURFACE)\n"
-    "              --track-step 0 (reduction between frames that track the contact edge, e.g. 0.01)\n"
-    "              --ccx ccx --timeout 3600 --work /tmp/icacam-fe\n"
-    "              --reuse 1|only (post-process the work directory's results of the same deck again;\n"
-    "              only: cases without such results are left out, never run)\n";
+std::string g(double v) { return numberText("%g", v); }
+
+std::string usage()
+{
+    const FeCase c = baseSetupCase();
+    const RunOptions run = baseSetupRun();
+    const SlurmOptions slurm;
+    const FeCase coarse;
+    return "usage: icacam fe <deck|run|sweep|tables|report|compare> [options]\n"
+           "  deck    [case options]                                  print the CalculiX deck\n"
+           "  run     [case options] [--out CSV] [--work DIR]         one case: ccx, R_i R_o R_max u force\n"
+           "  sweep   --grid 'k=500;n=0.25,0.05;mu=0.05,0.1' [case options] --out CSV [--jobs 1]\n"
+           "          resumable: cases already in CSV are skipped; grid keys: the case options' numbers\n"
+           "          (k n mu e d0 h0 red elem corner stick-slope …), the first key outermost\n"
+           "          [--executor local|slurm] (default local) [--resubmit-failed 1] (the cases whose rows\n"
+           "          say failed, alone)\n"
+           "          slurm (docs/fe-cluster.md): one job array, a case per task, results in <CSV>.slurm/:\n"
+           "          [--partition P] [--time LIMIT] (default: the partition's) [--cpus-per-task " +
+           std::to_string(slurm.cpusPerTask) + "]\n"
+           "          [--sbatch '--account=x --mem=2G'] [--setup 'module load calculix']\n"
+           "          [--slurm-config FILE (key = value, the same keys)] [--slurm-dir DIR (default <CSV>.slurm)]\n"
+           "          [--icacam PATH] [--array-limit N] [--poll " + g(slurm.pollS) + "] [--cancel 1]\n"
+           "  tables  --base CSV [--k-family CSV]... [--aspect CSV]... [--out vision/model]\n"
+           "          every generated table of the friction models from one FE base (icacam fe tables --help)\n"
+           "  report  --in CSV --out DIR [--snapshot-reduction 0.5]    Table 1 / Fig. 3 comparison\n"
+           "  compare --in REF.csv --in OTHER.csv [--out MD] [--min-u 0.1] [--bar 0.05] [--edge interp|track]\n"
+           "          [--across-material 1] (K and E left out of the match: the independence checks)\n"
+           "          u of the same cases on other meshes/solvers (mesh study, independent model)\n"
+           "Options take their value as --name value or --name=value.\n"
+           "case options, with their defaults: the setup of the models' FE base (data/fe/README.md), so a\n"
+           "sweep without them reproduces and extends the base's rows:\n"
+           "  --k " + g(c.kMpa) + " --n " + g(c.n) + " --mu " + g(c.mu) + " --e " + g(c.eMpa) + " --d0 " + g(c.d0Mm) +
+           " --h0 " + g(c.h0Mm) + " --reduction " + g(c.reductionMax) + " (snapshots every 0.05 to it)\n"
+           "  --element " + c.element + " (CAX4R|CAX8R) --elem " + g(c.elemMm) + " (far-field element, mm) --corner " +
+           g(c.cornerMm) + " (end-face corner element, mm; 0: uniform)\n"
+           "  --contact-slope " + g(c.contactSlope) + " --stick-slope " + g(c.stickSlope) + " (N/mm³) --inc-max " +
+           g(c.incMax) + "\n"
+           "  --contact " + c.contact + " (node: NODE TO SURFACE, the base; surface: SURFACE TO SURFACE)\n"
+           "  --platen " + g(c.platenMm) + " (master segment, mm; 0: max(corner, elem / 2)) --fold-zone " +
+           g(c.foldZoneMm) + " (mm of side kept at the corner size)\n"
+           "  --track-step " + g(c.trackStep) + " (reduction between frames that track the contact edge; 0: none)\n"
+           "run options: --ccx " + run.ccx + " --timeout " + std::to_string(run.timeoutS) + " --work " + run.workDir +
+           " --fallback-stick-slope " + g(run.fallbackStickSlope) +
+           " (rerun a case that stops with this stick slope; 0: no rerun)\n"
+           "  --reuse 0|1|only (default 0; 1: post-process the work directory's results of the same deck again;\n"
+           "  only: cases without such results are left out, never run)\n"
+           "The coarse setup of the first sweeps, seconds a case: --element " + coarse.element + " --corner " +
+           g(coarse.cornerMm) + " --elem " + g(coarse.elemMm) + " --reduction " + g(coarse.reductionMax) +
+           "\n  --inc-max " + g(coarse.incMax) + " --stick-slope " + g(coarse.stickSlope) + " --track-step " +
+           g(coarse.trackStep) + ".\n";
+}
 
 struct Parsed {
-    FeCase c;
-    RunOptions run;
+    bool help = false;
+    FeCase c = baseSetupCase();
+    RunOptions run = baseSetupRun();
     std::vector<std::string> in;
     std::string out, grid;
     double reduction = 0.5;
@@ -66,10 +96,8 @@ struct Parsed {
 
 double toDouble(const std::string &key, const std::string &v)
 {
-    size_t pos = 0;
     double x = 0;
-    try { x = std::stod(v, &pos); } catch (...) { pos = 0; }
-    if (pos != v.size() || !std::isfinite(x)) throw std::runtime_error(key + ": not a number: '" + v + "'");
+    if (!cli::parseFinite(v, &x)) throw cli::UsageError(key + ": not a number: '" + v + "'", usage());
     return x;
 }
 
@@ -94,40 +122,55 @@ bool setCaseKey(FeCase &c, const std::string &key, double v)
     return true;
 }
 
+// Every option `icacam fe` knows (all of them take a value), so an unknown one is named as
+// such rather than as one missing its value.
+bool knownKey(const std::string &key)
+{
+    static const std::set<std::string> kCommandKeys = {
+        "out",   "in",      "grid",  "work", "ccx",  "timeout",         "fallback-stick-slope", "reuse",
+        "jobs",  "snapshot-reduction", "element", "contact", "min-u", "bar", "across-material", "edge",
+        "executor", "resubmit-failed", "cancel", "slurm-config"};
+    FeCase scratch;
+    return kCommandKeys.count(key) || isSlurmKey(key) || setCaseKey(scratch, key, 0);
+}
+
+// The options after the verb (args[from…]); --help sets help and stops.
 Parsed parse(const std::vector<std::string> &args, size_t from)
 {
     Parsed p;
-    for (size_t i = from; i < args.size(); ++i) {
-        const std::string &a = args[i];
-        if (a == "-h" || a == "--help") { std::cout << kUsage; std::exit(0); }
-        if (a.rfind("--", 0) != 0 || i + 1 >= args.size())
-            throw std::runtime_error("bad or incomplete option '" + a + "'\n" + kUsage);
-        const std::string key = a.substr(2), v = args[++i];
+    cli::OptionReader opts(args, usage(), from);
+    while (opts.next()) {
+        if (opts.isHelp()) { p.help = true; return p; }
+        if (!opts.isOption() || opts.name().rfind("--", 0) != 0) opts.unknown();
+        const std::string key = opts.name().substr(2);
+        if (!knownKey(key)) opts.unknown();
+        const std::string v = opts.value();
         if (key == "out") p.out = v;
         else if (key == "in") p.in.push_back(v);
         else if (key == "grid") p.grid = v;
         else if (key == "work") p.run.workDir = v;
         else if (key == "ccx") p.run.ccx = v;
-        else if (key == "timeout") p.run.timeoutS = int(toDouble(key, v));
-        else if (key == "fallback-stick-slope") p.run.fallbackStickSlope = toDouble(key, v);
+        else if (key == "timeout") p.run.timeoutS = int(toDouble(opts.name(), v));
+        else if (key == "fallback-stick-slope") p.run.fallbackStickSlope = toDouble(opts.name(), v);
         else if (key == "reuse") {
             p.run.reuse = v != "0";
             p.run.reuseOnly = v == "only";
         }
-        else if (key == "jobs") p.jobs = std::clamp(int(toDouble(key, v)), 1, 2);
-        else if (key == "snapshot-reduction") p.reduction = toDouble(key, v);
-        else if (key == "element") p.c.element = v;
-        else if (key == "contact") p.c.contact = v;
-        else if (key == "min-u") p.minU = toDouble(key, v);
-        else if (key == "bar") p.bar = toDouble(key, v);
+        else if (key == "jobs") p.jobs = std::clamp(int(toDouble(opts.name(), v)), 1, 2);
+        else if (key == "snapshot-reduction") p.reduction = toDouble(opts.name(), v);
+        else if (key == "element") {
+            if (v != "CAX4R" && v != "CAX8R") opts.fail("CAX4R or CAX8R, not '" + v + "'");
+            p.c.element = v;
+        } else if (key == "contact") p.c.contact = v;
+        else if (key == "min-u") p.minU = toDouble(opts.name(), v);
+        else if (key == "bar") p.bar = toDouble(opts.name(), v);
         else if (key == "across-material") p.acrossMaterial = v != "0";
         else if (key == "edge") {
-            if (v != "interp" && v != "track") throw std::runtime_error("--edge: interp or track, not '" + v + "'");
+            if (v != "interp" && v != "track") opts.fail("interp or track, not '" + v + "'");
             p.edge = v;
         }
         else if (setSweepOption(p.sweep, key, v)) {}
-        else if (!setCaseKey(p.c, key, toDouble(key, v)))
-            throw std::runtime_error("unknown option '" + a + "'\n" + kUsage);
+        else if (!setCaseKey(p.c, key, toDouble(opts.name(), v))) opts.unknown();
     }
     if (p.reduction <= 0) p.reduction = p.c.reductionMax;
     return p;
@@ -163,7 +206,7 @@ std::vector<FeCase> expandGrid(const FeCase &base, const std::string &grid)
 int sweep(const Parsed &p)
 {
     // --cancel only needs to know the sweep (its CSV or directory), not its cases.
-    if (p.out.empty() || (p.grid.empty() && !p.sweep.cancel)) throw std::runtime_error("sweep needs --grid and --out");
+    if (p.out.empty() || (p.grid.empty() && !p.sweep.cancel)) throw cli::UsageError("sweep needs --grid and --out", usage());
     const auto cases = expandGrid(p.c, p.grid);
     // A case leaves this process as `icacam fe run` options (Slurm tasks): they must make
     // the same case again.
@@ -183,9 +226,13 @@ int sweep(const Parsed &p)
 
 int feCommand(const std::vector<std::string> &args)
 {
-    if (args.empty() || args[0] == "-h" || args[0] == "--help") { std::cout << kUsage; return args.empty() ? 2 : 0; }
+    if (args.empty()) throw cli::UsageError("a verb is needed", usage());
+    if (args[0] == "-h" || args[0] == "--help") { std::cout << usage(); return 0; }
     const std::string sub = args[0];
+    static const std::set<std::string> kVerbs = {"deck", "run", "sweep", "report", "compare", "fit", "aspect"};
+    if (!kVerbs.count(sub)) throw cli::UsageError("unknown verb '" + sub + "'", usage());
     const Parsed p = parse(args, 1);
+    if (p.help) { std::cout << usage(); return 0; }
     if (sub == "deck") { std::cout << makeDeck(p.c); return 0; }
     if (sub == "run") {
         FeCase c = p.c;
@@ -199,10 +246,10 @@ int feCommand(const std::vector<std::string> &args)
         throw std::runtime_error("the generated tables are made by `icacam fe tables` from one FE base (data/fe/README.md)");
     if (sub == "compare") return compareCommand(p.in, p.out, p.minU, p.bar, p.edge == "track", p.acrossMaterial);
     if (sub == "report") {
-        if (p.in.empty() || p.out.empty()) throw std::runtime_error("report needs --in and --out");
+        if (p.in.empty() || p.out.empty()) throw cli::UsageError("report needs --in and --out", usage());
         return reportCommand(p.in, p.out, p.reduction);
     }
-    throw std::runtime_error("unknown fe subcommand '" + sub + "'\n" + kUsage);
+    throw cli::UsageError("unknown verb '" + sub + "'", usage());
 }
 
 } // namespace icacam::host

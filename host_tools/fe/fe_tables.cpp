@@ -5,6 +5,7 @@
 #include <iostream>
 #include <stdexcept>
 
+#include "cli_options.h"
 #include "fe_aspect.h"
 #include "fe_fit.h"
 #include "host_tools/number_text.h"
@@ -41,25 +42,22 @@ std::string repositoryName(const std::string &path)
 TablesRequest parseTablesArgs(const std::vector<std::string> &args)
 {
     TablesRequest r;
-    for (size_t i = 0; i < args.size(); ++i) {
-        const std::string &a = args[i];
-        if (a == "-h" || a == "--help") throw std::runtime_error(kUsage);
-        if (i + 1 >= args.size()) throw std::runtime_error("'" + a + "' needs a value\n" + kUsage);
-        const std::string v = args[++i];
-        if (a == "--base") {
-            if (!r.src.base.empty()) throw std::runtime_error("one --base: the tables stand on one FE base");
+    cli::OptionReader opts(args, kUsage);
+    while (opts.next()) {
+        if (opts.isHelp()) throw cli::UsageError("--help is answered by the command", kUsage);
+        else if (opts.is("--base")) {
+            const std::string v = opts.value();
+            if (!r.src.base.empty()) opts.fail("one --base: the tables stand on one FE base");
             r.src.base = repositoryName(v);
-        } else if (a == "--k-family") r.src.kFamily.push_back(repositoryName(v));
-        else if (a == "--aspect") r.src.aspect.push_back(repositoryName(v));
-        else if (a == "--out") r.outDir = v;
-        else if (a == "--reduction") {
-            size_t pos = 0;
-            try { r.reduction = std::stod(v, &pos); } catch (...) { pos = 0; }
-            if (pos != v.size() || !(r.reduction > 0 && r.reduction < 1))
-                throw std::runtime_error("--reduction: a height reduction between 0 and 1, not '" + v + "'");
-        } else throw std::runtime_error("unknown option '" + a + "'\n" + kUsage);
+        } else if (opts.is("--k-family")) r.src.kFamily.push_back(repositoryName(opts.value()));
+        else if (opts.is("--aspect")) r.src.aspect.push_back(repositoryName(opts.value()));
+        else if (opts.is("--out")) r.outDir = opts.value();
+        else if (opts.is("--reduction")) {
+            r.reduction = opts.number();
+            if (!(r.reduction > 0 && r.reduction < 1)) opts.fail("a height reduction between 0 and 1 (exclusive)");
+        } else opts.unknown();
     }
-    if (r.src.base.empty()) throw std::runtime_error("--base CSV is needed\n" + std::string(kUsage));
+    if (r.src.base.empty()) opts.missing("--base CSV");
     std::string c = "icacam fe tables --base " + r.src.base;
     for (const std::string &f : r.src.kFamily) c += " --k-family " + f;
     for (const std::string &f : r.src.aspect) c += " --aspect " + f;

@@ -8,15 +8,17 @@
 #include <iostream>
 #include <stdexcept>
 
-#include "vision/model/friction_models.h"
+#include "cli_options.h"
 #include "image_file.h"
 #include "journal_records.h"
 #include "loop_physics_report.h"
 #include "loop_plot.h"
 #include "manifest.h"
+#include "number_text.h"
 #include "record_measurer.h"
 #include "reduction_table.h"
 #include "vision/end_face_analyzer.h"
+#include "vision/model/friction_models.h"
 
 #include "vision/model/reduction_table.h"
 
@@ -31,20 +33,31 @@ using namespace icacam::vision;
 
 namespace {
 
-const char *kUsage =
-    "usage: icacam loop --manifest FILE --report DIR [--model paper] [--folds 5] [--seed S]\n"
-    "                   [--fe-sweep CSV]... [--alpha 0.01]\n"
-    "       icacam loop --journal DIR --reference CSV --report DIR [options as above]\n"
-    "Measures every record (image + mm_per_px, or r_inner_mm + r_outer_mm; with --journal an\n"
-    "icacam-fw journal folder's saved frames, joined by record id with the CSV's mu_ref and\n"
-    "recorded columns, re-measured with the current pipeline), takes the residual\n"
-    "μ_model − mu_ref, ranks every recorded column and every pipeline diagnostic by the k-fold\n"
-    "cross-validated gain of a one-candidate model of the residual, and corrects the leading\n"
-    "effect. A height reduction other than the model's 50 % is corrected physically: u is\n"
-    "carried to 50 % with du/dr from the FE sweep before μ = model(u, n). Writes ranking.csv,\n"
-    "report.md, records.csv and PNG plots to DIR (docs/loop.md).\n"
-    "       icacam loop table [--fe-sweep CSV] [--out vision/model/reduction_table.h]\n"
-    "Writes the generated table (FE du/dr and snapshot radii) the device's models read.\n";
+std::string usage()
+{
+    const loop::RankingOptions d;
+    return std::string("usage: icacam loop --manifest FILE --report DIR [--model NAME] [--folds N] [--seed S]\n"
+                       "                   [--fe-sweep CSV]... [--alpha A]\n"
+                       "       icacam loop --journal DIR --reference CSV --report DIR [options as above]\n"
+                       "  --model NAME   the friction model (default ") +
+           vision::kDefaultModel + "; known: " + cli::modelNames() +
+           ")\n"
+           "  --folds N      k of the k-fold cross-validation (default " + std::to_string(d.folds) + ")\n"
+           "  --seed S       the folds' random seed (default " + std::to_string(d.seed) + ")\n"
+           "  --alpha A      family-wise significance of a chosen effect (default " + numberText("%g", d.alpha) + ")\n"
+           "  --fe-sweep CSV the FE runs of the physical reduction correction (default the base the\n"
+           "                 models' tables came from: " + vision::reduction_table::kFeSources + ")\n"
+           "Measures every record (image + mm_per_px, or r_inner_mm + r_outer_mm; with --journal an\n"
+           "icacam-fw journal folder's saved frames, joined by record id with the CSV's mu_ref and\n"
+           "recorded columns, re-measured with the current pipeline), takes the residual\n"
+           "μ_model − mu_ref, ranks every recorded column and every pipeline diagnostic by the k-fold\n"
+           "cross-validated gain of a one-candidate model of the residual, and corrects the leading\n"
+           "effect. With a model that does not carry the reduction itself (paper, fe), a height\n"
+           "reduction other than 50 % is corrected physically: u is carried to 50 % with du/dr from\n"
+           "the FE sweep before μ = model(u, n). Writes ranking.csv, report.md, records.csv and PNG\n"
+           "plots to DIR (docs/loop.md). The generated tables the models read are made by\n"
+           "`icacam fe tables`.\n";
+}
 
 // A repository file: under the source tree this tool was built from, else relative to here.
 std::string repoFile(const std::string &name)
@@ -218,8 +231,8 @@ LoopSummary runLoopOn(const Manifest &manifest, const std::string &source, const
                       const std::string &reportDir, const std::string &modelName, const RankingOptions &opt,
                       const std::vector<std::string> &feSweeps)
 {
-    auto model = frictionModel(modelName);
-    if (!model) throw std::runtime_error("unknown model '" + modelName + "' (known: " + kKnownModels + ")");
+    const FrictionModel *model = frictionModel(modelName);
+    if (!model) throw std::runtime_error("unknown model '" + modelName + "' (known: " + cli::modelNames() + ")");
     fs::create_directories(reportDir);
 
     host::RecordMeasurer measurer(*model, SpecimenSpec{});
@@ -405,7 +418,7 @@ LoopSummary runLoopOn(const Manifest &manifest, const std::string &source, const
     }
     {
         Series before, after;
-        before.label = "paper model (before), RMS " + f4(s.rmsBefore);
+        before.label = modelName + " (before), RMS " + f4(s.rmsBefore);
         before.colour = 0xb0b0b0;
         after.colour = 0xd62728;
         for (size_t i = 0; i < usable.size(); ++i) { before.x.push_back(usable[i].muRef); before.y.push_back(usable[i].muModel); }
@@ -531,38 +544,34 @@ std::vector<std::string> splitSources(const std::string &sources)
 int loopCommand(const std::vector<std::string> &args)
 {
     if (!args.empty() && args[0] == "table")
-        return loop::loopTableCommand({args.begin() + 1, args.end()}, repoFile("data/fe/sweep.csv"));
-    std::string manifestPath, journalDir, referenceCsv, reportDir, modelName = "paper";
+        throw cli::UsageError(std::string("the generated tables (the reduction carry's du/dr among them) are made "
+                                          "by `icacam fe tables`, as: ") + vision::reduction_table::kProvenance,
+                              usage());
+    std::string manifestPath, journalDir, referenceCsv, reportDir, modelName = vision::kDefaultModel;
     std::vector<std::string> feSweeps;
     loop::RankingOptions opt;
-    for (size_t i = 0; i < args.size(); ++i) {
-        auto value = [&]() -> std::string {
-            if (i + 1 >= args.size()) throw std::runtime_error(args[i] + " needs a value");
-            return args[++i];
-        };
-        double v;
-        if (args[i] == "--manifest") manifestPath = value();
-        else if (args[i] == "--journal") journalDir = value();
-        else if (args[i] == "--reference") referenceCsv = value();
-        else if (args[i] == "--report") reportDir = value();
-        else if (args[i] == "--model") modelName = value();
-        else if (args[i] == "--fe-sweep") feSweeps.push_back(value());
-        else if (args[i] == "--folds") {
-            if (!parseNumber(value(), &v) || v < 2 || v > 1000) throw std::runtime_error("--folds: 2 to 1000");
-            opt.folds = int(v);
-        } else if (args[i] == "--seed") {
-            if (!parseNumber(value(), &v) || v < 0 || v > 4294967295.0) throw std::runtime_error("--seed: 0 to 2^32-1");
-            opt.seed = uint32_t(v);
-        } else if (args[i] == "--alpha") {
-            if (!parseNumber(value(), &v) || !(v > 0 && v < 1)) throw std::runtime_error("--alpha: in (0, 1)");
-            opt.alpha = v;
-        } else if (args[i] == "-h" || args[i] == "--help") { std::cout << kUsage; return 0; }
-        else throw std::runtime_error("unknown option '" + args[i] + "'\n" + kUsage);
+    cli::OptionReader opts(args, usage());
+    while (opts.next()) {
+        if (opts.isHelp()) { std::cout << usage(); return 0; }
+        else if (opts.is("--manifest")) manifestPath = opts.value();
+        else if (opts.is("--journal")) journalDir = opts.value();
+        else if (opts.is("--reference")) referenceCsv = opts.value();
+        else if (opts.is("--report")) reportDir = opts.value();
+        else if (opts.is("--model")) {
+            modelName = opts.value();
+            if (!frictionModel(modelName)) opts.fail("unknown model '" + modelName + "' (known: " + cli::modelNames() + ")");
+        } else if (opts.is("--fe-sweep")) feSweeps.push_back(opts.value());
+        else if (opts.is("--folds")) opt.folds = int(opts.wholeNumber(2, 1000));
+        else if (opts.is("--seed")) opt.seed = uint32_t(opts.wholeNumber(0, 4294967295L));
+        else if (opts.is("--alpha")) {
+            opt.alpha = opts.number();
+            if (!(opt.alpha > 0 && opt.alpha < 1)) opts.fail("a probability between 0 and 1 (exclusive)");
+        } else opts.unknown();
     }
     if (manifestPath.empty() == journalDir.empty() || reportDir.empty())
-        throw std::runtime_error(std::string("--report and one of --manifest or --journal are required\n") + kUsage);
+        opts.missing("--report and one of --manifest or --journal");
     if (journalDir.empty() != referenceCsv.empty())
-        throw std::runtime_error(std::string("--journal and --reference go together\n") + kUsage);
+        throw cli::UsageError("--journal and --reference go together", usage());
     // By default the FE data the product's table was generated from (its kFeSources).
     if (feSweeps.empty())
         for (const std::string &name : loop::splitSources(vision::reduction_table::kFeSources))

@@ -45,10 +45,4 @@ std::string reductionTableText(const fe::TableSources &src, const std::string &s
     return o;
 }
 
-int loopTableCommand(const std::vector<std::string> &, const std::string &)
-{
-    throw std::runtime_error("the generated tables (the reduction carry's among them) are made by `icacam fe tables` "
-                             "from one FE base (data/fe/README.md)");
-}
-
 } // namespace icacam::host::loop

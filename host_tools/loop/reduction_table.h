@@ -16,8 +16,4 @@ namespace icacam::host::loop {
 // base cannot be read or is too thin.
 std::string reductionTableText(const fe::TableSources &src, const std::string &sourceDir, std::string *error);
 
-// `icacam loop table`: the tables are made by `icacam fe tables` (one command, one base); this
-// says so and fails, for scripts that still call it.
-int loopTableCommand(const std::vector<std::string> &args, const std::string &defaultSweep);
-
 } // namespace icacam::host::loop

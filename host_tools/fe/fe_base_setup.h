@@ -1,0 +1,31 @@
+#pragma once
+// The setup of the models' FE base (data/fe/README.md; vision/model/fe_model_table.h names the
+// file): what `icacam fe` runs unless told otherwise, so a sweep without case options adds
+// cases of the base's kind and its labels match the base's rows. FeCase{} itself stays the
+// coarse CAX4R setup of the first sweeps: the labels' reference and the tests' quick cases.
+#include "fe_case.h"
+#include "fe_runner.h"
+
+namespace icacam::host::fe {
+
+inline FeCase baseSetupCase()
+{
+    FeCase c;
+    c.element = "CAX8R";  // follows the fold-over at high μ where CAX4R diverges
+    c.cornerMm = 0.05;    // the finest corner that covers the whole (n, μ) grid
+    c.elemMm = 0.5;       // far field
+    c.incMax = 0.02;
+    c.reductionMax = 0.6; // snapshots to 60 %: the reduction carry's range
+    c.stickSlope = 1e5;   // the converged stick slope (penalty study)
+    c.trackStep = 0.01;   // output frames every 1 %: the tracked contact edge
+    return c;
+}
+
+inline RunOptions baseSetupRun()
+{
+    RunOptions o;
+    o.fallbackStickSlope = 0; // a case that stops is recorded as failed, not rerun softer
+    return o;
+}
+
+} // namespace icacam::host::fe
