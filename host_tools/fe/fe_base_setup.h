@@ -1,8 +1,9 @@
 #pragma once
-// The setup of the models' FE base (data/fe/README.md; vision/model/fe_model_table.h names the
-// file): what `icacam fe` runs unless told otherwise, so a sweep without case options adds
-// cases of the base's kind and its labels match the base's rows. FeCase{} itself stays the
-// coarse CAX4R setup of the first sweeps: the labels' reference and the tests' quick cases.
+// The two setups `icacam fe` starts a case from. FeCase{} and RunOptions{} are the coarse
+// setup of the first sweeps (CAX4R, uniform 0.2 mm, to 50 %: seconds a case), the defaults
+// every committed sweep command in data/fe/ was written against. `--preset base` starts from
+// the setup of the models' FE base instead (data/fe/README.md; vision/model/fe_model_table.h
+// names the file), so a sweep with it adds cases of the base's kind under the base's labels.
 #include "fe_case.h"
 #include "fe_runner.h"
 

@@ -30,12 +30,19 @@ namespace {
 
 std::string g(double v) { return numberText("%g", v); }
 
+// A setup's case and run settings as options (the numbers as %g prints them).
+std::string settingsText(const FeCase &c, const RunOptions &run)
+{
+    return "--element " + c.element + " --corner " + g(c.cornerMm) + " --elem " + g(c.elemMm) + " --reduction " +
+           g(c.reductionMax) + " --inc-max " + g(c.incMax) + " --stick-slope " + g(c.stickSlope) +
+           " --track-step " + g(c.trackStep) + " --fallback-stick-slope " + g(run.fallbackStickSlope);
+}
+
 std::string usage()
 {
-    const FeCase c = baseSetupCase();
-    const RunOptions run = baseSetupRun();
+    const FeCase c;
+    const RunOptions run;
     const SlurmOptions slurm;
-    const FeCase coarse;
     return "usage: icacam fe <deck|run|sweep|tables|report|compare> [options]\n"
            "  deck    [case options]                                  print the CalculiX deck\n"
            "  run     [case options] [--out CSV] [--work DIR]         one case: ccx, R_i R_o R_max u force\n"
@@ -57,33 +64,31 @@ std::string usage()
            "          [--across-material 1] (K and E left out of the match: the independence checks)\n"
            "          u of the same cases on other meshes/solvers (mesh study, independent model)\n"
            "Options take their value as --name value or --name=value.\n"
-           "case options, with their defaults: the setup of the models' FE base (data/fe/README.md), so a\n"
-           "sweep without them reproduces and extends the base's rows:\n"
+           "case options, with their defaults (the coarse setup of the first sweeps: seconds a case):\n"
            "  --k " + g(c.kMpa) + " --n " + g(c.n) + " --mu " + g(c.mu) + " --e " + g(c.eMpa) + " --d0 " + g(c.d0Mm) +
            " --h0 " + g(c.h0Mm) + " --reduction " + g(c.reductionMax) + " (snapshots every 0.05 to it)\n"
-           "  --element " + c.element + " (CAX4R|CAX8R) --elem " + g(c.elemMm) + " (far-field element, mm) --corner " +
-           g(c.cornerMm) + " (end-face corner element, mm; 0: uniform)\n"
+           "  --element " + c.element + " (CAX4R|CAX8R) --elem " + g(c.elemMm) + " (element, mm) --corner " +
+           g(c.cornerMm) + " (> 0: graded to this at the end-face corner, mm)\n"
            "  --contact-slope " + g(c.contactSlope) + " --stick-slope " + g(c.stickSlope) + " (N/mm³) --inc-max " +
            g(c.incMax) + "\n"
            "  --contact " + c.contact + " (node: NODE TO SURFACE, the base; surface: SURFACE TO SURFACE)\n"
            "  --platen " + g(c.platenMm) + " (master segment, mm; 0: max(corner, elem / 2)) --fold-zone " +
            g(c.foldZoneMm) + " (mm of side kept at the corner size)\n"
            "  --track-step " + g(c.trackStep) + " (reduction between frames that track the contact edge; 0: none)\n"
+           "  --preset coarse|base (default coarse): base starts from the setup of the models' FE base\n"
+           "  (data/fe/README.md), minutes a case: " + settingsText(baseSetupCase(), baseSetupRun()) + ";\n"
+           "  options given beside it win. `icacam fe sweep --preset base --grid 'n=…;mu=…'` adds to the base.\n"
            "run options: --ccx " + run.ccx + " --timeout " + std::to_string(run.timeoutS) + " --work " + run.workDir +
            " --fallback-stick-slope " + g(run.fallbackStickSlope) +
            " (rerun a case that stops with this stick slope; 0: no rerun)\n"
            "  --reuse 0|1|only (default 0; 1: post-process the work directory's results of the same deck again;\n"
-           "  only: cases without such results are left out, never run)\n"
-           "The coarse setup of the first sweeps, seconds a case: --element " + coarse.element + " --corner " +
-           g(coarse.cornerMm) + " --elem " + g(coarse.elemMm) + " --reduction " + g(coarse.reductionMax) +
-           "\n  --inc-max " + g(coarse.incMax) + " --stick-slope " + g(coarse.stickSlope) + " --track-step " +
-           g(coarse.trackStep) + ".\n";
+           "  only: cases without such results are left out, never run)\n";
 }
 
 struct Parsed {
     bool help = false;
-    FeCase c = baseSetupCase();
-    RunOptions run = baseSetupRun();
+    FeCase c;
+    RunOptions run;
     std::vector<std::string> in;
     std::string out, grid;
     double reduction = 0.5;
@@ -129,7 +134,7 @@ bool knownKey(const std::string &key)
     static const std::set<std::string> kCommandKeys = {
         "out",   "in",      "grid",  "work", "ccx",  "timeout",         "fallback-stick-slope", "reuse",
         "jobs",  "snapshot-reduction", "element", "contact", "min-u", "bar", "across-material", "edge",
-        "executor", "resubmit-failed", "cancel", "slurm-config"};
+        "executor", "resubmit-failed", "cancel", "slurm-config", "preset"};
     FeCase scratch;
     return kCommandKeys.count(key) || isSlurmKey(key) || setCaseKey(scratch, key, 0);
 }
@@ -138,6 +143,15 @@ bool knownKey(const std::string &key)
 Parsed parse(const std::vector<std::string> &args, size_t from)
 {
     Parsed p;
+    // --preset first, wherever it stands: the options given beside it win.
+    for (size_t i = from; i < args.size(); ++i) {
+        std::string preset;
+        if (args[i] == "--preset" && i + 1 < args.size()) preset = args[i + 1];
+        else if (args[i].rfind("--preset=", 0) == 0) preset = args[i].substr(9);
+        else continue;
+        if (preset == "base") p.c = baseSetupCase(), p.run = baseSetupRun();
+        else if (preset != "coarse") throw cli::UsageError("--preset: coarse or base, not '" + preset + "'", usage());
+    }
     cli::OptionReader opts(args, usage(), from);
     while (opts.next()) {
         if (opts.isHelp()) { p.help = true; return p; }
@@ -145,7 +159,8 @@ Parsed parse(const std::vector<std::string> &args, size_t from)
         const std::string key = opts.name().substr(2);
         if (!knownKey(key)) opts.unknown();
         const std::string v = opts.value();
-        if (key == "out") p.out = v;
+        if (key == "preset") {} // applied above
+        else if (key == "out") p.out = v;
         else if (key == "in") p.in.push_back(v);
         else if (key == "grid") p.grid = v;
         else if (key == "work") p.run.workDir = v;
