@@ -177,7 +177,10 @@ int calibrateCommand(const std::vector<std::string> &args)
     double thickness = 0, maxBlur = 0, maxRms = 0.5;
     bool freeK3 = false;
     cli::OptionReader opts(args, kUsage);
-    auto number = [&](double *v) { *v = opts.number(0, 1e9); };
+    auto number = [&](double *v) {
+        *v = opts.number();
+        if (*v < 0) opts.fail("a non-negative number");
+    };
     while (opts.next()) {
         if (opts.isHelp()) { std::cout << kUsage; return 0; }
         else if (opts.is("--images")) dir = opts.value();
@@ -191,7 +194,7 @@ int calibrateCommand(const std::vector<std::string> &args)
         else opts.unknown();
     }
     if (dir.empty() || boardSpec.empty() || flat.empty() || outPath.empty())
-        opts.missing("each of --images, --board, --flat and --out");
+        opts.missing("--images, --board, --flat and --out (all are needed)");
     const Board board = parseBoard(boardSpec);
     if (!fs::is_directory(dir)) throw std::runtime_error("--images: '" + dir + "' is not a folder");
     fs::path flatPath = flat;

@@ -87,7 +87,7 @@ void OptionReader::unknown() const
 
 void OptionReader::fail(const std::string &why) const { throw UsageError(name_ + ": " + why, usage_); }
 
-void OptionReader::missing(const std::string &what) const { throw UsageError(what + " is required", usage_); }
+void OptionReader::missing(const std::string &what) const { throw UsageError("missing: " + what, usage_); }
 
 bool parseFinite(const std::string &text, double *out)
 {

@@ -48,7 +48,7 @@ public:
 
     [[noreturn]] void unknown() const;        // "unknown option '--x'" (or argument)
     [[noreturn]] void fail(const std::string &why) const; // "--x: why"
-    [[noreturn]] void missing(const std::string &what) const; // "what is required"
+    [[noreturn]] void missing(const std::string &what) const; // "missing: what"
     const std::string &usage() const { return usage_; }
 
 private:

@@ -56,7 +56,7 @@ int scoreCommand(const std::vector<std::string> &args)
             else opts.fail("auto, keep or drop, not '" + v + "'");
         } else opts.unknown();
     }
-    if (resultsPath.empty() || truthPath.empty()) opts.missing("each of --results and --truth");
+    if (resultsPath.empty() || truthPath.empty()) opts.missing("--results and --truth (both are needed)");
     Manifest results, truth;
     std::string err;
     if (!readManifest(resultsPath, &results, &err)) throw std::runtime_error("--results: " + err);

@@ -26,6 +26,7 @@ for c in measure synth score calibrate loop ctl "fe" "fe deck" "fe run" "fe swee
     expect 2 "'--no-such-option'" "$icacam" $c --no-such-option
 done
 expect 2 "--manifest needs a value" "$icacam" measure --manifest
+expect 2 "missing: --manifest" "$icacam" measure --out x.csv
 expect 2 "--count: a whole number" "$icacam" synth --out "$work/s" --count=many
 expect 2 "--model: unknown model 'nope'" "$icacam" loop --manifest m.csv --report r --model nope
 expect 2 "fe tables" "$icacam" loop table
