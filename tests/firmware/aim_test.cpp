@@ -19,7 +19,7 @@
 #include "hal/file/file_trigger.h"
 #include "hal/file/folder_storage.h"
 #include "hal/file/image_decoder.h"
-#include "tests/firmware/recording_serial.h"
+#include "tests/support/recording_serial.h"
 #include "vision/end_face_analyzer.h"
 #include "vision/model/paper_model.h"
 

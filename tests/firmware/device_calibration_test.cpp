@@ -14,7 +14,7 @@
 #include "firmware/device.h"
 #include "firmware/device_calibration.h"
 #include "firmware/json_line.h"
-#include "tests/firmware/recording_serial.h"
+#include "tests/support/recording_serial.h"
 #include "hal/file/clocks.h"
 #include "hal/file/file_camera.h"
 #include "hal/file/file_led.h"

@@ -105,7 +105,7 @@ def main():
     fw, screen_tool, shared = sys.argv[1:4]
     devset = os.path.join(shared, "devset")
     if not os.path.exists(os.path.join(devset, "manifest.csv")):
-        print("devset absent: skipped")
+        print(f"no devset at {devset}: skipped")
         sys.exit(77)
     rows = list(csv.DictReader(open(os.path.join(devset, "manifest.csv"))))
     truth = {r["id"]: r for r in csv.DictReader(open(os.path.join(devset, "truth.csv")))}

@@ -18,7 +18,7 @@
 #include "hal/file/file_trigger.h"
 #include "hal/file/folder_storage.h"
 #include "hal/fresh_frame.h"
-#include "tests/firmware/recording_serial.h"
+#include "tests/support/recording_serial.h"
 #include "vision/model/paper_model.h"
 
 using namespace icacam;

@@ -18,7 +18,7 @@
 #include "manifest.h"
 #include "record_measurer.h"
 #include "result_writer.h"
-#include "tests/firmware/recording_serial.h"
+#include "tests/support/recording_serial.h"
 #include "vision/reading_record.h"
 
 using namespace icacam;

@@ -21,7 +21,7 @@
 
 #include "hal/file/clocks.h"
 #include "hal/gpiod/gpiod_lines.h"
-#include "tests/hal/umockdev_ioctl.h"
+#include "tests/support/umockdev_mock.h"
 
 namespace {
 
@@ -105,20 +105,9 @@ protected:
     void SetUp() override
     {
         bed_ = umockdev_testbed_new();
+        std::string why;
+        ASSERT_TRUE(test::addGpioChip0(bed_, &why)) << why;
         GError *err = nullptr;
-        const char *dev = "P: /devices/platform/gpio-mock/gpiochip0\n"
-                          "N: gpiochip0\n"
-                          "E: SUBSYSTEM=gpio\n"
-                          "E: DEVNAME=/dev/gpiochip0\n"
-                          "A: dev=254:0\\n\n";
-        ASSERT_TRUE(umockdev_testbed_add_from_string(bed_, dev, &err)) << (err ? err->message : "");
-        // libgpiod 1.6 checks /sys/bus/gpio/devices/<chip>/dev against the node's numbers.
-        gchar *sys = umockdev_testbed_get_sys_dir(bed_);
-        const std::string bus = std::string(sys) + "/bus/gpio/devices";
-        g_mkdir_with_parents(bus.c_str(), 0755);
-        (void)symlink((std::string(sys) + "/devices/platform/gpio-mock/gpiochip0").c_str(),
-                      (bus + "/gpiochip0").c_str());
-        g_free(sys);
         handler_ = umockdev_ioctl_base_new();
         g_signal_connect(handler_, "handle-ioctl", G_CALLBACK(onIoctl), &chip_);
         ASSERT_TRUE(umockdev_testbed_attach_ioctl(bed_, "/dev/gpiochip0", handler_, &err))
@@ -257,25 +246,4 @@ TEST_F(GpiodMock, ActiveLowLedInvertsTheLevel)
 
 } // namespace
 
-// umockdev_in_mock_environment() answers false here even under umockdev-wrapper (0.17 on
-// bookworm): look for the preload library among this process's mappings instead.
-bool preloadLoaded()
-{
-    std::FILE *f = std::fopen("/proc/self/maps", "r");
-    if (!f) return false;
-    char line[512];
-    bool found = false;
-    while (!found && std::fgets(line, sizeof line, f)) found = std::strstr(line, "libumockdev-preload") != nullptr;
-    std::fclose(f);
-    return found;
-}
-
-int main(int argc, char **argv)
-{
-    if (!preloadLoaded()) {
-        std::fprintf(stderr, "gpiod_umockdev_test: not under umockdev (LD_PRELOAD=libumockdev-preload.so.0): skipped\n");
-        return 77;
-    }
-    ::testing::InitGoogleTest(&argc, argv);
-    return RUN_ALL_TESTS();
-}
+int main(int argc, char **argv) { return icacam::test::runUnderUmockdev(argc, argv, "gpiod_umockdev_test"); }

@@ -30,8 +30,8 @@
 #include "hal/file/folder_storage.h"
 #include "vision/model/paper_model.h"
 #include "hal/v4l2/v4l2_camera.h"
-#include "tests/firmware/recording_serial.h"
-#include "tests/hal/umockdev_ioctl.h"
+#include "tests/support/recording_serial.h"
+#include "tests/support/umockdev_mock.h"
 
 namespace {
 
@@ -655,25 +655,6 @@ TEST_F(V4l2Mock, FirmwareStartsWithoutItsCameraAndMeasuresOnceTheNodeAppears)
     std::filesystem::remove_all(dir);
 }
 
-bool preloadLoaded()
-{
-    std::FILE *f = std::fopen("/proc/self/maps", "r");
-    if (!f) return false;
-    char line[512];
-    bool found = false;
-    while (!found && std::fgets(line, sizeof line, f)) found = std::strstr(line, "libumockdev-preload") != nullptr;
-    std::fclose(f);
-    return found;
-}
-
 } // namespace
 
-int main(int argc, char **argv)
-{
-    if (!preloadLoaded()) {
-        std::fprintf(stderr, "v4l2_umockdev_test: not under umockdev (LD_PRELOAD=libumockdev-preload.so.0): skipped\n");
-        return 77;
-    }
-    ::testing::InitGoogleTest(&argc, argv);
-    return RUN_ALL_TESTS();
-}
+int main(int argc, char **argv) { return icacam::test::runUnderUmockdev(argc, argv, "v4l2_umockdev_test"); }

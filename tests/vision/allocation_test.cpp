@@ -1,33 +1,10 @@
 // Zero heap allocations per measurement after configure(): operator new is counted.
 #include <gtest/gtest.h>
 
-#include <atomic>
-#include <cstdlib>
-#include <new>
-
+#include "tests/support/allocation_counter.h"
 #include "end_face_renderer.h"
 #include "vision/end_face_analyzer.h"
 #include "vision/model/paper_model.h"
-
-static std::atomic<long> gAllocations{0};
-
-void *operator new(std::size_t n)
-{
-    gAllocations.fetch_add(1, std::memory_order_relaxed);
-    if (void *p = std::malloc(n ? n : 1)) return p;
-    throw std::bad_alloc();
-}
-void *operator new[](std::size_t n) { return operator new(n); }
-void *operator new(std::size_t n, const std::nothrow_t &) noexcept
-{
-    gAllocations.fetch_add(1, std::memory_order_relaxed);
-    return std::malloc(n ? n : 1);
-}
-void *operator new[](std::size_t n, const std::nothrow_t &t) noexcept { return operator new(n, t); }
-void operator delete(void *p) noexcept { std::free(p); }
-void operator delete[](void *p) noexcept { std::free(p); }
-void operator delete(void *p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void *p, std::size_t) noexcept { std::free(p); }
 
 using namespace icacam;
 
@@ -42,15 +19,15 @@ TEST(Allocation, NoneDuringMeasurement)
     vision::PaperModel model;
     const vision::LumaView v{img.data, img.cols, img.rows, int(img.step[0]), 1};
     const vision::SpecimenSpec spec{0.25, 500, 10, 15, s.mmPerPx};
-    const long before = gAllocations.load();
+    const long before = icacam::test::allocationCount();
     vision::Measurement m;
     for (int i = 0; i < 3; ++i) m = analyzer.measure(v, spec, model);
-    const long after = gAllocations.load();
+    const long after = icacam::test::allocationCount();
     ASSERT_TRUE(m.hasValue()) << vision::errorMessage(m.error);
     EXPECT_EQ(after - before, 0) << "heap allocations during measure()";
     // An error path allocates nothing either.
     const vision::LumaView blank{img.data, 16, 16, int(img.step[0]), 1};
-    const long b2 = gAllocations.load();
+    const long b2 = icacam::test::allocationCount();
     m = analyzer.measure(blank, spec, model);
-    EXPECT_EQ(gAllocations.load() - b2, 0);
+    EXPECT_EQ(icacam::test::allocationCount() - b2, 0);
 }

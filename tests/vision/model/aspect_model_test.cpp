@@ -9,7 +9,7 @@
 
 #include "fe_aspect.h"
 #include "fe_rows.h"
-#include "../table_inputs.h"
+#include "tests/support/table_inputs.h"
 #include "vision/model/aspect_corrected_model.h"
 #include "vision/model/aspect_table.h"
 #include "vision/model/fe_model.h"

@@ -10,7 +10,7 @@
 #include <map>
 
 #include "fe_rows.h"
-#include "../table_inputs.h"
+#include "tests/support/table_inputs.h"
 #include "vision/model/fe_model.h"
 #include "vision/model/fe_model_table.h"
 

@@ -1,5 +1,5 @@
 // The .frd/.dat readers and the radii on a small committed CalculiX result
-// (tests/fe/data/sample_h1.*: `icacam fe deck --elem 1 --mu 0.3` run by ccx 2.20).
+// (tests/host_tools/fe/data/sample_h1.*: `icacam fe deck --elem 1 --mu 0.3` run by ccx 2.20).
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -18,7 +18,7 @@ std::string slurp(const std::string &p)
     s << f.rdbuf();
     return s.str();
 }
-const std::string kDir = std::string(ICACAM_SOURCE_DIR) + "/tests/fe/data/";
+const std::string kDir = std::string(ICACAM_SOURCE_DIR) + "/tests/host_tools/fe/data/";
 } // namespace
 
 TEST(FeResults, FrdSample)

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The per-condition coverage table of docs/uncertainty.md: renders COUNT records of every
 # condition (seeded), measures them with `icacam measure` (default model) and scores them.
-#   tests/host/coverage_table.sh [BUILD_DIR] [OUT_DIR] [COUNT] [SEED]
+#   tests/host_tools/coverage_table.sh [BUILD_DIR] [OUT_DIR] [COUNT] [SEED]
 set -euo pipefail
 build=${1:-build}
 out=${2:-/tmp/icacam-coverage}

@@ -17,7 +17,7 @@
 #include "loop_command.h"
 #include "vision/model/reduction_table.h"
 #include "vision/model/paper_model.h"
-#include "../table_inputs.h"
+#include "tests/support/table_inputs.h"
 
 namespace fs = std::filesystem;
 using namespace icacam::host::loop;

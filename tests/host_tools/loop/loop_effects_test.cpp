@@ -19,7 +19,7 @@
 #include "manifest.h"
 #include "synth_loop_set.h"
 #include "vision/model/reduction_table.h"
-#include "../table_inputs.h"
+#include "tests/support/table_inputs.h"
 
 namespace fs = std::filesystem;
 using namespace icacam::host;

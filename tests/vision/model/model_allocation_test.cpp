@@ -2,45 +2,22 @@
 // consistency check allocate nothing (operator new is counted).
 #include <gtest/gtest.h>
 
-#include <atomic>
-#include <cstdlib>
-#include <new>
-
+#include "tests/support/allocation_counter.h"
 #include "vision/model/fe_model.h"
 #include "vision/model/friction_models.h"
 #include "vision/model/radii_consistency.h"
-
-static std::atomic<long> gAllocations{0};
-
-void *operator new(std::size_t n)
-{
-    gAllocations.fetch_add(1, std::memory_order_relaxed);
-    if (void *p = std::malloc(n ? n : 1)) return p;
-    throw std::bad_alloc();
-}
-void *operator new[](std::size_t n) { return operator new(n); }
-void *operator new(std::size_t n, const std::nothrow_t &) noexcept
-{
-    gAllocations.fetch_add(1, std::memory_order_relaxed);
-    return std::malloc(n ? n : 1);
-}
-void *operator new[](std::size_t n, const std::nothrow_t &t) noexcept { return operator new(n, t); }
-void operator delete(void *p) noexcept { std::free(p); }
-void operator delete[](void *p) noexcept { std::free(p); }
-void operator delete(void *p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void *p, std::size_t) noexcept { std::free(p); }
 
 using namespace icacam::vision;
 
 TEST(ModelAllocation, NoneToChooseOrEvaluateAnyModel)
 {
     // The counter must see an allocation when there is one, or the zero below proves nothing.
-    const long before = gAllocations.load();
+    const long before = icacam::test::allocationCount();
     ::operator delete(::operator new(8)); // a direct call: not elided as a new-expression may be
-    ASSERT_EQ(gAllocations.load(), before + 1);
+    ASSERT_EQ(icacam::test::allocationCount(), before + 1);
 
     double sum = 0;
-    const long start = gAllocations.load();
+    const long start = icacam::test::allocationCount();
     for (std::string_view name : kModelNames) {
         const FrictionModel *m = frictionModel(name);
         ASSERT_NE(m, nullptr);
@@ -69,6 +46,6 @@ TEST(ModelAllocation, NoneToChooseOrEvaluateAnyModel)
         const RadiiCheck c = checkRadii(7.3, 0.3, 0.12, 10, r > 0 ? r : 0.5, 14);
         sum += c.z + c.reductionEst;
     }
-    EXPECT_EQ(gAllocations.load() - start, 0);
+    EXPECT_EQ(icacam::test::allocationCount() - start, 0);
     EXPECT_TRUE(sum == sum); // used, so the loop is not optimised away
 }

@@ -17,7 +17,7 @@
 #include "manifest.h"
 #include "measure_command.h"
 #include "synth_loop_set.h"
-#include "../table_inputs.h"
+#include "tests/support/table_inputs.h"
 
 namespace fs = std::filesystem;
 using namespace icacam::host;

@@ -23,10 +23,10 @@
 #include "loop_command.h"
 #include "manifest.h"
 #include "synth_loop_set.h"
-#include "tests/firmware/recording_serial.h"
+#include "tests/support/recording_serial.h"
 #include "vision/model/paper_model.h"
 #include "vision/model/reduction_table.h"
-#include "../table_inputs.h"
+#include "tests/support/table_inputs.h"
 
 namespace fs = std::filesystem;
 using namespace icacam;
