@@ -1,0 +1,196 @@
+// The ring search on drawn end faces: from a centre near the specimen's axis it must find
+// the contact edge, the original face edge and the silhouette where they were drawn, follow
+// a contact edge that is not a circle, and name what it could not find.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "tests/vision/synthetic_end_face.h"
+#include "vision/end_face_analyzer.h"
+#include "vision/radial_profile.h"
+#include "vision/ring_search.h"
+
+using namespace icacam;
+using namespace icacam::vision;
+
+namespace {
+
+// The working memory EndFaceAnalyzer carves for a search, and the coarse rows its centre
+// refinement leaves behind (64 rays at the coarse step from 0.88 R0: the mean profile the
+// search names its edges from).
+struct Search {
+    std::vector<uint16_t> coarse = std::vector<uint16_t>(size_t(EndFaceAnalyzer::kCoarseRays) * EndFaceAnalyzer::kMaxCoarseSamples);
+    std::vector<uint16_t> fine = std::vector<uint16_t>(size_t(EndFaceAnalyzer::kFineRays) * EndFaceAnalyzer::kMaxFineSamples);
+    std::vector<int16_t> deriv = std::vector<int16_t>(size_t(EndFaceAnalyzer::kFineRays) * EndFaceAnalyzer::kMaxFineSamples);
+    std::vector<int32_t> meanProfile = std::vector<int32_t>(EndFaceAnalyzer::kMaxCoarseSamples);
+    std::vector<int32_t> meanDeriv = std::vector<int32_t>(EndFaceAnalyzer::kMaxCoarseSamples);
+    std::vector<EdgeSample> innerPts = std::vector<EdgeSample>(EndFaceAnalyzer::kFineRays);
+    std::vector<EdgeSample> outerPts = std::vector<EdgeSample>(EndFaceAnalyzer::kFineRays);
+    Measurement m;
+
+    ErrorCode run(const LumaView &v, double r0, double cx, double cy)
+    {
+        const double rA = EndFaceAnalyzer::kCoarseStart * r0, rB = EndFaceAnalyzer::kCoarseEnd * r0;
+        const double step = EndFaceAnalyzer::coarseStep(r0);
+        const int count = std::min(EndFaceAnalyzer::kMaxCoarseSamples, int((rB - rA) / step));
+        for (int i = 0; i < EndFaceAnalyzer::kCoarseRays; ++i) {
+            RaySpec ray{Q16_16::fromDouble(cx), Q16_16::fromDouble(cy), {}, {}, Q16_16::fromDouble(rA),
+                        Q16_16::fromDouble(step)};
+            rayDirection(i, EndFaceAnalyzer::kCoarseRays, &ray.cosT, &ray.sinT);
+            sampleRay(v, ray, count, coarse.data() + size_t(i) * EndFaceAnalyzer::kMaxCoarseSamples);
+        }
+        RingSearch s{&v,           r0,          cx,
+                     cy,           coarse.data(), fine.data(),
+                     deriv.data(), meanProfile.data(), meanDeriv.data(),
+                     innerPts.data(), outerPts.data()};
+        m = Measurement{};
+        return s.run(&m);
+    }
+};
+
+// Bars on a clean picture blurred by σ = 1 px: the fine rays locate each edge to a small
+// fraction of a pixel and 256 of them average what is left (on these pictures the radii come
+// within 0.02 px and the centres within 0.005 px); the silhouette is read on the coarse rays'
+// samples, without interpolation between them, so to within one coarse step (2 px here).
+constexpr double kEdgeTolPx = 0.05;
+constexpr double kCentreTolPx = 0.02;
+
+} // namespace
+
+TEST(RingSearch, FindsTheDrawnBoundariesAboutTheDrawnCentre)
+{
+    const test::SyntheticEndFace face;
+    const auto px = face.draw();
+    Search s;
+    const ErrorCode e = s.run(face.view(px), face.r0, face.cx, face.cy);
+    ASSERT_EQ(e, ErrorCode::None) << errorName(e);
+    EXPECT_NEAR(s.m.outer.rEqPx, face.rOuter, kEdgeTolPx);
+    EXPECT_NEAR(s.m.inner.rEqPx, face.rInner, kEdgeTolPx);
+    EXPECT_NEAR(s.m.rMaxPx, face.rMax, EndFaceAnalyzer::coarseStep(face.r0));
+    EXPECT_GT(s.m.silhouetteCoverage, 0.9);
+    for (const BoundaryFit *f : {&s.m.outer, &s.m.inner}) {
+        EXPECT_GT(f->coverage, 0.95);
+        EXPECT_LT(f->scatterPx, 0.2);
+        EXPECT_NEAR(f->centreX, face.cx, kCentreTolPx);
+        EXPECT_NEAR(f->centreY, face.cy, kCentreTolPx);
+    }
+    // Contrast across each edge, signed as it is crossed going outwards: the face (150) rises
+    // to the ICA (170), the ICA falls to the barrel (30). The blur the contact edge shows is
+    // the one it was drawn with.
+    EXPECT_NEAR(s.m.inner.contrast, face.ica - face.face, 2);
+    EXPECT_NEAR(s.m.outer.contrast, face.barrel - face.ica, 3);
+    EXPECT_NEAR(s.m.edgeWidthPx, face.blurSigma, 0.15);
+    EXPECT_EQ(s.m.flags & kFlagSpecimenClipped, 0u);
+    EXPECT_EQ(s.m.saturatedFraction, 0);
+    // On a clean picture every ray's point is accepted, and each lies on its drawn circle.
+    ASSERT_EQ(s.m.rayCount, EndFaceAnalyzer::kFineRays);
+    int valid = 0;
+    for (int i = 0; i < s.m.rayCount; ++i) {
+        for (const auto &[pts, r] : {std::pair{s.m.innerPoints, face.rInner}, std::pair{s.m.outerPoints, face.rOuter}}) {
+            if (!pts[i].valid) continue;
+            ++valid;
+            EXPECT_NEAR(std::hypot(pts[i].x.toDouble() - face.cx, pts[i].y.toDouble() - face.cy), r, 0.5) << "ray " << i;
+        }
+    }
+    EXPECT_EQ(valid, 2 * EndFaceAnalyzer::kFineRays);
+}
+
+TEST(RingSearch, AnOffCentreStartIsAbsorbedByTheFit)
+{
+    // The centre refinement can leave the search a few pixels off the axis: the boundaries
+    // are still found, with their own centre where the specimen's is.
+    const test::SyntheticEndFace face;
+    const auto px = face.draw();
+    Search s;
+    ASSERT_EQ(s.run(face.view(px), face.r0, face.cx + 2.5, face.cy - 1.5), ErrorCode::None);
+    EXPECT_NEAR(s.m.outer.rEqPx, face.rOuter, kEdgeTolPx);
+    EXPECT_NEAR(s.m.inner.rEqPx, face.rInner, kEdgeTolPx);
+    for (const BoundaryFit *f : {&s.m.outer, &s.m.inner}) {
+        EXPECT_NEAR(f->centreX, face.cx, kCentreTolPx);
+        EXPECT_NEAR(f->centreY, face.cy, kCentreTolPx);
+    }
+}
+
+TEST(RingSearch, FollowsAContactEdgeThatIsNotACircle)
+{
+    // An oval contact edge (±1.5 % second harmonic): the fitted curve follows it ray by ray and
+    // its equivalent radius is the oval's, not the circle's.
+    test::SyntheticEndFace face;
+    face.outerC2 = 0.015;
+    face.outerPhase = 0.4;
+    const auto px = face.draw();
+    Search s;
+    ASSERT_EQ(s.run(face.view(px), face.r0, face.cx, face.cy), ErrorCode::None);
+    EXPECT_NEAR(s.m.outer.rEqPx, face.rOuter * std::sqrt(1 + 0.5 * face.outerC2 * face.outerC2), kEdgeTolPx);
+    EXPECT_NEAR(s.m.inner.rEqPx, face.rInner, kEdgeTolPx);
+    double worst = 0;
+    for (int k = 0; k < 36; ++k) {
+        const double t = 2 * std::numbers::pi * k / 36;
+        worst = std::max(worst, std::fabs(s.m.outer.radiusAt(t) - face.outerAt(t)));
+    }
+    EXPECT_LT(worst, 0.05) << "the fitted contact edge strays from the drawn oval";
+    // 1 − b/a of r = R (1 + c cos 2θ): (2c) / (1 + c).
+    EXPECT_NEAR(s.m.outer.ellipticity, 2 * face.outerC2 / (1 + face.outerC2), 0.001);
+}
+
+TEST(RingSearch, FindsTheRingWhereItIsDarkerThanTheFace)
+{
+    // The other polarity (a dull ICA on a bright face): both edges fall going outwards.
+    test::SyntheticEndFace face;
+    face.face = 190;
+    face.ica = 120;
+    const auto px = face.draw();
+    Search s;
+    ASSERT_EQ(s.run(face.view(px), face.r0, face.cx, face.cy), ErrorCode::None);
+    EXPECT_NEAR(s.m.outer.rEqPx, face.rOuter, kEdgeTolPx);
+    EXPECT_NEAR(s.m.inner.rEqPx, face.rInner, kEdgeTolPx);
+    EXPECT_NEAR(s.m.inner.contrast, face.ica - face.face, 2);
+}
+
+TEST(RingSearch, AnEmptyFrameHasNoContactEdge)
+{
+    test::SyntheticEndFace face;
+    face.face = face.ica = face.barrel = face.background = 90;
+    const auto px = face.draw();
+    Search s;
+    EXPECT_EQ(s.run(face.view(px), face.r0, face.cx, face.cy), ErrorCode::OuterEdgeNotFound);
+}
+
+TEST(RingSearch, APlainDiscHasNoOriginalFaceEdge)
+{
+    // A face that runs into the barrel without a ring: the contact edge is there, the edge
+    // inside it is not, and the search says which one it missed.
+    test::SyntheticEndFace face;
+    face.face = face.ica;
+    const auto px = face.draw();
+    Search s;
+    EXPECT_EQ(s.run(face.view(px), face.r0, face.cx, face.cy), ErrorCode::InnerEdgeNotFound);
+}
+
+TEST(RingSearch, AClippedFaceIsSaturatedNotARing)
+{
+    // Face and ring both at full scale: the edge between them is gone, and the reason is the
+    // exposure, which the search names instead of a missing edge.
+    test::SyntheticEndFace face;
+    face.face = face.ica = 255;
+    const auto px = face.draw();
+    Search s;
+    EXPECT_EQ(s.run(face.view(px), face.r0, face.cx, face.cy), ErrorCode::Saturated);
+    EXPECT_GT(s.m.saturatedFraction, 0.1);
+}
+
+TEST(RingSearch, ASpecimenRunningOffTheFrameIsFlagged)
+{
+    // The silhouette crosses the frame's left edge: rays leaving the frame are marked, the
+    // ring is still found inside it, and the measurement says the specimen was clipped.
+    test::SyntheticEndFace face;
+    face.cx = face.rOuter + 6.3;
+    const auto px = face.draw();
+    Search s;
+    ASSERT_EQ(s.run(face.view(px), face.r0, face.cx, face.cy), ErrorCode::None);
+    EXPECT_NE(s.m.flags & kFlagSpecimenClipped, 0u);
+    EXPECT_NEAR(s.m.outer.rEqPx, face.rOuter, kEdgeTolPx);
+    EXPECT_NEAR(s.m.inner.rEqPx, face.rInner, kEdgeTolPx);
+}
