@@ -26,7 +26,7 @@ const char *kUsage =
     "  reduction_table.h  du/dr at 50 % from the base's snapshots (the reduction carry; `icacam loop`'s FE data)\n"
     "  aspect_table.h     u(H0/D0)/u(1.5) and R_max(H0/D0)/R_max(1.5) within the --aspect runs (other H0\n"
     "                     and their 1.5 reference of the same family)\n"
-    "Each header names this command and its input files; tests/model check them against the CSVs.\n";
+    "Each header names this command and its input files; tests/vision/model check them against the CSVs.\n";
 
 // A file as the repository names it: relative to the working directory where it lies under it.
 std::string repositoryName(const std::string &path)
