@@ -1,7 +1,8 @@
 #pragma once
 // Synthetic photographs through a known camera: calibration boards (chessboards) in any
 // pose, and an end face (EndFaceScene, rendered flat) seen through a tilted, distorting
-// lens. Ground truth for `icacam calibrate` and for the calibrated measurement.
+// lens. Ground truth for `icacam calibrate` and for the calibrated measurement. The
+// specimen as a solid body (barrel and occlusion) is specimen_body_renderer.h.
 #include <cstdint>
 #include <vector>
 
@@ -99,14 +100,6 @@ cv::Point2d projectFromPlane(const CameraModel &cam, double xMm, double yMm, dou
 // The mean scale there (mm per pixel, the square root of the area ratio, lens included):
 // the one number a lab would declare for an object lying there.
 double planeScaleAtPoint(const CameraModel &cam, double xMm, double yMm, double heightMm);
-
-// The end face of `scene`, as BoardPhotoRenderer::endFace draws it (top in the plane at
-// heightMm, the silhouette at half that height), through any camera without building the
-// per-pixel ray table: the pixel-to-plane maps are computed on an 8 px grid and interpolated
-// (smooth maps: under 0.01 px for the lenses rendered here), so a new camera per scene stays
-// cheap. The scene's illumination, blur and noise are applied in the camera's frame.
-cv::Mat renderEndFaceThrough(const CameraModel &cam, const EndFaceScene &scene, double xMm, double yMm,
-                             double heightMm);
 
 // A set of board poses for calibration: tilts up to ±25° in several directions at
 // distances around the fixture's (0.84–1.06 × the camera's distance to the fixture, its

@@ -27,6 +27,11 @@ double smoothStep(double x) { return std::clamp(x + 0.5, 0.0, 1.0); } // 1 px li
 double EndFaceScene::rInnerEqMm() const { return rInnerMm * eqFactor(*this, 0); }
 double EndFaceScene::rOuterEqMm() const { return rOuterMm * eqFactor(*this, 1); }
 
+double drawnBoundaryMm(const EndFaceScene &s, int b, double theta)
+{
+    return (b == 0 ? s.rInnerMm : s.rOuterMm) * wobbleAt(s, b, theta) + s.edgeOffsetMm[b];
+}
+
 EndFaceScene nominalScene(double uMm)
 {
     EndFaceScene s;

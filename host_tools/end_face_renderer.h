@@ -41,6 +41,10 @@ struct EndFaceScene {
     double rOuterEqMm() const;
 };
 
+// Where boundary b (0 inner, 1 outer) is drawn at angle theta about the centre (mm): its
+// nominal radius with the wobble, moved by the visible edge's offset.
+double drawnBoundaryMm(const EndFaceScene &s, int b, double theta);
+
 // A clean scene of the paper's geometry at 50 % reduction (D0 10 mm): contact edge 6.2 mm,
 // ICA width u, silhouette from volume constancy, mild blur and noise. Tests and benchmarks
 // start from it and add what they exercise.

@@ -16,6 +16,7 @@
 #include "calibration/calibration_file.h"
 #include "calibration_renderer.h"
 #include "end_face_renderer.h"
+#include "specimen_body_renderer.h"
 #include "synth_command.h"
 #include "vision/model/paper_model.h"
 #include "vision/plane_calibration.h"
@@ -247,7 +248,7 @@ Record renderRecord(SynthCondition cond, Rng &rng, bool hard, const CalibratedCa
         s.mmPerPx = rec.trueMmPerPx;
         rec.centrePx = projectFromPlane(cam, at.x, at.y, faceHeight);
         rec.camera = cam;
-        img = renderEndFaceThrough(cam, s, at.x, at.y, faceHeight);
+        img = renderSpecimenBody(cam, s, at.x, at.y, faceHeight);
         break;
     }
     }

@@ -205,7 +205,7 @@ void RingSearch::sampleWindow(const double *start, double step, int count, int b
     m->saturatedFraction = samplesInside_ ? double(samplesSaturated_) / samplesInside_ : 0;
 }
 
-bool RingSearch::locateOnRays(int sign, const double *loPx, const double *hiPx, int32_t minStrength,
+bool RingSearch::locateOnRays(int sign, int fallbackSign, const double *loPx, const double *hiPx, int32_t minStrength,
                               EdgeSample *pts, bool interior, double reachPx, BoundaryFit *fit,
                               double *curveOut, double *contrastOut)
 {
@@ -233,7 +233,9 @@ bool RingSearch::locateOnRays(int sign, const double *loPx, const double *hiPx, 
         const int lo = int(std::floor((loPx[i] - fineStart_[i]) / fineStep_));
         const int hi = int(std::ceil((hiPx[i] - fineStart_[i]) / fineStep_));
         const int16_t *d = deriv + size_t(i) * kMaxFine;
-        const EdgePeak p = strongestEdge(d, fineCount_, lo, hi, sign, interior);
+        EdgePeak p = strongestEdge(d, fineCount_, lo, hi, sign, interior);
+        if (fallbackSign && !(p.found && p.value >= minStrength))
+            p = strongestEdge(d, fineCount_, lo, hi, fallbackSign, interior);
         valid[i] = p.found && p.value >= minStrength;
         radius[i] = fineStart_[i] + p.position.toDouble() * fineStep_;
         pts[i] = {Q16_16::fromDouble(cx + radius[i] * rayCos_[i]),
@@ -257,9 +259,100 @@ bool RingSearch::locateOnRays(int sign, const double *loPx, const double *hiPx, 
     return true;
 }
 
-double RingSearch::silhouetteFromRays(const double *outerR, double *coverage)
+double RingSearch::centreOnContactEdge(const MeanEdges &me)
+{
+    // What an oblique view does to the contact edge's profile along a ray: foreshortening
+    // (cos θ across the edge, 2 % at 12°) and the lens's local scale stretch the profile
+    // about the step, and the camera's blur is the same on both sides, so the derivative's
+    // peak stays on the step (measured with the true camera: R_o within 0.02 % median). What
+    // changes is which edge a ray meets near the expected radius, below.
+    // Through a tilted lens the contact edge and the silhouette are not concentric: the axis
+    // meets the end face and the barrel's widest circle (half-way down) at image points up
+    // to about 1 mm apart, and the barrel shows wide on the side facing the camera but hides
+    // behind the end face on the far side. The coarse centre, fitted to whichever edge was
+    // strongest on each ray, lies between them, and a circle about it can miss the contact
+    // edge by tens of pixels. The named edge on 32 rays, searched ±15 % of R0 about the
+    // named radius, and a robust fit move the centre onto the contact edge itself; rays where
+    // the edge has the other polarity (the fixture brighter than the ring beside it) find
+    // nothing or another edge, and the fit drops them. The first pass reads the coarse rays
+    // already sampled: a straight view, where the two centres agree within 1.5 px, keeps its
+    // centre at that cost; an oblique one casts fresh rays from the moved centre (twice at
+    // most) until it settles. The fit's mean radius replaces the mean profile's (which the
+    // two edges' offset smears) as the radius the fine stage searches about, where they
+    // differ by 3 px or more.
+    constexpr int kCentringRays = 32, kFirstPassRays = 16; // the first pass: every fourth coarse ray
+    constexpr int kCoarseStride = EndFaceAnalyzer::kCoarseRays / kFirstPassRays;
+    constexpr int kFineStride = kRays / kCentringRays;
+    const double w = 0.15 * r0;
+    int32_t d[kMaxCoarse], peaks[kCentringRays], sorted[kCentringRays];
+    double radius[kCentringRays];
+    bool valid[kCentringRays];
+    double r = me.rOuter;
+    for (int pass = 0; pass < 3; ++pass) {
+        // Pass 0: the coarse rows (from kCoarseStart·R0 at the coarse step); then fresh rays
+        // at 2 px steps from r − w, sampled into the fine rows (the fine stage refills them).
+        const bool coarseRows = pass == 0;
+        const double rA = coarseRows ? EndFaceAnalyzer::kCoarseStart * r0 : r - w;
+        const double step = coarseRows ? EndFaceAnalyzer::coarseStep(r0) : 2.0;
+        const int count = coarseRows ? std::min(kMaxCoarse, int((EndFaceAnalyzer::kCoarseEnd * r0 - rA) / step))
+                                     : std::min(kMaxFine, int(2 * w / step) + 7);
+        const int lo = std::max(3, int((r - w - rA) / step));
+        const int hi = std::min(count - 4, int((r + w - rA) / step) + 1);
+        if (hi - lo < 4) break;
+        const int rays = coarseRows ? kFirstPassRays : kCentringRays;
+        int found = 0;
+        for (int k = 0; k < rays; ++k) {
+            const uint16_t *row;
+            if (coarseRows) {
+                row = coarse + size_t(k * kCoarseStride) * kMaxCoarse;
+            } else {
+                const int i = k * kFineStride;
+                uint16_t *out = fine + size_t(k) * kMaxFine;
+                RaySpec ray{Q16_16::fromDouble(cx), Q16_16::fromDouble(cy), rayCosQ_[i], raySinQ_[i],
+                            Q16_16::fromDouble(rA), Q16_16::fromDouble(step)};
+                sampleRay(*frame, ray, count, out);
+                row = out;
+            }
+            // The derivative over the window only (profileDerivative's kernel); a ray leaving
+            // the frame there is not used (a vectorisable scan, then a branch-free loop).
+            bool outside = false;
+            for (int j = lo - 3; j <= hi + 3; ++j) outside |= row[j] == kOutsideFrame;
+            if (outside) {
+                valid[k] = false;
+                continue;
+            }
+            for (int j = lo - 1; j <= hi + 1; ++j)
+                d[j] = int32_t(row[j + 2]) + 2 * int32_t(row[j + 1]) - 2 * int32_t(row[j - 1]) - int32_t(row[j - 2]);
+            const EdgePeak p = strongestEdge(d, count, lo, hi, me.signOuter);
+            valid[k] = p.found;
+            radius[k] = rA + p.position.toDouble() * step;
+            if (p.found) peaks[found++] = p.value;
+        }
+        if (found < 8) break;
+        // Weak peaks are noise on rays without the edge: below a third of the typical one.
+        std::copy(peaks, peaks + found, sorted);
+        std::nth_element(sorted, sorted + found / 2, sorted + found);
+        const int32_t floor = sorted[found / 2] / 3;
+        for (int k = 0, j = 0; k < rays; ++k)
+            if (valid[k]) valid[k] = peaks[j++] >= floor;
+        BoundaryFit fit;
+        FitOptions opt;
+        opt.maxHarmonics = 2;
+        opt.minRejectPx = 2.0;
+        if (!fitBoundary(radius, valid, rays, cx, cy, opt, &fit) || fit.coverage < 0.3) break;
+        const bool still = std::hypot(fit.centreX - cx, fit.centreY - cy) < 1.5;
+        if (still && std::fabs(fit.a0 - r) < 3.0) break; // a straight view: as it was
+        r = fit.a0;
+        if (still) break;
+        cx = fit.centreX, cy = fit.centreY;
+    }
+    return r;
+}
+
+double RingSearch::silhouetteFromRays(const double *outerR, double *coverage, bool *lopsided)
 {
     *coverage = 0;
+    *lopsided = false;
     constexpr int kCoarse = EndFaceAnalyzer::kCoarseRays;
     const double rA = EndFaceAnalyzer::kCoarseStart * r0, rB = EndFaceAnalyzer::kCoarseEnd * r0;
     const double step = EndFaceAnalyzer::coarseStep(r0);
@@ -274,8 +367,10 @@ double RingSearch::silhouetteFromRays(const double *outerR, double *coverage)
         bool outside = false; // a ray leaving the frame is not used (a vectorisable scan)
         for (int j = 0; j < count; ++j) outside |= row[j] == kOutsideFrame;
         if (outside) continue;
+        // The contact edge's radius seen from the coarse rays' centre (to first order in
+        // the contact edge's centre offset).
         const int fineIdx = i * (kRays / kCoarse);
-        const double ro = outerR[fineIdx];
+        const double ro = outerR[fineIdx] + (cx - coarseCx_) * rayCos_[fineIdx] + (cy - coarseCy_) * raySin_[fineIdx];
         const int lo = std::max(w, int((ro + 0.04 * r0 - rA) / step));
         const int hi = count - w - 2;
         if (hi - lo < 2 * w) continue;
@@ -302,11 +397,49 @@ double RingSearch::silhouetteFromRays(const double *outerR, double *coverage)
             break;
         }
     }
+    // Seen straight on, the barrel shows as a band of even width outside the contact edge.
+    // Seen obliquely (a tilted camera, or one close enough that the rays fan out by tens of
+    // degrees), it shows wide on the side facing the camera and hides behind the end face on
+    // the far side: what bounds the specimen there is the contact edge itself, and no circle
+    // through it is the barrel's widest one. A band whose width swings by more than half its
+    // mean around the ring (least squares of width = w0 + a cos θ + b sin θ) is not taken.
+    {
+        double n = 0, sc = 0, ss = 0, scc = 0, sss = 0, scs = 0, sw = 0, swc = 0, sws = 0;
+        for (int i = 0; i < kCoarse; ++i) {
+            if (!valid[i]) continue;
+            const int fineIdx = i * (kRays / kCoarse);
+            const double c = rayCos_[fineIdx], sn = raySin_[fineIdx];
+            const double width = radius[i] - (outerR[fineIdx] + (cx - coarseCx_) * c + (cy - coarseCy_) * sn);
+            n += 1, sc += c, ss += sn, scc += c * c, sss += sn * sn, scs += c * sn;
+            sw += width, swc += width * c, sws += width * sn;
+        }
+        // Solve the 3 × 3 normal equations by Cramer's rule.
+        const double m[3][3] = {{n, sc, ss}, {sc, scc, scs}, {ss, scs, sss}};
+        auto det3 = [](const double a[3][3]) {
+            return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+                   a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+        };
+        const double det = det3(m);
+        if (n >= 8 && std::fabs(det) > 1e-9) {
+            const double rhs[3] = {sw, swc, sws};
+            double sol[3];
+            for (int k = 0; k < 3; ++k) {
+                double mk[3][3];
+                for (int r = 0; r < 3; ++r)
+                    for (int c = 0; c < 3; ++c) mk[r][c] = c == k ? rhs[r] : m[r][c];
+                sol[k] = det3(mk) / det;
+            }
+            if (!(sol[0] > 0) || std::hypot(sol[1], sol[2]) > 0.5 * sol[0]) {
+                *lopsided = true;
+                return 0;
+            }
+        }
+    }
     BoundaryFit fit;
     FitOptions opt;
     opt.maxHarmonics = 2;
     opt.minRejectPx = 2.0;
-    if (!fitBoundary(radius, valid, kCoarse, cx, cy, opt, &fit) || fit.coverage < 0.4) return 0;
+    if (!fitBoundary(radius, valid, kCoarse, coarseCx_, coarseCy_, opt, &fit) || fit.coverage < 0.4) return 0;
     *coverage = fit.coverage;
     return fit.rEqPx;
 }
@@ -321,6 +454,9 @@ ErrorCode RingSearch::run(Measurement *m)
     raySinQ_ = angles.sinQ;
     const MeanEdges me = meanProfileEdges();
     if (!me.found) return ErrorCode::OuterEdgeNotFound;
+    coarseCx_ = cx, coarseCy_ = cy;
+    const double rOuter = centreOnContactEdge(me);
+    m->centreX = cx, m->centreY = cy;
 
     // Stage 1, the contact edge on every fine ray: a window about the mean profile's radius
     // wide enough for its departure from a circle, short of the silhouette.
@@ -329,7 +465,7 @@ ErrorCode RingSearch::run(Measurement *m)
     const double step = 1.0;
     double start[kRays];
     const int outerCount = std::min(kMaxFine, int(margin + outerHi) + 6);
-    for (int i = 0; i < kRays; ++i) start[i] = me.rOuter - margin - 3;
+    for (int i = 0; i < kRays; ++i) start[i] = rOuter - margin - 3;
     sampleWindow(start, step, outerCount, 0, m);
     if (m->saturatedFraction > 0.5) return ErrorCode::Saturated;
 
@@ -338,11 +474,11 @@ ErrorCode RingSearch::run(Measurement *m)
     double outerR[kRays], innerR[kRays]; // the fitted curves at every fine ray
     double contrastOuter = 0, contrastInner = 0;
     for (int i = 0; i < kRays; ++i) {
-        lo[i] = me.rOuter - margin;
-        hi[i] = me.rOuter + outerHi;
+        lo[i] = rOuter - margin;
+        hi[i] = rOuter + outerHi;
     }
     const int32_t outerMin = std::max<int32_t>(8, int32_t(0.3 * me.strengthOuter));
-    if (!locateOnRays(me.signOuter, lo, hi, outerMin, nullptr, false, 3.0, &outer, outerR, nullptr) ||
+    if (!locateOnRays(me.signOuter, 0, lo, hi, outerMin, nullptr, false, 3.0, &outer, outerR, nullptr) ||
         outer.coverage < 0.3)
         return ErrorCode::OuterEdgeNotFound;
     // Pass 2: close to the fitted curve, so a stain edge nearby cannot win.
@@ -350,7 +486,8 @@ ErrorCode RingSearch::run(Measurement *m)
         lo[i] = outerR[i] - 3.0;
         hi[i] = outerR[i] + 3.0;
     }
-    if (!locateOnRays(me.signOuter, lo, hi, outerMin, outerPts, false, 3.0, &outer, outerR, &contrastOuter) ||
+    if (!locateOnRays(me.signOuter, -me.signOuter, lo, hi, outerMin, outerPts, false, 3.0, &outer, outerR,
+                      &contrastOuter) ||
         outer.coverage < 0.3)
         return ErrorCode::OuterEdgeNotFound;
 
@@ -461,7 +598,7 @@ ErrorCode RingSearch::run(Measurement *m)
             lo[i] = c - h;
             hi[i] = std::min(c + h, ro - (W ? 1.0 + W : 2.0));
         }
-        if (!locateOnRays(innerSign, lo, hi, innerStrength, pass == 0 ? nullptr : innerPts, true, reach,
+        if (!locateOnRays(innerSign, 0, lo, hi, innerStrength, pass == 0 ? nullptr : innerPts, true, reach,
                           &inner, innerR, &contrastInner) ||
             inner.coverage < 0.25)
             return ErrorCode::InnerEdgeNotFound;
@@ -474,8 +611,9 @@ ErrorCode RingSearch::run(Measurement *m)
     m->outer = outer;
     // The silhouette per coarse ray refines the mean profile's estimate (the mean profile
     // blurs a weak barrel/background step and can name a highlight's flank instead).
-    const double perRay = silhouetteFromRays(outerR, &m->silhouetteCoverage);
-    m->rMaxPx = perRay > 0 ? perRay : me.rMax;
+    bool lopsided = false;
+    const double perRay = silhouetteFromRays(outerR, &m->silhouetteCoverage, &lopsided);
+    m->rMaxPx = perRay > 0 ? perRay : lopsided ? 0 : me.rMax;
     m->innerPoints = innerPts;
     m->outerPoints = outerPts;
     m->rayCount = kRays;

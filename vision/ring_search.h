@@ -36,18 +36,24 @@ struct RingSearch {
         bool found = false;
     };
     MeanEdges meanProfileEdges();
+    // Moves (cx, cy) to the contact edge's own centre and returns its mean radius there
+    // (me.rOuter when no fit is possible).
+    double centreOnContactEdge(const MeanEdges &me);
     // Per ray, the strongest edge of `sign` between loPx[i] and hiPx[i]; then the fit.
     // pts == nullptr: a first pass on every other ray, only the fitted curve at every ray
-    // (pts and contrast left alone).
-    bool locateOnRays(int sign, const double *loPx, const double *hiPx, int32_t minStrength,
+    // (pts and contrast left alone). fallbackSign ≠ 0: a ray without an edge of `sign`
+    // takes its strongest edge of fallbackSign instead.
+    bool locateOnRays(int sign, int fallbackSign, const double *loPx, const double *hiPx, int32_t minStrength,
                       EdgeSample *pts, bool interior, double reachPx, BoundaryFit *fit,
                       double *curveOut, double *contrastOut);
     // Samples every fine ray from start[i] (pixels) and fills the smoothed derivative rows.
     // boxHalf > 0: the rows hold a box step detector of that half-width instead.
     void sampleWindow(const double *start, double step, int count, int boxHalf, Measurement *m);
-    // Silhouette R_max from the coarse rays, outside the fitted contact edge; 0 if unclear.
-    double silhouetteFromRays(const double *outerR, double *coverage);
+    // Silhouette R_max from the coarse rays, outside the fitted contact edge; 0 if unclear
+    // (lopsided: the barrel is seen obliquely, so no silhouette is a circle about the axis).
+    double silhouetteFromRays(const double *outerR, double *coverage, bool *lopsided);
 
+    double coarseCx_ = 0, coarseCy_ = 0; // the centre the coarse rays were cast from
     double fineStart_[kMaxRayTable] = {}, fineStep_ = 1;
     // Fine ray i points along angle 2πi/256: directions come from the shared AngleTable.
     const Q2_14 *rayCosQ_ = nullptr, *raySinQ_ = nullptr;
