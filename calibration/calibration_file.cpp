@@ -104,8 +104,8 @@ std::string parseCalibrationText(const std::string &text, CalibrationFile *out)
             vals.push_back(d);
         }
         if (int(vals.size()) != n)
-            return "line " + std::to_string(it->second.first) + ": " + key + " needs " +
-                   std::to_string(n) + " number" + (n > 1 ? "s" : "");
+            return "line " + std::to_string(it->second.first) + ": " + key + " needs " + std::to_string(n) + " number" +
+                   (n > 1 ? "s" : "");
         std::copy(vals.begin(), vals.end(), dst);
         return "";
     };
@@ -115,11 +115,9 @@ std::string parseCalibrationText(const std::string &text, CalibrationFile *out)
         return "unknown format '" + fmt->second.second + "' (this icacam reads " + kFormat + ")";
     vision::PlaneCalibration &p = c.plane;
     double size[2], k[5], views = 0;
-    for (std::string e : {list("image_size", 2, size, true), list("fx", 1, &p.fx, true),
-                          list("fy", 1, &p.fy, true), list("cx", 1, &p.cx, true),
-                          list("cy", 1, &p.cy, true), list("distortion", 5, k, true),
-                          list("fixture_rotation", 9, p.r, true),
-                          list("fixture_translation_mm", 3, p.t, true),
+    for (std::string e : {list("image_size", 2, size, true), list("fx", 1, &p.fx, true), list("fy", 1, &p.fy, true),
+                          list("cx", 1, &p.cx, true), list("cy", 1, &p.cy, true), list("distortion", 5, k, true),
+                          list("fixture_rotation", 9, p.r, true), list("fixture_translation_mm", 3, p.t, true),
                           list("rms_px", 1, &c.rmsPx, false), list("views", 1, &views, false),
                           list("board_thickness_mm", 1, &c.boardThicknessMm, false)})
         if (!e.empty()) return e;

@@ -12,9 +12,9 @@ namespace icacam::calibration {
 struct CalibrationFile {
     vision::PlaneCalibration plane; // heightMm is per specimen: 0 in the file
     int imageWidth = 0, imageHeight = 0;
-    double rmsPx = 0;          // RMS reprojection error of the calibration views
-    int views = 0;             // views used
-    std::string board;         // the board as given to --board
+    double rmsPx = 0;            // RMS reprojection error of the calibration views
+    int views = 0;               // views used
+    std::string board;           // the board as given to --board
     double boardThicknessMm = 0; // already applied to the fixture pose
 };
 

@@ -116,12 +116,18 @@ AimReading aimReading(const vision::LumaView &v, const vision::Measurement &m)
     const double dx = m.centreX - 0.5 * (v.width - 1), dy = m.centreY - 0.5 * (v.height - 1);
     const double across = 2 * std::max(m.rMaxPx, m.outer.rEqPx);
     const double tol = 0.08 * std::min(v.width, v.height);
-    if (std::fabs(dx) > tol && std::fabs(dx) >= std::fabs(dy)) r.hint = dx > 0 ? "move left" : "move right";
-    else if (std::fabs(dy) > tol) r.hint = dy > 0 ? "move up" : "move down";
-    else if (across < 0.4 * v.height) r.hint = "closer";
-    else if (across > 0.95 * v.height || (m.flags & vision::kFlagSpecimenClipped)) r.hint = "farther";
-    else if ((m.flags & vision::kFlagBlurred) || m.error == vision::ErrorCode::Blurred) r.hint = "focus";
-    else r.hint = "ok";
+    if (std::fabs(dx) > tol && std::fabs(dx) >= std::fabs(dy))
+        r.hint = dx > 0 ? "move left" : "move right";
+    else if (std::fabs(dy) > tol)
+        r.hint = dy > 0 ? "move up" : "move down";
+    else if (across < 0.4 * v.height)
+        r.hint = "closer";
+    else if (across > 0.95 * v.height || (m.flags & vision::kFlagSpecimenClipped))
+        r.hint = "farther";
+    else if ((m.flags & vision::kFlagBlurred) || m.error == vision::ErrorCode::Blurred)
+        r.hint = "focus";
+    else
+        r.hint = "ok";
     return r;
 }
 
@@ -133,14 +139,16 @@ void drawAim(hal::MonoBitmap *bmp, const vision::LumaView &v, const AimReading &
     int lo = 255, hi = 0;
     for (int y = 0; y < f.height; y += 4)
         for (int x = 0; x < f.width; x += 4) {
-            const int m = blockMean(v, int(x * f.scale), int(y * f.scale), int((x + 1) * f.scale), int((y + 1) * f.scale));
+            const int m =
+                blockMean(v, int(x * f.scale), int(y * f.scale), int((x + 1) * f.scale), int((y + 1) * f.scale));
             lo = std::min(lo, m), hi = std::max(hi, m);
         }
     const int span = std::max(1, hi - lo);
     for (int y = 0; y < f.height; ++y)
         for (int x = 0; x < f.width; ++x) {
-            const int m = blockMean(v, int(x * f.scale), int(y * f.scale), std::max(int((x + 1) * f.scale), int(x * f.scale) + 1),
-                                    std::max(int((y + 1) * f.scale), int(y * f.scale) + 1));
+            const int m =
+                blockMean(v, int(x * f.scale), int(y * f.scale), std::max(int((x + 1) * f.scale), int(x * f.scale) + 1),
+                          std::max(int((y + 1) * f.scale), int(y * f.scale) + 1));
             const int level = (m - lo) * 16 / span; // 0…16
             bmp->set(x, y, level > kBayer[y & 3][x & 3]);
         }

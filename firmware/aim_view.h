@@ -11,8 +11,8 @@
 namespace icacam::fw {
 
 struct AimReading {
-    double focus = 0;       // the steepest edges' gradient, grey levels per pixel (higher: sharper)
-    bool found = false;     // the end face's boundaries were found
+    double focus = 0;   // the steepest edges' gradient, grey levels per pixel (higher: sharper)
+    bool found = false; // the end face's boundaries were found
     double centreX = 0, centreY = 0, rOuterPx = 0, rInnerPx = 0, rMaxPx = 0;
     double edgeSigmaPx = 0; // blur of the contact edge the pipeline measured (0: not found)
     const char *hint = "";  // what to do next, in a few words

@@ -28,7 +28,10 @@ bool CameraHealth::attempt()
     return true;
 }
 
-bool CameraHealth::open() { return attempt(); }
+bool CameraHealth::open()
+{
+    return attempt();
+}
 
 bool CameraHealth::poll()
 {
@@ -36,7 +39,10 @@ bool CameraHealth::poll()
     return attempt();
 }
 
-bool CameraHealth::ready() { return state_ == State::Ok || attempt(); }
+bool CameraHealth::ready()
+{
+    return state_ == State::Ok || attempt();
+}
 
 void CameraHealth::onCapture(const hal::Error &e, const hal::CapturedFrame *frame)
 {

@@ -18,7 +18,8 @@ public:
     static constexpr int kTimeoutsLost = 2;
 
     CameraHealth(hal::Camera &camera, hal::Clock &clock, hal::CameraFormat format, int retryMs)
-        : camera_(camera), clock_(clock), format_(format), retryMs_(retryMs) {}
+            : camera_(camera), clock_(clock), format_(format), retryMs_(retryMs)
+    {}
 
     // Configures the camera now; false (and the words in problem()) when it is not there.
     bool open();

@@ -18,13 +18,25 @@ CommandParse fail(const char *code, std::string msg)
 
 bool kindOf(std::string_view name, CommandKind *k)
 {
-    static const struct { const char *name; CommandKind kind; } kNames[] = {
-        {"help", CommandKind::Help}, {"status", CommandKind::Status}, {"trigger", CommandKind::Trigger},
-        {"get", CommandKind::Get},   {"set", CommandKind::Set},       {"results", CommandKind::Results},
-        {"scalecheck", CommandKind::ScaleCheck}, {"aim", CommandKind::Aim}, {"snapshot", CommandKind::Snapshot},
+    static const struct {
+        const char *name;
+        CommandKind kind;
+    } kNames[] = {
+        {"help", CommandKind::Help},
+        {"status", CommandKind::Status},
+        {"trigger", CommandKind::Trigger},
+        {"get", CommandKind::Get},
+        {"set", CommandKind::Set},
+        {"results", CommandKind::Results},
+        {"scalecheck", CommandKind::ScaleCheck},
+        {"aim", CommandKind::Aim},
+        {"snapshot", CommandKind::Snapshot},
     };
     for (const auto &n : kNames)
-        if (name == n.name) { *k = n.kind; return true; }
+        if (name == n.name) {
+            *k = n.kind;
+            return true;
+        }
     return false;
 }
 
@@ -107,7 +119,12 @@ CommandParse parseCommand(std::string_view line)
             }
         }
         if (p.cmd.kind == CommandKind::ScaleCheck) {
-            const struct { const char *key; double lo, hi; double *dst; bool required; } fields[] = {
+            const struct {
+                const char *key;
+                double lo, hi;
+                double *dst;
+                bool required;
+            } fields[] = {
                 {"diameter_mm", 1, 300, &p.cmd.diameterMm, true},
                 {"tolerance_pct", 0.01, 20, &p.cmd.tolerancePct, false},
                 {"thickness_mm", 0, 50, &p.cmd.thicknessMm, false},
@@ -118,8 +135,10 @@ CommandParse parseCommand(std::string_view line)
                     if (f.required) return fail("bad_argument", "scalecheck needs \"diameter_mm\"");
                     continue;
                 }
-                if (v->type != JsonField::Type::Number) return fail("bad_argument", std::string("\"") + f.key + "\" must be a number");
-                if (std::string e = scaleNumber(f.key, v->number, f.lo, f.hi, f.dst); !e.empty()) return fail("bad_argument", e);
+                if (v->type != JsonField::Type::Number)
+                    return fail("bad_argument", std::string("\"") + f.key + "\" must be a number");
+                if (std::string e = scaleNumber(f.key, v->number, f.lo, f.hi, f.dst); !e.empty())
+                    return fail("bad_argument", e);
             }
         }
         p.ok = true;
@@ -147,7 +166,8 @@ CommandParse parseCommand(std::string_view line)
         double *dst[] = {&p.cmd.diameterMm, &p.cmd.tolerancePct, &p.cmd.thicknessMm};
         for (int k = 1; k < nw; ++k) {
             double v = 0;
-            if (!wordNumber(words[k], &v)) return fail("bad_argument", std::string(kScaleUsage) + " (" + names[k - 1] + " is not a number)");
+            if (!wordNumber(words[k], &v))
+                return fail("bad_argument", std::string(kScaleUsage) + " (" + names[k - 1] + " is not a number)");
             if (std::string e = scaleNumber(names[k - 1], v, lo[k - 1], hi[k - 1], dst[k - 1]); !e.empty())
                 return fail("bad_argument", e);
         }
@@ -155,9 +175,12 @@ CommandParse parseCommand(std::string_view line)
         if (nw > 2) return fail("bad_argument", "usage: aim [SECONDS | off]");
         if (nw == 2) {
             double v = 0;
-            if (words[1] == "off") p.cmd.aimSeconds = 0;
-            else if (wordNumber(words[1], &v) && v >= 0 && v <= kMaxAimSeconds && v == std::floor(v)) p.cmd.aimSeconds = int(v);
-            else return fail("bad_argument", "usage: aim [SECONDS | off] (SECONDS a whole number up to 600)");
+            if (words[1] == "off")
+                p.cmd.aimSeconds = 0;
+            else if (wordNumber(words[1], &v) && v >= 0 && v <= kMaxAimSeconds && v == std::floor(v))
+                p.cmd.aimSeconds = int(v);
+            else
+                return fail("bad_argument", "usage: aim [SECONDS | off] (SECONDS a whole number up to 600)");
         }
     } else if (p.cmd.kind == CommandKind::Set) {
         if (nw != 3) return fail("bad_argument", "usage: set KEY VALUE");

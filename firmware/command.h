@@ -21,13 +21,13 @@ struct Command {
     // disc's thickness (its edge is measured in its top face)
     double diameterMm = 0, tolerancePct = 0.5, thicknessMm = 0;
     int aimSeconds = 60; // aim: how long the live view runs (0: `aim off`)
-    std::string tag;   // the request's "id", echoed in the answer
+    std::string tag;     // the request's "id", echoed in the answer
 };
 
 struct CommandParse {
     bool ok = false;
     Command cmd;
-    const char *code = "";   // malformed | unknown_command | bad_argument
+    const char *code = ""; // malformed | unknown_command | bad_argument
     std::string message;
 };
 

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <charconv>
-#include <cstdlib>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 namespace icacam::fw {
 
@@ -196,7 +196,8 @@ std::string setConfigKey(Config *cfg, std::string_view key, std::string_view val
     if (liveOnly && !k->live) return "'" + std::string(key) + "' cannot be changed while running";
     if (k->number || k->integer) {
         double v = 0;
-        if (!parseDouble(value, &v)) return std::string(k->key) + ": '" + std::string(value.substr(0, 64)) + "' is not a number";
+        if (!parseDouble(value, &v))
+            return std::string(k->key) + ": '" + std::string(value.substr(0, 64)) + "' is not a number";
         if (v < k->min || v > k->max)
             return std::string(k->key) + " must be between " + fmt(k->min) + " and " + fmt(k->max) + ", not " + fmt(v);
         if (k->integer) {
@@ -211,16 +212,21 @@ std::string setConfigKey(Config *cfg, std::string_view key, std::string_view val
         std::string_view c = k->choices;
         while (!c.empty()) {
             const size_t bar = c.find('|');
-            if (c.substr(0, bar) == value) { cfg->*(k->text) = std::string(value); return ""; }
+            if (c.substr(0, bar) == value) {
+                cfg->*(k->text) = std::string(value);
+                return "";
+            }
             if (bar == std::string_view::npos) break;
             c.remove_prefix(bar + 1);
         }
-        return std::string(k->key) + " must be one of " + k->choices + ", not '" + std::string(value.substr(0, 64)) + "'";
+        return std::string(k->key) + " must be one of " + k->choices + ", not '" + std::string(value.substr(0, 64)) +
+               "'";
     }
     if (value.size() < size_t(k->min) || value.size() > size_t(k->max))
         return std::string(k->key) + " must be " + fmt(k->min) + " to " + fmt(k->max) + " characters long";
     for (char ch : value)
-        if (uint8_t(ch) < 0x20 || ch == '"' || ch == '\\') return std::string(k->key) + ": control characters, quotes and backslashes are not allowed";
+        if (uint8_t(ch) < 0x20 || ch == '"' || ch == '\\')
+            return std::string(k->key) + ": control characters, quotes and backslashes are not allowed";
     cfg->*(k->text) = std::string(value);
     return "";
 }
@@ -230,9 +236,12 @@ bool getConfigKey(const Config &cfg, std::string_view key, std::string *value, b
     const KeyDef *k = findKey(key, true);
     if (!k) return false;
     *isNumber = k->number || k->integer;
-    if (k->number) *value = fmt(cfg.*(k->number));
-    else if (k->integer) *value = std::to_string(cfg.*(k->integer));
-    else *value = cfg.*(k->text);
+    if (k->number)
+        *value = fmt(cfg.*(k->number));
+    else if (k->integer)
+        *value = std::to_string(cfg.*(k->integer));
+    else
+        *value = cfg.*(k->text);
     return true;
 }
 
@@ -260,7 +269,12 @@ std::string liveKeyName(std::string_view key)
 
 hal::CameraControls cameraControlsOf(const Config &cfg)
 {
-    return {cfg.exposureUs, cfg.analogueGain, cfg.redGain, cfg.blueGain, cfg.lensPosition, cfg.sharpness,
+    return {cfg.exposureUs,
+            cfg.analogueGain,
+            cfg.redGain,
+            cfg.blueGain,
+            cfg.lensPosition,
+            cfg.sharpness,
             noiseReductionLevel(cfg.noiseReduction)};
 }
 
@@ -283,8 +297,10 @@ std::string configHelp()
         out += k.help;
         if (k.choices) out += std::string(" (") + k.choices + ")";
         char value[64] = "";
-        if (k.number) std::snprintf(value, sizeof value, "%g", defaults.*k.number);
-        else if (k.integer) std::snprintf(value, sizeof value, "%d", defaults.*k.integer);
+        if (k.number)
+            std::snprintf(value, sizeof value, "%g", defaults.*k.number);
+        else if (k.integer)
+            std::snprintf(value, sizeof value, "%d", defaults.*k.integer);
         out += std::string(" [default ") + (k.text ? "\"" + defaults.*k.text + "\"" : std::string(value)) + "]";
         if (k.live) out += " [settable over serial]";
         out += '\n';
@@ -337,15 +353,13 @@ std::vector<ConfigIssue> parseConfig(std::string_view text, Config *cfg)
     }
     if (!seenN) issues.push_back({0, "specimen.n is required (the strain-hardening exponent)"});
     if (std::string e = specimenIssue(*cfg); !e.empty()) issues.push_back({0, e});
-    if (!seenScale)
-        issues.push_back({0, "calibration.mm_per_px or calibration.file is required (the camera's scale)"});
+    if (!seenScale) issues.push_back({0, "calibration.mm_per_px or calibration.file is required (the camera's scale)"});
     if (!seenJournal) issues.push_back({0, "journal.dir is required (where results are kept)"});
     if (cfg->cameraBackend == "file" && cfg->cameraFrames.empty())
         issues.push_back({0, "camera.frames is required with camera.backend = file"});
     if (cfg->displayBackend == "file" && cfg->displayDir.empty())
         issues.push_back({0, "display.dir is required with display.backend = file"});
-    if (cfg->displayRotate != 0 && cfg->displayRotate != 180)
-        issues.push_back({0, "display.rotate must be 0 or 180"});
+    if (cfg->displayRotate != 0 && cfg->displayRotate != 180) issues.push_back({0, "display.rotate must be 0 or 180"});
     if ((cfg->redGain < 0) != (cfg->blueGain < 0))
         issues.push_back({0, "camera.red_gain and camera.blue_gain are set together (both or neither)"});
     if (cfg->serialBackend == "pty" && cfg->serialLink.empty())

@@ -15,10 +15,10 @@ namespace icacam::fw {
 
 struct Config {
     // [specimen] what is being measured; changeable over serial ("live")
-    double n = 0;            // strain-hardening exponent (required)
-    double kMpa = 0;         // strength coefficient, 0 = unknown
+    double n = 0;    // strain-hardening exponent (required)
+    double kMpa = 0; // strength coefficient, 0 = unknown
     double d0Mm = 10, h0Mm = 15;
-    double hFinalMm = 0;     // final height after upsetting; 0 = not given (50 % assumed)
+    double hFinalMm = 0; // final height after upsetting; 0 = not given (50 % assumed)
     std::string material;
     // [reading] the friction model (vision/model/friction_models.h), as `icacam measure --model`
     std::string model = vision::kDefaultModel;
@@ -26,18 +26,18 @@ struct Config {
     double toleranceMu = 0.01, toleranceRel = 0.05; // ok: 2 σ_μ within max(abs, rel · μ)
     double nTol = 0.01, hFinalTolMm = 0.05, mmPerPxTolRel = 0.005;
     // [calibration] one of the two is required
-    double mmPerPx = 0;      // scale in the end-face plane (with a file: only sizes the search)
+    double mmPerPx = 0;          // scale in the end-face plane (with a file: only sizes the search)
     std::string calibrationFile; // from `icacam calibrate` (docs/calibration.md)
     // [camera]
     std::string cameraBackend = "file";
-    std::string cameraFrames;            // file backend: folder or list file
+    std::string cameraFrames; // file backend: folder or list file
     std::string cameraFormat = "grey8";
     int cameraMaxWidth = 4096, cameraMaxHeight = 3072;
     int cameraStrideAlign = 1;
     int captureTimeoutMs = 2000;
     int cameraLoop = 0;
-    std::string cameraDevice;            // v4l2: node ("" = /dev/icacam-camera, else /dev/video0)
-    std::string cameraId;                // libcamera: id or part of the sensor model ("" = first)
+    std::string cameraDevice;              // v4l2: node ("" = /dev/icacam-camera, else /dev/video0)
+    std::string cameraId;                  // libcamera: id or part of the sensor model ("" = first)
     int cameraWidth = 0, cameraHeight = 0; // 0 = the sensor's largest mode within max_*
     // Imaging controls; -1 = not set (libcamera: its fixed defaults; v4l2: left as it is).
     int exposureUs = -1;
@@ -46,11 +46,11 @@ struct Config {
     double lensPosition = -1;
     double sharpness = -1;
     std::string noiseReduction = "default"; // default | off | fast | high_quality
-    int stampDelayUs = -1;               // v4l2: stamp after exposure end (-1: a frame interval)
-    int cameraRetryMs = 2000;            // a missing camera is looked for again this often
+    int stampDelayUs = -1;                  // v4l2: stamp after exposure end (-1: a frame interval)
+    int cameraRetryMs = 2000;               // a missing camera is looked for again this often
     // [trigger] and [led]
     std::string triggerBackend = "file";
-    std::string triggerScript;           // file backend: script file or FIFO ("" = serial only)
+    std::string triggerScript; // file backend: script file or FIFO ("" = serial only)
     int debounceMs = 30, longPressMs = 1500;
     std::string gpioChip = "/dev/gpiochip0";
     std::string triggerLine = "GPIO17";  // line name (GPIO17) or offset on gpio_chip (17)
@@ -58,7 +58,7 @@ struct Config {
     std::string triggerBias = "pull-up"; // pull-up | pull-down | disabled | as-is
     std::string ledChip;                 // "" = trigger.gpio_chip
     std::string ledLine = "GPIO27";
-    std::string ledActive = "high";      // the level that lights the ring
+    std::string ledActive = "high"; // the level that lights the ring
     std::string ledBackend = "file";
     std::string ledLog;
     int ledSettleMs = 20;
@@ -68,18 +68,18 @@ struct Config {
     int displayScale = 1;
     int i2cBus = 1, i2cAddress = 0x3C;
     std::string displayDriver = "ssd1306"; // ssd1306 | sh1106 (the 1.3 inch panels)
-    int displayRotate = 0;               // 0 | 180
+    int displayRotate = 0;                 // 0 | 180
     int displayContrast = 127;
     // [serial]
     std::string serialBackend = "pty";
-    std::string serialLink;              // pty backend: symlink to the slave
+    std::string serialLink; // pty backend: symlink to the slave
     std::string serialDevice = "/dev/ttyAMA0";
     int serialBaud = 115200;
     // [journal]
     std::string journalDir;
-    std::string journalImages = "pgm";   // pgm | none
-    int journalQuotaMb = 0;              // 0 = the card's free space
-    int journalMemory = 64;              // results kept in RAM for `results`
+    std::string journalImages = "pgm"; // pgm | none
+    int journalQuotaMb = 0;            // 0 = the card's free space
+    int journalMemory = 64;            // results kept in RAM for `results`
     // Not a key: the config file's folder, against which relative paths set over serial
     // (calibration.file) are resolved.
     std::string baseDir;

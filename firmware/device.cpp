@@ -65,15 +65,13 @@ const char *Device::stateName(State s)
 }
 
 Device::Device(DeviceHal hal, Config cfg, const vision::FrictionModel &model)
-    : hal_(hal), cfg_(std::move(cfg)), model_(model),
-      cameraHealth_(hal.camera, hal.clock,
-                    {cfg_.cameraFormat == "rgb24" ? vision::PixelFormat::RGB24 : vision::PixelFormat::Grey8,
-                     cfg_.cameraMaxWidth, cfg_.cameraMaxHeight},
-                    cfg_.cameraRetryMs),
-      journal_(hal.storage, cfg_.journalMemory),
-      debouncer_(cfg_.debounceMs, cfg_.longPressMs), lines_(kMaxLine)
-{
-}
+        : hal_(hal), cfg_(std::move(cfg)), model_(model),
+          cameraHealth_(hal.camera, hal.clock,
+                        {cfg_.cameraFormat == "rgb24" ? vision::PixelFormat::RGB24 : vision::PixelFormat::Grey8,
+                         cfg_.cameraMaxWidth, cfg_.cameraMaxHeight},
+                        cfg_.cameraRetryMs),
+          journal_(hal.storage, cfg_.journalMemory), debouncer_(cfg_.debounceMs, cfg_.longPressMs), lines_(kMaxLine)
+{}
 
 hal::Error Device::start()
 {
@@ -107,7 +105,8 @@ hal::Error Device::start()
             t.remove_prefix(nl == std::string_view::npos ? t.size() : nl + 1);
             const size_t eq = line.find(" = ");
             if (eq == std::string_view::npos) continue;
-            if (!setConfigKey(&trial, line.substr(0, eq), line.substr(eq + 3), true).empty()) note = "saved setting bad";
+            if (!setConfigKey(&trial, line.substr(0, eq), line.substr(eq + 3), true).empty())
+                note = "saved setting bad";
         }
         // A saved calibration that can no longer be read leaves the configured one in place.
         if (trial.calibrationFile != cfg_.calibrationFile && !setCalibrationFile(&trial).empty()) {
@@ -142,8 +141,6 @@ void Device::tick()
     pollCamera();
     if (aimUntilMs_ >= 0) aimTick();
 }
-
-
 
 void Device::pollCamera()
 {
@@ -245,9 +242,10 @@ void Device::handleCommand(const Command &c)
     switch (c.kind) {
     case CommandKind::Help:
         j.str("type", "help")
-            .str("commands", "status | trigger | get [KEY] | set KEY VALUE | results [N] | "
-                             "scalecheck DIAMETER_MM [TOLERANCE_PCT [THICKNESS_MM]] | aim [SECONDS | off] | snapshot | help; "
-                             "as words or JSON {\"cmd\":\"set\",\"key\":\"n\",\"value\":0.2,\"id\":\"x\"}")
+            .str("commands",
+                 "status | trigger | get [KEY] | set KEY VALUE | results [N] | "
+                 "scalecheck DIAMETER_MM [TOLERANCE_PCT [THICKNESS_MM]] | aim [SECONDS | off] | snapshot | help; "
+                 "as words or JSON {\"cmd\":\"set\",\"key\":\"n\",\"value\":0.2,\"id\":\"x\"}")
             .str("keys", liveKeyList());
         break;
     case CommandKind::Status: {
@@ -268,8 +266,10 @@ void Device::handleCommand(const Command &c)
         measure("serial", c.tag);
         return;
     case CommandKind::Aim:
-        if (c.aimSeconds == 0) stopAim("serial");
-        else startAim(c.aimSeconds, c.tag);
+        if (c.aimSeconds == 0)
+            stopAim("serial");
+        else
+            startAim(c.aimSeconds, c.tag);
         return;
     case CommandKind::Snapshot:
         if (aimUntilMs_ >= 0) stopAim("snapshot");
@@ -371,8 +371,11 @@ void Device::measure(const char *origin, const std::string &tag)
     if (captured && problem.empty() && cfg_.journalImages == "pgm") {
         char name[32];
         std::snprintf(name, sizeof name, "img-%06ld.pgm", id);
-        if (hal::Error e = saveImage(name, luma); e.ok()) imageName = name;
-        else storageProblem = e.code == hal::Errc::Full ? "storage full: image not saved" : "image not saved: " + e.message;
+        if (hal::Error e = saveImage(name, luma); e.ok())
+            imageName = name;
+        else
+            storageProblem =
+                e.code == hal::Errc::Full ? "storage full: image not saved" : "image not saved: " + e.message;
     }
     buildRecord(id, origin, tag, m, problem, captured ? &frame : nullptr, imageName,
                 long(hal_.clock.monotonicMs() - t0));
@@ -385,8 +388,10 @@ void Device::measure(const char *origin, const std::string &tag)
 
     char title[32];
     std::snprintf(title, sizeof title, "#%ld error", id);
-    if (!problem.empty()) drawProblem(&screen_, title, problem);
-    else drawResult(&screen_, id, m, storageProblem.empty() ? "" : "STORAGE FULL");
+    if (!problem.empty())
+        drawProblem(&screen_, title, problem);
+    else
+        drawResult(&screen_, id, m, storageProblem.empty() ? "" : "STORAGE FULL");
     showOrLog(screen_);
     state_ = State::Idle;
 }
@@ -396,7 +401,8 @@ bool Device::captureFrame(hal::CapturedFrame *frame, vision::LumaView *luma, std
     bool captured = false;
     triggerMs_ = hal_.clock.monotonicMs();
     if (!cameraHealth_.ready()) {
-        *problem = std::string("camera ") + CameraHealth::stateName(cameraHealth_.state()) + ": " + cameraHealth_.problem();
+        *problem =
+            std::string("camera ") + CameraHealth::stateName(cameraHealth_.state()) + ": " + cameraHealth_.problem();
         return false;
     }
     state_ = State::LedOn;
@@ -423,7 +429,6 @@ bool Device::captureFrame(hal::CapturedFrame *frame, vision::LumaView *luma, std
     }
     return captured;
 }
-
 
 std::string Device::setCalibrationFile(Config *trial)
 {
@@ -456,8 +461,11 @@ void Device::scaleCheck(const Command &c)
     if (captured && problem.empty() && cfg_.journalImages == "pgm") {
         char name[32];
         std::snprintf(name, sizeof name, "img-%06ld.pgm", id);
-        if (hal::Error e = saveImage(name, luma); e.ok()) imageName = name;
-        else storageProblem = e.code == hal::Errc::Full ? "storage full: image not saved" : "image not saved: " + e.message;
+        if (hal::Error e = saveImage(name, luma); e.ok())
+            imageName = name;
+        else
+            storageProblem =
+                e.code == hal::Errc::Full ? "storage full: image not saved" : "image not saved: " + e.message;
     }
     out_.clear();
     JsonBuilder j(&out_);
@@ -483,7 +491,8 @@ void Device::scaleCheck(const Command &c)
     char title[48], words[64];
     std::snprintf(title, sizeof title, "#%ld scale %s", id, status);
     if (r.measured) std::snprintf(words, sizeof words, "ratio %.4f (tol %.2f %%)", r.ratio, c.tolerancePct);
-    drawProblem(&screen_, title, r.measured ? std::string_view(words) : std::string_view(problem.empty() ? r.message : problem));
+    drawProblem(&screen_, title,
+                r.measured ? std::string_view(words) : std::string_view(problem.empty() ? r.message : problem));
     showOrLog(screen_);
     state_ = State::Idle;
 }
@@ -510,7 +519,11 @@ void Device::buildRecord(long id, const char *origin, const std::string &tag, co
     vision::writeReading(problem.empty() ? &m : nullptr, problem, model_.name(), sink);
     j.str("time", when);
     j.str("image", image).str("source", frame ? std::string_view(frame->source) : std::string_view());
-    j.num("n", cfg_.n).num("k_mpa", cfg_.kMpa).num("d0_mm", cfg_.d0Mm).num("h0_mm", cfg_.h0Mm).num("mm_per_px", cfg_.mmPerPx, 8);
+    j.num("n", cfg_.n)
+        .num("k_mpa", cfg_.kMpa)
+        .num("d0_mm", cfg_.d0Mm)
+        .num("h0_mm", cfg_.h0Mm)
+        .num("mm_per_px", cfg_.mmPerPx, 8);
     j.num("h_final_mm", cfg_.hFinalMm);
     // Which calibration mapped the boundaries, and the plane it mapped them into.
     j.str("calibration", cal_.present ? cal_.name : "");
@@ -528,7 +541,8 @@ hal::Error Device::saveImage(std::string_view name, const vision::LumaView &v)
     image_.assign(header, size_t(n));
     for (int y = 0; y < v.height; ++y) {
         const uint8_t *row = v.data + size_t(y) * size_t(v.stride);
-        if (v.pixelStep == 1) image_.append(reinterpret_cast<const char *>(row), size_t(v.width));
+        if (v.pixelStep == 1)
+            image_.append(reinterpret_cast<const char *>(row), size_t(v.width));
         else
             for (int x = 0; x < v.width; ++x) image_.push_back(char(row[size_t(x) * size_t(v.pixelStep)]));
     }
@@ -580,6 +594,9 @@ void Device::sendError(const char *code, std::string_view message, std::string_v
     send(line);
 }
 
-void Device::send(std::string_view line) { (void)hal_.serial.write(line); }
+void Device::send(std::string_view line)
+{
+    (void)hal_.serial.write(line);
+}
 
 } // namespace icacam::fw

@@ -96,7 +96,7 @@ private:
     const vision::FrictionModel &model_;
     vision::EndFaceAnalyzer analyzer_;
     CameraHealth cameraHealth_;
-    int64_t triggerMs_ = 0; // when the frame being measured was asked for
+    int64_t triggerMs_ = 0;   // when the frame being measured was asked for
     int64_t aimUntilMs_ = -1; // aim mode runs until then (-1: off)
     int64_t aimNextMs_ = 0, aimLitMs_ = 0;
     long aimFrames_ = 0;
@@ -112,8 +112,8 @@ private:
     std::string out_, image_;
     hal::MonoBitmap screen_;
     std::string lastProblem_;
-    DeviceCalibration cal_;             // calibration.file, read at start and on `set`
-    vision::PlaneCalibration plane_;    // cal_ at the current specimen's end-face height
+    DeviceCalibration cal_;               // calibration.file, read at start and on `set`
+    vision::PlaneCalibration plane_;      // cal_ at the current specimen's end-face height
     std::unique_ptr<uint8_t[]> discWork_; // the scale check's disc finder
 };
 

@@ -28,8 +28,10 @@ void Device::startAim(int seconds, const std::string &tag)
     aimTag_ = tag;
     if (aimUntilMs_ < 0) {
         if (!cameraHealth_.ready()) {
-            sendError("aim_failed", std::string("camera ") + CameraHealth::stateName(cameraHealth_.state()) + ": " +
-                                        cameraHealth_.problem(), tag);
+            sendError("aim_failed",
+                      std::string("camera ") + CameraHealth::stateName(cameraHealth_.state()) + ": " +
+                          cameraHealth_.problem(),
+                      tag);
             return;
         }
         // The ring stays on while aiming: the picture is the one a measurement will see.
@@ -100,7 +102,10 @@ void Device::aimTick()
     JsonBuilder j(&out_);
     j.str("type", "aim").integer("picture", aimFrames_).num("focus", r.focus, 4).boolean("found", r.found);
     if (r.found) {
-        j.num("x", r.centreX, 5).num("y", r.centreY, 5).num("r_outer_px", r.rOuterPx, 5).num("r_inner_px", r.rInnerPx, 5);
+        j.num("x", r.centreX, 5)
+            .num("y", r.centreY, 5)
+            .num("r_outer_px", r.rOuterPx, 5)
+            .num("r_inner_px", r.rInnerPx, 5);
         j.num("edge_sigma_px", r.edgeSigmaPx, 3);
     }
     j.str("hint", r.hint).integer("width", luma.width).integer("height", luma.height);
@@ -127,7 +132,8 @@ void Device::snapshot(const Command &c)
     // Named by the next record id it would take and the time, so snapshots sort with the
     // journal without using up an id.
     char name[48];
-    std::snprintf(name, sizeof name, "snap-%06ld-%lld.png", lastId_ + 1, static_cast<long long>(hal_.clock.wallMs() / 1000));
+    std::snprintf(name, sizeof name, "snap-%06ld-%lld.png", lastId_ + 1,
+                  static_cast<long long>(hal_.clock.wallMs() / 1000));
     image_.clear();
     if (std::string err = encodeSnapshotPng(luma, m, &image_); !err.empty()) {
         sendError("snapshot_failed", err, c.tag);

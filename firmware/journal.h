@@ -16,9 +16,9 @@ namespace icacam::fw {
 uint32_t crc32(std::string_view data);
 
 struct JournalRecovery {
-    long records = 0;       // intact records found
-    long lastId = 0;        // highest record id (0 when empty)
-    uint64_t cutBytes = 0;  // bytes removed from a damaged tail
+    long records = 0;      // intact records found
+    long lastId = 0;       // highest record id (0 when empty)
+    uint64_t cutBytes = 0; // bytes removed from a damaged tail
     int tempFilesRemoved = 0;
 };
 

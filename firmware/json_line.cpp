@@ -1,8 +1,8 @@
 #include "firmware/json_line.h"
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
-#include <cctype>
 #include <cstdlib>
 
 namespace icacam::fw {
@@ -26,7 +26,10 @@ struct Cursor {
     bool eat(char c)
     {
         ws();
-        if (i < s.size() && s[i] == c) { ++i; return true; }
+        if (i < s.size() && s[i] == c) {
+            ++i;
+            return true;
+        }
         return false;
     }
     std::string at() const { return " at byte " + std::to_string(i); }
@@ -34,7 +37,8 @@ struct Cursor {
 
 void appendUtf8(std::string *out, uint32_t cp)
 {
-    if (cp < 0x80) out->push_back(char(cp));
+    if (cp < 0x80)
+        out->push_back(char(cp));
     else if (cp < 0x800) {
         out->push_back(char(0xC0 | (cp >> 6)));
         out->push_back(char(0x80 | (cp & 0x3F)));
@@ -53,11 +57,16 @@ std::string parseString(Cursor &c, std::string *out)
         const char ch = c.s[c.i++];
         if (ch == '"') return "";
         if (uint8_t(ch) < 0x20) return "control character in a string" + c.at();
-        if (ch != '\\') { out->push_back(ch); continue; }
+        if (ch != '\\') {
+            out->push_back(ch);
+            continue;
+        }
         if (c.i >= c.s.size()) break;
         const char e = c.s[c.i++];
         switch (e) {
-        case '"': case '\\': case '/': out->push_back(e); break;
+        case '"':
+        case '\\':
+        case '/': out->push_back(e); break;
         case 'b': out->push_back('\b'); break;
         case 'f': out->push_back('\f'); break;
         case 'n': out->push_back('\n'); break;
@@ -68,8 +77,10 @@ std::string parseString(Cursor &c, std::string *out)
             uint32_t cp = 0;
             for (int k = 0; k < 4; ++k) {
                 const char h = c.s[c.i++];
-                const int d = h >= '0' && h <= '9' ? h - '0' : h >= 'a' && h <= 'f' ? h - 'a' + 10
-                            : h >= 'A' && h <= 'F' ? h - 'A' + 10 : -1;
+                const int d = h >= '0' && h <= '9'   ? h - '0'
+                              : h >= 'a' && h <= 'f' ? h - 'a' + 10
+                              : h >= 'A' && h <= 'F' ? h - 'A' + 10
+                                                     : -1;
                 if (d < 0) return "bad \\u escape" + c.at();
                 cp = cp * 16 + uint32_t(d);
             }
@@ -89,7 +100,10 @@ std::string parseFlatObject(std::string_view text, FlatObject *out)
     out->count = 0;
     Cursor c{text};
     if (!c.eat('{')) return "expected '{'" + c.at();
-    if (c.eat('}')) { c.ws(); return c.i == text.size() ? "" : "text after the object" + c.at(); }
+    if (c.eat('}')) {
+        c.ws();
+        return c.i == text.size() ? "" : "text after the object" + c.at();
+    }
     for (;;) {
         if (out->count >= FlatObject::kMaxFields)
             return "too many fields (at most " + std::to_string(FlatObject::kMaxFields) + ")";
@@ -115,7 +129,7 @@ std::string parseFlatObject(std::string_view text, FlatObject *out)
         } else {
             const size_t b = c.i;
             while (c.i < text.size() && (std::isdigit(uint8_t(text[c.i])) || text[c.i] == '-' || text[c.i] == '+' ||
-                                        text[c.i] == '.' || text[c.i] == 'e' || text[c.i] == 'E'))
+                                         text[c.i] == '.' || text[c.i] == 'e' || text[c.i] == 'E'))
                 ++c.i;
             f.text = std::string(text.substr(b, c.i - b));
             char *end = nullptr;
@@ -140,13 +154,17 @@ void JsonBuilder::escape(std::string *out, std::string_view s)
     out->push_back('"');
     for (char ch : s) {
         const auto u = uint8_t(ch);
-        if (ch == '"' || ch == '\\') { out->push_back('\\'); out->push_back(ch); }
-        else if (ch == '\n') out->append("\\n");
+        if (ch == '"' || ch == '\\') {
+            out->push_back('\\');
+            out->push_back(ch);
+        } else if (ch == '\n')
+            out->append("\\n");
         else if (u < 0x20 || u == 0x7F) {
             char b[8];
             std::snprintf(b, sizeof b, "\\u%04x", unsigned(u));
             out->append(b);
-        } else out->push_back(ch);
+        } else
+            out->push_back(ch);
     }
     out->push_back('"');
 }
@@ -169,7 +187,10 @@ JsonBuilder &JsonBuilder::str(std::string_view key, std::string_view value)
 JsonBuilder &JsonBuilder::num(std::string_view key, double value, int digits)
 {
     keyPart(key);
-    if (!std::isfinite(value)) { out_->append("null"); return *this; }
+    if (!std::isfinite(value)) {
+        out_->append("null");
+        return *this;
+    }
     char b[40];
     std::snprintf(b, sizeof b, "%.*g", digits, value);
     out_->append(b);
@@ -179,7 +200,10 @@ JsonBuilder &JsonBuilder::num(std::string_view key, double value, int digits)
 JsonBuilder &JsonBuilder::fixed(std::string_view key, double value, int decimals)
 {
     keyPart(key);
-    if (!std::isfinite(value)) { out_->append("null"); return *this; }
+    if (!std::isfinite(value)) {
+        out_->append("null");
+        return *this;
+    }
     char b[64];
     std::snprintf(b, sizeof b, "%.*f", decimals, value);
     out_->append(b);

@@ -43,7 +43,10 @@
 namespace {
 
 volatile std::sig_atomic_t gStop = 0;
-void onSignal(int) { gStop = 1; }
+void onSignal(int)
+{
+    gStop = 1;
+}
 
 constexpr int kExitUsage = 64, kExitUnavailable = 69, kExitConfig = 78;
 
@@ -91,32 +94,46 @@ int main(int argc, char **argv)
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         if (a == "--config" || a.rfind("--config=", 0) == 0) {
-            if (a.size() > 8) configPath = a.substr(9);
-            else if (i + 1 < argc) configPath = argv[++i];
-            else return usageError("--config needs a value");
+            if (a.size() > 8)
+                configPath = a.substr(9);
+            else if (i + 1 < argc)
+                configPath = argv[++i];
+            else
+                return usageError("--config needs a value");
             if (configPath.empty()) return usageError("--config needs a value");
-        } else if (a == "--check") checkOnly = true;
-        else if (a == "--help-config") { std::printf("config keys:\n%s", fw::configHelp().c_str()); return 0; }
-        else if (a == "-h" || a == "--help") { std::printf("%s", usage().c_str()); return 0; }
-        else return usageError((a.size() > 1 && a[0] == '-' ? "unknown option '" : "unexpected argument '") + a + "'");
+        } else if (a == "--check")
+            checkOnly = true;
+        else if (a == "--help-config") {
+            std::printf("config keys:\n%s", fw::configHelp().c_str());
+            return 0;
+        } else if (a == "-h" || a == "--help") {
+            std::printf("%s", usage().c_str());
+            return 0;
+        } else
+            return usageError((a.size() > 1 && a[0] == '-' ? "unknown option '" : "unexpected argument '") + a + "'");
     }
     if (configPath.empty()) return usageError("--config is required");
 
     std::ifstream in(configPath);
-    if (!in) { std::fprintf(stderr, "icacam-fw: cannot read config '%s'\n", configPath.c_str()); return kExitConfig; }
+    if (!in) {
+        std::fprintf(stderr, "icacam-fw: cannot read config '%s'\n", configPath.c_str());
+        return kExitConfig;
+    }
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     fw::Config cfg;
     const auto issues = fw::parseConfig(text, &cfg);
     for (const auto &is : issues) {
-        if (is.line > 0) std::fprintf(stderr, "%s:%d: %s\n", configPath.c_str(), is.line, is.message.c_str());
-        else std::fprintf(stderr, "%s: %s\n", configPath.c_str(), is.message.c_str());
+        if (is.line > 0)
+            std::fprintf(stderr, "%s:%d: %s\n", configPath.c_str(), is.line, is.message.c_str());
+        else
+            std::fprintf(stderr, "%s: %s\n", configPath.c_str(), is.message.c_str());
     }
     // Composition: this build carries the file-backed HAL; hardware backends come with their
     // own targets (hal/libcamera, hal/gpiod, hal/ssd1306 …) and are chosen here by name.
     auto onlyFile = [&](const char *key, const std::string &v, const char *ok) {
         if (v != ok) {
-            std::fprintf(stderr, "%s: %s = %s: this icacam-fw is built with the %s backend only\n",
-                         configPath.c_str(), key, v.c_str(), ok);
+            std::fprintf(stderr, "%s: %s = %s: this icacam-fw is built with the %s backend only\n", configPath.c_str(),
+                         key, v.c_str(), ok);
             return false;
         }
         return true;
@@ -141,7 +158,9 @@ int main(int argc, char **argv)
 #else
     constexpr bool kLibcamera = false;
 #endif
-    ok = ((kLibcamera && cfg.cameraBackend == "libcamera") || built("camera.backend", cfg.cameraBackend, "v4l2", kV4l2)) && ok;
+    ok = ((kLibcamera && cfg.cameraBackend == "libcamera") ||
+          built("camera.backend", cfg.cameraBackend, "v4l2", kV4l2)) &&
+         ok;
     ok = built("trigger.backend", cfg.triggerBackend, "gpiod", kGpiod) && ok;
     ok = built("led.backend", cfg.ledBackend, "gpiod", kGpiod) && ok;
 #ifdef ICACAM_HAVE_SSD1306
@@ -166,15 +185,20 @@ int main(int argc, char **argv)
             ok = false;
         }
     if (!ok) return kExitConfig;
-    if (checkOnly) { std::printf("%s: ok\n", configPath.c_str()); return 0; }
+    if (checkOnly) {
+        std::printf("%s: ok\n", configPath.c_str());
+        return 0;
+    }
 
     hal::SystemClock clock;
     // Imaging controls as configured; the file camera reports them back with each frame.
     const hal::CameraControls asked = fw::cameraControlsOf(cfg);
-    hal::FileCamera camera(clock, {resolve(base, cfg.cameraFrames), cfg.cameraStrideAlign, cfg.cameraLoop != 0, 0, asked});
+    hal::FileCamera camera(clock,
+                           {resolve(base, cfg.cameraFrames), cfg.cameraStrideAlign, cfg.cameraLoop != 0, 0, asked});
     hal::FileTrigger fileTrigger(clock);
     if (cfg.triggerBackend == "file" && !cfg.triggerScript.empty())
-        if (hal::Error e = fileTrigger.open(resolve(base, cfg.triggerScript)); !e.ok()) return unavailable("trigger", e);
+        if (hal::Error e = fileTrigger.open(resolve(base, cfg.triggerScript)); !e.ok())
+            return unavailable("trigger", e);
     hal::FileLed fileLed(clock);
     if (cfg.ledBackend == "file")
         if (hal::Error e = fileLed.open(resolve(base, cfg.ledLog)); !e.ok()) return unavailable("LED", e);
@@ -184,7 +208,7 @@ int main(int argc, char **argv)
 #ifdef ICACAM_HAVE_V4L2
     // A UVC camera: camera.device, else the udev rule's /dev/icacam-camera (deploy/), else
     // the first one.
-    const std::string videoNode = !cfg.cameraDevice.empty()                          ? cfg.cameraDevice
+    const std::string videoNode = !cfg.cameraDevice.empty()                       ? cfg.cameraDevice
                                   : std::filesystem::exists("/dev/icacam-camera") ? "/dev/icacam-camera"
                                                                                   : "/dev/video0";
     hal::V4l2Camera v4l2Camera(clock, {videoNode, 4, asked, cfg.cameraWidth, cfg.cameraHeight, cfg.stampDelayUs});
@@ -272,7 +296,8 @@ int main(int argc, char **argv)
     // (reading.model: the config check refused any other name).
     const vision::FrictionModel *model = vision::frictionModel(cfg.model);
     if (!model) return unavailable("model", hal::Error::make(hal::Errc::Invalid, "unknown reading.model " + cfg.model));
-    fw::Device device({*cameraUsed, *triggerUsed, *ledUsed, cfg.displayBackend == "none" ? static_cast<hal::Display &>(noDisplay) : *displayUsed,
+    fw::Device device({*cameraUsed, *triggerUsed, *ledUsed,
+                       cfg.displayBackend == "none" ? static_cast<hal::Display &>(noDisplay) : *displayUsed,
                        *serialUsed, storage, clock},
                       cfg, *model);
     std::signal(SIGTERM, onSignal);

@@ -8,8 +8,8 @@
 
 namespace icacam::fw {
 
-ScaleCheckResult checkScale(const vision::LumaView &frame, const ScaleCheckRequest &req,
-                            const DeviceCalibration &cal, double mmPerPx, uint8_t *work)
+ScaleCheckResult checkScale(const vision::LumaView &frame, const ScaleCheckRequest &req, const DeviceCalibration &cal,
+                            double mmPerPx, uint8_t *work)
 {
     ScaleCheckResult r;
     char msg[240];
@@ -23,10 +23,11 @@ ScaleCheckResult checkScale(const vision::LumaView &frame, const ScaleCheckReque
         plane.heightMm = req.thicknessMm; // the disc's edge lies in its top face
     }
     // Where to look: the declared diameter through the scale at the frame's centre.
-    const double scale = cal.present ? vision::planeScaleAt(plane, 0.5 * (frame.width - 1), 0.5 * (frame.height - 1))
-                                     : mmPerPx;
+    const double scale =
+        cal.present ? vision::planeScaleAt(plane, 0.5 * (frame.width - 1), 0.5 * (frame.height - 1)) : mmPerPx;
     if (!(scale > 0)) {
-        r.message = cal.present ? "calibration does not map the frame's centre" : "no scale: set mm_per_px or calibration_file";
+        r.message =
+            cal.present ? "calibration does not map the frame's centre" : "no scale: set mm_per_px or calibration_file";
         return r;
     }
     const double radiusPx = 0.5 * req.diameterMm / scale;

@@ -26,7 +26,7 @@ struct ScaleCheckResult {
 };
 
 // `work` must hold vision::ReferenceDiscFinder::kWorkBytes.
-ScaleCheckResult checkScale(const vision::LumaView &frame, const ScaleCheckRequest &req,
-                            const DeviceCalibration &cal, double mmPerPx, uint8_t *work);
+ScaleCheckResult checkScale(const vision::LumaView &frame, const ScaleCheckRequest &req, const DeviceCalibration &cal,
+                            double mmPerPx, uint8_t *work);
 
 } // namespace icacam::fw

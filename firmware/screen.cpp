@@ -30,13 +30,11 @@ const char *shortError(ErrorCode c)
 const char *shortFlag(int bit)
 {
     static const char *const kWords[vision::kFlagCount] = {
-        "n outside 0.05-0.5", "K outside model", "mu below model", "mu above model",
-        "u outside model",    "low contrast",    "edge coverage low", "edges scatter",
-        "image blurred",      "saturated",       "specimen clipped",  "elliptical",
-        "not concentric",     "check scale",     "narrow ring",       "no silhouette",
-        "reduction outside", "radii inconsistent", "H0/D0 outside",
-        "edges uncertain",   "scale uncertain",   "give final height", "n tolerance wide",
-        "model uncertain",   "silhouette unusable"};
+        "n outside 0.05-0.5", "K outside model",   "mu below model",     "mu above model",  "u outside model",
+        "low contrast",       "edge coverage low", "edges scatter",      "image blurred",   "saturated",
+        "specimen clipped",   "elliptical",        "not concentric",     "check scale",     "narrow ring",
+        "no silhouette",      "reduction outside", "radii inconsistent", "H0/D0 outside",   "edges uncertain",
+        "scale uncertain",    "give final height", "n tolerance wide",   "model uncertain", "silhouette unusable"};
     return bit >= 0 && bit < vision::kFlagCount ? kWords[bit] : "check";
 }
 

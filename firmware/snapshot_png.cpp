@@ -17,7 +17,10 @@ constexpr int kGreys = 252;
 enum Colour : uint8_t { kRed = 252, kGreen = 253, kBlue = 254, kYellow = 255 };
 
 // A marked pixel: row, column and palette index packed so that sorting orders by row.
-uint64_t mark(int x, int y, uint8_t c) { return (uint64_t(uint32_t(y)) << 32) | (uint64_t(uint32_t(x)) << 8) | c; }
+uint64_t mark(int x, int y, uint8_t c)
+{
+    return (uint64_t(uint32_t(y)) << 32) | (uint64_t(uint32_t(x)) << 8) | c;
+}
 
 struct Marks {
     std::vector<uint64_t> list;
@@ -58,7 +61,10 @@ void appendPng(png_structp png, png_bytep data, png_size_t n)
     static_cast<std::string *>(png_get_io_ptr(png))->append(reinterpret_cast<const char *>(data), n);
 }
 void flushPng(png_structp) {}
-[[noreturn]] void failPng(png_structp png, png_const_charp) { png_longjmp(png, 1); }
+[[noreturn]] void failPng(png_structp png, png_const_charp)
+{
+    png_longjmp(png, 1);
+}
 void quietPng(png_structp, png_const_charp) {}
 
 } // namespace
@@ -78,7 +84,8 @@ std::string encodeSnapshotPng(const vision::LumaView &v, const vision::Measureme
     std::sort(marks.list.begin(), marks.list.end());
     std::vector<png_byte> row(size_t(v.width));
     png_color palette[256];
-    for (int i = 0; i < kGreys; ++i) palette[i].red = palette[i].green = palette[i].blue = png_byte(i * 255 / (kGreys - 1));
+    for (int i = 0; i < kGreys; ++i)
+        palette[i].red = palette[i].green = palette[i].blue = png_byte(i * 255 / (kGreys - 1));
     palette[kRed] = {255, 40, 40};
     palette[kGreen] = {40, 255, 40};
     palette[kBlue] = {60, 120, 255};

@@ -24,12 +24,12 @@ struct CameraFormat {
 // Imaging controls: what the config asks for, and (on a captured frame) what the camera
 // reports it used. A negative value means "not set" (asked) or "not reported" (read back).
 struct CameraControls {
-    int exposureUs = -1;       // exposure time; auto-exposure is off whenever it is set
-    double analogueGain = -1;  // sensor gain (1 = none)
+    int exposureUs = -1;                // exposure time; auto-exposure is off whenever it is set
+    double analogueGain = -1;           // sensor gain (1 = none)
     double redGain = -1, blueGain = -1; // colour gains; auto white balance off when set
-    double lensPosition = -1;  // dioptres (1 / distance in m); autofocus off when set
-    double sharpness = -1;     // ISP sharpening (libcamera: 0 = off, 1 = default)
-    int noiseReduction = -1;   // 0 off, 1 fast, 2 high quality (libcamera's enumeration)
+    double lensPosition = -1;           // dioptres (1 / distance in m); autofocus off when set
+    double sharpness = -1;              // ISP sharpening (libcamera: 0 = off, 1 = default)
+    int noiseReduction = -1;            // 0 off, 1 fast, 2 high quality (libcamera's enumeration)
 };
 
 struct CaptureRequest {
@@ -41,15 +41,15 @@ struct CaptureRequest {
 
 struct CapturedFrame {
     vision::FrameView view;
-    int64_t timestampMs = 0;  // Clock::monotonicMs() time the exposure started (first row)
+    int64_t timestampMs = 0; // Clock::monotonicMs() time the exposure started (first row)
     // Exposure start minus CaptureRequest::notBeforeMs, microseconds (>= 0 for a frame
     // handed out; -1 unknown). For V4L2 a lower bound of the start (fresh_frame.h).
     int64_t latencyUs = -1;
-    int64_t exposureUs = -1;  // exposure time the frame's start was computed with
-    uint32_t sequence = 0;    // the driver's frame counter (gaps: frames the driver dropped)
-    int staleFrames = 0;      // frames refused because their exposure began before notBefore
-    CameraControls controls;  // values the camera reports for this frame
-    std::string source;       // where it came from (file name, sensor model), for the journal
+    int64_t exposureUs = -1; // exposure time the frame's start was computed with
+    uint32_t sequence = 0;   // the driver's frame counter (gaps: frames the driver dropped)
+    int staleFrames = 0;     // frames refused because their exposure began before notBefore
+    CameraControls controls; // values the camera reports for this frame
+    std::string source;      // where it came from (file name, sensor model), for the journal
 };
 
 class Camera {
@@ -64,7 +64,10 @@ public:
     // than the timeout.
     virtual Error capture(const CaptureRequest &req, CapturedFrame *out) = 0;
     // The first frame exposed after this call.
-    Error capture(int timeoutMs, CapturedFrame *out) { return capture(CaptureRequest{CaptureRequest::kAtCall, timeoutMs}, out); }
+    Error capture(int timeoutMs, CapturedFrame *out)
+    {
+        return capture(CaptureRequest{CaptureRequest::kAtCall, timeoutMs}, out);
+    }
     // Words for `status` and the display: model, mode, what it was asked (one line).
     virtual std::string describe() const { return {}; }
 };

@@ -9,15 +9,15 @@ namespace icacam::hal {
 
 enum class Errc : uint8_t {
     None = 0,
-    NotFound,   // a device, file or path does not exist
-    Io,         // an OS call failed (message carries strerror)
-    BadFormat,  // pixel format, file format or encoding refused
-    BadStride,  // a row stride the frame cannot have
-    TooLarge,   // exceeds the configured maximum
-    Timeout,    // nothing arrived within the deadline
-    Full,       // storage or a buffer is full
-    Closed,     // the other end went away
-    Invalid,    // an argument out of range or an unconfigured device
+    NotFound,  // a device, file or path does not exist
+    Io,        // an OS call failed (message carries strerror)
+    BadFormat, // pixel format, file format or encoding refused
+    BadStride, // a row stride the frame cannot have
+    TooLarge,  // exceeds the configured maximum
+    Timeout,   // nothing arrived within the deadline
+    Full,      // storage or a buffer is full
+    Closed,    // the other end went away
+    Invalid,   // an argument out of range or an unconfigured device
 };
 
 inline const char *errcName(Errc c)

@@ -29,9 +29,15 @@ struct FrameStamp {
 };
 
 // The earliest the frame's exposure can have started.
-inline int64_t exposureStartNs(const FrameStamp &s) { return s.stampNs - s.exposureNs - s.stampDelayNs; }
+inline int64_t exposureStartNs(const FrameStamp &s)
+{
+    return s.stampNs - s.exposureNs - s.stampDelayNs;
+}
 
-inline bool exposedAfter(const FrameStamp &s, int64_t notBeforeNs) { return exposureStartNs(s) >= notBeforeNs; }
+inline bool exposedAfter(const FrameStamp &s, int64_t notBeforeNs)
+{
+    return exposureStartNs(s) >= notBeforeNs;
+}
 
 inline int64_t monotonicNowNs()
 {

@@ -1,4 +1,4 @@
-#include "calibrate_command.h"
+#include "host_tools/calibrate_command.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,9 +12,9 @@
 #include <opencv2/imgproc.hpp>
 
 #include "calibration/calibration_file.h"
-#include "cli_options.h"
-#include "image_file.h"
-#include "manifest.h"
+#include "host_tools/cli_options.h"
+#include "host_tools/image_file.h"
+#include "host_tools/manifest.h"
 
 namespace icacam::host {
 
@@ -22,24 +22,23 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const char *kUsage =
-    "usage: icacam calibrate --images DIR --board chessboard:COLSxROWS:SQUARE_MM\n"
-    "                        --flat PHOTO --out FILE [--board-thickness MM]\n"
-    "                        [--max-rms PX] [--max-blur PX] [--free-k3]\n"
-    "  --images DIR   photos of the board in different poses (png/jpg/tif/bmp/pgm)\n"
-    "  --board        chessboard:COLSxROWS:SQUARE_MM (inner corners, square side) or\n"
-    "                 circles:COLSxROWS:SPACING_MM (symmetric grid of dark dots)\n"
-    "  --flat PHOTO   the photo with the board lying flat on the fixture (path, or a name\n"
-    "                 in DIR): gives the fixture plane's pose\n"
-    "  --board-thickness MM  the board's surface above the fixture (default 0)\n"
-    "  --max-rms PX   refuse a calibration whose RMS reprojection error is above this\n"
-    "                 (default 0.5: the corners are not found to the accuracy a scale needs)\n"
-    "  --max-blur PX  also refuse views whose board edges (squares or dots) are wider than\n"
-    "                 this (default: no limit; views are judged by their reprojection error)\n"
-    "  --free-k3      also fit k3 (default: fixed at 0, ill-determined in a narrow field)\n"
-    "Needs at least 5 usable views. A view whose corners do not fit the calibration (its\n"
-    "reprojection error 4 times the median view's and above 0.3 px: the board moved, bent\n"
-    "or was misdetected) is dropped with a message. See docs/calibration.md.\n";
+const char *kUsage = "usage: icacam calibrate --images DIR --board chessboard:COLSxROWS:SQUARE_MM\n"
+                     "                        --flat PHOTO --out FILE [--board-thickness MM]\n"
+                     "                        [--max-rms PX] [--max-blur PX] [--free-k3]\n"
+                     "  --images DIR   photos of the board in different poses (png/jpg/tif/bmp/pgm)\n"
+                     "  --board        chessboard:COLSxROWS:SQUARE_MM (inner corners, square side) or\n"
+                     "                 circles:COLSxROWS:SPACING_MM (symmetric grid of dark dots)\n"
+                     "  --flat PHOTO   the photo with the board lying flat on the fixture (path, or a name\n"
+                     "                 in DIR): gives the fixture plane's pose\n"
+                     "  --board-thickness MM  the board's surface above the fixture (default 0)\n"
+                     "  --max-rms PX   refuse a calibration whose RMS reprojection error is above this\n"
+                     "                 (default 0.5: the corners are not found to the accuracy a scale needs)\n"
+                     "  --max-blur PX  also refuse views whose board edges (squares or dots) are wider than\n"
+                     "                 this (default: no limit; views are judged by their reprojection error)\n"
+                     "  --free-k3      also fit k3 (default: fixed at 0, ill-determined in a narrow field)\n"
+                     "Needs at least 5 usable views. A view whose corners do not fit the calibration (its\n"
+                     "reprojection error 4 times the median view's and above 0.3 px: the board moved, bent\n"
+                     "or was misdetected) is dropped with a message. See docs/calibration.md.\n";
 
 constexpr int kMinViews = 5;
 // A view stands out when its RMS reprojection error exceeds both of these: the factor over
@@ -56,8 +55,7 @@ struct Board {
     {
         std::vector<cv::Point3f> pts;
         for (int j = 0; j < size.height; ++j)
-            for (int i = 0; i < size.width; ++i)
-                pts.emplace_back(float(i * pitchMm), float(j * pitchMm), 0.f);
+            for (int i = 0; i < size.width; ++i) pts.emplace_back(float(i * pitchMm), float(j * pitchMm), 0.f);
         return pts;
     }
 };
@@ -75,12 +73,11 @@ Board parseBoard(const std::string &spec)
     if (kind != "chessboard" && kind != "circles") return fail();
     b.circles = kind == "circles";
     double cols, rows;
-    if (!parseNumber(spec.substr(c1 + 1, x - c1 - 1), &cols) ||
-        !parseNumber(spec.substr(x + 1, c2 - x - 1), &rows) ||
+    if (!parseNumber(spec.substr(c1 + 1, x - c1 - 1), &cols) || !parseNumber(spec.substr(x + 1, c2 - x - 1), &rows) ||
         !parseNumber(spec.substr(c2 + 1), &b.pitchMm))
         return fail();
-    if (cols < 3 || rows < 3 || cols > 100 || rows > 100 || cols != std::floor(cols) ||
-        rows != std::floor(rows) || !(b.pitchMm > 0))
+    if (cols < 3 || rows < 3 || cols > 100 || rows > 100 || cols != std::floor(cols) || rows != std::floor(rows) ||
+        !(b.pitchMm > 0))
         throw std::runtime_error("bad --board '" + spec + "': at least 3×3 points and a positive pitch");
     b.size = {int(cols), int(rows)};
     return b;
@@ -126,8 +123,7 @@ double circleGridEdgeWidth(const cv::Mat &gray, const cv::Size &size, const std:
 }
 
 // Finds the board; returns an empty string or why the view is unusable.
-std::string detect(const cv::Mat &gray, const Board &b, double maxBlur, std::vector<cv::Point2f> *pts,
-                   double *blur)
+std::string detect(const cv::Mat &gray, const Board &b, double maxBlur, std::vector<cv::Point2f> *pts, double *blur)
 {
     *blur = 0;
     if (b.circles) {
@@ -142,8 +138,7 @@ std::string detect(const cv::Mat &gray, const Board &b, double maxBlur, std::vec
         }
         return "";
     }
-    if (!cv::findChessboardCorners(gray, b.size, *pts,
-                                   cv::CALIB_CB_ADAPTIVE_THRESH | cv::CALIB_CB_NORMALIZE_IMAGE))
+    if (!cv::findChessboardCorners(gray, b.size, *pts, cv::CALIB_CB_ADAPTIVE_THRESH | cv::CALIB_CB_NORMALIZE_IMAGE))
         return "chessboard not found (blurred, cut off, or not " + std::to_string(b.size.width) + "x" +
                std::to_string(b.size.height) + " inner corners?)";
     // Edge rise width across the board's edges (OpenCV's estimate, pixels): a soft view
@@ -182,16 +177,27 @@ int calibrateCommand(const std::vector<std::string> &args)
         if (*v < 0) opts.fail("a non-negative number");
     };
     while (opts.next()) {
-        if (opts.isHelp()) { std::cout << kUsage; return 0; }
-        else if (opts.is("--images")) dir = opts.value();
-        else if (opts.is("--board")) boardSpec = opts.value();
-        else if (opts.is("--flat")) flat = opts.value();
-        else if (opts.is("--out")) outPath = opts.value();
-        else if (opts.is("--board-thickness")) number(&thickness);
-        else if (opts.is("--max-blur")) number(&maxBlur);
-        else if (opts.is("--max-rms")) number(&maxRms);
-        else if (opts.is("--free-k3")) freeK3 = opts.flag();
-        else opts.unknown();
+        if (opts.isHelp()) {
+            std::cout << kUsage;
+            return 0;
+        } else if (opts.is("--images"))
+            dir = opts.value();
+        else if (opts.is("--board"))
+            boardSpec = opts.value();
+        else if (opts.is("--flat"))
+            flat = opts.value();
+        else if (opts.is("--out"))
+            outPath = opts.value();
+        else if (opts.is("--board-thickness"))
+            number(&thickness);
+        else if (opts.is("--max-blur"))
+            number(&maxBlur);
+        else if (opts.is("--max-rms"))
+            number(&maxRms);
+        else if (opts.is("--free-k3"))
+            freeK3 = opts.flag();
+        else
+            opts.unknown();
     }
     if (dir.empty() || boardSpec.empty() || flat.empty() || outPath.empty())
         opts.missing("--images, --board, --flat and --out (all are needed)");
@@ -213,8 +219,7 @@ int calibrateCommand(const std::vector<std::string> &args)
     for (const fs::path &p : files) {
         LumaImage img;
         std::string why = loadLuma(p.string(), &img);
-        if (why.empty() && imageSize.width && img.luma.size() != imageSize)
-            why = "size differs from the first view";
+        if (why.empty() && imageSize.width && img.luma.size() != imageSize) why = "size differs from the first view";
         std::vector<cv::Point2f> pts;
         double blur = 0;
         if (why.empty()) why = detect(img.luma, board, maxBlur, &pts, &blur);
@@ -230,9 +235,8 @@ int calibrateCommand(const std::vector<std::string> &args)
     if (int(used.size()) < kMinViews) {
         if (!rejected.str().empty()) std::cerr << "icacam calibrate: views not used:\n" << rejected.str();
         throw std::runtime_error("only " + std::to_string(used.size()) + " usable view" +
-                                 (used.size() == 1 ? "" : "s") + " of " + std::to_string(files.size()) +
-                                 " in '" + dir + "': a calibration needs at least " +
-                                 std::to_string(kMinViews) +
+                                 (used.size() == 1 ? "" : "s") + " of " + std::to_string(files.size()) + " in '" + dir +
+                                 "': a calibration needs at least " + std::to_string(kMinViews) +
                                  " views of the whole board in different tilts");
     }
 
@@ -245,9 +249,8 @@ int calibrateCommand(const std::vector<std::string> &args)
     double rms = 0, medianView = 0;
     for (;;) {
         cv::Mat stdIntr, stdExtr, errs;
-        rms = cv::calibrateCamera(objectPts, imagePts, imageSize, K, D, rvecs, tvecs, stdIntr, stdExtr, errs,
-                                          flags,
-                                          cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, 100, 1e-12));
+        rms = cv::calibrateCamera(objectPts, imagePts, imageSize, K, D, rvecs, tvecs, stdIntr, stdExtr, errs, flags,
+                                  cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, 100, 1e-12));
         perView.assign(errs.begin<double>(), errs.end<double>());
         std::vector<double> sorted = perView;
         std::sort(sorted.begin(), sorted.end());
@@ -277,10 +280,11 @@ int calibrateCommand(const std::vector<std::string> &args)
     // and the calibration is still not good enough to write.
     if (rms > maxRms) {
         char msg[240];
-        std::snprintf(msg, sizeof msg,
-                      "the %zu views calibrate to an RMS reprojection error of %.2f px (median view %.2f px), above "
-                      "%.2f px: the corners are not found well enough (blurred, noisy or moving boards?); no file written",
-                      used.size(), rms, medianView, maxRms);
+        std::snprintf(
+            msg, sizeof msg,
+            "the %zu views calibrate to an RMS reprojection error of %.2f px (median view %.2f px), above "
+            "%.2f px: the corners are not found well enough (blurred, noisy or moving boards?); no file written",
+            used.size(), rms, medianView, maxRms);
         throw std::runtime_error(msg);
     }
     // Coverage of the field: distortion is fitted where corners are and extrapolated elsewhere.
@@ -299,8 +303,7 @@ int calibrateCommand(const std::vector<std::string> &args)
 
     // The flat view: the fixture plane's pose with the intrinsics just found.
     LumaImage flatImg;
-    if (std::string e = loadLuma(flatPath.string(), &flatImg); !e.empty())
-        throw std::runtime_error("--flat: " + e);
+    if (std::string e = loadLuma(flatPath.string(), &flatImg); !e.empty()) throw std::runtime_error("--flat: " + e);
     if (flatImg.luma.size() != imageSize) throw std::runtime_error("--flat: photo size differs from the views");
     std::vector<cv::Point2f> flatPts;
     double flatBlur = 0;
@@ -349,9 +352,10 @@ int calibrateCommand(const std::vector<std::string> &args)
 
     const double tiltDeg = std::acos(std::min(1.0, std::fabs(normal[2]))) * 180 / M_PI;
     std::printf("icacam calibrate: %d views of %zu, RMS reprojection error %.3f px\n", c.views, files.size(), rms);
-    std::printf("  per-view reprojection error: median %.3f px, largest %.3f px; corners cover %.0f %% of the frame%s\n",
-                medianView, *std::max_element(perView.begin(), perView.end()), 100 * coverage,
-                coverage < 0.3 ? " (low: distortion is extrapolated beyond them; add views near the frame's edges)" : "");
+    std::printf(
+        "  per-view reprojection error: median %.3f px, largest %.3f px; corners cover %.0f %% of the frame%s\n",
+        medianView, *std::max_element(perView.begin(), perView.end()), 100 * coverage,
+        coverage < 0.3 ? " (low: distortion is extrapolated beyond them; add views near the frame's edges)" : "");
     std::printf("  fx %.2f  fy %.2f  cx %.2f  cy %.2f\n", p.fx, p.fy, p.cx, p.cy);
     std::printf("  distortion k1 %.5f  k2 %.5f  p1 %.6f  p2 %.6f  k3 %.5f\n", p.k1, p.k2, p.p1, p.p2, p.k3);
     std::printf("  fixture: %.2f mm from the camera along the axis, tilted %.2f deg; flat view RMS %.3f px\n",
@@ -360,7 +364,8 @@ int calibrateCommand(const std::vector<std::string> &args)
     for (double h : {0.0, 2.5, 5.0, 7.5, 10.0}) {
         vision::PlaneCalibration at = p;
         at.heightMm = h;
-        std::printf(" %.1f mm: %.6f%s", h, vision::planeScaleAt(at, 0.5 * (imageSize.width - 1), 0.5 * (imageSize.height - 1)),
+        std::printf(" %.1f mm: %.6f%s", h,
+                    vision::planeScaleAt(at, 0.5 * (imageSize.width - 1), 0.5 * (imageSize.height - 1)),
                     h < 10 ? "," : "\n");
     }
     std::printf("  written to %s\n", outPath.c_str());

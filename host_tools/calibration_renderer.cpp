@@ -1,4 +1,4 @@
-#include "calibration_renderer.h"
+#include "host_tools/calibration_renderer.h"
 
 #include <algorithm>
 #include <cmath>
@@ -33,7 +33,10 @@ double filteredSquare(double a, double w)
     return (squareIntegral(a + w / 2) - squareIntegral(a - w / 2)) / w;
 }
 // A unit step at a0 box-filtered over width w.
-double filteredStep(double a, double a0, double w) { return std::clamp((a - a0) / w + 0.5, 0.0, 1.0); }
+double filteredStep(double a, double a0, double w)
+{
+    return std::clamp((a - a0) / w + 0.5, 0.0, 1.0);
+}
 
 void addNoise(cv::Mat &f, double blurPx, double noise, uint32_t seed)
 {
@@ -77,8 +80,7 @@ std::vector<cv::Point3f> chessboardCorners(const ChessboardSpec &b)
 {
     std::vector<cv::Point3f> pts;
     for (int j = 0; j < b.rows; ++j)
-        for (int i = 0; i < b.cols; ++i)
-            pts.emplace_back(float(i * b.squareMm), float(j * b.squareMm), 0.f);
+        for (int i = 0; i < b.cols; ++i) pts.emplace_back(float(i * b.squareMm), float(j * b.squareMm), 0.f);
     return pts;
 }
 
@@ -97,8 +99,8 @@ BoardPhotoRenderer::BoardPhotoRenderer(const CameraModel &cam) : cam_(cam)
     std::copy(und.begin(), und.end(), rays_.ptr<cv::Point2d>(0));
 }
 
-void BoardPhotoRenderer::intersect(const cv::Matx33d &R, const cv::Vec3d &t, double zMm, cv::Mat *X,
-                                   cv::Mat *Y, cv::Mat *footprint) const
+void BoardPhotoRenderer::intersect(const cv::Matx33d &R, const cv::Vec3d &t, double zMm, cv::Mat *X, cv::Mat *Y,
+                                   cv::Mat *footprint) const
 {
     const cv::Matx33d Rt = R.t();
     const cv::Vec3d b = Rt * t;
@@ -114,15 +116,13 @@ void BoardPhotoRenderer::intersect(const cv::Matx33d &R, const cv::Vec3d &t, dou
             xo[x] = lambda * a[0] - b[0];
             yo[x] = lambda * a[1] - b[1];
             // One pixel's size on the plane, stretched by the obliquity.
-            if (footprint)
-                footprint->at<double>(y, x) = lambda / cam_.fx * cv::norm(a) / std::fabs(a[2]);
+            if (footprint) footprint->at<double>(y, x) = lambda / cam_.fx * cv::norm(a) / std::fabs(a[2]);
         }
     }
 }
 
-cv::Mat BoardPhotoRenderer::chessboard(const ChessboardSpec &b, const cv::Vec3d &rvec,
-                                       const cv::Vec3d &tvec, double blurPx, double noise,
-                                       uint32_t seed) const
+cv::Mat BoardPhotoRenderer::chessboard(const ChessboardSpec &b, const cv::Vec3d &rvec, const cv::Vec3d &tvec,
+                                       double blurPx, double noise, uint32_t seed) const
 {
     cv::Mat X, Y, fp;
     intersect(rotation(rvec), tvec, 0, &X, &Y, &fp);
@@ -225,9 +225,8 @@ cv::Mat BoardPhotoRenderer::disc(double diameterMm, double xMm, double yMm, doub
     return out;
 }
 
-cv::Mat BoardPhotoRenderer::endFace(const EndFaceScene &scene, double xMm, double yMm,
-                                    double heightMm, double blurPx, double noise,
-                                    uint32_t seed) const
+cv::Mat BoardPhotoRenderer::endFace(const EndFaceScene &scene, double xMm, double yMm, double heightMm, double blurPx,
+                                    double noise, uint32_t seed) const
 {
     // The end face rendered flat and clean at a fine scale, as a texture in mm.
     EndFaceScene tex = scene;
@@ -260,8 +259,7 @@ cv::Mat BoardPhotoRenderer::endFace(const EndFaceScene &scene, double xMm, doubl
     // average a 3×3 neighbourhood first to keep the edges' ramps from aliasing.
     cv::Mat smooth;
     cv::blur(texture, smooth, {3, 3});
-    cv::remap(smooth, warped, mapX, mapY, cv::INTER_LINEAR, cv::BORDER_CONSTANT,
-              cv::Scalar(scene.background));
+    cv::remap(smooth, warped, mapX, mapY, cv::INTER_LINEAR, cv::BORDER_CONSTANT, cv::Scalar(scene.background));
     cv::Mat f;
     warped.convertTo(f, CV_64F);
     addNoise(f, blurPx, noise, seed);
@@ -285,7 +283,10 @@ CameraModel tiltedCamera(int width, int height, double fPx, double cxPx, double 
 
 namespace {
 // +1 when the camera is on the fixture's +z side: the plane h above the fixture is z = up·h.
-double upSign(const cv::Matx33d &R, const cv::Vec3d &t) { return -(R.t() * t)[2] >= 0 ? 1.0 : -1.0; }
+double upSign(const cv::Matx33d &R, const cv::Vec3d &t)
+{
+    return -(R.t() * t)[2] >= 0 ? 1.0 : -1.0;
+}
 } // namespace
 
 cv::Point2d axisOnPlane(const CameraModel &cam, double heightMm)
@@ -316,24 +317,24 @@ double planeScaleAtPoint(const CameraModel &cam, double xMm, double yMm, double 
     return d / std::sqrt(std::fabs(ex.x * ey.y - ex.y * ey.x));
 }
 
-std::vector<std::pair<cv::Vec3d, cv::Vec3d>> calibrationPoses(const CameraModel &cam,
-                                                              const ChessboardSpec &b, int count,
-                                                              uint32_t seed)
+std::vector<std::pair<cv::Vec3d, cv::Vec3d>> calibrationPoses(const CameraModel &cam, const ChessboardSpec &b,
+                                                              int count, uint32_t seed)
 {
     std::mt19937 rng(seed);
     auto U = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
     const cv::Matx33d K(cam.fx, 0, cam.cx, 0, cam.fy, cam.cy, 0, 0, 1);
     const std::vector<double> D{cam.k1, cam.k2, cam.p1, cam.p2, cam.k3};
     const double s = b.squareMm;
-    const std::vector<cv::Point3d> outline{{-2 * s, -2 * s, 0}, {(b.cols + 1) * s, -2 * s, 0},
+    const std::vector<cv::Point3d> outline{{-2 * s, -2 * s, 0},
+                                           {(b.cols + 1) * s, -2 * s, 0},
                                            {-2 * s, (b.rows + 1) * s, 0},
                                            {(b.cols + 1) * s, (b.rows + 1) * s, 0}};
     const cv::Vec3d centre((b.cols - 1) * s / 2, (b.rows - 1) * s / 2, 0);
     std::vector<std::pair<cv::Vec3d, cv::Vec3d>> poses;
     for (int tries = 0; int(poses.size()) < count && tries < 100 * count; ++tries) {
         const double dir = U(0, 2 * M_PI), tilt = (poses.size() < 2 ? U(0, 6) : U(10, 28)) * kDeg;
-        const cv::Matx33d R = rotation({tilt * std::cos(dir), tilt * std::sin(dir), 0}) *
-                              rotation({0, 0, U(-15, 15) * kDeg});
+        const cv::Matx33d R =
+            rotation({tilt * std::cos(dir), tilt * std::sin(dir), 0}) * rotation({0, 0, U(-15, 15) * kDeg});
         // Positions drawn for a 62 mm camera and scaled to this one's distance.
         const double k = std::fabs(cam.fixtureTvec[2]) / 62;
         const cv::Vec3d pos(U(-2.5, 2.5) * k, U(-2, 2) * k, U(52, 66) * k);

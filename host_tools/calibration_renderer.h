@@ -8,7 +8,7 @@
 
 #include <opencv2/core.hpp>
 
-#include "end_face_renderer.h"
+#include "host_tools/end_face_renderer.h"
 #include "vision/plane_calibration.h"
 
 namespace icacam::host {
@@ -30,7 +30,7 @@ CameraModel exampleTiltedCamera();
 vision::PlaneCalibration toPlaneCalibration(const CameraModel &cam);
 
 struct ChessboardSpec {
-    int cols = 9, rows = 7;  // inner corners (OpenCV's pattern size)
+    int cols = 9, rows = 7; // inner corners (OpenCV's pattern size)
     double squareMm = 1.4;
 };
 
@@ -54,8 +54,8 @@ public:
     explicit BoardPhotoRenderer(const CameraModel &cam);
     // A chessboard (with a white margin) on a grey surround, at the pose (board → camera),
     // then Gaussian blur (σ px) and sensor noise (σ grey levels).
-    cv::Mat chessboard(const ChessboardSpec &b, const cv::Vec3d &rvec, const cv::Vec3d &tvec,
-                       double blurPx, double noise, uint32_t seed) const;
+    cv::Mat chessboard(const ChessboardSpec &b, const cv::Vec3d &rvec, const cv::Vec3d &tvec, double blurPx,
+                       double noise, uint32_t seed) const;
     // The chessboard moving during a rolling-shutter exposure: row y is exposed at time
     // y / height along the straight path from pose 0 to pose 1. Its corners fit no single
     // pose: a genuinely bad calibration view (the board was still being put down).
@@ -63,18 +63,18 @@ public:
                              const cv::Vec3d &rvec1, const cv::Vec3d &tvec1, double blurPx, double noise,
                              uint32_t seed) const;
     // A circle grid at the pose, likewise.
-    cv::Mat circleGrid(const CircleGridSpec &g, const cv::Vec3d &rvec, const cv::Vec3d &tvec,
-                       double blurPx, double noise, uint32_t seed) const;
+    cv::Mat circleGrid(const CircleGridSpec &g, const cv::Vec3d &rvec, const cv::Vec3d &tvec, double blurPx,
+                       double noise, uint32_t seed) const;
     // A reference disc (grey level discGrey) of diameterMm lying on the fixture centred at
     // (xMm, yMm), its top face heightMm above the fixture, on a fixture of grey fixtureGrey.
-    cv::Mat disc(double diameterMm, double xMm, double yMm, double heightMm, double discGrey,
-                 double fixtureGrey, double blurPx, double noise, uint32_t seed) const;
+    cv::Mat disc(double diameterMm, double xMm, double yMm, double heightMm, double discGrey, double fixtureGrey,
+                 double blurPx, double noise, uint32_t seed) const;
     // The end face of `scene` (its mm geometry; its pixel scale and position are ignored)
     // standing on the fixture at (xMm, yMm) with its end face heightMm above it. The top
     // (face, ICA and contact edge) lies in the plane at heightMm; beyond the contact edge
     // the barrel is seen at half that height, where it is widest (its silhouette).
-    cv::Mat endFace(const EndFaceScene &scene, double xMm, double yMm, double heightMm,
-                    double blurPx, double noise, uint32_t seed) const;
+    cv::Mat endFace(const EndFaceScene &scene, double xMm, double yMm, double heightMm, double blurPx, double noise,
+                    uint32_t seed) const;
     const CameraModel &camera() const { return cam_; }
 
 private:
@@ -104,8 +104,7 @@ double planeScaleAtPoint(const CameraModel &cam, double xMm, double yMm, double 
 // A set of board poses for calibration: tilts up to ±25° in several directions at
 // distances around the fixture's (0.84–1.06 × the camera's distance to the fixture, its
 // translation's z), the board kept in the frame.
-std::vector<std::pair<cv::Vec3d, cv::Vec3d>> calibrationPoses(const CameraModel &cam,
-                                                              const ChessboardSpec &b, int count,
-                                                              uint32_t seed);
+std::vector<std::pair<cv::Vec3d, cv::Vec3d>> calibrationPoses(const CameraModel &cam, const ChessboardSpec &b,
+                                                              int count, uint32_t seed);
 
 } // namespace icacam::host

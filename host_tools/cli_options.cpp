@@ -1,17 +1,16 @@
-#include "cli_options.h"
+#include "host_tools/cli_options.h"
 
 #include <cmath>
 #include <cstdlib>
 
-#include "number_text.h"
+#include "host_tools/number_text.h"
 #include "vision/model/friction_models.h"
 
 namespace icacam::host::cli {
 
 OptionReader::OptionReader(const std::vector<std::string> &args, std::string usage, size_t from)
-    : args_(args), usage_(std::move(usage)), at_(from)
-{
-}
+        : args_(args), usage_(std::move(usage)), at_(from)
+{}
 
 bool OptionReader::next()
 {
@@ -32,7 +31,10 @@ bool OptionReader::next()
     return true;
 }
 
-bool OptionReader::isOption() const { return name_.size() > 1 && name_[0] == '-'; }
+bool OptionReader::isOption() const
+{
+    return name_.size() > 1 && name_[0] == '-';
+}
 
 std::string OptionReader::value()
 {
@@ -85,9 +87,15 @@ void OptionReader::unknown() const
     throw UsageError(std::string(isOption() ? "unknown option '" : "unexpected argument '") + name_ + "'", usage_);
 }
 
-void OptionReader::fail(const std::string &why) const { throw UsageError(name_ + ": " + why, usage_); }
+void OptionReader::fail(const std::string &why) const
+{
+    throw UsageError(name_ + ": " + why, usage_);
+}
 
-void OptionReader::missing(const std::string &what) const { throw UsageError("missing: " + what, usage_); }
+void OptionReader::missing(const std::string &what) const
+{
+    throw UsageError("missing: " + what, usage_);
+}
 
 bool parseFinite(const std::string &text, double *out)
 {

@@ -32,22 +32,22 @@ class OptionReader {
 public:
     OptionReader(const std::vector<std::string> &args, std::string usage, size_t from = 0);
 
-    bool next();                              // to the next argument; false after the last
+    bool next();                                          // to the next argument; false after the last
     const std::string &arg() const { return args_[at_]; } // as written
     const std::string &name() const { return name_; }     // an option's name, without "=value"
     bool is(std::string_view name) const { return isOption() && name_ == name; }
-    bool isOption() const;                    // "-x" or "--x" (a lone "-" is a value)
+    bool isOption() const; // "-x" or "--x" (a lone "-" is a value)
     bool isHelp() const { return name_ == "-h" || name_ == "--help"; }
 
-    std::string value();                      // after '=', else the next argument
-    bool flag();                              // an option without a value: true
-    double number();                          // value() as a finite number
-    double number(double lo, double hi);      // … within [lo, hi]
-    long wholeNumber(long lo, long hi);       // … a whole number within [lo, hi]
-    std::vector<std::string> rest();          // this argument and every one after it
+    std::string value();                 // after '=', else the next argument
+    bool flag();                         // an option without a value: true
+    double number();                     // value() as a finite number
+    double number(double lo, double hi); // … within [lo, hi]
+    long wholeNumber(long lo, long hi);  // … a whole number within [lo, hi]
+    std::vector<std::string> rest();     // this argument and every one after it
 
-    [[noreturn]] void unknown() const;        // "unknown option '--x'" (or argument)
-    [[noreturn]] void fail(const std::string &why) const; // "--x: why"
+    [[noreturn]] void unknown() const;                        // "unknown option '--x'" (or argument)
+    [[noreturn]] void fail(const std::string &why) const;     // "--x: why"
     [[noreturn]] void missing(const std::string &what) const; // "missing: what"
     const std::string &usage() const { return usage_; }
 

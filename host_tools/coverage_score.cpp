@@ -1,4 +1,4 @@
-#include "coverage_score.h"
+#include "host_tools/coverage_score.h"
 
 #include <algorithm>
 #include <cmath>
@@ -122,7 +122,8 @@ bool scoreResults(const Manifest &results, const Manifest &truth, const ScoreOpt
             const double m = cell(r, "sigma_model");
             if (std::isfinite(m)) sigma = std::sqrt(std::max(0.0, sigma * sigma - m * m));
             ++dropped;
-        } else ++kept;
+        } else
+            ++kept;
         a.add(id, status, mu - muTrue, sigma, muTrue, opt);
         if (cond != "all") all.add(id, status, mu - muTrue, sigma, muTrue, opt);
     }
@@ -132,10 +133,14 @@ bool scoreResults(const Manifest &results, const Manifest &truth, const ScoreOpt
         if (!truthIds.count(entry.first)) out->notes.push_back(entry.first + ": no truth");
     for (const std::string &c : order) out->conditions.push_back(acc[c].finish());
     if (order.size() > 1 || (order.size() == 1 && order[0] != "all")) out->conditions.push_back(all.finish());
-    if (!budget) out->sigmaSource = "σ = mu_sigma (no budget columns in the results)";
-    else if (dropped && !kept) out->sigmaSource = "σ = sqrt(mu_sigma² − sigma_model²): the truth is the measuring model's own";
-    else if (kept && !dropped) out->sigmaSource = "σ = mu_sigma (budget columns; sigma_model kept)";
-    else out->sigmaSource = "σ = sqrt(mu_sigma² − sigma_model²) for paper models, mu_sigma for the others";
+    if (!budget)
+        out->sigmaSource = "σ = mu_sigma (no budget columns in the results)";
+    else if (dropped && !kept)
+        out->sigmaSource = "σ = sqrt(mu_sigma² − sigma_model²): the truth is the measuring model's own";
+    else if (kept && !dropped)
+        out->sigmaSource = "σ = mu_sigma (budget columns; sigma_model kept)";
+    else
+        out->sigmaSource = "σ = sqrt(mu_sigma² − sigma_model²) for paper models, mu_sigma for the others";
     return true;
 }
 
@@ -158,7 +163,8 @@ std::string formatScore(const ScoreReport &r, const ScoreOptions &opt, bool mark
     } else {
         const std::string within = std::string("within ") + k + " sigma";
         std::snprintf(line, sizeof line, "%-16s %9s %5s %12s %14s %18s %12s %22s %12s\n", "condition", "measured", "ok",
-                      "silent wrong", within.c_str(), "median |dmu|/sigma", "median |dmu|", "worst dmu", "worst ok dmu");
+                      "silent wrong", within.c_str(), "median |dmu|/sigma", "median |dmu|", "worst dmu",
+                      "worst ok dmu");
         s += line;
     }
     for (const ConditionScore &c : r.conditions) {
@@ -180,8 +186,7 @@ std::string formatScore(const ScoreReport &r, const ScoreOptions &opt, bool mark
                           c.measured ? med : "-", c.worstId.empty() ? "-" : worst, worstOk.c_str());
         s += line;
     }
-    std::snprintf(line, sizeof line,
-                  "%s; silent wrong: status ok with |Δμ| > max(%g, %g·μ); Δμ = measured − true.\n",
+    std::snprintf(line, sizeof line, "%s; silent wrong: status ok with |Δμ| > max(%g, %g·μ); Δμ = measured − true.\n",
                   r.sigmaSource.c_str(), opt.toleranceAbs, opt.toleranceRel);
     s += markdown ? "\n" + std::string(line) : std::string(line);
     return s;

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "manifest.h"
+#include "host_tools/manifest.h"
 
 namespace icacam::host {
 
@@ -20,7 +20,7 @@ enum class ModelSigma { Auto, Keep, Drop };
 struct ScoreOptions {
     double toleranceAbs = 0.01; // a silent wrong answer: ok with |Δμ| > max(abs, rel · μ)
     double toleranceRel = 0.05;
-    double k = 2;               // the coverage interval: |Δμ| ≤ k σ
+    double k = 2; // the coverage interval: |Δμ| ≤ k σ
     // Auto: drop sigma_model when the results' model is one of the paper's (the truth files
     // of `icacam synth` and ../shared/data hold the paper's μ) and the column exists.
     ModelSigma modelSigma = ModelSigma::Auto;
@@ -28,8 +28,8 @@ struct ScoreOptions {
 
 struct ConditionScore {
     std::string condition;
-    int total = 0;          // records in the truth
-    int measured = 0;       // with a μ (ok or warn)
+    int total = 0;    // records in the truth
+    int measured = 0; // with a μ (ok or warn)
     int ok = 0;
     int silentWrong = 0;
     int withinK = 0;        // measured with |Δμ| ≤ k σ
@@ -37,7 +37,7 @@ struct ConditionScore {
     double medianAbs = 0;   // median |Δμ|
     double worstDmu = 0;    // the largest |Δμ|, signed
     std::string worstId, worstStatus;
-    double worstOkDmu = 0;  // the largest |Δμ| among the ok, signed
+    double worstOkDmu = 0; // the largest |Δμ| among the ok, signed
     std::string worstOkId;
     double withinFraction() const { return measured ? double(withinK) / measured : 0; }
 };

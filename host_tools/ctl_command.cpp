@@ -1,5 +1,5 @@
 // `icacam ctl`: the PC side of the device's JSON-lines serial protocol.
-#include "ctl_command.h"
+#include "host_tools/ctl_command.h"
 
 #include <cerrno>
 #include <chrono>
@@ -11,18 +11,17 @@
 #include <termios.h>
 #include <unistd.h>
 
-#include "cli_options.h"
+#include "host_tools/cli_options.h"
 
 namespace icacam::host {
 
 namespace {
 
-const char *kUsage =
-    "usage: icacam ctl --port DEVICE [--baud 115200] [--timeout-ms 3000] COMMAND [ARG...]\n"
-    "Sends one request (help, status, trigger, get [KEY], set KEY VALUE, results [N],\n"
-    "scalecheck DIAMETER_MM [TOLERANCE_PCT [THICKNESS_MM]], aim, snapshot) and\n"
-    "prints the device's answer lines. Unprompted lines (hello, results of button presses)\n"
-    "that arrive meanwhile are printed too.\n";
+const char *kUsage = "usage: icacam ctl --port DEVICE [--baud 115200] [--timeout-ms 3000] COMMAND [ARG...]\n"
+                     "Sends one request (help, status, trigger, get [KEY], set KEY VALUE, results [N],\n"
+                     "scalecheck DIAMETER_MM [TOLERANCE_PCT [THICKNESS_MM]], aim, snapshot) and\n"
+                     "prints the device's answer lines. Unprompted lines (hello, results of button presses)\n"
+                     "that arrive meanwhile are printed too.\n";
 
 speed_t baudConstant(long baud)
 {
@@ -35,8 +34,10 @@ speed_t baudConstant(long baud)
     case 230400: return B230400;
     case 460800: return B460800;
     case 921600: return B921600;
-    default: throw cli::UsageError("--baud: unsupported rate " + std::to_string(baud) +
-                                   " (9600, 19200, 38400, 57600, 115200, 230400, 460800, 921600)", kUsage);
+    default:
+        throw cli::UsageError("--baud: unsupported rate " + std::to_string(baud) +
+                                  " (9600, 19200, 38400, 57600, 115200, 230400, 460800, 921600)",
+                              kUsage);
     }
 }
 
@@ -59,8 +60,9 @@ bool answerComplete(const std::string &cmd, const std::string &line, long *expec
     }
     if (line.find("\"type\":\"record\"") != std::string::npos) return --*expectMore <= 0;
     if (line.find("\"type\":\"hello\"") != std::string::npos) return false;
-    if (cmd == "trigger") return line.find("\"type\":\"result\"") != std::string::npos ||
-                                 line.find("\"type\":\"error\"") != std::string::npos;
+    if (cmd == "trigger")
+        return line.find("\"type\":\"result\"") != std::string::npos ||
+               line.find("\"type\":\"error\"") != std::string::npos;
     return true;
 }
 
@@ -74,14 +76,22 @@ int ctlCommand(const std::vector<std::string> &args)
     // Options come before the device command; everything from the command on is sent.
     cli::OptionReader opts(args, kUsage);
     while (opts.next()) {
-        if (!opts.isOption()) { words = opts.rest(); break; }
-        if (opts.isHelp()) { std::cout << kUsage; return 0; }
-        else if (opts.is("--port")) port = opts.value();
+        if (!opts.isOption()) {
+            words = opts.rest();
+            break;
+        }
+        if (opts.isHelp()) {
+            std::cout << kUsage;
+            return 0;
+        } else if (opts.is("--port"))
+            port = opts.value();
         else if (opts.is("--baud")) {
             baud = double(opts.wholeNumber(1, 4000000));
             baudConstant(long(baud)); // refused here, before the port is opened
-        } else if (opts.is("--timeout-ms")) timeoutMs = double(opts.wholeNumber(1, 3600000));
-        else opts.unknown();
+        } else if (opts.is("--timeout-ms"))
+            timeoutMs = double(opts.wholeNumber(1, 3600000));
+        else
+            opts.unknown();
     }
     if (port.empty() || words.empty()) opts.missing("--port and a command");
     Port p;
@@ -112,8 +122,8 @@ int ctlCommand(const std::vector<std::string> &args)
     int answered = 0;
     char chunk[4096];
     while (std::chrono::steady_clock::now() < deadline) {
-        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
-            deadline - std::chrono::steady_clock::now()).count();
+        const auto left =
+            std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now()).count();
         pollfd pfd{p.fd, POLLIN, 0};
         const int r = ::poll(&pfd, 1, int(std::max<long long>(1, left)));
         if (r < 0 && errno == EINTR) continue;
@@ -129,7 +139,8 @@ int ctlCommand(const std::vector<std::string> &args)
             buf.erase(0, nl + 1);
             if (l.empty()) continue;
             std::cout << l << "\n";
-            if (answerComplete(words[0], l, &expectMore)) return l.find("\"type\":\"error\"") == std::string::npos ? 0 : 3;
+            if (answerComplete(words[0], l, &expectMore))
+                return l.find("\"type\":\"error\"") == std::string::npos ? 0 : 3;
             ++answered;
         }
     }

@@ -1,4 +1,4 @@
-#include "end_face_renderer.h"
+#include "host_tools/end_face_renderer.h"
 
 #include <algorithm>
 #include <cmath>
@@ -21,11 +21,20 @@ double eqFactor(const EndFaceScene &s, int b)
     for (int k = 0; k < 3; ++k) p += 0.5 * s.wobble[b][k] * s.wobble[b][k];
     return std::sqrt(p);
 }
-double smoothStep(double x) { return std::clamp(x + 0.5, 0.0, 1.0); } // 1 px linear ramp
+double smoothStep(double x)
+{
+    return std::clamp(x + 0.5, 0.0, 1.0);
+} // 1 px linear ramp
 } // namespace
 
-double EndFaceScene::rInnerEqMm() const { return rInnerMm * eqFactor(*this, 0); }
-double EndFaceScene::rOuterEqMm() const { return rOuterMm * eqFactor(*this, 1); }
+double EndFaceScene::rInnerEqMm() const
+{
+    return rInnerMm * eqFactor(*this, 0);
+}
+double EndFaceScene::rOuterEqMm() const
+{
+    return rOuterMm * eqFactor(*this, 1);
+}
 
 double drawnBoundaryMm(const EndFaceScene &s, int b, double theta)
 {
@@ -119,7 +128,8 @@ cv::Mat renderEndFace(const EndFaceScene &s)
             }
             if (r < rm + 2) {
                 const double inBarrel = smoothStep(rm - r);
-                double barrel = s.barrel + s.highlight * std::exp(-0.5 * std::pow((r - (0.4 * ro + 0.6 * rm)) / 3.0, 2));
+                double barrel =
+                    s.barrel + s.highlight * std::exp(-0.5 * std::pow((r - (0.4 * ro + 0.6 * rm)) / 3.0, 2));
                 v = v * (1 - inBarrel) + barrel * inBarrel;
                 const double roT = ro * wobbleAt(s, 1, t) + s.edgeOffsetMm[1] / s.mmPerPx;
                 const double riT = ri * wobbleAt(s, 0, t) + s.edgeOffsetMm[0] / s.mmPerPx;
@@ -144,8 +154,8 @@ cv::Mat renderEndFace(const EndFaceScene &s)
         const int radius = int(U(0.02, 0.08) * ro);
         const double sigma = U(3, 10);
         const int reach = radius + int(std::ceil(4 * sigma)) + 3;
-        const cv::Rect box = cv::Rect(c.x - reach, c.y - reach, 2 * reach + 1, 2 * reach + 1) &
-                             cv::Rect(0, 0, f.cols, f.rows);
+        const cv::Rect box =
+            cv::Rect(c.x - reach, c.y - reach, 2 * reach + 1, 2 * reach + 1) & cv::Rect(0, 0, f.cols, f.rows);
         if (box.empty()) continue;
         cv::Mat spot = cv::Mat::zeros(box.size(), CV_32F);
         cv::circle(spot, c - box.tl(), radius, cv::Scalar(level), -1, cv::LINE_AA);
@@ -174,8 +184,10 @@ cv::Mat renderEndFace(const EndFaceScene &s)
 std::vector<uint8_t> encodeEndFace(const EndFaceScene &s, const cv::Mat &img)
 {
     std::vector<uint8_t> buf;
-    if (s.jpegQuality > 0) cv::imencode(".jpg", img, buf, {cv::IMWRITE_JPEG_QUALITY, s.jpegQuality});
-    else cv::imencode(".png", img, buf);
+    if (s.jpegQuality > 0)
+        cv::imencode(".jpg", img, buf, {cv::IMWRITE_JPEG_QUALITY, s.jpegQuality});
+    else
+        cv::imencode(".png", img, buf);
     return buf;
 }
 

@@ -24,16 +24,16 @@ struct EndFaceScene {
     // a soft transition whose middle is not the boundary itself. The truth radii below
     // exclude it.
     double edgeOffsetMm[2] = {0, 0};
-    double fade = 0;            // ICA contrast fades by this fraction around the ring
-    double turningMarks = 0;    // amplitude of concentric marks in the ICA (grey levels)
+    double fade = 0;         // ICA contrast fades by this fraction around the ring
+    double turningMarks = 0; // amplitude of concentric marks in the ICA (grey levels)
     int stains = 0, scratches = 0;
-    double gradient = 0;        // illumination gradient across the frame (fraction)
-    double vignetting = 0;      // fall-off at the corners (fraction)
-    double highlight = 0;       // highlight ring on the barrel (grey levels)
-    bool distractor = false;    // a circle in the fixture
+    double gradient = 0;     // illumination gradient across the frame (fraction)
+    double vignetting = 0;   // fall-off at the corners (fraction)
+    double highlight = 0;    // highlight ring on the barrel (grey levels)
+    bool distractor = false; // a circle in the fixture
     double blurSigmaPx = 0;
     double noiseSigma = 0;
-    int jpegQuality = 0;        // 0: PNG
+    int jpegQuality = 0; // 0: PNG
     uint32_t seed = 1;
 
     // Equivalent radii sqrt(area/π) of the drawn boundaries (the truth).

@@ -1,4 +1,4 @@
-#include "image_file.h"
+#include "host_tools/image_file.h"
 
 #include <fstream>
 #include <iterator>
@@ -27,8 +27,7 @@ std::string checkContainer(const std::vector<uint8_t> &b, std::string *format)
         while (end > 2 && (b[end - 1] == 0x00 || b[end - 1] == 0xFF)) --end;
         const bool eoiAtEnd = end >= 4 && b[end - 2] == 0xFF && b[end - 1] == 0xD9;
         const bool eoiBeforePad = end >= 3 && end < b.size() && b[end - 1] == 0xFF && b[end] == 0xD9;
-        if (!eoiAtEnd && !eoiBeforePad)
-            return "JPEG file is truncated (no end-of-image marker)";
+        if (!eoiAtEnd && !eoiBeforePad) return "JPEG file is truncated (no end-of-image marker)";
         return "";
     }
     *format = "other";

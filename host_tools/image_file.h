@@ -10,9 +10,9 @@
 namespace icacam::host {
 
 struct LumaImage {
-    cv::Mat luma;        // CV_8UC1, continuous
-    std::string format;  // "png", "jpeg", ...
-    int channels = 0;    // channels in the file
+    cv::Mat luma;       // CV_8UC1, continuous
+    std::string format; // "png", "jpeg", ...
+    int channels = 0;   // channels in the file
 };
 
 // Returns an empty string on success, else the reason in words.

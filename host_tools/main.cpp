@@ -4,33 +4,35 @@
 #include <string>
 #include <vector>
 
-#include "calibrate_command.h"
-#include "cli_options.h"
-#include "ctl_command.h"
-#include "fe/fe_command.h"
-#include "fe/fe_tables.h"
-#include "loop/loop_command.h"
-#include "measure_command.h"
-#include "score_command.h"
-#include "synth_command.h"
+#include "host_tools/calibrate_command.h"
+#include "host_tools/cli_options.h"
+#include "host_tools/ctl_command.h"
+#include "host_tools/fe/fe_command.h"
+#include "host_tools/fe/fe_tables.h"
+#include "host_tools/loop/loop_command.h"
+#include "host_tools/measure_command.h"
+#include "host_tools/score_command.h"
+#include "host_tools/synth_command.h"
 
 namespace {
-const char *kHelp =
-    "usage: icacam <command> [options]\n"
-    "commands:\n"
-    "  measure   measure μ from saved end-face images listed in a manifest\n"
-    "  synth     render synthetic end-face images with ground truth\n"
-    "  score     judge measured results against a truth file, per condition\n"
-    "  calibrate camera intrinsics, distortion and fixture pose from board photos\n"
-    "  fe        CalculiX upsetting runs, sweeps and the μ model built from them\n"
-    "  loop      residuals against measured records: rank causes, correct, report\n"
-    "  ctl       talk to the device over its serial line (status, trigger, settings, results)\n"
-    "Run 'icacam <command> --help' for the options of one command.\n";
+const char *kHelp = "usage: icacam <command> [options]\n"
+                    "commands:\n"
+                    "  measure   measure μ from saved end-face images listed in a manifest\n"
+                    "  synth     render synthetic end-face images with ground truth\n"
+                    "  score     judge measured results against a truth file, per condition\n"
+                    "  calibrate camera intrinsics, distortion and fixture pose from board photos\n"
+                    "  fe        CalculiX upsetting runs, sweeps and the μ model built from them\n"
+                    "  loop      residuals against measured records: rank causes, correct, report\n"
+                    "  ctl       talk to the device over its serial line (status, trigger, settings, results)\n"
+                    "Run 'icacam <command> --help' for the options of one command.\n";
 }
 
 int main(int argc, char **argv)
 {
-    if (argc < 2) { std::cerr << "icacam: a command is needed\n" << kHelp; return 2; }
+    if (argc < 2) {
+        std::cerr << "icacam: a command is needed\n" << kHelp;
+        return 2;
+    }
     const std::string cmd = argv[1];
     const std::vector<std::string> args(argv + 2, argv + argc);
     try {
@@ -44,7 +46,10 @@ int main(int argc, char **argv)
         if (cmd == "fe") return icacam::host::feCommand(args);
         if (cmd == "loop") return icacam::host::loopCommand(args);
         if (cmd == "ctl") return icacam::host::ctlCommand(args);
-        if (cmd == "-h" || cmd == "--help" || cmd == "help") { std::cout << kHelp; return 0; }
+        if (cmd == "-h" || cmd == "--help" || cmd == "help") {
+            std::cout << kHelp;
+            return 0;
+        }
         std::cerr << "icacam: unknown command '" << cmd << "'\n" << kHelp;
         return 2;
     } catch (const icacam::host::cli::UsageError &e) {

@@ -1,4 +1,4 @@
-#include "manifest.h"
+#include "host_tools/manifest.h"
 
 #include <cmath>
 #include <cstdlib>
@@ -28,12 +28,20 @@ bool splitCsvLine(const std::string &line, std::vector<std::string> *fields)
         const char c = line[i];
         if (quoted) {
             if (c == '"') {
-                if (i + 1 < line.size() && line[i + 1] == '"') { cur += '"'; ++i; }
-                else quoted = false;
-            } else cur += c;
-        } else if (c == '"') quoted = true;
-        else if (c == ',') { fields->push_back(cur); cur.clear(); }
-        else if (c != '\r') cur += c;
+                if (i + 1 < line.size() && line[i + 1] == '"') {
+                    cur += '"';
+                    ++i;
+                } else
+                    quoted = false;
+            } else
+                cur += c;
+        } else if (c == '"')
+            quoted = true;
+        else if (c == ',') {
+            fields->push_back(cur);
+            cur.clear();
+        } else if (c != '\r')
+            cur += c;
     }
     if (quoted) return false;
     fields->push_back(cur);
@@ -72,28 +80,40 @@ bool parseManifest(const std::string &text, Manifest *out, std::string *error)
         ++lineNo;
         if (lineNo == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line = line.substr(3);
         if (trim(line).empty() || trim(line) == "\r") continue;
-        if (!splitCsvLine(line, &fields)) { *error = "header has an unterminated quote"; return false; }
+        if (!splitCsvLine(line, &fields)) {
+            *error = "header has an unterminated quote";
+            return false;
+        }
         for (auto &f : fields) out->columns.push_back(trim(f));
         break;
     }
-    if (out->columns.empty()) { *error = "manifest is empty (no header row)"; return false; }
+    if (out->columns.empty()) {
+        *error = "manifest is empty (no header row)";
+        return false;
+    }
     bool hasId = false;
     for (auto &c : out->columns) hasId |= c == "id";
-    if (!hasId) { *error = "manifest header has no 'id' column"; return false; }
+    if (!hasId) {
+        *error = "manifest header has no 'id' column";
+        return false;
+    }
 
     while (std::getline(in, line)) {
         ++lineNo;
         if (trim(line).empty() || trim(line) == "\r") continue;
         ManifestRow row;
         row.line = lineNo;
-        if (line.size() > 65536) row.error = "row longer than 64 KiB";
-        else if (!splitCsvLine(line, &fields)) row.error = "unterminated quote";
+        if (line.size() > 65536)
+            row.error = "row longer than 64 KiB";
+        else if (!splitCsvLine(line, &fields))
+            row.error = "unterminated quote";
         else if (fields.size() != out->columns.size())
             row.error = "row has " + std::to_string(fields.size()) + " fields, header has " +
                         std::to_string(out->columns.size());
         if (row.error.empty())
             for (size_t i = 0; i < fields.size(); ++i) row.cells[out->columns[i]] = trim(fields[i]);
-        else if (!fields.empty()) row.cells["id"] = trim(fields[0]);
+        else if (!fields.empty())
+            row.cells["id"] = trim(fields[0]);
         out->rows.push_back(std::move(row));
     }
     return true;
@@ -102,7 +122,10 @@ bool parseManifest(const std::string &text, Manifest *out, std::string *error)
 bool readManifest(const std::string &path, Manifest *out, std::string *error)
 {
     std::ifstream f(path, std::ios::binary);
-    if (!f) { *error = "cannot open manifest '" + path + "'"; return false; }
+    if (!f) {
+        *error = "cannot open manifest '" + path + "'";
+        return false;
+    }
     std::stringstream ss;
     ss << f.rdbuf();
     const auto slash = path.find_last_of('/');

@@ -9,9 +9,9 @@
 namespace icacam::host {
 
 struct ManifestRow {
-    int line = 0;                           // 1-based line in the file
+    int line = 0; // 1-based line in the file
     std::map<std::string, std::string> cells;
-    std::string error;                      // non-empty: the row could not be parsed
+    std::string error; // non-empty: the row could not be parsed
 
     std::string get(const std::string &key, const std::string &fallback = "") const;
     bool has(const std::string &key) const;

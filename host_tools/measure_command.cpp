@@ -1,5 +1,5 @@
 // `icacam measure`: re-measure saved images in batch (PRODUCT.md §6).
-#include "measure_command.h"
+#include "host_tools/measure_command.h"
 
 #include <cmath>
 #include <filesystem>
@@ -10,12 +10,12 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "cli_options.h"
-#include "manifest.h"
-#include "number_text.h"
+#include "host_tools/cli_options.h"
+#include "host_tools/manifest.h"
+#include "host_tools/number_text.h"
+#include "host_tools/record_measurer.h"
+#include "host_tools/result_writer.h"
 #include "vision/model/friction_models.h"
-#include "record_measurer.h"
-#include "result_writer.h"
 
 namespace icacam::host {
 
@@ -28,20 +28,20 @@ std::string usage()
 {
     const ReadingTolerance t;
     const DeclaredTolerances d;
-    return std::string(
-               "usage: icacam measure --manifest FILE [--out FILE] [--format csv|jsonl]\n"
-               "                      [--overlay DIR] [--repeat N] [--model NAME] [--tolerance ABS[,REL]]\n"
-               "  --manifest FILE  the records: columns id,image,n,mm_per_px; optional k_mpa, d0_mm,\n"
-               "                   h0_mm, h_final_mm\n"
-               "  --out FILE       the results (default: standard output)\n"
-               "  --format         csv (default) or jsonl\n"
-               "  --overlay DIR    also draw each measured image's boundaries into DIR/<id>.png\n"
-               "  --repeat N       measure each image N times (default 1: timing and profiling)\n"
-               "  --model NAME     the friction model (default ") +
+    return std::string("usage: icacam measure --manifest FILE [--out FILE] [--format csv|jsonl]\n"
+                       "                      [--overlay DIR] [--repeat N] [--model NAME] [--tolerance ABS[,REL]]\n"
+                       "  --manifest FILE  the records: columns id,image,n,mm_per_px; optional k_mpa, d0_mm,\n"
+                       "                   h0_mm, h_final_mm\n"
+                       "  --out FILE       the results (default: standard output)\n"
+                       "  --format         csv (default) or jsonl\n"
+                       "  --overlay DIR    also draw each measured image's boundaries into DIR/<id>.png\n"
+                       "  --repeat N       measure each image N times (default 1: timing and profiling)\n"
+                       "  --model NAME     the friction model (default ") +
            vision::kDefaultModel + "; known: " + cli::modelNames() +
            ")\n"
            "  --tolerance ABS[,REL]  status ok only when 2 mu_sigma is within max(ABS, REL * mu)\n"
-           "                   (default " + numberText("%g", t.absMu) + "," + numberText("%g", t.relMu) +
+           "                   (default " +
+           numberText("%g", t.absMu) + "," + numberText("%g", t.relMu) +
            "; the columns tolerance_mu, tolerance_rel per record)\n"
            "One bad record never stops the batch: it gets status=error.\n"
            "Models: paper_reduction, the paper's fit with u carried to 50 % reduction by the FE du/dr\n"
@@ -53,7 +53,8 @@ std::string usage()
            "Every row carries mu_sigma and its budget (sigma_edges, sigma_scale, sigma_reduction, sigma_n,\n"
            "sigma_model). Declared inputs' tolerances (1 sigma, columns): mm_per_px_tol (relative, default " +
            numberText("%g", d.scaleRel) + "),\nh_final_tol_mm (" + numberText("%g", d.hFinalMm) + "), n_tol (" +
-           numberText("%g", d.n) + "); without h_final_mm the reduction is inferred from the silhouette\n"
+           numberText("%g", d.n) +
+           "); without h_final_mm the reduction is inferred from the silhouette\n"
            "(docs/uncertainty.md).\n";
 }
 
@@ -79,11 +80,9 @@ void drawOverlay(const cv::Mat &luma, const Measurement &m, const std::string &p
     points(m.outerPoints, {0, 200, 255});
     curve(m.inner, {255, 0, 0});
     curve(m.outer, {0, 0, 255});
-    if (m.rMaxPx > 0)
-        cv::circle(bgr, {int(m.centreX), int(m.centreY)}, int(m.rMaxPx), {0, 255, 0}, 1, cv::LINE_AA);
+    if (m.rMaxPx > 0) cv::circle(bgr, {int(m.centreX), int(m.centreY)}, int(m.rMaxPx), {0, 255, 0}, 1, cv::LINE_AA);
     char text[160];
-    std::snprintf(text, sizeof text, "mu=%.4f +- %.4f  u=%.4f mm  %s", m.mu, m.muSigma, m.uMm,
-                  statusName(m.status));
+    std::snprintf(text, sizeof text, "mu=%.4f +- %.4f  u=%.4f mm  %s", m.mu, m.muSigma, m.uMm, statusName(m.status));
     cv::putText(bgr, text, {20, 40}, cv::FONT_HERSHEY_SIMPLEX, 1.0, {0, 255, 255}, 2);
     cv::imwrite(path, bgr);
 }
@@ -97,20 +96,28 @@ int measureCommand(const std::vector<std::string> &args)
     SpecimenSpec defaults;
     cli::OptionReader opts(args, usage());
     while (opts.next()) {
-        if (opts.isHelp()) { std::cout << usage(); return 0; }
-        else if (opts.is("--manifest")) manifestPath = opts.value();
-        else if (opts.is("--out")) outPath = opts.value();
+        if (opts.isHelp()) {
+            std::cout << usage();
+            return 0;
+        } else if (opts.is("--manifest"))
+            manifestPath = opts.value();
+        else if (opts.is("--out"))
+            outPath = opts.value();
         else if (opts.is("--format")) {
             format = opts.value();
             if (format != "csv" && format != "jsonl") opts.fail("csv or jsonl, not '" + format + "'");
-        } else if (opts.is("--overlay")) overlayDir = opts.value();
+        } else if (opts.is("--overlay"))
+            overlayDir = opts.value();
         else if (opts.is("--model")) {
             modelName = opts.value();
-            if (!frictionModel(modelName)) opts.fail("unknown model '" + modelName + "' (known: " + cli::modelNames() + ")");
+            if (!frictionModel(modelName))
+                opts.fail("unknown model '" + modelName + "' (known: " + cli::modelNames() + ")");
         } else if (opts.is("--tolerance")) {
             if (!parseTolerance(opts.value(), &defaults.tolerance)) opts.fail("ABS or ABS,REL (e.g. 0.01,0.05)");
-        } else if (opts.is("--repeat")) repeat = opts.wholeNumber(1, 100000);
-        else opts.unknown();
+        } else if (opts.is("--repeat"))
+            repeat = opts.wholeNumber(1, 100000);
+        else
+            opts.unknown();
     }
     if (manifestPath.empty()) opts.missing("--manifest");
     const FrictionModel *model = frictionModel(modelName);
@@ -149,8 +156,8 @@ int measureCommand(const std::vector<std::string> &args)
         (st == Status::Ok ? nOk : st == Status::Warn ? nWarn : nErr)++;
         writer.write(r);
     }
-    std::cerr << "icacam measure: " << manifest.rows.size() << " records: " << nOk << " ok, "
-              << nWarn << " warn, " << nErr << " error\n";
+    std::cerr << "icacam measure: " << manifest.rows.size() << " records: " << nOk << " ok, " << nWarn << " warn, "
+              << nErr << " error\n";
     return 0;
 }
 

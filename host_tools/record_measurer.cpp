@@ -1,4 +1,4 @@
-#include "record_measurer.h"
+#include "host_tools/record_measurer.h"
 
 #include <filesystem>
 
@@ -8,7 +8,7 @@ namespace fs = std::filesystem;
 using namespace icacam::vision;
 
 RecordMeasurer::RecordMeasurer(const FrictionModel &model, const SpecimenSpec &defaults)
-    : model_(model), defaults_(defaults)
+        : model_(model), defaults_(defaults)
 {
     analyzer_.configure(16384, 16384); // working memory does not grow with the frame
 }
@@ -95,11 +95,12 @@ void RecordMeasurer::measure(const ManifestRow &row, const Manifest &manifest, R
             it = calibrations_.emplace(c.string(), std::make_pair(file, e)).first;
         }
         const calibration::CalibrationFile &file = it->second.first;
-        if (!it->second.second.empty()) out->message = it->second.second;
+        if (!it->second.second.empty())
+            out->message = it->second.second;
         else if (file.imageWidth != luma.cols || file.imageHeight != luma.rows)
             out->message = "calibration is for " + std::to_string(file.imageWidth) + "x" +
-                           std::to_string(file.imageHeight) + " images, this one is " +
-                           std::to_string(luma.cols) + "x" + std::to_string(luma.rows);
+                           std::to_string(file.imageHeight) + " images, this one is " + std::to_string(luma.cols) +
+                           "x" + std::to_string(luma.rows);
         if (!out->message.empty()) return;
         plane_ = file.plane;
         spec.calibration = &plane_;

@@ -9,8 +9,8 @@
 #include <utility>
 
 #include "calibration/calibration_file.h"
-#include "image_file.h"
-#include "manifest.h"
+#include "host_tools/image_file.h"
+#include "host_tools/manifest.h"
 #include "vision/end_face_analyzer.h"
 #include "vision/model/friction_model.h"
 
@@ -21,9 +21,9 @@ namespace icacam::host {
 //   tolerance_rel (relative to μ). CLI-wide values come in through `defaults`.
 struct RecordReading {
     vision::Measurement m;
-    bool measured = false;   // reached the pipeline (m holds its result)
-    std::string message;     // why it did not
-    LumaImage image;         // the decoded frame, for overlays
+    bool measured = false; // reached the pipeline (m holds its result)
+    std::string message;   // why it did not
+    LumaImage image;       // the decoded frame, for overlays
     vision::SpecimenSpec spec;
 };
 

@@ -1,4 +1,4 @@
-#include "result_writer.h"
+#include "host_tools/result_writer.h"
 
 #include <cmath>
 #include <cstdio>
@@ -21,9 +21,15 @@ std::string jsonQuote(std::string_view s)
 {
     std::string q = "\"";
     for (unsigned char c : s) {
-        if (c == '"' || c == '\\') { q += '\\'; q += char(c); }
-        else if (c < 0x20) { char b[8]; std::snprintf(b, sizeof b, "\\u%04x", c); q += b; }
-        else q += char(c);
+        if (c == '"' || c == '\\') {
+            q += '\\';
+            q += char(c);
+        } else if (c < 0x20) {
+            char b[8];
+            std::snprintf(b, sizeof b, "\\u%04x", c);
+            q += b;
+        } else
+            q += char(c);
     }
     return q + "\"";
 }

@@ -1,12 +1,12 @@
-#include "score_command.h"
+#include "host_tools/score_command.h"
 
 #include <iostream>
 #include <stdexcept>
 
-#include "cli_options.h"
-#include "coverage_score.h"
-#include "manifest.h"
-#include "number_text.h"
+#include "host_tools/cli_options.h"
+#include "host_tools/coverage_score.h"
+#include "host_tools/manifest.h"
+#include "host_tools/number_text.h"
 
 namespace icacam::host {
 
@@ -34,10 +34,15 @@ int scoreCommand(const std::vector<std::string> &args)
     bool markdown = false;
     cli::OptionReader opts(args, usage());
     while (opts.next()) {
-        if (opts.isHelp()) { std::cout << usage(); return 0; }
-        else if (opts.is("--results")) resultsPath = opts.value();
-        else if (opts.is("--truth")) truthPath = opts.value();
-        else if (opts.is("--markdown")) markdown = opts.flag();
+        if (opts.isHelp()) {
+            std::cout << usage();
+            return 0;
+        } else if (opts.is("--results"))
+            resultsPath = opts.value();
+        else if (opts.is("--truth"))
+            truthPath = opts.value();
+        else if (opts.is("--markdown"))
+            markdown = opts.flag();
         else if (opts.is("--k")) {
             opt.k = opts.number();
             if (!(opt.k > 0)) opts.fail("a positive number");
@@ -50,11 +55,16 @@ int scoreCommand(const std::vector<std::string> &args)
                 opts.fail("ABS or ABS,REL (non-negative numbers), not '" + v + "'");
         } else if (opts.is("--model-sigma")) {
             const std::string v = opts.value();
-            if (v == "auto") opt.modelSigma = ModelSigma::Auto;
-            else if (v == "keep") opt.modelSigma = ModelSigma::Keep;
-            else if (v == "drop") opt.modelSigma = ModelSigma::Drop;
-            else opts.fail("auto, keep or drop, not '" + v + "'");
-        } else opts.unknown();
+            if (v == "auto")
+                opt.modelSigma = ModelSigma::Auto;
+            else if (v == "keep")
+                opt.modelSigma = ModelSigma::Keep;
+            else if (v == "drop")
+                opt.modelSigma = ModelSigma::Drop;
+            else
+                opts.fail("auto, keep or drop, not '" + v + "'");
+        } else
+            opts.unknown();
     }
     if (resultsPath.empty() || truthPath.empty()) opts.missing("--results and --truth (both are needed)");
     Manifest results, truth;

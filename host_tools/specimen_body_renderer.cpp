@@ -1,4 +1,4 @@
-#include "specimen_body_renderer.h"
+#include "host_tools/specimen_body_renderer.h"
 
 #include <algorithm>
 #include <cmath>
@@ -18,8 +18,8 @@ double barrelRadiusMm(double rOuterMm, double rMaxMm, double heightMm, double zM
 
 namespace {
 
-constexpr int kGridStep = 8;  // the undistortion is computed on this grid and interpolated
-constexpr int kSuper = 4;     // rays per pixel side where an edge may cross the pixel
+constexpr int kGridStep = 8; // the undistortion is computed on this grid and interpolated
+constexpr int kSuper = 4;    // rays per pixel side where an edge may cross the pixel
 constexpr int kMarchSteps = 96;
 
 // Undistorted normalized coordinates on a grid, interpolated bilinearly: the lens's map is
@@ -56,7 +56,7 @@ private:
 class BodyTracer {
 public:
     BodyTracer(const CameraModel &cam, const EndFaceScene &scene, double xMm, double yMm, double heightMm)
-        : scene_(scene), h_(heightMm)
+            : scene_(scene), h_(heightMm)
     {
         cv::Matx33d R;
         cv::Rodrigues(cam.fixtureRvec, R);
@@ -178,8 +178,7 @@ private:
 
 } // namespace
 
-cv::Mat renderSpecimenBody(const CameraModel &cam, const EndFaceScene &scene, double xMm, double yMm,
-                           double heightMm)
+cv::Mat renderSpecimenBody(const CameraModel &cam, const EndFaceScene &scene, double xMm, double yMm, double heightMm)
 {
     const RayGrid rays(cam);
     const BodyTracer body(cam, scene, xMm, yMm, heightMm);

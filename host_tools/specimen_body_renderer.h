@@ -9,8 +9,8 @@
 // normal turns away from the lens.
 #include <opencv2/core.hpp>
 
-#include "calibration_renderer.h"
-#include "end_face_renderer.h"
+#include "host_tools/calibration_renderer.h"
+#include "host_tools/end_face_renderer.h"
 
 namespace icacam::host {
 
@@ -25,7 +25,6 @@ double barrelRadiusMm(double rOuterMm, double rMaxMm, double heightMm, double zM
 // through `cam`. Pixels near an occluding or surface edge are supersampled (4 × 4 rays);
 // elsewhere one ray. The scene's illumination, blur and noise are applied in the camera's
 // frame.
-cv::Mat renderSpecimenBody(const CameraModel &cam, const EndFaceScene &scene, double xMm, double yMm,
-                           double heightMm);
+cv::Mat renderSpecimenBody(const CameraModel &cam, const EndFaceScene &scene, double xMm, double yMm, double heightMm);
 
 } // namespace icacam::host

@@ -1,5 +1,5 @@
 // `icacam synth`: render a set of synthetic end-face images with a manifest and the truth.
-#include "synth_command.h"
+#include "host_tools/synth_command.h"
 
 #include <cmath>
 #include <cstdio>
@@ -8,12 +8,12 @@
 #include <iostream>
 #include <stdexcept>
 
-#include "cli_options.h"
-#include "end_face_renderer.h"
-#include "manifest.h"
-#include "number_text.h"
-#include "synth_conditions.h"
-#include "synth_loop_set.h"
+#include "host_tools/cli_options.h"
+#include "host_tools/end_face_renderer.h"
+#include "host_tools/manifest.h"
+#include "host_tools/number_text.h"
+#include "host_tools/synth_conditions.h"
+#include "host_tools/synth_loop_set.h"
 #include "vision/model/paper_model.h"
 
 namespace icacam::host {
@@ -42,12 +42,16 @@ std::string usage()
            "       icacam synth --out DIR --effect process|optical|camera|material|speed|null\n"
            "                    [--radii] [--count N] [--seed S]\n"
            "  --out DIR     where DIR/images/*, DIR/manifest.csv and DIR/truth.csv are written\n"
-           "  --count N     records (default " + numberText("%g", kDefaultCount) + "; per condition with --condition)\n"
+           "  --count N     records (default " +
+           numberText("%g", kDefaultCount) +
+           "; per condition with --condition)\n"
            "  --seed S      the random seed (default 1): the same seed, the same set\n"
            "  --hard        the rendering nuisances (blur, noise, contrast …) at their limits\n"
            "  --effect E    a record set for `icacam loop` (mu_ref and recorded columns) carrying that\n"
            "                hidden effect, as images or (--radii) as measured radii (docs/loop.md)\n"
-           "  --condition   records under conditions a manifest does not declare (" + conditionNames() + "),\n"
+           "  --condition   records under conditions a manifest does not declare (" +
+           conditionNames() +
+           "),\n"
            "                truth.csv naming the condition and its true parameters; score a measurement\n"
            "                with `icacam score` (docs/uncertainty.md)\n";
 }
@@ -60,19 +64,30 @@ int synthCommand(const std::vector<std::string> &args)
     bool hard = false, radii = false;
     cli::OptionReader opts(args, usage());
     while (opts.next()) {
-        if (opts.isHelp()) { std::cout << usage(); return 0; }
-        else if (opts.is("--out")) outDir = opts.value();
-        else if (opts.is("--count")) count = double(opts.wholeNumber(1, 100000));
-        else if (opts.is("--seed")) seed = double(opts.wholeNumber(0, 4294967295L));
-        else if (opts.is("--hard")) hard = opts.flag();
-        else if (opts.is("--effect")) effect = opts.value();
-        else if (opts.is("--radii")) radii = opts.flag();
-        else if (opts.is("--condition")) conditions = opts.value();
-        else opts.unknown();
+        if (opts.isHelp()) {
+            std::cout << usage();
+            return 0;
+        } else if (opts.is("--out"))
+            outDir = opts.value();
+        else if (opts.is("--count"))
+            count = double(opts.wholeNumber(1, 100000));
+        else if (opts.is("--seed"))
+            seed = double(opts.wholeNumber(0, 4294967295L));
+        else if (opts.is("--hard"))
+            hard = opts.flag();
+        else if (opts.is("--effect"))
+            effect = opts.value();
+        else if (opts.is("--radii"))
+            radii = opts.flag();
+        else if (opts.is("--condition"))
+            conditions = opts.value();
+        else
+            opts.unknown();
     }
     if (outDir.empty()) opts.missing("--out");
     if (radii && effect.empty()) throw cli::UsageError("--radii applies to --effect sets", usage());
-    if (!effect.empty() && !conditions.empty()) throw cli::UsageError("--effect and --condition do not combine", usage());
+    if (!effect.empty() && !conditions.empty())
+        throw cli::UsageError("--effect and --condition do not combine", usage());
     if (!effect.empty()) {
         LoopSetOptions opt;
         if (!parseLoopEffect(effect, &opt.effect))
@@ -122,12 +137,11 @@ int synthCommand(const std::vector<std::string> &args)
         const double ri = s.rInnerEqMm(), ro = s.rOuterEqMm();
         const double muTrue = model.estimate({ro - ri, n, 0, 10, 15}).mu;
         char line[512];
-        std::snprintf(line, sizeof line, "%s,images/%s,%.4f,%d,10,15,%.7f\n", id, name.c_str(), n,
-                      int(U(250, 1250)), s.mmPerPx);
+        std::snprintf(line, sizeof line, "%s,images/%s,%.4f,%d,10,15,%.7f\n", id, name.c_str(), n, int(U(250, 1250)),
+                      s.mmPerPx);
         man << line;
-        std::snprintf(line, sizeof line, "%s,%.5f,%.5f,%.5f,%.5f,%.4f,%.2f,%.2f,%.2f,%.1f\n", id, muTrue,
-                      ro - ri, ri, ro, s.rMaxMm, (ro - ri) / s.mmPerPx, s.blurSigmaPx, s.noiseSigma,
-                      s.face - s.ica);
+        std::snprintf(line, sizeof line, "%s,%.5f,%.5f,%.5f,%.5f,%.4f,%.2f,%.2f,%.2f,%.1f\n", id, muTrue, ro - ri, ri,
+                      ro, s.rMaxMm, (ro - ri) / s.mmPerPx, s.blurSigmaPx, s.noiseSigma, s.face - s.ica);
         truth << line;
     }
     std::cerr << "icacam synth: wrote " << int(count) << " images to " << outDir << "\n";

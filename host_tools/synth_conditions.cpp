@@ -1,4 +1,4 @@
-#include "synth_conditions.h"
+#include "host_tools/synth_conditions.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,16 +12,16 @@
 #include <opencv2/calib3d.hpp>
 #include <opencv2/imgcodecs.hpp>
 
-#include "calibrate_command.h"
 #include "calibration/calibration_file.h"
-#include "calibration_renderer.h"
-#include "end_face_renderer.h"
-#include "specimen_body_renderer.h"
-#include "synth_command.h"
+#include "host_tools/calibrate_command.h"
+#include "host_tools/calibration_renderer.h"
+#include "host_tools/end_face_renderer.h"
+#include "host_tools/specimen_body_renderer.h"
+#include "host_tools/synth_command.h"
 #include "vision/model/paper_model.h"
-#include "vision/plane_calibration.h"
 #include "vision/model/radii_consistency.h"
 #include "vision/model/reduction_corrected_model.h"
+#include "vision/plane_calibration.h"
 
 namespace icacam::host {
 
@@ -31,12 +31,15 @@ namespace {
 
 constexpr double kH0Mm = 15, kD0Mm = 10;
 constexpr double kInnerEdgeSigmaMm = 0.005, kOuterEdgeSigmaMm = 0.001;
-constexpr SynthCondition kAll[] = {SynthCondition::Declared,     SynthCondition::Reduction,
-                                   SynthCondition::FixtureScale, SynthCondition::Tilt,
+constexpr SynthCondition kAll[] = {SynthCondition::Declared,       SynthCondition::Reduction,
+                                   SynthCondition::FixtureScale,   SynthCondition::Tilt,
                                    SynthCondition::CalibratedTilt, SynthCondition::LowRes};
 
 using Rng = std::mt19937;
-double uniform(Rng &rng, double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); }
+double uniform(Rng &rng, double a, double b)
+{
+    return std::uniform_real_distribution<double>(a, b)(rng);
+}
 
 // The specimen: n, μ at 50 % (the paper's model: the truth), its true reduction, and the
 // nominal radii at that reduction. The ring's width at 50 % comes from the paper's model,
@@ -81,8 +84,7 @@ double trueMu(double uEqMm, double n, double reduction)
 {
     static const vision::PaperModel paper;
     static const vision::ReductionCorrectedModel carry(paper, "paper_reduction");
-    const double u50 =
-        reduction == 0.5 ? uEqMm : carry.uAtBaseReduction({uEqMm, n, 0, kD0Mm, kH0Mm, 0}, reduction);
+    const double u50 = reduction == 0.5 ? uEqMm : carry.uAtBaseReduction({uEqMm, n, 0, kD0Mm, kH0Mm, 0}, reduction);
     return paper.estimate({u50, n, 0, kD0Mm, kH0Mm, 0}).mu;
 }
 
@@ -100,7 +102,7 @@ struct Record {
     Specimen spec;
     double declaredMmPerPx = 0; // 0: not declared (the calibration gives it)
     bool calibrated = false;
-    double trueMmPerPx = 0;     // at the end face, where the specimen lies
+    double trueMmPerPx = 0; // at the end face, where the specimen lies
     double tiltDeg = 0, k1 = 0, workingDistanceMm = 0, focalPx = 0;
     double riEq = 0, roEq = 0, rMax = 0;
     EndFaceScene scene;
@@ -125,7 +127,8 @@ bool specimenInFrame(const CameraModel &cam, double x, double y, double heightMm
     for (int k = 0; k < 36; ++k) {
         const double t = 2 * M_PI * k / 36;
         for (double h : {heightMm, heightMm / 2}) {
-            const cv::Point2d p = projectFromPlane(cam, x + (rMaxMm + 0.3) * std::cos(t), y + (rMaxMm + 0.3) * std::sin(t), h);
+            const cv::Point2d p =
+                projectFromPlane(cam, x + (rMaxMm + 0.3) * std::cos(t), y + (rMaxMm + 0.3) * std::sin(t), h);
             if (!(p.x > 8 && p.y > 8 && p.x < cam.width - 8 && p.y < cam.height - 8)) return false;
         }
     }
@@ -171,7 +174,8 @@ CalibratedCamera makeCalibratedCamera(Rng &rng, const fs::path &dir)
     std::snprintf(spec, sizeof spec, "chessboard:%dx%d:%.2f", board.cols, board.rows, board.squareMm);
     const std::string out = (dir / "camera.cal").string();
     // What `icacam calibrate` prints (views used, RMS, the camera) is the set's record of it.
-    calibrateCommand({"--images", views.string(), "--board", spec, "--flat", (views / "flat.png").string(), "--out", out});
+    calibrateCommand(
+        {"--images", views.string(), "--board", spec, "--flat", (views / "flat.png").string(), "--out", out});
     calibration::CalibrationFile file;
     if (std::string e = calibration::readCalibrationFile(out, &file); !e.empty()) throw std::runtime_error(e);
     c.plane = file.plane;
@@ -198,9 +202,7 @@ Record renderRecord(SynthCondition cond, Rng &rng, bool hard, const CalibratedCa
     cv::Mat img;
     switch (cond) {
     case SynthCondition::Declared:
-    case SynthCondition::Reduction:
-        img = renderEndFace(s);
-        break;
+    case SynthCondition::Reduction: img = renderEndFace(s); break;
     case SynthCondition::FixtureScale: {
         // A pinhole straight down from WD above the fixture: the scale measured on the fixture
         // is WD / (WD − h) times the end face's; the silhouette, at half height, lies between.
@@ -229,7 +231,8 @@ Record renderRecord(SynthCondition cond, Rng &rng, bool hard, const CalibratedCa
         cv::Point2d at;
         for (int tries = 0;; ++tries) {
             cam = calib ? calib->cam
-                        : drawTiltedCamera(rng, s.width, s.height, s.mmPerPx, uniform(rng, 6, 15), uniform(rng, -0.35, -0.1));
+                        : drawTiltedCamera(rng, s.width, s.height, s.mmPerPx, uniform(rng, 6, 15),
+                                           uniform(rng, -0.35, -0.1));
             const cv::Point2d axis = axisOnPlane(cam, faceHeight);
             at = axis + cv::Point2d(uniform(rng, -1.2, 1.2), uniform(rng, -1.2, 1.2));
             if (specimenInFrame(cam, at.x, at.y, faceHeight, sp.rMaxMm)) break;
@@ -268,8 +271,8 @@ std::string writeConditionSet(const std::string &dir, const ConditionSetOptions 
     const std::string manifestPath = (root / "manifest.csv").string();
     std::ofstream man(manifestPath), truth(root / "truth.csv");
     if (!man || !truth) throw std::runtime_error("cannot write to '" + dir + "'");
-    const bool anyCalibrated = std::find(opt.conditions.begin(), opt.conditions.end(),
-                                         SynthCondition::CalibratedTilt) != opt.conditions.end();
+    const bool anyCalibrated =
+        std::find(opt.conditions.begin(), opt.conditions.end(), SynthCondition::CalibratedTilt) != opt.conditions.end();
     man << "id,image,n,k_mpa,d0_mm,h0_mm,mm_per_px" << (anyCalibrated ? ",calibration" : "") << "\n";
     truth << "id,condition,mu,u_mm,r_inner_mm,r_outer_mm,r_bulge_mm,reduction,u_px,tilt_deg,k1,scale_error,"
              "working_distance_mm,focal_px,width,height,n,blur_px,noise,contrast,camera_truth\n";
@@ -301,7 +304,8 @@ std::string writeConditionSet(const std::string &dir, const ConditionSetOptions 
                 vision::PlaneCalibration got = calib.plane, want = toPlaneCalibration(calib.cam);
                 got.heightMm = want.heightMm = kH0Mm * (1 - rec.spec.reduction);
                 scaleError = vision::planeScaleAt(got, rec.centrePx.x, rec.centrePx.y) /
-                                 vision::planeScaleAt(want, rec.centrePx.x, rec.centrePx.y) - 1;
+                                 vision::planeScaleAt(want, rec.centrePx.x, rec.centrePx.y) -
+                             1;
             }
             // The true camera as a calibration file: measuring with it declares the condition.
             std::string cameraTruth;
@@ -316,13 +320,13 @@ std::string writeConditionSet(const std::string &dir, const ConditionSetOptions 
                     throw std::runtime_error(e);
             }
             const double u = rec.roEq - rec.riEq;
-            std::snprintf(line, sizeof line,
-                          "%s,%s,%.5f,%.5f,%.5f,%.5f,%.5f,%.4f,%.2f,%.2f,%.3f,%.4f,%.1f,%.0f,%d,%d,%.4f,%.2f,%.2f,%.1f,%s\n", id,
-                          conditionName(cond), trueMu(u, rec.spec.n, rec.spec.reduction), u, rec.riEq, rec.roEq,
-                          rec.rMax, rec.spec.reduction, u / rec.trueMmPerPx, rec.tiltDeg, rec.k1, scaleError,
-                          rec.workingDistanceMm, rec.focalPx, rec.scene.width, rec.scene.height, rec.spec.n,
-                          rec.scene.blurSigmaPx, rec.scene.noiseSigma, rec.scene.face - rec.scene.ica,
-                          cameraTruth.c_str());
+            std::snprintf(
+                line, sizeof line,
+                "%s,%s,%.5f,%.5f,%.5f,%.5f,%.5f,%.4f,%.2f,%.2f,%.3f,%.4f,%.1f,%.0f,%d,%d,%.4f,%.2f,%.2f,%.1f,%s\n", id,
+                conditionName(cond), trueMu(u, rec.spec.n, rec.spec.reduction), u, rec.riEq, rec.roEq, rec.rMax,
+                rec.spec.reduction, u / rec.trueMmPerPx, rec.tiltDeg, rec.k1, scaleError, rec.workingDistanceMm,
+                rec.focalPx, rec.scene.width, rec.scene.height, rec.spec.n, rec.scene.blurSigmaPx, rec.scene.noiseSigma,
+                rec.scene.face - rec.scene.ica, cameraTruth.c_str());
             truth << line;
             ++written;
             if (!opt.quiet && written % 50 == 0) std::cerr << "icacam synth: " << written << " images\n";

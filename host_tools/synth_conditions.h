@@ -30,8 +30,8 @@ struct ConditionSetOptions {
     std::vector<SynthCondition> conditions;
     int countPerCondition = 24;
     uint32_t seed = 1;
-    bool hard = false;            // nuisances at their limits (as `icacam synth --hard`)
-    bool quiet = false;           // no progress on stderr
+    bool hard = false;  // nuisances at their limits (as `icacam synth --hard`)
+    bool quiet = false; // no progress on stderr
 };
 
 // Writes DIR/images/*, DIR/manifest.csv (what the lab says), DIR/truth.csv (per id: the

@@ -1,4 +1,4 @@
-#include "synth_loop_set.h"
+#include "host_tools/synth_loop_set.h"
 
 #include <cmath>
 #include <cstdio>
@@ -7,8 +7,8 @@
 #include <random>
 #include <stdexcept>
 
-#include "end_face_renderer.h"
-#include "synth_command.h"
+#include "host_tools/end_face_renderer.h"
+#include "host_tools/synth_command.h"
 #include "vision/model/radii_consistency.h"
 #include "vision/model/reduction_corrected_model.h"
 
@@ -34,13 +34,20 @@ const char *const kCameras[] = {"cam-1", "cam-2", "cam-3"};
 
 bool parseLoopEffect(const std::string &name, LoopEffect *out)
 {
-    if (name == "null") *out = LoopEffect::Null;
-    else if (name == "process") *out = LoopEffect::Process;
-    else if (name == "optical") *out = LoopEffect::Optical;
-    else if (name == "camera") *out = LoopEffect::Camera;
-    else if (name == "material") *out = LoopEffect::Material;
-    else if (name == "speed") *out = LoopEffect::Speed;
-    else return false;
+    if (name == "null")
+        *out = LoopEffect::Null;
+    else if (name == "process")
+        *out = LoopEffect::Process;
+    else if (name == "optical")
+        *out = LoopEffect::Optical;
+    else if (name == "camera")
+        *out = LoopEffect::Camera;
+    else if (name == "material")
+        *out = LoopEffect::Material;
+    else if (name == "speed")
+        *out = LoopEffect::Speed;
+    else
+        return false;
     return true;
 }
 

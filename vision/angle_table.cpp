@@ -1,4 +1,4 @@
-#include "angle_table.h"
+#include "vision/angle_table.h"
 
 #include <cmath>
 #include <numbers>

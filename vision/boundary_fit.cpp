@@ -1,14 +1,17 @@
-#include "boundary_fit.h"
+#include "vision/boundary_fit.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
-#include "angle_table.h"
+#include "vision/angle_table.h"
 
 namespace icacam::vision {
 
-double BoundaryFit::radiusAt(double theta) const { return radiusAt(std::cos(theta), std::sin(theta)); }
+double BoundaryFit::radiusAt(double theta) const
+{
+    return radiusAt(std::cos(theta), std::sin(theta));
+}
 
 double BoundaryFit::radiusAt(double c1, double s1) const
 {
@@ -37,9 +40,8 @@ double medianOf(double *v, int n)
 
 } // namespace
 
-bool fitBoundary(const double *radiusPx, const bool *valid, int n,
-                 double centreX, double centreY, const FitOptions &opt, BoundaryFit *out,
-                 double *curveOut)
+bool fitBoundary(const double *radiusPx, const bool *valid, int n, double centreX, double centreY,
+                 const FitOptions &opt, BoundaryFit *out, double *curveOut)
 {
     if (n > kMaxRays || n < 8) return false;
     // The rays are evenly spaced, so the least-squares Fourier fit with some rays missing is
@@ -85,8 +87,8 @@ bool fitBoundary(const double *radiusPx, const bool *valid, int n,
     for (int pass = 0; pass < 3; ++pass) {
         used = 0;
         for (int i = 0; i < n; ++i) used += keep[i];
-        const int K = std::min({opt.maxHarmonics, BoundaryFit::kMaxHarmonics, pass == 0 ? 2 : 99,
-                                std::max(1, used / 8), (n - 1) / 2});
+        const int K = std::min(
+            {opt.maxHarmonics, BoundaryFit::kMaxHarmonics, pass == 0 ? 2 : 99, std::max(1, used / 8), (n - 1) / 2});
         if (used < 8) return false;
         // A few imputation sweeps per pass; more where many rays are missing.
         const int sweeps = used == n ? 1 : (pass == 2 ? 2 : 1);

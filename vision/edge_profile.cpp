@@ -1,13 +1,16 @@
-#include "edge_profile.h"
+#include "vision/edge_profile.h"
 
-#include "radial_profile.h"
+#include "vision/radial_profile.h"
 
 namespace icacam::vision {
 
 void profileDerivative(const uint16_t *s, int count, int32_t *d)
 {
     for (int i = 0; i < count; ++i) {
-        if (i < 2 || i + 2 >= count) { d[i] = 0; continue; }
+        if (i < 2 || i + 2 >= count) {
+            d[i] = 0;
+            continue;
+        }
         if (s[i - 2] == kOutsideFrame || s[i - 1] == kOutsideFrame || s[i + 1] == kOutsideFrame ||
             s[i + 2] == kOutsideFrame) {
             d[i] = 0;

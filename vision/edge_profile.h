@@ -2,7 +2,7 @@
 // Per-ray edge location on a sampled profile: a smoothed derivative and a sub-pixel peak.
 #include <cstdint>
 
-#include "fixed_point.h"
+#include "vision/fixed_point.h"
 
 namespace icacam::vision {
 
@@ -26,8 +26,7 @@ struct EdgePeak {
 // Sub-sample vertex of a parabola through (−1, dm), (0, d0), (+1, dp), in Q16.16.
 Q16_16 parabolaVertex(int32_t dm, int32_t d0, int32_t dp);
 
-template <typename T>
-EdgePeak strongestEdge(const T *d, int count, int lo, int hi, int sign, bool interior = false)
+template <typename T> EdgePeak strongestEdge(const T *d, int count, int lo, int hi, int sign, bool interior = false)
 {
     EdgePeak p{Q16_16::fromRaw(0), 0, false};
     if (lo < 1) lo = 1;
@@ -36,7 +35,10 @@ EdgePeak strongestEdge(const T *d, int count, int lo, int hi, int sign, bool int
     int32_t bestV = 0;
     for (int i = lo; i <= hi; ++i) {
         const int32_t v = sign * int32_t(d[i]);
-        if (v > bestV) { bestV = v; best = i; }
+        if (v > bestV) {
+            bestV = v;
+            best = i;
+        }
     }
     if (best < 0) return p;
     const int32_t vm = sign * int32_t(d[best - 1]), vp = sign * int32_t(d[best + 1]);

@@ -1,14 +1,14 @@
-#include "end_face_analyzer.h"
+#include "vision/end_face_analyzer.h"
 
 #include <algorithm>
 #include <cmath>
 #include <new>
 #include <numbers>
 
-#include "boundary_fit.h"
-#include "radial_profile.h"
-#include "reading_interpreter.h"
-#include "ring_search.h"
+#include "vision/boundary_fit.h"
+#include "vision/radial_profile.h"
+#include "vision/reading_interpreter.h"
+#include "vision/ring_search.h"
 
 namespace icacam::vision {
 
@@ -26,10 +26,8 @@ ErrorCode EndFaceAnalyzer::configure(int maxWidth, int maxHeight)
     if (maxWidth <= 0 || maxHeight <= 0) return ErrorCode::BadFrame;
     maxWidth_ = maxWidth;
     maxHeight_ = maxHeight;
-    const size_t bytes = SpecimenLocator::kWorkBytes + 16 +
-                         (size_t(kCoarseRays) * kMaxCoarseSamples * 2 + 16) +
-                         2 * (size_t(kFineRays) * kMaxFineSamples * 2 + 16) +
-                         2 * (size_t(kMaxCoarseSamples) * 4 + 16) +
+    const size_t bytes = SpecimenLocator::kWorkBytes + 16 + (size_t(kCoarseRays) * kMaxCoarseSamples * 2 + 16) +
+                         2 * (size_t(kFineRays) * kMaxFineSamples * 2 + 16) + 2 * (size_t(kMaxCoarseSamples) * 4 + 16) +
                          2 * (size_t(kFineRays) * sizeof(EdgeSample) + 16);
     arena_.reset(new (std::nothrow) uint8_t[bytes]);
     if (!arena_) return ErrorCode::FrameTooLarge;
@@ -69,7 +67,7 @@ bool EndFaceAnalyzer::refineCentre(const LumaView &v, double r0Px, double *cx, d
         const int count = std::min(kMaxCoarseSamples, int((rB - rA) / step));
         for (int i = 0; i < rays; ++i) {
             RaySpec ray{Q16_16::fromDouble(*cx), Q16_16::fromDouble(*cy), {}, {},
-                        Q16_16::fromDouble(rA), Q16_16::fromDouble(step)};
+                        Q16_16::fromDouble(rA),  Q16_16::fromDouble(step)};
             rayDirection(i, rays, &ray.cosT, &ray.sinT);
             uint16_t *row = coarse_ + size_t(i) * kMaxCoarseSamples;
             sampleRay(v, ray, count, row);
@@ -97,15 +95,14 @@ bool EndFaceAnalyzer::refineCentre(const LumaView &v, double r0Px, double *cx, d
     const int count = std::min(kMaxCoarseSamples, int((rB - rA) / step));
     for (int i = 0; i < kCoarseRays; ++i) {
         RaySpec ray{Q16_16::fromDouble(*cx), Q16_16::fromDouble(*cy), {}, {},
-                    Q16_16::fromDouble(rA), Q16_16::fromDouble(step)};
+                    Q16_16::fromDouble(rA),  Q16_16::fromDouble(step)};
         rayDirection(i, kCoarseRays, &ray.cosT, &ray.sinT);
         sampleRay(v, ray, count, coarse_ + size_t(i) * kMaxCoarseSamples);
     }
     return true;
 }
 
-Measurement EndFaceAnalyzer::measure(const LumaView &v, const SpecimenSpec &spec,
-                                     const FrictionModel &model)
+Measurement EndFaceAnalyzer::measure(const LumaView &v, const SpecimenSpec &spec, const FrictionModel &model)
 {
     Measurement m = measureFace(v, spec);
     if (m.error != ErrorCode::None) return m;
@@ -131,8 +128,7 @@ Measurement EndFaceAnalyzer::measureFace(const LumaView &v, const SpecimenSpec &
         plane.heightMm = 0.5 * spec.h0Mm;
         mmPerPx = planeScaleAt(plane, 0.5 * (v.width - 1), 0.5 * (v.height - 1));
     }
-    if (!(mmPerPx > 1e-5 && mmPerPx < 10) || !(spec.d0Mm > 0.5 && spec.d0Mm < 500) ||
-        !std::isfinite(spec.n))
+    if (!(mmPerPx > 1e-5 && mmPerPx < 10) || !(spec.d0Mm > 0.5 && spec.d0Mm < 500) || !std::isfinite(spec.n))
         return fail(ErrorCode::BadSpecimen);
     const double r0 = 0.5 * spec.d0Mm / mmPerPx; // initial radius in pixels
     if (r0 < 15 || r0 > 4 * std::max(v.width, v.height)) return fail(ErrorCode::BadSpecimen);
@@ -149,8 +145,7 @@ Measurement EndFaceAnalyzer::measureFace(const LumaView &v, const SpecimenSpec &
     m.centreX = cx;
     m.centreY = cy;
 
-    RingSearch search{&v, r0, cx, cy, coarse_, fine_, deriv_, meanProfile_, meanDeriv_,
-                      innerPts_, outerPts_};
+    RingSearch search{&v, r0, cx, cy, coarse_, fine_, deriv_, meanProfile_, meanDeriv_, innerPts_, outerPts_};
     const ErrorCode e = search.run(&m);
     if (e != ErrorCode::None) return fail(e);
     m.error = ErrorCode::None; // found; the interpretation gives it a status

@@ -7,13 +7,13 @@
 #include <cstdint>
 #include <memory>
 
-#include "edge_profile.h"
-#include "model/friction_model.h"
-#include "luma_view.h"
-#include "measurement.h"
-#include "plane_calibration.h"
-#include "specimen_locator.h"
-#include "specimen_spec.h"
+#include "vision/edge_profile.h"
+#include "vision/luma_view.h"
+#include "vision/measurement.h"
+#include "vision/model/friction_model.h"
+#include "vision/plane_calibration.h"
+#include "vision/specimen_locator.h"
+#include "vision/specimen_spec.h"
 
 namespace icacam::vision {
 

@@ -17,9 +17,8 @@ public:
     using Raw = std::conditional_t<(IntBits + FracBits <= 32), int32_t, int64_t>;
     static constexpr int kFracBits = FracBits;
     static constexpr Raw kOne = Raw(1) << FracBits;
-    static constexpr Raw kMaxRaw =
-        (IntBits + FracBits == 8 * sizeof(Raw)) ? std::numeric_limits<Raw>::max()
-                                                : (Raw(1) << (IntBits + FracBits - 1)) - 1;
+    static constexpr Raw kMaxRaw = (IntBits + FracBits == 8 * sizeof(Raw)) ? std::numeric_limits<Raw>::max()
+                                                                           : (Raw(1) << (IntBits + FracBits - 1)) - 1;
     static constexpr Raw kMinRaw = -kMaxRaw - 1;
 
     constexpr Q() = default;
@@ -51,7 +50,8 @@ public:
         static_assert(IntBits + FracBits + I2 + F2 <= 63, "product needs more than 64 bits");
         using Wide = int64_t;
         const Wide p = Wide(raw_) * Wide(o.raw());
-        if constexpr (F2 == 0) return fromRaw(int64_t(clampWide(p)));
+        if constexpr (F2 == 0)
+            return fromRaw(int64_t(clampWide(p)));
         else {
             const Wide half = Wide(1) << (F2 - 1);
             return fromRaw(int64_t(clampWide((p + half) >> F2)));

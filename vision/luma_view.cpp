@@ -1,4 +1,4 @@
-#include "luma_view.h"
+#include "vision/luma_view.h"
 
 namespace icacam::vision {
 
@@ -51,9 +51,7 @@ ErrorCode lumaOf(const FrameView &frame, uint8_t *scratch, size_t scratchBytes, 
     switch (frame.format) {
     case PixelFormat::Grey8:
     case PixelFormat::NV12:
-    case PixelFormat::YUV420:
-        *out = {frame.data, frame.width, frame.height, frame.stride, 1};
-        return ErrorCode::None;
+    case PixelFormat::YUV420: *out = {frame.data, frame.width, frame.height, frame.stride, 1}; return ErrorCode::None;
     case PixelFormat::YUYV: // Y0 U Y1 V: luma at every second byte
         *out = {frame.data, frame.width, frame.height, frame.stride, 2};
         return ErrorCode::None;
@@ -64,8 +62,15 @@ ErrorCode lumaOf(const FrameView &frame, uint8_t *scratch, size_t scratchBytes, 
     if (!scratch || scratchBytes < need) return ErrorCode::FrameTooLarge;
     // Channel offsets of R, G, B within a pixel.
     int r = 0, g = 1, b = 2;
-    if (frame.format == PixelFormat::BGR24) { r = 2; b = 0; }
-    if (frame.format == PixelFormat::XRGB32) { r = 2; g = 1; b = 0; } // little-endian B G R X
+    if (frame.format == PixelFormat::BGR24) {
+        r = 2;
+        b = 0;
+    }
+    if (frame.format == PixelFormat::XRGB32) {
+        r = 2;
+        g = 1;
+        b = 0;
+    } // little-endian B G R X
     for (int y = 0; y < frame.height; ++y) {
         const uint8_t *src = frame.data + size_t(y) * size_t(frame.stride);
         uint8_t *dst = scratch + size_t(y) * size_t(frame.width);

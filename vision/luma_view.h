@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "error.h"
+#include "vision/error.h"
 
 namespace icacam::vision {
 
@@ -17,10 +17,7 @@ struct LumaView {
     int pixelStep = 1; // bytes between neighbouring pixels in a row (2 for YUYV)
 
     uint8_t at(int x, int y) const { return data[size_t(y) * size_t(stride) + size_t(x) * size_t(pixelStep)]; }
-    bool valid() const
-    {
-        return data && width > 0 && height > 0 && pixelStep >= 1 && stride >= width * pixelStep;
-    }
+    bool valid() const { return data && width > 0 && height > 0 && pixelStep >= 1 && stride >= width * pixelStep; }
 };
 
 enum class PixelFormat : uint8_t { Grey8, RGB24, BGR24, XRGB32, YUYV, NV12, YUV420 };
@@ -31,7 +28,7 @@ struct FrameView {
     const uint8_t *data = nullptr;
     int width = 0;
     int height = 0;
-    int stride = 0; // bytes per row of the first plane
+    int stride = 0;   // bytes per row of the first plane
     size_t bytes = 0; // bytes available from data (checked against the format's needs)
 };
 

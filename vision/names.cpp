@@ -1,6 +1,6 @@
 // Stable names for statuses, flags and errors: they appear in CSV, JSON and on serial.
-#include "error.h"
-#include "measurement.h"
+#include "vision/error.h"
+#include "vision/measurement.h"
 
 namespace icacam::vision {
 
@@ -15,14 +15,31 @@ const char *statusName(Status s)
 
 const char *flagName(int bit)
 {
-    static const char *const kNames[kFlagCount] = {
-        "n_out_of_range", "k_out_of_range", "mu_below_model", "mu_above_model",
-        "u_outside_model", "low_contrast",  "low_coverage",   "high_scatter",
-        "blurred",         "saturated",     "specimen_clipped", "elliptical",
-        "centre_offset",   "scale_suspect", "narrow_ring",    "no_silhouette",
-        "reduction_outside_model", "radii_inconsistent", "aspect_outside_model",
-        "edges_uncertain", "scale_uncertain", "reduction_uncertain", "n_uncertain",
-        "model_uncertain", "silhouette_unreliable"};
+    static const char *const kNames[kFlagCount] = {"n_out_of_range",
+                                                   "k_out_of_range",
+                                                   "mu_below_model",
+                                                   "mu_above_model",
+                                                   "u_outside_model",
+                                                   "low_contrast",
+                                                   "low_coverage",
+                                                   "high_scatter",
+                                                   "blurred",
+                                                   "saturated",
+                                                   "specimen_clipped",
+                                                   "elliptical",
+                                                   "centre_offset",
+                                                   "scale_suspect",
+                                                   "narrow_ring",
+                                                   "no_silhouette",
+                                                   "reduction_outside_model",
+                                                   "radii_inconsistent",
+                                                   "aspect_outside_model",
+                                                   "edges_uncertain",
+                                                   "scale_uncertain",
+                                                   "reduction_uncertain",
+                                                   "n_uncertain",
+                                                   "model_uncertain",
+                                                   "silhouette_unreliable"};
     return bit >= 0 && bit < kFlagCount ? kNames[bit] : "unknown";
 }
 

@@ -1,4 +1,4 @@
-#include "plane_calibration.h"
+#include "vision/plane_calibration.h"
 
 #include <cmath>
 #include <cstdlib>
@@ -34,7 +34,10 @@ int64_t div(int64_t a, int64_t b)
     n += (n >= 0) ? half : -half;
     return saturate(n / Wide(b));
 }
-int64_t fix(double v) { return Q32_32::fromDouble(v).raw(); }
+int64_t fix(double v)
+{
+    return Q32_32::fromDouble(v).raw();
+}
 
 } // namespace
 
@@ -56,8 +59,7 @@ bool PlaneCalibration::valid() const
             const double d = r[3 * i] * r[3 * j] + r[3 * i + 1] * r[3 * j + 1] + r[3 * i + 2] * r[3 * j + 2];
             if (std::fabs(d - (i == j ? 1.0 : 0.0)) > 1e-6) return false;
         }
-    return std::fabs(t[0]) < 1e6 && std::fabs(t[1]) < 1e6 && t[2] > 0 && t[2] < 1e6 &&
-           std::fabs(heightMm) < 1e5;
+    return std::fabs(t[0]) < 1e6 && std::fabs(t[1]) < 1e6 && t[2] > 0 && t[2] < 1e6 && std::fabs(heightMm) < 1e5;
 }
 
 PlaneMapper::PlaneMapper(const PlaneCalibration &cal)
@@ -127,9 +129,9 @@ PlanePoint PlaneMapper::map(Q16_16 px, Q16_16 py) const
     const int64_t ax = mul(rt_[0], x) + mul(rt_[1], y) + rt_[2];
     const int64_t ay = mul(rt_[3], x) + mul(rt_[4], y) + rt_[5];
     const int64_t az = mul(rt_[6], x) + mul(rt_[7], y) + rt_[8];
-    if (std::llabs(az) < (kOne >> 12)) return out; // ray nearly parallel to the plane
+    if (std::llabs(az) < (kOne >> 12)) return out;   // ray nearly parallel to the plane
     const int64_t lambda = div(planeZ_ + b_[2], az); // distance along the ray, mm
-    if (lambda <= 0) return out;                      // plane behind the camera
+    if (lambda <= 0) return out;                     // plane behind the camera
     out.x = Q32_32::fromRaw(mul(lambda, ax) - b_[0]);
     out.y = Q32_32::fromRaw(mul(lambda, ay) - b_[1]);
     out.valid = true;
@@ -155,8 +157,7 @@ double planeScaleAt(const PlaneCalibration &cal, double px, double py)
     return std::sqrt(std::fabs(jxx * jyy - jxy * jyx)) / (2 * h);
 }
 
-PlaneOutline planeOutline(const BoundaryFit &fit, double centreX, double centreY,
-                          const PlaneCalibration &cal)
+PlaneOutline planeOutline(const BoundaryFit &fit, double centreX, double centreY, const PlaneCalibration &cal)
 {
     PlaneOutline out;
     const PlaneMapper m(cal);
@@ -212,8 +213,7 @@ PlaneOutline planeOutline(const BoundaryFit &fit, double centreX, double centreY
     return out;
 }
 
-double equivalentRadiusMm(const BoundaryFit &fit, double centreX, double centreY,
-                          const PlaneCalibration &cal)
+double equivalentRadiusMm(const BoundaryFit &fit, double centreX, double centreY, const PlaneCalibration &cal)
 {
     const PlaneOutline o = planeOutline(fit, centreX, centreY, cal);
     return o.valid ? o.rEqMm : 0;

@@ -6,8 +6,8 @@
 // distortion (k1, k2, p1, p2, k3), so a calibration from `icacam calibrate` applies as is.
 #include <cstdint>
 
-#include "fixed_point.h"
-#include "measurement.h"
+#include "vision/fixed_point.h"
+#include "vision/measurement.h"
 
 namespace icacam::vision {
 
@@ -54,9 +54,9 @@ private:
     bool valid_ = false;
     int64_t fx_ = 0, fy_ = 0, cx_ = 0, cy_ = 0; // Q32_32 raw, pixels
     int64_t k1_ = 0, k2_ = 0, k3_ = 0, p1_ = 0, p2_ = 0;
-    int64_t rt_[9] = {};   // Rᵀ, row-major
-    int64_t b_[3] = {};    // Rᵀ t (mm)
-    int64_t planeZ_ = 0;   // the plane's z in fixture coordinates (mm, sign towards camera)
+    int64_t rt_[9] = {}; // Rᵀ, row-major
+    int64_t b_[3] = {};  // Rᵀ t (mm)
+    int64_t planeZ_ = 0; // the plane's z in fixture coordinates (mm, sign towards camera)
 };
 
 // One point, for callers that map only a few (builds the mapper each call).
@@ -71,8 +71,7 @@ double planeScaleAt(const PlaneCalibration &cal, double px, double py);
 // point mapped to the plane, and the enclosed area taken by the shoelace formula. Returns
 // 0 when any point cannot be mapped.
 constexpr int kEquivalentRadiusSamples = 512;
-double equivalentRadiusMm(const BoundaryFit &fit, double centreX, double centreY,
-                          const PlaneCalibration &cal);
+double equivalentRadiusMm(const BoundaryFit &fit, double centreX, double centreY, const PlaneCalibration &cal);
 
 // A fitted boundary as it lies in the end-face plane: what the pixel fit's ellipticity,
 // axis and centre say, with tilt, perspective and distortion taken out. The shape comes
@@ -80,12 +79,11 @@ double equivalentRadiusMm(const BoundaryFit &fit, double centreX, double centreY
 // the ratio a²:b²), so a circle on the end face reads 0 however the camera looks at it.
 struct PlaneOutline {
     bool valid = false;
-    double rEqMm = 0;              // sqrt(A/π), as equivalentRadiusMm
+    double rEqMm = 0;                    // sqrt(A/π), as equivalentRadiusMm
     double centroidX = 0, centroidY = 0; // mm, fixture axes
-    double ellipticity = 0;        // 1 − b/a of the moment-equivalent ellipse
-    double axisDeg = 0;            // its long axis, degrees from the fixture's x axis
+    double ellipticity = 0;              // 1 − b/a of the moment-equivalent ellipse
+    double axisDeg = 0;                  // its long axis, degrees from the fixture's x axis
 };
-PlaneOutline planeOutline(const BoundaryFit &fit, double centreX, double centreY,
-                          const PlaneCalibration &cal);
+PlaneOutline planeOutline(const BoundaryFit &fit, double centreX, double centreY, const PlaneCalibration &cal);
 
 } // namespace icacam::vision

@@ -1,10 +1,10 @@
-#include "radial_profile.h"
+#include "vision/radial_profile.h"
 
 #include <cmath>
 #include <numbers>
 #include <type_traits>
 
-#include "angle_table.h"
+#include "vision/angle_table.h"
 
 namespace icacam::vision {
 
@@ -33,8 +33,8 @@ int sampleRay(const LumaView &v, const RaySpec &ray, int count, uint16_t *out)
     const int64_t xEnd = int64_t(x0.raw()) + int64_t(dx.raw()) * (count - 1);
     const int64_t yEnd = int64_t(y0.raw()) + int64_t(dy.raw()) * (count - 1);
     const int64_t limX = int64_t(v.width - 2) << 16, limY = int64_t(v.height - 2) << 16;
-    const bool allInside = x0.raw() >= 0 && y0.raw() >= 0 && xEnd >= 0 && yEnd >= 0 &&
-                           x0.raw() < limX && y0.raw() < limY && xEnd < limX && yEnd < limY;
+    const bool allInside = x0.raw() >= 0 && y0.raw() >= 0 && xEnd >= 0 && yEnd >= 0 && x0.raw() < limX &&
+                           y0.raw() < limY && xEnd < limX && yEnd < limY;
     if (!allInside) { // slow path: per-sample checks (the ray leaves the frame)
         Q16_16 x = x0, y = y0;
         int inside = 0;
@@ -70,8 +70,10 @@ int sampleRay(const LumaView &v, const RaySpec &ray, int count, uint16_t *out)
         }
     };
     // A compile-time pixel step of 1 (grey, NV12, YUV420) saves a multiply per sample.
-    if (step == 1) loop(std::integral_constant<size_t, 1>{});
-    else loop(step);
+    if (step == 1)
+        loop(std::integral_constant<size_t, 1>{});
+    else
+        loop(step);
     return count;
 }
 

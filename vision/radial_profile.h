@@ -3,8 +3,8 @@
 // the coarse locator, and it reads only the pixels under the rays.
 #include <cstdint>
 
-#include "fixed_point.h"
-#include "luma_view.h"
+#include "vision/fixed_point.h"
+#include "vision/luma_view.h"
 
 namespace icacam::vision {
 
@@ -14,10 +14,10 @@ constexpr uint16_t kOutsideFrame = 0xFFFF;
 constexpr int32_t kFullScaleQ8 = 255 * 256;
 
 struct RaySpec {
-    Q16_16 cx, cy;     // centre in pixels
-    Q2_14 cosT, sinT;  // direction
-    Q16_16 r0;         // radius of the first sample
-    Q16_16 step;       // radial step between samples
+    Q16_16 cx, cy;    // centre in pixels
+    Q2_14 cosT, sinT; // direction
+    Q16_16 r0;        // radius of the first sample
+    Q16_16 step;      // radial step between samples
 };
 
 // Bilinear sample of the luma at a Q16.16 position; kOutsideFrame if the 2×2 footprint

@@ -1,12 +1,12 @@
-#include "reading_interpreter.h"
+#include "vision/reading_interpreter.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "model/aspect_corrected_model.h"
-#include "plane_calibration.h"
-#include "model/radii_consistency.h"
-#include "model/reduction_corrected_model.h"
+#include "vision/model/aspect_corrected_model.h"
+#include "vision/model/radii_consistency.h"
+#include "vision/model/reduction_corrected_model.h"
+#include "vision/plane_calibration.h"
 
 namespace icacam::vision {
 
@@ -41,9 +41,8 @@ constexpr double kInnerEdgeModelMm = 0.005, kOuterEdgeModelMm = 0.001;
 class MuFunction {
 public:
     MuFunction(const SpecimenSpec &spec, const FrictionModel &model)
-        : spec_(spec), model_(model), carry_(model, model.name())
-    {
-    }
+            : spec_(spec), model_(model), carry_(model, model.name())
+    {}
     double at(double u, double r, double n) const { return estimate(u, r, n).mu; }
     ModelEstimate estimate(double u, double r, double n) const
     {
@@ -81,7 +80,10 @@ ScaleAndReduction update(const ScaleAndReduction &prior, double d, double beta)
 
 } // namespace
 
-double silhouetteRelSigma() { return std::hypot(kFeRMaxRelSigma, kMeasuredRMaxRelSigma); }
+double silhouetteRelSigma()
+{
+    return std::hypot(kFeRMaxRelSigma, kMeasuredRMaxRelSigma);
+}
 
 void interpretEndFace(const SpecimenSpec &spec, const FrictionModel &model, Measurement *m)
 {
@@ -158,9 +160,9 @@ void interpretEndFace(const SpecimenSpec &spec, const FrictionModel &model, Meas
     if (std::min(m->inner.coverage, m->outer.coverage) < 0.6) f |= kFlagLowCoverage;
     if (std::max(m->inner.scatterPx, m->outer.scatterPx) > std::max(1.5, 0.006 * r0Px)) f |= kFlagHighScatter;
     if (std::fabs(m->inner.contrast) < 5.0) f |= kFlagLowContrast;
-    m->centreOffsetPx = planeOffsetPx >= 0 ? planeOffsetPx
-                                           : std::hypot(m->inner.centreX - m->outer.centreX,
-                                                        m->inner.centreY - m->outer.centreY);
+    m->centreOffsetPx = planeOffsetPx >= 0
+                            ? planeOffsetPx
+                            : std::hypot(m->inner.centreX - m->outer.centreX, m->inner.centreY - m->outer.centreY);
     if (m->centreOffsetPx > std::max(3.0, 0.012 * r0Px)) f |= kFlagCentreOffset;
     if (sharedEllipse) f |= kFlagElliptical;
     if (m->uPx < 3.0) f |= kFlagNarrowRing;
@@ -214,10 +216,10 @@ void interpretEndFace(const SpecimenSpec &spec, const FrictionModel &model, Meas
         constexpr int kExplanations = 3;
         const double se2 = silhouetteRelSigma() * silhouetteRelSigma();
         ScaleAndReduction prior[kExplanations];
-        prior[0] = sr;                                                 // pressed to another height
-        prior[1].pk = kGrossScaleSigma * kGrossScaleSigma;             // half height, a scale off
+        prior[0] = sr;                                     // pressed to another height
+        prior[1].pk = kGrossScaleSigma * kGrossScaleSigma; // half height, a scale off
         prior[1].pr = kNominalReductionSigma * kNominalReductionSigma;
-        prior[2].pk = sr.pk;                                           // half height, scale as declared
+        prior[2].pk = sr.pk; // half height, scale as declared
         prior[2].pr = kNominalReductionSigma * kNominalReductionSigma;
         ScaleAndReduction post[kExplanations];
         double w[kExplanations], wSum = 0;
@@ -277,8 +279,8 @@ void interpretEndFace(const SpecimenSpec &spec, const FrictionModel &model, Meas
     b.reduction = std::sqrt(std::max(0.0, gR * gR * sr.pr + cross) + carry * carry + bias * bias);
     b.n = std::fabs(gN) * tol.n;
     b.model = model.estimate({uF, n, spec.kMpa, spec.d0Mm, spec.h0Mm, 0}).modelSigma;
-    m->muSigma = std::sqrt(b.edges * b.edges + b.scale * b.scale + b.reduction * b.reduction + b.n * b.n +
-                           b.model * b.model);
+    m->muSigma =
+        std::sqrt(b.edges * b.edges + b.scale * b.scale + b.reduction * b.reduction + b.n * b.n + b.model * b.model);
 
     if (est.range & (kModelNBelow | kModelNAbove)) f |= kFlagNOutOfRange;
     if (est.range & kModelKOutside) f |= kFlagKOutOfRange;
@@ -296,8 +298,8 @@ void interpretEndFace(const SpecimenSpec &spec, const FrictionModel &model, Meas
     m->toleranceMu = spec.tolerance.at(std::fabs(m->mu));
     if (spec.tolerance.coverage * m->muSigma > m->toleranceMu) {
         const double parts[5] = {b.edges, b.scale, b.reduction, b.n, b.model};
-        const uint32_t names[5] = {kFlagEdgesUncertain, kFlagScaleUncertain, kFlagReductionUncertain,
-                                   kFlagNUncertain, kFlagModelUncertain};
+        const uint32_t names[5] = {kFlagEdgesUncertain, kFlagScaleUncertain, kFlagReductionUncertain, kFlagNUncertain,
+                                   kFlagModelUncertain};
         f |= names[std::max_element(parts, parts + 5) - parts];
     }
     m->flags = f;

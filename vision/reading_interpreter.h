@@ -35,9 +35,9 @@
 // (SpecimenSpec::tolerance); else warn, with the budget's leading component named by a flag
 // (edges_uncertain, scale_uncertain, reduction_uncertain, n_uncertain, model_uncertain).
 // Pure C++20: no heap, no OS calls, no exceptions.
-#include "model/friction_model.h"
-#include "measurement.h"
-#include "specimen_spec.h"
+#include "vision/measurement.h"
+#include "vision/model/friction_model.h"
+#include "vision/specimen_spec.h"
 
 namespace icacam::vision {
 

@@ -1,4 +1,4 @@
-#include "reading_record.h"
+#include "vision/reading_record.h"
 
 #include <cmath>
 #include <cstdio>
@@ -18,7 +18,10 @@ struct FieldSpec {
     double (*value)(const Measurement &m);
 };
 
-double nan() { return std::nan(""); }
+double nan()
+{
+    return std::nan("");
+}
 
 // PRODUCT.md §6 columns, then the budget and what the reading was read at, then diagnostics.
 const FieldSpec kFields[] = {
@@ -58,8 +61,10 @@ const FieldSpec kFields[] = {
     {"outer_ellipticity", Field::Number, 5, [](const Measurement &m) { return m.outer.ellipticity; }},
     {"inner_axis_deg", Field::Number, 1, [](const Measurement &m) { return m.inner.axisDeg; }},
     {"outer_axis_deg", Field::Number, 1, [](const Measurement &m) { return m.outer.axisDeg; }},
-    {"silhouette_coverage", Field::Number, 3, [](const Measurement &m) { return m.rMaxPx > 0 ? m.silhouetteCoverage : nan(); }},
-    {"reduction_est", Field::Number, 4, [](const Measurement &m) { return m.reductionEst >= 0 ? m.reductionEst : nan(); }},
+    {"silhouette_coverage", Field::Number, 3,
+     [](const Measurement &m) { return m.rMaxPx > 0 ? m.silhouetteCoverage : nan(); }},
+    {"reduction_est", Field::Number, 4,
+     [](const Measurement &m) { return m.reductionEst >= 0 ? m.reductionEst : nan(); }},
     {"r_max_z", Field::Number, 2, [](const Measurement &m) { return m.rMaxPx > 0 ? m.rMaxZ : nan(); }},
 };
 constexpr int kFieldCount = int(sizeof kFields / sizeof kFields[0]);
@@ -77,8 +82,14 @@ const char *remedy(uint32_t flags)
 
 } // namespace
 
-int readingFieldCount() { return kFieldCount; }
-const char *readingFieldName(int i) { return i >= 0 && i < kFieldCount ? kFields[i].name : ""; }
+int readingFieldCount()
+{
+    return kFieldCount;
+}
+const char *readingFieldName(int i)
+{
+    return i >= 0 && i < kFieldCount ? kFields[i].name : "";
+}
 
 void flagList(uint32_t flags, char *buf, size_t size)
 {
@@ -109,8 +120,8 @@ void readingMessage(const Measurement &m, char *buf, size_t size)
     flagList(m.flags, flags, sizeof flags);
     const char *hint = remedy(m.flags);
     if (hint)
-        std::snprintf(buf, size, "check flags: %s; 2 mu_sigma %.4f beyond the tolerance %.4f: %s", flags,
-                      2 * m.muSigma, m.toleranceMu, hint);
+        std::snprintf(buf, size, "check flags: %s; 2 mu_sigma %.4f beyond the tolerance %.4f: %s", flags, 2 * m.muSigma,
+                      m.toleranceMu, hint);
     else
         std::snprintf(buf, size, "check flags: %s", flags);
 }
@@ -132,8 +143,10 @@ void writeReading(const Measurement *m, std::string_view message, std::string_vi
         case Field::Message: sink.text(f.name, message); break;
         case Field::Model: sink.text(f.name, model); break;
         case Field::Number:
-            if (value && std::isfinite(f.value(*m))) sink.number(f.name, f.value(*m), f.decimals);
-            else sink.absent(f.name);
+            if (value && std::isfinite(f.value(*m)))
+                sink.number(f.name, f.value(*m), f.decimals);
+            else
+                sink.absent(f.name);
             break;
         }
     }

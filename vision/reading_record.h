@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <string_view>
 
-#include "measurement.h"
+#include "vision/measurement.h"
 
 namespace icacam::vision {
 

@@ -1,11 +1,11 @@
-#include "reference_disc.h"
+#include "vision/reference_disc.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "boundary_fit.h"
-#include "edge_profile.h"
-#include "radial_profile.h"
+#include "vision/boundary_fit.h"
+#include "vision/edge_profile.h"
+#include "vision/radial_profile.h"
 
 namespace icacam::vision {
 
@@ -13,15 +13,15 @@ namespace {
 
 // One pass of rays about (cx, cy) from rA outwards; each ray's strongest edge of the given
 // polarity (+1: brighter outwards, a dark disc). Returns the polarity's summed strength.
-int64_t edgeRadii(const LumaView &v, double cx, double cy, double rA, double step, int count, int sign,
-                  double *radius, bool *valid)
+int64_t edgeRadii(const LumaView &v, double cx, double cy, double rA, double step, int count, int sign, double *radius,
+                  bool *valid)
 {
     uint16_t samples[ReferenceDiscFinder::kMaxSamples];
     int32_t d[ReferenceDiscFinder::kMaxSamples];
     int64_t total = 0;
     for (int i = 0; i < ReferenceDiscFinder::kRays; ++i) {
-        RaySpec ray{Q16_16::fromDouble(cx), Q16_16::fromDouble(cy), {}, {}, Q16_16::fromDouble(rA),
-                    Q16_16::fromDouble(step)};
+        RaySpec ray{Q16_16::fromDouble(cx), Q16_16::fromDouble(cy),  {}, {},
+                    Q16_16::fromDouble(rA), Q16_16::fromDouble(step)};
         rayDirection(i, ReferenceDiscFinder::kRays, &ray.cosT, &ray.sinT);
         sampleRay(v, ray, count, samples);
         profileDerivative(samples, count, d);

@@ -7,10 +7,10 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "error.h"
-#include "luma_view.h"
-#include "measurement.h"
-#include "specimen_locator.h"
+#include "vision/error.h"
+#include "vision/luma_view.h"
+#include "vision/measurement.h"
+#include "vision/specimen_locator.h"
 
 namespace icacam::vision {
 

@@ -1,4 +1,4 @@
-#include "specimen_locator.h"
+#include "vision/specimen_locator.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,8 +13,11 @@ uint32_t isqrt(uint32_t v)
     uint32_t r = 0, bit = 1u << 30;
     while (bit > v) bit >>= 2;
     while (bit) {
-        if (v >= r + bit) { v -= r + bit; r = (r >> 1) + bit; }
-        else r >>= 1;
+        if (v >= r + bit) {
+            v -= r + bit;
+            r = (r >> 1) + bit;
+        } else
+            r >>= 1;
         bit >>= 2;
     }
     return r;
@@ -30,7 +33,7 @@ CentreEstimate SpecimenLocator::locate(const LumaView &v, double rMinPx, double 
     const int W = v.width / D, H = v.height / D;
     if (W < 8 || H < 8) return est;
 
-    uint8_t *dec = work_;                                          // W × H luma
+    uint8_t *dec = work_;                                                                    // W × H luma
     uint16_t *acc = reinterpret_cast<uint16_t *>(work_ + size_t(kMaxCells) * kMaxCells * 3); // votes
     std::fill(acc, acc + size_t(W) * H, uint16_t(0));
 
@@ -120,7 +123,11 @@ CentreEstimate SpecimenLocator::locate(const LumaView &v, double rMinPx, double 
             const uint16_t *a = acc + y * W + x;
             if (a[0] * 4 < top) continue;
             const int s = a[-W - 1] + a[-W] + a[-W + 1] + a[-1] + a[0] + a[1] + a[W - 1] + a[W] + a[W + 1];
-            if (s > best) { best = s; bx = x; by = y; }
+            if (s > best) {
+                best = s;
+                bx = x;
+                by = y;
+            }
         }
     if (best <= 0) return est;
     double sx = 0, sy = 0, sw = 0;

@@ -5,7 +5,7 @@
 // alone. Reads 4 pixels per decimated cell, never the whole frame.
 #include <cstdint>
 
-#include "luma_view.h"
+#include "vision/luma_view.h"
 
 namespace icacam::vision {
 

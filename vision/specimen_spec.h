@@ -2,15 +2,15 @@
 // What the instrument is told about one specimen (manifest row or device config), with the
 // tolerance of each declared value and the lab's tolerance on μ. The defaults are the
 // instrument's stated assumptions: a reading's budget carries them (docs/uncertainty.md).
-#include "plane_calibration.h"
+#include "vision/plane_calibration.h"
 
 namespace icacam::vision {
 
 // Standard uncertainties (1 σ) of the declared inputs, where the user gives none.
 struct DeclaredTolerances {
-    double scaleRel = 0.005;     // mm_per_px, relative: a scale measured on the end-face plane
-    double hFinalMm = 0.05;      // a declared final height (calliper reading and springback)
-    double n = 0.01;             // the strain-hardening exponent (flow-curve fit over a strain range)
+    double scaleRel = 0.005; // mm_per_px, relative: a scale measured on the end-face plane
+    double hFinalMm = 0.05;  // a declared final height (calliper reading and springback)
+    double n = 0.01;         // the strain-hardening exponent (flow-curve fit over a strain range)
     // A calibration's own scale error in the end-face plane, relative (board printing and the
     // fit; the plane height's part is added from the reduction's uncertainty).
     double calibrationScaleRel = 0.002;
@@ -31,12 +31,12 @@ struct ReadingTolerance {
 };
 
 struct SpecimenSpec {
-    double n = 0;          // strain-hardening exponent
-    double kMpa = 0;       // strength coefficient, 0 if unknown
-    double d0Mm = 10;      // initial diameter
-    double h0Mm = 15;      // initial height
-    double mmPerPx = 0;    // scale in the plane of the end face (with a calibration: 0, or a search hint)
-    double hFinalMm = 0;   // final height when recorded (0: not declared)
+    double n = 0;        // strain-hardening exponent
+    double kMpa = 0;     // strength coefficient, 0 if unknown
+    double d0Mm = 10;    // initial diameter
+    double h0Mm = 15;    // initial height
+    double mmPerPx = 0;  // scale in the plane of the end face (with a calibration: 0, or a search hint)
+    double hFinalMm = 0; // final height when recorded (0: not declared)
     // Camera calibration (docs/calibration.md): when given, each boundary is mapped into the
     // end-face plane at the specimen's final height (declared, else the reading's reduction),
     // and mmPerPx only sizes the search. Its heightMm is ignored: the interpreter sets it.

@@ -18,8 +18,7 @@ public:
     {
         if (ms <= 0) return;
         timespec ts{time_t(ms / 1000), long(ms % 1000) * 1000000L};
-        while (nanosleep(&ts, &ts) != 0) {
-        }
+        while (nanosleep(&ts, &ts) != 0) {}
     }
 
 private:
@@ -34,12 +33,16 @@ private:
 class ManualClock final : public Clock {
 public:
     explicit ManualClock(int64_t startMs = 0, int64_t wallOriginMs = 1767225600000) // 2026-01-01
-        : now_(startMs), wallOrigin_(wallOriginMs) {}
+            : now_(startMs), wallOrigin_(wallOriginMs)
+    {}
     int64_t monotonicMs() const override { return now_.load(); }
     int64_t wallMs() const override { return wallOrigin_ + now_.load(); }
     void sleepMs(int64_t ms) override { advance(ms); }
     void set(int64_t ms) { now_.store(ms); }
-    void advance(int64_t ms) { if (ms > 0) now_.fetch_add(ms); }
+    void advance(int64_t ms)
+    {
+        if (ms > 0) now_.fetch_add(ms);
+    }
 
 private:
     std::atomic<int64_t> now_;

@@ -54,8 +54,10 @@ Error FileCamera::configure(const CameraFormat &fmt)
             line.erase(0, line.find_first_not_of(" \t"));
             while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
             if (line.empty() || line[0] == '#') continue;
-            if (line == "!timeout" || fs::path(line).is_absolute()) files_.push_back(line);
-            else files_.push_back((base / line).string());
+            if (line == "!timeout" || fs::path(line).is_absolute())
+                files_.push_back(line);
+            else
+                files_.push_back((base / line).string());
         }
     } else {
         return Error::make(Errc::NotFound, "camera source '" + opts_.source + "' is neither a folder nor a list file");
@@ -102,8 +104,8 @@ Error FileCamera::capture(const CaptureRequest &req, CapturedFrame *out)
     if (!e.ok()) return e;
     if (img.channels != ch)
         return Error::make(Errc::BadFormat, "'" + fs::path(path).filename().string() + "' has " +
-                                                std::to_string(img.channels) + " channel(s), the camera is configured for " +
-                                                std::to_string(ch));
+                                                std::to_string(img.channels) +
+                                                " channel(s), the camera is configured for " + std::to_string(ch));
     const int stride = (img.width * ch + a - 1) / a * a;
     if (stride != img.stride) {
         // Re-lay rows from the bottom up so the padded rows never overwrite unread ones.

@@ -20,13 +20,15 @@ namespace icacam::hal {
 
 struct FileCameraOptions {
     FileCameraOptions() = default;
-    FileCameraOptions(std::string src, int align = 1, bool loopAtEnd = false, int latencyMs = 0, CameraControls reported = {})
-        : source(std::move(src)), strideAlign(align), loop(loopAtEnd), exposureMs(latencyMs), controls(reported) {}
+    FileCameraOptions(std::string src, int align = 1, bool loopAtEnd = false, int latencyMs = 0,
+                      CameraControls reported = {})
+            : source(std::move(src)), strideAlign(align), loop(loopAtEnd), exposureMs(latencyMs), controls(reported)
+    {}
 
-    std::string source;     // folder or list file
-    int strideAlign = 1;    // rows padded to a multiple of this many bytes (e.g. 64)
-    bool loop = false;      // start over at the end instead of timing out
-    int exposureMs = 0;     // simulated capture latency
+    std::string source;      // folder or list file
+    int strideAlign = 1;     // rows padded to a multiple of this many bytes (e.g. 64)
+    bool loop = false;       // start over at the end instead of timing out
+    int exposureMs = 0;      // simulated capture latency
     CameraControls controls; // reported back on every frame, as a sensor reports what it used
 };
 

@@ -22,8 +22,8 @@ Error FileLed::set(bool on)
     on_ = on;
     if (!fd_.valid()) return {};
     char line[48];
-    const int n = std::snprintf(line, sizeof line, "%lld %s\n", static_cast<long long>(clock_.monotonicMs()),
-                                on ? "on" : "off");
+    const int n =
+        std::snprintf(line, sizeof line, "%lld %s\n", static_cast<long long>(clock_.monotonicMs()), on ? "on" : "off");
     if (::write(fd_.get(), line, size_t(n)) != n)
         return Error::make(Errc::Io, std::string("LED log: ") + std::strerror(errno));
     return {};

@@ -62,7 +62,10 @@ void FileTrigger::parseLine(std::string_view line)
     int64_t v = 0;
     if (words[0] == "press") {
         int64_t hold = 100;
-        if (nw >= 2 && !number(words[1], &hold)) { lastError_ = "bad hold time in: " + std::string(line); return; }
+        if (nw >= 2 && !number(words[1], &hold)) {
+            lastError_ = "bad hold time in: " + std::string(line);
+            return;
+        }
         pushEdge(cursor_, true);
         cursor_ += hold;
         pushEdge(cursor_, false);
@@ -84,7 +87,10 @@ Result<size_t> FileTrigger::readEdges(ButtonEdge *out, size_t cap)
         char buf[1024];
         for (;;) {
             const ssize_t n = ::read(fd_.get(), buf, sizeof buf);
-            if (n > 0) { feed(std::string_view(buf, size_t(n))); continue; }
+            if (n > 0) {
+                feed(std::string_view(buf, size_t(n)));
+                continue;
+            }
             if (n < 0 && errno == EINTR) continue;
             if (n < 0 && errno != EAGAIN) return Result<size_t>::fail(Errc::Io, std::strerror(errno));
             break; // EAGAIN, or end of a script file

@@ -22,15 +22,18 @@ Error checkGeometry(int w, int h, int ch, int maxW, int maxH, int minStride, siz
     if (w <= 0 || h <= 0) return Error::make(Errc::BadFormat, "image has no pixels");
     if (w > maxW || h > maxH)
         return Error::make(Errc::TooLarge, "image " + std::to_string(w) + "x" + std::to_string(h) +
-                                               " exceeds the configured maximum " +
-                                               std::to_string(maxW) + "x" + std::to_string(maxH));
+                                               " exceeds the configured maximum " + std::to_string(maxW) + "x" +
+                                               std::to_string(maxH));
     *stride = minStride >= w * ch ? minStride : w * ch;
     if (size_t(*stride) * size_t(h) > cap) return Error::make(Errc::TooLarge, "image exceeds the frame buffer");
     return {};
 }
 
 // libpng's default handlers print to stderr; ours stay quiet and return by longjmp.
-void pngQuietError(png_structp png, png_const_charp) { png_longjmp(png, 1); }
+void pngQuietError(png_structp png, png_const_charp)
+{
+    png_longjmp(png, 1);
+}
 void pngQuietWarning(png_structp, png_const_charp) {}
 
 // libpng reports errors by longjmp; nothing with a destructor lives between setjmp and it.
@@ -61,8 +64,10 @@ Error decodePng(FILE *f, uint8_t *dst, size_t cap, int maxW, int maxH, int minSt
     const int h = int(png_get_image_height(png, info));
     const int ch = int(png_get_channels(png, info));
     int stride = 0;
-    if (ch != 1 && ch != 3) err = Error::make(Errc::BadFormat, "PNG with unsupported channel layout");
-    else err = checkGeometry(w, h, ch, maxW, maxH, minStride, cap, &stride);
+    if (ch != 1 && ch != 3)
+        err = Error::make(Errc::BadFormat, "PNG with unsupported channel layout");
+    else
+        err = checkGeometry(w, h, ch, maxW, maxH, minStride, cap, &stride);
     if (!err.ok()) png_error(png, "geometry");
     for (int pass = png_set_interlace_handling(png); pass > 0; --pass)
         for (int y = 0; y < h; ++y) png_read_row(png, dst + size_t(y) * size_t(stride), nullptr);
@@ -77,7 +82,10 @@ struct JpegErr {
     jmp_buf jump;
 };
 
-void jpegFail(j_common_ptr c) { longjmp(reinterpret_cast<JpegErr *>(c->err)->jump, 1); }
+void jpegFail(j_common_ptr c)
+{
+    longjmp(reinterpret_cast<JpegErr *>(c->err)->jump, 1);
+}
 
 Error decodeJpeg(FILE *f, uint8_t *dst, size_t cap, int maxW, int maxH, int minStride, DecodedImage *out)
 {
@@ -141,8 +149,8 @@ Error decodePgm(FILE *f, uint8_t *dst, size_t cap, int maxW, int maxH, int minSt
 
 } // namespace
 
-Error decodeImage(const std::string &path, uint8_t *dst, size_t capacity, int maxWidth, int maxHeight,
-                  int minStride, DecodedImage *out)
+Error decodeImage(const std::string &path, uint8_t *dst, size_t capacity, int maxWidth, int maxHeight, int minStride,
+                  DecodedImage *out)
 {
     FilePtr f(std::fopen(path.c_str(), "rb"));
     if (!f) return Error::make(Errc::NotFound, "cannot open image '" + path + "': " + std::strerror(errno));

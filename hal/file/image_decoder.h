@@ -20,11 +20,10 @@ struct DecodedImage {
 // minStride if it is at least width × channels, otherwise width × channels. RGBA and 16-bit
 // inputs are reduced to RGB / 8 bit; palette PNGs are expanded. Errors: NotFound, BadFormat,
 // TooLarge (more than maxWidth × maxHeight or more than capacity), BadStride never.
-Error decodeImage(const std::string &path, uint8_t *dst, size_t capacity, int maxWidth,
-                  int maxHeight, int minStride, DecodedImage *out);
+Error decodeImage(const std::string &path, uint8_t *dst, size_t capacity, int maxWidth, int maxHeight, int minStride,
+                  DecodedImage *out);
 
 // Writes an 8-bit grey or RGB image as PNG (compression level 1: fast, for test pictures).
-Error writePng(const std::string &path, const uint8_t *data, int width, int height, int channels,
-               int stride);
+Error writePng(const std::string &path, const uint8_t *data, int width, int height, int channels, int stride);
 
 } // namespace icacam::hal

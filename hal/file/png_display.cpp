@@ -29,7 +29,8 @@ Error PngDisplay::show(const MonoBitmap &picture)
     const int w = MonoBitmap::kWidth * scale_, h = MonoBitmap::kHeight * scale_;
     std::vector<uint8_t> px(size_t(w) * size_t(h));
     for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) px[size_t(y) * size_t(w) + size_t(x)] = picture.get(x / scale_, y / scale_) ? 255 : 0;
+        for (int x = 0; x < w; ++x)
+            px[size_t(y) * size_t(w) + size_t(x)] = picture.get(x / scale_, y / scale_) ? 255 : 0;
     const std::string latest = folder_ + "/screen-latest.png";
     if (Error e = writePng(latest + ".tmp", px.data(), w, h, 1, w); !e.ok()) return e;
     std::error_code ec;

@@ -121,9 +121,12 @@ struct LineRequest {
                 gpiod_line_settings_set_direction(settings, GPIOD_LINE_DIRECTION_INPUT);
                 gpiod_line_settings_set_edge_detection(settings, GPIOD_LINE_EDGE_BOTH);
                 gpiod_line_settings_set_event_clock(settings, GPIOD_LINE_CLOCK_MONOTONIC);
-                if (spec.pullUp) gpiod_line_settings_set_bias(settings, GPIOD_LINE_BIAS_PULL_UP);
-                else if (spec.pullDown) gpiod_line_settings_set_bias(settings, GPIOD_LINE_BIAS_PULL_DOWN);
-                else if (spec.biasOff) gpiod_line_settings_set_bias(settings, GPIOD_LINE_BIAS_DISABLED);
+                if (spec.pullUp)
+                    gpiod_line_settings_set_bias(settings, GPIOD_LINE_BIAS_PULL_UP);
+                else if (spec.pullDown)
+                    gpiod_line_settings_set_bias(settings, GPIOD_LINE_BIAS_PULL_DOWN);
+                else if (spec.biasOff)
+                    gpiod_line_settings_set_bias(settings, GPIOD_LINE_BIAS_DISABLED);
                 // The kernel filters bounce before it stamps the edge (v2 only).
                 if (spec.debounceUs > 0)
                     gpiod_line_settings_set_debounce_period_us(settings, static_cast<unsigned long>(spec.debounceUs));
@@ -147,8 +150,10 @@ struct LineRequest {
     int fd() const { return gpiod_line_request_get_fd(request); }
     int setRaw(bool high)
     {
-        return gpiod_line_request_set_value(request, offset, high ? GPIOD_LINE_VALUE_ACTIVE : GPIOD_LINE_VALUE_INACTIVE) == 0
-                   ? 0 : errno;
+        return gpiod_line_request_set_value(request, offset,
+                                            high ? GPIOD_LINE_VALUE_ACTIVE : GPIOD_LINE_VALUE_INACTIVE) == 0
+                   ? 0
+                   : errno;
     }
     // 1 high, 0 low, -errno.
     int getRaw()
@@ -250,7 +255,10 @@ struct GpiodLed::Lines : LineRequest {};
 
 GpiodTrigger::GpiodTrigger(const Clock &clock) : clock_(clock) {}
 GpiodTrigger::~GpiodTrigger() = default;
-void GpiodTrigger::close() { lines_.reset(); }
+void GpiodTrigger::close()
+{
+    lines_.reset();
+}
 
 Error GpiodTrigger::open(const GpioLineSpec &spec, const char *consumer)
 {
@@ -259,8 +267,10 @@ Error GpiodTrigger::open(const GpioLineSpec &spec, const char *consumer)
     // The request is raw (no kernel active-low): which edge is a press is decided here, the
     // same way for both API versions.
     if (const int err = lines->open(spec, consumer, false))
-        return fromErrno("trigger line", spec.name.empty() ? spec.chipPath + ":" + std::to_string(spec.offset)
-                                                          : spec.name + " (on any /dev/gpiochipN)", err);
+        return fromErrno("trigger line",
+                         spec.name.empty() ? spec.chipPath + ":" + std::to_string(spec.offset)
+                                           : spec.name + " (on any /dev/gpiochipN)",
+                         err);
     activeLow_ = spec.activeLow;
     where_ = lines->chipPath + ":" + std::to_string(lines->offset);
     lines_ = std::move(lines);
@@ -283,8 +293,7 @@ Result<size_t> GpiodTrigger::readEdges(ButtonEdge *out, size_t cap)
     const int pr = ::poll(&p, 1, 0);
     if (pr < 0) return Result<size_t>::fail(Errc::Io, std::string("trigger poll: ") + std::strerror(errno));
     if (pr == 0) return {};
-    if (p.revents & (POLLERR | POLLHUP | POLLNVAL))
-        return Result<size_t>::fail(Errc::Closed, "trigger line went away");
+    if (p.revents & (POLLERR | POLLHUP | POLLNVAL)) return Result<size_t>::fail(Errc::Closed, "trigger line went away");
     bool rising[kEventBatch];
     int64_t ns[kEventBatch];
     const int want = cap < size_t(kEventBatch) ? int(cap) : kEventBatch;
@@ -298,7 +307,10 @@ Result<size_t> GpiodTrigger::readEdges(ButtonEdge *out, size_t cap)
 }
 
 GpiodLed::GpiodLed() = default;
-GpiodLed::~GpiodLed() { close(); }
+GpiodLed::~GpiodLed()
+{
+    close();
+}
 
 void GpiodLed::close()
 {
@@ -312,8 +324,10 @@ Error GpiodLed::open(const GpioLineSpec &spec, const char *consumer)
     lines_.reset();
     auto lines = std::make_unique<Lines>();
     if (const int err = lines->open(spec, consumer, true))
-        return fromErrno("LED line", spec.name.empty() ? spec.chipPath + ":" + std::to_string(spec.offset)
-                                                      : spec.name + " (on any /dev/gpiochipN)", err);
+        return fromErrno("LED line",
+                         spec.name.empty() ? spec.chipPath + ":" + std::to_string(spec.offset)
+                                           : spec.name + " (on any /dev/gpiochipN)",
+                         err);
     lines_ = std::move(lines);
     on_ = false;
     activeLow_ = spec.activeLow;

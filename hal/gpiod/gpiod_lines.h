@@ -17,7 +17,8 @@ namespace icacam::hal {
 struct GpioLineSpec {
     GpioLineSpec() = default;
     GpioLineSpec(std::string chip, unsigned line, bool activeLowLevel = false, bool withPullUp = false)
-        : chipPath(std::move(chip)), offset(line), activeLow(activeLowLevel), pullUp(withPullUp) {}
+            : chipPath(std::move(chip)), offset(line), activeLow(activeLowLevel), pullUp(withPullUp)
+    {}
 
     std::string chipPath = "/dev/gpiochip0";
     unsigned offset = 0;

@@ -13,9 +13,9 @@
 #include <libcamera/control_ids.h>
 #include <libcamera/controls.h>
 #include <libcamera/formats.h>
-#include <libcamera/property_ids.h>
 #include <libcamera/framebuffer.h>
 #include <libcamera/framebuffer_allocator.h>
+#include <libcamera/property_ids.h>
 #include <libcamera/request.h>
 #include <libcamera/stream.h>
 #include <libcamera/version.h>
@@ -33,7 +33,7 @@
 
 #include "hal/fresh_frame.h"
 
-#define ICACAM_LIBCAMERA_AT_LEAST(maj, min)                                                        \
+#define ICACAM_LIBCAMERA_AT_LEAST(maj, min)                                                                            \
     (LIBCAMERA_VERSION_MAJOR > (maj) || (LIBCAMERA_VERSION_MAJOR == (maj) && LIBCAMERA_VERSION_MINOR >= (min)))
 
 namespace icacam::hal {
@@ -72,13 +72,17 @@ lc::Size sensorSize(const lc::Camera &cam, const lc::StreamConfiguration &sc, co
     }
     lc::Size best;
     for (const lc::Size &sz : sc.formats().sizes(pf))
-        if (int(sz.width) <= maxW && int(sz.height) <= maxH && uint64_t(sz.width) * sz.height > uint64_t(best.width) * best.height)
+        if (int(sz.width) <= maxW && int(sz.height) <= maxH &&
+            uint64_t(sz.width) * sz.height > uint64_t(best.width) * best.height)
             best = sz;
     if (best.width == 0 && maxW > 0 && maxH > 0) best = lc::Size(unsigned(maxW), unsigned(maxH));
     return best;
 }
 
-bool supports(const lc::Camera &cam, const lc::ControlId &id) { return cam.controls().find(id.id()) != cam.controls().end(); }
+bool supports(const lc::Camera &cam, const lc::ControlId &id)
+{
+    return cam.controls().find(id.id()) != cam.controls().end();
+}
 
 std::string fmtNum(double v)
 {
@@ -89,11 +93,16 @@ std::string fmtNum(double v)
 
 bool lumaFormat(const lc::PixelFormat &pf, vision::PixelFormat *out)
 {
-    if (pf == lc::formats::R8) *out = vision::PixelFormat::Grey8;
-    else if (pf == lc::formats::NV12) *out = vision::PixelFormat::NV12;
-    else if (pf == lc::formats::YUV420) *out = vision::PixelFormat::YUV420;
-    else if (pf == lc::formats::YUYV) *out = vision::PixelFormat::YUYV;
-    else return false;
+    if (pf == lc::formats::R8)
+        *out = vision::PixelFormat::Grey8;
+    else if (pf == lc::formats::NV12)
+        *out = vision::PixelFormat::NV12;
+    else if (pf == lc::formats::YUV420)
+        *out = vision::PixelFormat::YUV420;
+    else if (pf == lc::formats::YUYV)
+        *out = vision::PixelFormat::YUYV;
+    else
+        return false;
     return true;
 }
 
@@ -163,13 +172,18 @@ struct LibcameraCamera::Session {
 };
 
 LibcameraCamera::LibcameraCamera(const Clock &clock, LibcameraOptions options)
-    : clock_(clock), options_(std::move(options))
+        : clock_(clock), options_(std::move(options))
+{}
+
+LibcameraCamera::~LibcameraCamera()
 {
+    stop();
 }
 
-LibcameraCamera::~LibcameraCamera() { stop(); }
-
-void LibcameraCamera::stop() { session_.reset(); }
+void LibcameraCamera::stop()
+{
+    session_.reset();
+}
 
 Error LibcameraCamera::configure(const CameraFormat &fmt)
 {
@@ -184,7 +198,8 @@ Error LibcameraCamera::configure(const CameraFormat &fmt)
         return Error::make(Errc::Io, std::string("libcamera: camera manager: ") + std::strerror(-r));
     if (s->manager.cameras().empty()) return Error::make(Errc::NotFound, "libcamera: no camera found");
     s->camera = pickCamera(s->manager, options_.camera);
-    if (!s->camera) return Error::make(Errc::NotFound, "libcamera: no camera '" + options_.camera + "' (by id or model)");
+    if (!s->camera)
+        return Error::make(Errc::NotFound, "libcamera: no camera '" + options_.camera + "' (by id or model)");
     if (s->camera->acquire() < 0) return Error::make(Errc::Io, "libcamera: camera in use by another program");
     s->acquired = true;
 
@@ -198,7 +213,8 @@ Error LibcameraCamera::configure(const CameraFormat &fmt)
     for (const lc::PixelFormat &pf : prefer) {
         sc.pixelFormat = pf;
         lc::Size size(unsigned(options_.width), unsigned(options_.height));
-        if (options_.width <= 0 || options_.height <= 0) size = sensorSize(*s->camera, sc, pf, fmt.maxWidth, fmt.maxHeight);
+        if (options_.width <= 0 || options_.height <= 0)
+            size = sensorSize(*s->camera, sc, pf, fmt.maxWidth, fmt.maxHeight);
         if (size.width == 0) size = lc::Size(unsigned(fmt.maxWidth), unsigned(fmt.maxHeight));
         sc.size = size;
         sc.bufferCount = unsigned(options_.bufferCount);
@@ -348,7 +364,7 @@ Error LibcameraCamera::capture(const CaptureRequest &req, CapturedFrame *out)
                 got.blueGain = (*cg)[1];
             }
             if (const auto lens = meta.get(lc::controls::LensPosition)) got.lensPosition = *lens;
-            got.sharpness = options_.controls.sharpness;         // not reported per frame
+            got.sharpness = options_.controls.sharpness; // not reported per frame
             got.noiseReduction = options_.controls.noiseReduction;
             out->source = "libcamera:" + s.camera->id();
             return {};

@@ -76,14 +76,16 @@ Error Ssd1306Display::init()
         for (uint8_t b : bytes) init[n++] = b;
     };
     add({0xAE, 0xD5, 0x80, 0xA8, 0x3F, 0xD3, 0x00, 0x40}); // off, clock, 64 rows, offset 0, line 0
-    if (options_.sh1106) add({0xAD, 0x8B});                // DC-DC converter on
-    else add({0x8D, 0x14, 0x20, 0x02});                      // charge pump on, page addressing
-    add({uint8_t(flip ? 0xA0 : 0xA1),                        // segment remap: not mirrored (or turned 180°)
-         uint8_t(flip ? 0xC0 : 0xC8),                        // COM scan: not upside down (or turned)
-         0xDA, 0x12,                                         // COM pins: alternative, for 64 rows
-         0x81, uint8_t(options_.contrast & 0xFF),            // contrast
-         0xD9, 0xF1, 0xDB, 0x40,                             // pre-charge, VCOMH deselect
-         0xA4, 0xA6});                                       // show RAM, not inverted
+    if (options_.sh1106)
+        add({0xAD, 0x8B}); // DC-DC converter on
+    else
+        add({0x8D, 0x14, 0x20, 0x02});            // charge pump on, page addressing
+    add({uint8_t(flip ? 0xA0 : 0xA1),             // segment remap: not mirrored (or turned 180°)
+         uint8_t(flip ? 0xC0 : 0xC8),             // COM scan: not upside down (or turned)
+         0xDA, 0x12,                              // COM pins: alternative, for 64 rows
+         0x81, uint8_t(options_.contrast & 0xFF), // contrast
+         0xD9, 0xF1, 0xDB, 0x40,                  // pre-charge, VCOMH deselect
+         0xA4, 0xA6});                            // show RAM, not inverted
     ready_ = false;
     if (Error e = commands(init, n); !e.ok()) return e;
     // Clear the whole RAM (the SH1106's 132 columns too) before the panel is switched on.

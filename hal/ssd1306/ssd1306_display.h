@@ -33,9 +33,9 @@ private:
 };
 
 struct OledOptions {
-    bool sh1106 = false;  // the controller of the 1.3 inch panels
+    bool sh1106 = false; // the controller of the 1.3 inch panels
     bool rotate180 = false;
-    int contrast = 0x7F;  // 0…255
+    int contrast = 0x7F; // 0…255
 };
 
 class Ssd1306Display final : public Display {

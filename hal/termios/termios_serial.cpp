@@ -15,11 +15,13 @@ namespace {
 
 bool speedOf(int baud, speed_t *out)
 {
-    struct Entry { int baud; speed_t speed; };
-    static const Entry kTable[] = {{9600, B9600},       {19200, B19200},     {38400, B38400},
-                                   {57600, B57600},     {115200, B115200},   {230400, B230400},
-                                   {460800, B460800},   {921600, B921600},   {1000000, B1000000},
-                                   {2000000, B2000000}, {3000000, B3000000}};
+    struct Entry {
+        int baud;
+        speed_t speed;
+    };
+    static const Entry kTable[] = {{9600, B9600},       {19200, B19200},     {38400, B38400},    {57600, B57600},
+                                   {115200, B115200},   {230400, B230400},   {460800, B460800},  {921600, B921600},
+                                   {1000000, B1000000}, {2000000, B2000000}, {3000000, B3000000}};
     for (const Entry &e : kTable)
         if (e.baud == baud) {
             *out = e.speed;
@@ -40,7 +42,8 @@ int64_t nowMs()
 Error TermiosSerial::open(const std::string &device, int baud, int writeTimeoutMs, int reopenMs)
 {
     speed_t speed{};
-    if (!speedOf(baud, &speed)) return Error::make(Errc::Invalid, "serial: unsupported baud rate " + std::to_string(baud));
+    if (!speedOf(baud, &speed))
+        return Error::make(Errc::Invalid, "serial: unsupported baud rate " + std::to_string(baud));
     device_ = device;
     baud_ = baud;
     writeTimeoutMs_ = writeTimeoutMs;
@@ -74,17 +77,18 @@ Error TermiosSerial::openNow()
     (void)speedOf(baud_, &speed);
     fd_.reset(::open(device.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC));
     if (!fd_.valid())
-        return Error::make(errno == ENOENT ? Errc::NotFound : Errc::Io, "serial " + device + ": " + std::strerror(errno));
+        return Error::make(errno == ENOENT ? Errc::NotFound : Errc::Io,
+                           "serial " + device + ": " + std::strerror(errno));
     termios t{};
     if (::tcgetattr(fd_.get(), &t) < 0) {
         const Error e = Error::make(Errc::Io, "serial " + device + ": not a terminal: " + std::strerror(errno));
         fd_.reset();
         return e;
     }
-    ::cfmakeraw(&t);                 // no echo, no line editing, no CR/LF translation, 8 bits
+    ::cfmakeraw(&t); // no echo, no line editing, no CR/LF translation, 8 bits
     t.c_cflag &= ~tcflag_t(CSTOPB | PARENB | CRTSCTS);
-    t.c_cflag |= CLOCAL | CREAD;      // ignore modem lines; receive
-    t.c_cc[VMIN] = 0;                 // reads return what is there (the fd is non-blocking too)
+    t.c_cflag |= CLOCAL | CREAD; // ignore modem lines; receive
+    t.c_cc[VMIN] = 0;            // reads return what is there (the fd is non-blocking too)
     t.c_cc[VTIME] = 0;
     ::cfsetispeed(&t, speed);
     ::cfsetospeed(&t, speed);

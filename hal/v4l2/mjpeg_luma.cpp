@@ -15,7 +15,10 @@ struct JpegError {
 };
 
 // libjpeg's default handler exits the program; this one returns to decodeMjpegLuma.
-[[noreturn]] void jpegFail(j_common_ptr c) { std::longjmp(reinterpret_cast<JpegError *>(c->err)->jump, 1); }
+[[noreturn]] void jpegFail(j_common_ptr c)
+{
+    std::longjmp(reinterpret_cast<JpegError *>(c->err)->jump, 1);
+}
 void jpegQuiet(j_common_ptr) {} // corrupt-data warnings: the frame is refused or used as decoded
 
 } // namespace
@@ -24,7 +27,8 @@ Error decodeMjpegLuma(const uint8_t *jpeg, size_t bytes, uint8_t *dst, size_t ca
                       int dstStride)
 {
     if (!jpeg || bytes < 4) return Error::make(Errc::BadFormat, "MJPEG frame empty");
-    if (size_t(dstStride) * size_t(height) > capacity) return Error::make(Errc::TooLarge, "MJPEG frame larger than its buffer");
+    if (size_t(dstStride) * size_t(height) > capacity)
+        return Error::make(Errc::TooLarge, "MJPEG frame larger than its buffer");
     // Nothing with a destructor lives between setjmp and the longjmp that may come back to it.
     jpeg_decompress_struct cinfo;
     JpegError err;

@@ -33,10 +33,16 @@ int xioctl(int fd, unsigned long req, void *arg)
     return r;
 }
 
-std::string sysError(const std::string &what) { return what + ": " + std::strerror(errno); }
+std::string sysError(const std::string &what)
+{
+    return what + ": " + std::strerror(errno);
+}
 
 // An unplugged UVC camera answers ENODEV; the chardev can also report EIO or hang up.
-bool unplugged(int err) { return err == ENODEV || err == ENXIO || err == EIO; }
+bool unplugged(int err)
+{
+    return err == ENODEV || err == ENXIO || err == EIO;
+}
 
 uint32_t fourcc(vision::PixelFormat f)
 {
@@ -58,7 +64,10 @@ bool fromFourcc(uint32_t cc, vision::PixelFormat *f)
     }
 }
 
-int64_t monotonicNs() { return monotonicNowNs(); }
+int64_t monotonicNs()
+{
+    return monotonicNowNs();
+}
 
 // Preference among formats of equal size: in place before decoded.
 const uint32_t kFormats[] = {V4L2_PIX_FMT_GREY, V4L2_PIX_FMT_NV12, V4L2_PIX_FMT_YUYV, V4L2_PIX_FMT_MJPEG};
@@ -148,11 +157,13 @@ MmapMapper gMmap;
 } // namespace
 
 V4l2Camera::V4l2Camera(const Clock &clock, V4l2Options options, V4l2BufferMapper *mapper)
-    : clock_(clock), options_(std::move(options)), mapper_(mapper ? mapper : &gMmap)
-{
-}
+        : clock_(clock), options_(std::move(options)), mapper_(mapper ? mapper : &gMmap)
+{}
 
-V4l2Camera::~V4l2Camera() { stop(); }
+V4l2Camera::~V4l2Camera()
+{
+    stop();
+}
 
 void V4l2Camera::stop()
 {
@@ -181,8 +192,7 @@ Error V4l2Camera::configure(const CameraFormat &fmt)
 {
     if (fmt.maxWidth <= 0 || fmt.maxHeight <= 0)
         return Error::make(Errc::Invalid, "camera: maximum frame size must be positive");
-    if (!fourcc(fmt.format))
-        return Error::make(Errc::BadFormat, "camera: V4L2 delivers grey8, YUYV or NV12 frames");
+    if (!fourcc(fmt.format)) return Error::make(Errc::BadFormat, "camera: V4L2 delivers grey8, YUYV or NV12 frames");
     if (options_.bufferCount < 2 || options_.bufferCount > kMaxBuffers)
         return Error::make(Errc::Invalid, "camera: buffer count must be 2…8");
     stop();
@@ -290,8 +300,10 @@ Error V4l2Camera::negotiate()
         }
         enumerated = true;
         uint32_t w = 0, h = 0;
-        if (options_.width > 0 && options_.height > 0) w = uint32_t(options_.width), h = uint32_t(options_.height);
-        else largestSize(fd, order[k], wanted_.maxWidth, wanted_.maxHeight, &w, &h);
+        if (options_.width > 0 && options_.height > 0)
+            w = uint32_t(options_.width), h = uint32_t(options_.height);
+        else
+            largestSize(fd, order[k], wanted_.maxWidth, wanted_.maxHeight, &w, &h);
         if (uint64_t(w) * h > uint64_t(bestW) * bestH) bestCc = order[k], bestW = w, bestH = h;
     }
     if (enumerated && !bestCc)
@@ -341,8 +353,8 @@ Error V4l2Camera::negotiate()
     parm.type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
     if (xioctl(fd, VIDIOC_G_PARM, &parm) == 0 && parm.parm.capture.timeperframe.denominator > 0 &&
         parm.parm.capture.timeperframe.numerator > 0)
-        frameIntervalUs_ = int64_t(parm.parm.capture.timeperframe.numerator) * 1000000 /
-                           parm.parm.capture.timeperframe.denominator;
+        frameIntervalUs_ =
+            int64_t(parm.parm.capture.timeperframe.numerator) * 1000000 / parm.parm.capture.timeperframe.denominator;
     return {};
 }
 
@@ -429,7 +441,8 @@ Error V4l2Camera::capture(const CaptureRequest &req, CapturedFrame *out)
             bool usable = !early && !(b.flags & V4L2_BUF_FLAG_ERROR) && int(b.index) < bufferCount_;
             stale += early ? 1 : 0;
             const size_t used = b.bytesused ? b.bytesused : imageBytes_;
-            const size_t bytes = int(b.index) < bufferCount_ && used > buffers_[b.index].length ? buffers_[b.index].length : used;
+            const size_t bytes =
+                int(b.index) < bufferCount_ && used > buffers_[b.index].length ? buffers_[b.index].length : used;
             if (usable && mjpeg_) {
                 const Error d = decodeMjpegLuma(static_cast<const uint8_t *>(buffers_[b.index].addr), bytes,
                                                 decoded_.get(), decodedBytes_, width_, height_, stride_);
@@ -466,10 +479,12 @@ Error V4l2Camera::capture(const CaptureRequest &req, CapturedFrame *out)
         if (left <= 0)
             return Error::make(Errc::Timeout, "camera: no frame exposed after the LED settled within " +
                                                   std::to_string(timeoutMs) + " ms (" + std::to_string(stale) +
-                                                  " earlier frames refused" + (corrupt.empty() ? "" : "; " + corrupt) + ")");
+                                                  " earlier frames refused" + (corrupt.empty() ? "" : "; " + corrupt) +
+                                                  ")");
         pollfd p{fd_.get(), POLLIN, 0};
         const int pr = ::poll(&p, 1, int(left < 20 ? left : 20)); // short slices: the deadline rules
-        if (pr < 0 && errno != EINTR) failure = Error::make(Errc::Io, sysError("camera: poll"));
+        if (pr < 0 && errno != EINTR)
+            failure = Error::make(Errc::Io, sysError("camera: poll"));
         else if (pr > 0 && (p.revents & (POLLERR | POLLHUP | POLLNVAL)) && !(p.revents & POLLIN))
             failure = Error::make(Errc::Closed, "camera " + options_.device + " unplugged");
     }

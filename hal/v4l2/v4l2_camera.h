@@ -90,9 +90,9 @@ private:
     std::unique_ptr<uint8_t[]> decoded_; // MJPEG frames' luma, sized in configure()
     size_t decodedBytes_ = 0;
     int64_t frameIntervalUs_ = 33333;
-    CameraControls reported_;            // read back after setting
+    CameraControls reported_; // read back after setting
     std::string description_ = "v4l2: not opened";
-    std::string refused_;                // controls the device did not take
+    std::string refused_; // controls the device did not take
 };
 
 } // namespace icacam::hal

@@ -1,4 +1,4 @@
-#include "fe_aspect.h"
+#include "host_tools/fe/fe_aspect.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,14 +7,20 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "fe_rows.h"
+#include "host_tools/fe/fe_rows.h"
 
 namespace icacam::host::fe {
 
 namespace {
 constexpr double kBaseAspect = 1.5;
-double aspectOf(const FeRow &r) { return std::round(r.h0 / r.d0 * 1000) / 1000; }
-bool usable(const FeRow &r) { return (r.status == "ok" || r.status == "failed") && r.reduction >= 0.3 - 1e-9; }
+double aspectOf(const FeRow &r)
+{
+    return std::round(r.h0 / r.d0 * 1000) / 1000;
+}
+bool usable(const FeRow &r)
+{
+    return (r.status == "ok" || r.status == "failed") && r.reduction >= 0.3 - 1e-9;
+}
 std::string list(const std::vector<double> &v)
 {
     std::string s;
@@ -36,11 +42,16 @@ AspectRatios aspectRatios(const std::vector<std::string> &in, double minU)
     for (const auto &r : rows)
         if (usable(r) && std::fabs(aspectOf(r) - kBaseAspect) > 1e-6) ++meshCount[meshKey(r)];
     int best = 0;
-    for (const auto &[m, c] : meshCount) if (c > best) { best = c; out.mesh = m; }
+    for (const auto &[m, c] : meshCount)
+        if (c > best) {
+            best = c;
+            out.mesh = m;
+        }
     // The same physics and the same regularisation (contact penalty, stick slope): a ratio of
     // two runs that differ only in slenderness.
     auto key = [](const FeRow &r) {
-        return std::make_tuple(r.kMpa, r.n, r.mu, r.eMpa, std::round(r.reduction * 1e4) / 1e4, r.contactSlope, r.stickSlope);
+        return std::make_tuple(r.kMpa, r.n, r.mu, r.eMpa, std::round(r.reduction * 1e4) / 1e4, r.contactSlope,
+                               r.stickSlope);
     };
     // Both sides tracked, or neither: the tracked edge when every selected row has it.
     out.tracked = true;
@@ -70,7 +81,10 @@ std::string aspectTableText(const TableSources &src, const std::string &sourceDi
     if (ar.ratio.empty()) throw std::runtime_error("tables: no run at another H0/D0 with a base run to compare");
     std::set<double> as{kBaseAspect}, ns, rs, ms;
     for (const auto &[k, v] : ar.ratio) {
-        as.insert(std::get<0>(k)); ns.insert(std::get<1>(k)); rs.insert(std::get<2>(k)); ms.insert(std::get<3>(k));
+        as.insert(std::get<0>(k));
+        ns.insert(std::get<1>(k));
+        rs.insert(std::get<2>(k));
+        ms.insert(std::get<3>(k));
     }
     const std::vector<double> av(as.begin(), as.end()), nv(ns.begin(), ns.end()), rv(rs.begin(), rs.end()),
         mv(ms.begin(), ms.end());
@@ -86,7 +100,10 @@ std::string aspectTableText(const TableSources &src, const std::string &sourceDi
             if (std::fabs(std::get<0>(k) - a) > 1e-6) continue;
             const double dist = std::fabs(std::get<1>(k) - n) / 0.45 + std::fabs(std::get<2>(k) - r) / 0.3 +
                                 std::fabs(std::get<3>(k) - mu) / 0.25;
-            if (dist < best) { best = dist; value = v; }
+            if (dist < best) {
+                best = dist;
+                value = v;
+            }
         }
         return value;
     };
@@ -147,14 +164,18 @@ std::string aspectTableText(const TableSources &src, const std::string &sourceDi
       << "inline constexpr double kR[kRCount] = {" << list(rv) << "};\n"
       << "inline constexpr double kMu[kMuCount] = {" << list(mv) << "};\n"
       << "// [aspect][n][reduction][μ]\n"
-      << "inline constexpr double kURatio[kACount][kNCount][kRCount][kMuCount] = {\n" << values << "};\n"
-      << "inline constexpr unsigned char kSimulated[kACount][kNCount][kRCount][kMuCount] = {\n" << simulated << "};\n"
+      << "inline constexpr double kURatio[kACount][kNCount][kRCount][kMuCount] = {\n"
+      << values << "};\n"
+      << "inline constexpr unsigned char kSimulated[kACount][kNCount][kRCount][kMuCount] = {\n"
+      << simulated << "};\n"
       << "// R_max(H0/D0) / R_max(1.5), the silhouette's ratio, on the same axes (every run pair; the\n"
       << "// nearest simulated one where there is none).\n"
-      << "inline constexpr double kRMaxRatio[kACount][kNCount][kRCount][kMuCount] = {\n" << rMaxValues << "};\n"
+      << "inline constexpr double kRMaxRatio[kACount][kNCount][kRCount][kMuCount] = {\n"
+      << rMaxValues << "};\n"
       << "} // namespace icacam::vision::aspect_table\n";
     if (summary)
-        *summary = std::to_string(count) + " simulated ratios, H0/D0 " + list(av) + ", n " + list(nv) + ", mu " + list(mv);
+        *summary =
+            std::to_string(count) + " simulated ratios, H0/D0 " + list(av) + ", n " + list(nv) + ", mu " + list(mv);
     return f.str();
 }
 

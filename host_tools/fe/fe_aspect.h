@@ -8,7 +8,7 @@
 #include <tuple>
 #include <vector>
 
-#include "fe_table_sources.h"
+#include "host_tools/fe/fe_table_sources.h"
 
 namespace icacam::host::fe {
 

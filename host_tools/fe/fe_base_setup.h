@@ -4,17 +4,17 @@
 // every committed sweep command in data/fe/ was written against. `--preset base` starts from
 // the setup of the models' FE base instead (data/fe/README.md; vision/model/fe_model_table.h
 // names the file), so a sweep with it adds cases of the base's kind under the base's labels.
-#include "fe_case.h"
-#include "fe_runner.h"
+#include "host_tools/fe/fe_case.h"
+#include "host_tools/fe/fe_runner.h"
 
 namespace icacam::host::fe {
 
 inline FeCase baseSetupCase()
 {
     FeCase c;
-    c.element = "CAX8R";  // follows the fold-over at high μ where CAX4R diverges
-    c.cornerMm = 0.05;    // the finest corner that covers the whole (n, μ) grid
-    c.elemMm = 0.5;       // far field
+    c.element = "CAX8R"; // follows the fold-over at high μ where CAX4R diverges
+    c.cornerMm = 0.05;   // the finest corner that covers the whole (n, μ) grid
+    c.elemMm = 0.5;      // far field
     c.incMax = 0.02;
     c.reductionMax = 0.6; // snapshots to 60 %: the reduction carry's range
     c.stickSlope = 1e5;   // the converged stick slope (penalty study)

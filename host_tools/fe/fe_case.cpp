@@ -1,4 +1,4 @@
-#include "fe_case.h"
+#include "host_tools/fe/fe_case.h"
 #include "host_tools/number_text.h"
 
 #include <algorithm>
@@ -12,8 +12,8 @@ namespace icacam::host::fe {
 std::string FeCase::label() const
 {
     char b[200];
-    std::snprintf(b, sizeof b, "K%g_n%g_mu%g_E%g_D%g_H%g_r%g_h%g_c%g_cs%g", kMpa, n, mu, eMpa / 1000,
-                  d0Mm, h0Mm, reductionMax, elemMm, cornerMm, contactSlope);
+    std::snprintf(b, sizeof b, "K%g_n%g_mu%g_E%g_D%g_H%g_r%g_h%g_c%g_cs%g", kMpa, n, mu, eMpa / 1000, d0Mm, h0Mm,
+                  reductionMax, elemMm, cornerMm, contactSlope);
     // Settings added later only enter the label when they differ from the first sweeps'
     // defaults, so the labels (the sweep's resume keys) of committed rows stay valid.
     std::string s = b;
@@ -46,8 +46,11 @@ std::vector<double> axisNodes(double len, double elem, double fine, double zone 
     }
     // Spread the remainder over the coarse elements so the sizes sum to len.
     const double rest = len - sum;
-    if (rest > 0.3 * sizes.back()) { sizes.push_back(rest); sum += rest; }
-    else sizes.back() += rest;
+    if (rest > 0.3 * sizes.back()) {
+        sizes.push_back(rest);
+        sum += rest;
+    } else
+        sizes.back() += rest;
     x.push_back(0);
     for (auto it = sizes.rbegin(); it != sizes.rend(); ++it) x.push_back(x.back() + *it);
     x.back() = len;
@@ -83,13 +86,14 @@ FeMesh meshFor(const FeCase &c)
 
 std::string makeDeck(const FeCase &c)
 {
-    if (!(c.n > 0 && c.kMpa > 0 && c.mu >= 0 && c.elemMm > 0 && c.reductionMax > 0 &&
-          c.reductionMax < 0.9 && c.d0Mm > 0 && c.h0Mm > 0))
+    if (!(c.n > 0 && c.kMpa > 0 && c.mu >= 0 && c.elemMm > 0 && c.reductionMax > 0 && c.reductionMax < 0.9 &&
+          c.d0Mm > 0 && c.h0Mm > 0))
         throw std::invalid_argument("fe: invalid case inputs");
     const FeMesh m = meshFor(c);
     const double r0 = c.d0Mm / 2, z0 = c.h0Mm / 2;
-    const double dr = c.platenMm > 0 ? c.platenMm
-                     : c.cornerMm > 0 ? std::max(c.cornerMm, 0.5 * c.elemMm) : r0 / m.nr; // platen spacing
+    const double dr = c.platenMm > 0   ? c.platenMm
+                      : c.cornerMm > 0 ? std::max(c.cornerMm, 0.5 * c.elemMm)
+                                       : r0 / m.nr; // platen spacing
     const double dz = m.z[1] - m.z[0];
     std::ostringstream o;
     o.precision(10);
@@ -111,11 +115,11 @@ std::string makeDeck(const FeCase &c)
     for (int j = 0; j < m.nz; ++j)
         for (int i = 0; i < m.nr; ++i, ++e) {
             const int a = q * i, b = q * j; // lower-left corner on the node grid
-            o << e << ", " << m.node(a, b) << ", " << m.node(a + q, b) << ", " << m.node(a + q, b + q)
-              << ", " << m.node(a, b + q);
+            o << e << ", " << m.node(a, b) << ", " << m.node(a + q, b) << ", " << m.node(a + q, b + q) << ", "
+              << m.node(a, b + q);
             if (q == 2) // mid-side nodes: bottom, right, top, left
-                o << ", " << m.node(a + 1, b) << ", " << m.node(a + 2, b + 1) << ", " << m.node(a + 1, b + 2)
-                  << ", " << m.node(a, b + 1);
+                o << ", " << m.node(a + 1, b) << ", " << m.node(a + 2, b + 1) << ", " << m.node(a + 1, b + 2) << ", "
+                  << m.node(a, b + 1);
             o << "\n";
         }
     const int firstPlatenElem = e;
@@ -148,11 +152,14 @@ std::string makeDeck(const FeCase &c)
     for (double x = 1e-4; x < 5.0001; x *= 1.35) eps.push_back(x);
     eps.push_back(5.0);
     for (double ep : eps) o << c.kMpa * std::pow(0.002 + ep, c.n) << ", " << ep << "\n";
-    o << "*MATERIAL,NAME=TOOL\n*ELASTIC\n" << 1e7 << ", 0.3\n"
+    o << "*MATERIAL,NAME=TOOL\n*ELASTIC\n"
+      << 1e7 << ", 0.3\n"
       << "*SOLID SECTION,ELSET=SPEC,MATERIAL=WORK\n*SOLID SECTION,ELSET=PLATEN,MATERIAL=TOOL\n"
       << "*SURFACE INTERACTION,NAME=SI\n*SURFACE BEHAVIOR,PRESSURE-OVERCLOSURE=LINEAR\n"
-      << c.contactSlope << ", 0.1\n*FRICTION\n" << c.mu << ", " << c.stickSlope << "\n"
-      << "*CONTACT PAIR,INTERACTION=SI,TYPE=" << (c.contact == "surface" ? "SURFACE" : "NODE") << " TO SURFACE\nSLAVE, MASTER\n"
+      << c.contactSlope << ", 0.1\n*FRICTION\n"
+      << c.mu << ", " << c.stickSlope << "\n"
+      << "*CONTACT PAIR,INTERACTION=SI,TYPE=" << (c.contact == "surface" ? "SURFACE" : "NODE")
+      << " TO SURFACE\nSLAVE, MASTER\n"
       << "*BOUNDARY\nAXIS, 1, 1\nMID, 2, 2\nPLATENN, 1, 2\n"
       << "*TIME POINTS,NAME=SNAP\n";
     for (double r : outputReductions(c)) o << numberText("%.10g", r / c.reductionMax) << "\n";
@@ -172,14 +179,15 @@ std::vector<double> outputReductions(const FeCase &c)
     for (double x : c.reductions)
         if (x <= c.reductionMax + 1e-12) r.push_back(x);
     if (c.trackStep > 0)
-        for (int k = 1; k * c.trackStep <= c.reductionMax + 1e-9; ++k) r.push_back(std::round(k * c.trackStep * 1e6) / 1e6);
+        for (int k = 1; k * c.trackStep <= c.reductionMax + 1e-9; ++k)
+            r.push_back(std::round(k * c.trackStep * 1e6) / 1e6);
     std::sort(r.begin(), r.end());
     r.erase(std::unique(r.begin(), r.end(), [](double a, double b) { return std::fabs(a - b) < 1e-9; }), r.end());
     return r;
 }
 
-Radii computeRadii(const FeCase &c, const FeMesh &m, const NodeXY &coords, const NodeXY &disp,
-                   double reduction, double gapTolMm)
+Radii computeRadii(const FeCase &c, const FeMesh &m, const NodeXY &coords, const NodeXY &disp, double reduction,
+                   double gapTolMm)
 {
     Radii r;
     r.reduction = reduction;
@@ -188,8 +196,7 @@ Radii computeRadii(const FeCase &c, const FeMesh &m, const NodeXY &coords, const
         const auto ci = coords.find(id);
         const auto di = disp.find(id);
         if (ci == coords.end() || di == disp.end()) throw std::runtime_error("fe: node missing in results");
-        return std::pair<double, double>{ci->second.first + di->second.first,
-                                         ci->second.second + di->second.second};
+        return std::pair<double, double>{ci->second.first + di->second.first, ci->second.second + di->second.second};
     };
     r.riMm = pos(m.cornerNode()).first;
     r.roMm = r.riMm;
@@ -200,8 +207,12 @@ Radii computeRadii(const FeCase &c, const FeMesh &m, const NodeXY &coords, const
     int last = top;
     for (int j = top - 1; j >= 0; --j) {
         const auto p = pos(m.lateralNode(j));
-        if (zPlaten - p.second <= gapTolMm) { last = j; r.roMm = std::max(r.roMm, p.first); ++r.contactNodes; }
-        else break;
+        if (zPlaten - p.second <= gapTolMm) {
+            last = j;
+            r.roMm = std::max(r.roMm, p.first);
+            ++r.contactNodes;
+        } else
+            break;
     }
     // Sub-node edge: near a tangent contact edge the gap grows quadratically with distance,
     // so sqrt(gap) is linear in r; extrapolate it to zero from the next two free nodes,

@@ -16,9 +16,9 @@ struct FeCase {
     double nu = 0.3;
     double d0Mm = 10;
     double h0Mm = 15;
-    double reductionMax = 0.5;              // total height reduction of the run
+    double reductionMax = 0.5;                           // total height reduction of the run
     std::vector<double> reductions{0.3, 0.4, 0.45, 0.5}; // result snapshots (≤ reductionMax)
-    double elemMm = 0.2;                    // element edge length (structured mesh)
+    double elemMm = 0.2;                                 // element edge length (structured mesh)
     // > 0: graded mesh, cornerMm at the end-face corner, growing by 1.2 per element
     // towards the axis and the mid-plane until elemMm (the ICA is then resolved to cornerMm).
     double cornerMm = 0;
@@ -26,7 +26,7 @@ struct FeCase {
     // the corner before the grading starts, so the nodes that fold onto the platen (the ICA,
     // ≈ u × 1.3 of former side at 50 %) are evenly spaced instead of ×1.2 sparser per node.
     double foldZoneMm = 0;
-    double platenMm = 0;                    // platen (master) segment length; 0: max(cornerMm, elemMm / 2)
+    double platenMm = 0; // platen (master) segment length; 0: max(cornerMm, elemMm / 2)
     // Specimen element: "CAX4R" (linear, reduced integration) or "CAX8R" (quadratic,
     // reduced integration: follows the fold-over at high μ where CAX4R diverges).
     std::string element = "CAX4R";
@@ -34,24 +34,24 @@ struct FeCase {
     // faces, the base setup) or "surface" (SURFACE TO SURFACE: the slave faces integrated
     // against the platen — another discretisation of the same law, for the independent model).
     std::string contact = "node";
-    double contactSlope = 1e5;              // N/mm³, linear pressure–overclosure
-    double stickSlope = 1e4;                // N/mm³, friction stick slope (1e4 and 1e5 give the same u)
+    double contactSlope = 1e5;                            // N/mm³, linear pressure–overclosure
+    double stickSlope = 1e4;                              // N/mm³, friction stick slope (1e4 and 1e5 give the same u)
     double incInit = 0.005, incMin = 1e-7, incMax = 0.01; // of the step time 1
     // > 0: extra output frames every trackStep of reduction, so the contact edge can be
     // tracked between the nodes' touchdowns (fe_contact_track.h); 0: the 5 % snapshots only.
     double trackStep = 0;
-    std::string label() const;              // a file-safe name from the inputs
+    std::string label() const; // a file-safe name from the inputs
 };
 
 // Node numbering of the generated mesh (needed to post-process). Nodes sit on a grid of
 // q·nr + 1 by q·nz + 1 points (q = 2 for quadratic elements: mid-side nodes; the element
 // centres of that grid are not written); i, j below index that node grid.
 struct FeMesh {
-    int nr = 0, nz = 0;       // specimen elements radially / axially
-    int q = 1;                // nodes per element edge minus one (1 linear, 2 quadratic)
-    std::vector<double> r, z; // element corner coordinates along the axes (nr + 1, nz + 1 values)
+    int nr = 0, nz = 0;         // specimen elements radially / axially
+    int q = 1;                  // nodes per element edge minus one (1 linear, 2 quadratic)
+    std::vector<double> r, z;   // element corner coordinates along the axes (nr + 1, nz + 1 values)
     std::vector<double> rn, zn; // node-grid coordinates (q·nr + 1, q·nz + 1 values)
-    int platenFirstNode = 0;  // first node id of the platen
+    int platenFirstNode = 0;    // first node id of the platen
     int cols() const { return q * nr + 1; }
     int rows() const { return q * nz + 1; }
     int node(int i, int j) const { return 1 + i + j * cols(); }
@@ -64,14 +64,14 @@ std::string makeDeck(const FeCase &c);
 
 struct Radii {
     double reduction = 0;
-    double riMm = 0;     // original end face edge (the former corner node)
-    double roMm = 0;     // outermost former-lateral node touching the platen
+    double riMm = 0;       // original end face edge (the former corner node)
+    double roMm = 0;       // outermost former-lateral node touching the platen
     double roInterpMm = 0; // R_o with the edge interpolated between nodes (tangent contact)
-    double rMaxMm = 0;   // silhouette: the largest radius of the deformed lateral surface
+    double rMaxMm = 0;     // silhouette: the largest radius of the deformed lateral surface
     double uMm() const { return roMm - riMm; }
     double uInterpMm() const { return roInterpMm - riMm; }
-    int contactNodes = 0; // former lateral nodes in contact
-    double roTrackMm = -1;  // R_o tracked between touchdowns (fe_contact_track.h); -1: no frames
+    int contactNodes = 0;  // former lateral nodes in contact
+    double roTrackMm = -1; // R_o tracked between touchdowns (fe_contact_track.h); -1: no frames
     double uTrackMm() const { return roTrackMm < 0 ? -1 : roTrackMm - riMm; }
 };
 
@@ -84,7 +84,7 @@ constexpr double kGapTolMm = 1e-4;
 // The output reductions of the deck: the snapshots and, with trackStep, the tracking frames.
 std::vector<double> outputReductions(const FeCase &c);
 
-Radii computeRadii(const FeCase &c, const FeMesh &m, const NodeXY &coords, const NodeXY &disp,
-                   double reduction, double gapTolMm = kGapTolMm);
+Radii computeRadii(const FeCase &c, const FeMesh &m, const NodeXY &coords, const NodeXY &disp, double reduction,
+                   double gapTolMm = kGapTolMm);
 
 } // namespace icacam::host::fe

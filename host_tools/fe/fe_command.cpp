@@ -1,5 +1,5 @@
 // `icacam fe`: deck generation, ccx runs, sweeps, the model fit and the report.
-#include "fe_command.h"
+#include "host_tools/fe/fe_command.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,15 +10,15 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "cli_options.h"
-#include "fe_base_setup.h"
-#include "fe_compare.h"
-#include "fe_report.h"
-#include "fe_slurm_options.h"
-#include "fe_runner.h"
-#include "fe_slurm_script.h"
-#include "fe_sweep.h"
-#include "fe_sweep_csv.h"
+#include "host_tools/cli_options.h"
+#include "host_tools/fe/fe_base_setup.h"
+#include "host_tools/fe/fe_compare.h"
+#include "host_tools/fe/fe_report.h"
+#include "host_tools/fe/fe_runner.h"
+#include "host_tools/fe/fe_slurm_options.h"
+#include "host_tools/fe/fe_slurm_script.h"
+#include "host_tools/fe/fe_sweep.h"
+#include "host_tools/fe/fe_sweep_csv.h"
 #include "host_tools/number_text.h"
 
 namespace icacam::host {
@@ -28,14 +28,17 @@ using namespace icacam::host::fe;
 
 namespace {
 
-std::string g(double v) { return numberText("%g", v); }
+std::string g(double v)
+{
+    return numberText("%g", v);
+}
 
 // A setup's case and run settings as options (the numbers as %g prints them).
 std::string settingsText(const FeCase &c, const RunOptions &run)
 {
     return "--element " + c.element + " --corner " + g(c.cornerMm) + " --elem " + g(c.elemMm) + " --reduction " +
-           g(c.reductionMax) + " --inc-max " + g(c.incMax) + " --stick-slope " + g(c.stickSlope) +
-           " --track-step " + g(c.trackStep) + " --fallback-stick-slope " + g(run.fallbackStickSlope);
+           g(c.reductionMax) + " --inc-max " + g(c.incMax) + " --stick-slope " + g(c.stickSlope) + " --track-step " +
+           g(c.trackStep) + " --fallback-stick-slope " + g(run.fallbackStickSlope);
 }
 
 std::string usage()
@@ -53,10 +56,13 @@ std::string usage()
            "          say failed, alone)\n"
            "          slurm (docs/fe-cluster.md): one job array, a case per task, results in <CSV>.slurm/:\n"
            "          [--partition P] [--time LIMIT] (default: the partition's) [--cpus-per-task " +
-           std::to_string(slurm.cpusPerTask) + "]\n"
+           std::to_string(slurm.cpusPerTask) +
+           "]\n"
            "          [--sbatch '--account=x --mem=2G'] [--setup 'module load calculix']\n"
            "          [--slurm-config FILE (key = value, the same keys)] [--slurm-dir DIR (default <CSV>.slurm)]\n"
-           "          [--icacam PATH] [--array-limit N] [--poll " + g(slurm.pollS) + "] [--cancel 1]\n"
+           "          [--icacam PATH] [--array-limit N] [--poll " +
+           g(slurm.pollS) +
+           "] [--cancel 1]\n"
            "  tables  --base CSV [--k-family CSV]... [--aspect CSV]... [--out vision/model]\n"
            "          every generated table of the friction models from one FE base (icacam fe tables --help)\n"
            "  report  --in CSV --out DIR [--snapshot-reduction 0.5]    Table 1 / Fig. 3 comparison\n"
@@ -65,20 +71,32 @@ std::string usage()
            "          u of the same cases on other meshes/solvers (mesh study, independent model)\n"
            "Options take their value as --name value or --name=value.\n"
            "case options, with their defaults (the coarse setup of the first sweeps: seconds a case):\n"
-           "  --k " + g(c.kMpa) + " --n " + g(c.n) + " --mu " + g(c.mu) + " --e " + g(c.eMpa) + " --d0 " + g(c.d0Mm) +
-           " --h0 " + g(c.h0Mm) + " --reduction " + g(c.reductionMax) + " (snapshots every 0.05 to it)\n"
-           "  --element " + c.element + " (CAX4R|CAX8R) --elem " + g(c.elemMm) + " (element, mm) --corner " +
-           g(c.cornerMm) + " (> 0: graded to this at the end-face corner, mm)\n"
-           "  --contact-slope " + g(c.contactSlope) + " --stick-slope " + g(c.stickSlope) + " (N/mm³) --inc-max " +
-           g(c.incMax) + "\n"
-           "  --contact " + c.contact + " (node: NODE TO SURFACE, the base; surface: SURFACE TO SURFACE)\n"
-           "  --platen " + g(c.platenMm) + " (master segment, mm; 0: max(corner, elem / 2)) --fold-zone " +
-           g(c.foldZoneMm) + " (mm of side kept at the corner size)\n"
-           "  --track-step " + g(c.trackStep) + " (reduction between frames that track the contact edge; 0: none)\n"
+           "  --k " +
+           g(c.kMpa) + " --n " + g(c.n) + " --mu " + g(c.mu) + " --e " + g(c.eMpa) + " --d0 " + g(c.d0Mm) + " --h0 " +
+           g(c.h0Mm) + " --reduction " + g(c.reductionMax) +
+           " (snapshots every 0.05 to it)\n"
+           "  --element " +
+           c.element + " (CAX4R|CAX8R) --elem " + g(c.elemMm) + " (element, mm) --corner " + g(c.cornerMm) +
+           " (> 0: graded to this at the end-face corner, mm)\n"
+           "  --contact-slope " +
+           g(c.contactSlope) + " --stick-slope " + g(c.stickSlope) + " (N/mm³) --inc-max " + g(c.incMax) +
+           "\n"
+           "  --contact " +
+           c.contact +
+           " (node: NODE TO SURFACE, the base; surface: SURFACE TO SURFACE)\n"
+           "  --platen " +
+           g(c.platenMm) + " (master segment, mm; 0: max(corner, elem / 2)) --fold-zone " + g(c.foldZoneMm) +
+           " (mm of side kept at the corner size)\n"
+           "  --track-step " +
+           g(c.trackStep) +
+           " (reduction between frames that track the contact edge; 0: none)\n"
            "  --preset coarse|base (default coarse): base starts from the setup of the models' FE base\n"
-           "  (data/fe/README.md), minutes a case: " + settingsText(baseSetupCase(), baseSetupRun()) + ";\n"
+           "  (data/fe/README.md), minutes a case: " +
+           settingsText(baseSetupCase(), baseSetupRun()) +
+           ";\n"
            "  options given beside it win. `icacam fe sweep --preset base --grid 'n=…;mu=…'` adds to the base.\n"
-           "run options: --ccx " + run.ccx + " --timeout " + std::to_string(run.timeoutS) + " --work " + run.workDir +
+           "run options: --ccx " +
+           run.ccx + " --timeout " + std::to_string(run.timeoutS) + " --work " + run.workDir +
            " --fallback-stick-slope " + g(run.fallbackStickSlope) +
            " (rerun a case that stops with this stick slope; 0: no rerun)\n"
            "  --reuse 0|1|only (default 0; 1: post-process the work directory's results of the same deck again;\n"
@@ -96,7 +114,7 @@ struct Parsed {
     std::string edge = "interp";   // compare: which contact edge (interp | track)
     bool acrossMaterial = false;   // compare: match regardless of K and E
     int jobs = 1;
-    SweepOptions sweep;            // sweep: executor, Slurm settings
+    SweepOptions sweep; // sweep: executor, Slurm settings
 };
 
 double toDouble(const std::string &key, const std::string &v)
@@ -108,22 +126,38 @@ double toDouble(const std::string &key, const std::string &v)
 
 bool setCaseKey(FeCase &c, const std::string &key, double v)
 {
-    if (key == "k") c.kMpa = v;
-    else if (key == "n") c.n = v;
-    else if (key == "mu") c.mu = v;
-    else if (key == "e") c.eMpa = v;
-    else if (key == "d0") c.d0Mm = v;
-    else if (key == "h0") c.h0Mm = v;
-    else if (key == "reduction" || key == "red") c.reductionMax = v;
-    else if (key == "elem") c.elemMm = v;
-    else if (key == "corner") c.cornerMm = v;
-    else if (key == "platen") c.platenMm = v;
-    else if (key == "fold-zone") c.foldZoneMm = v;
-    else if (key == "contact-slope") c.contactSlope = v;
-    else if (key == "stick-slope") c.stickSlope = v;
-    else if (key == "inc-max") c.incMax = v;
-    else if (key == "track-step") c.trackStep = v;
-    else return false;
+    if (key == "k")
+        c.kMpa = v;
+    else if (key == "n")
+        c.n = v;
+    else if (key == "mu")
+        c.mu = v;
+    else if (key == "e")
+        c.eMpa = v;
+    else if (key == "d0")
+        c.d0Mm = v;
+    else if (key == "h0")
+        c.h0Mm = v;
+    else if (key == "reduction" || key == "red")
+        c.reductionMax = v;
+    else if (key == "elem")
+        c.elemMm = v;
+    else if (key == "corner")
+        c.cornerMm = v;
+    else if (key == "platen")
+        c.platenMm = v;
+    else if (key == "fold-zone")
+        c.foldZoneMm = v;
+    else if (key == "contact-slope")
+        c.contactSlope = v;
+    else if (key == "stick-slope")
+        c.stickSlope = v;
+    else if (key == "inc-max")
+        c.incMax = v;
+    else if (key == "track-step")
+        c.trackStep = v;
+    else
+        return false;
     return true;
 }
 
@@ -131,10 +165,27 @@ bool setCaseKey(FeCase &c, const std::string &key, double v)
 // such rather than as one missing its value.
 bool knownKey(const std::string &key)
 {
-    static const std::set<std::string> kCommandKeys = {
-        "out",   "in",      "grid",  "work", "ccx",  "timeout",         "fallback-stick-slope", "reuse",
-        "jobs",  "snapshot-reduction", "element", "contact", "min-u", "bar", "across-material", "edge",
-        "executor", "resubmit-failed", "cancel", "slurm-config", "preset"};
+    static const std::set<std::string> kCommandKeys = {"out",
+                                                       "in",
+                                                       "grid",
+                                                       "work",
+                                                       "ccx",
+                                                       "timeout",
+                                                       "fallback-stick-slope",
+                                                       "reuse",
+                                                       "jobs",
+                                                       "snapshot-reduction",
+                                                       "element",
+                                                       "contact",
+                                                       "min-u",
+                                                       "bar",
+                                                       "across-material",
+                                                       "edge",
+                                                       "executor",
+                                                       "resubmit-failed",
+                                                       "cancel",
+                                                       "slurm-config",
+                                                       "preset"};
     FeCase scratch;
     return kCommandKeys.count(key) || isSlurmKey(key) || setCaseKey(scratch, key, 0);
 }
@@ -146,46 +197,67 @@ Parsed parse(const std::vector<std::string> &args, size_t from)
     // --preset first, wherever it stands: the options given beside it win.
     for (size_t i = from; i < args.size(); ++i) {
         std::string preset;
-        if (args[i] == "--preset" && i + 1 < args.size()) preset = args[i + 1];
-        else if (args[i].rfind("--preset=", 0) == 0) preset = args[i].substr(9);
-        else continue;
-        if (preset == "base") p.c = baseSetupCase(), p.run = baseSetupRun();
-        else if (preset != "coarse") throw cli::UsageError("--preset: coarse or base, not '" + preset + "'", usage());
+        if (args[i] == "--preset" && i + 1 < args.size())
+            preset = args[i + 1];
+        else if (args[i].rfind("--preset=", 0) == 0)
+            preset = args[i].substr(9);
+        else
+            continue;
+        if (preset == "base")
+            p.c = baseSetupCase(), p.run = baseSetupRun();
+        else if (preset != "coarse")
+            throw cli::UsageError("--preset: coarse or base, not '" + preset + "'", usage());
     }
     cli::OptionReader opts(args, usage(), from);
     while (opts.next()) {
-        if (opts.isHelp()) { p.help = true; return p; }
+        if (opts.isHelp()) {
+            p.help = true;
+            return p;
+        }
         if (!opts.isOption() || opts.name().rfind("--", 0) != 0) opts.unknown();
         const std::string key = opts.name().substr(2);
         if (!knownKey(key)) opts.unknown();
         const std::string v = opts.value();
-        if (key == "preset") {} // applied above
-        else if (key == "out") p.out = v;
-        else if (key == "in") p.in.push_back(v);
-        else if (key == "grid") p.grid = v;
-        else if (key == "work") p.run.workDir = v;
-        else if (key == "ccx") p.run.ccx = v;
-        else if (key == "timeout") p.run.timeoutS = int(toDouble(opts.name(), v));
-        else if (key == "fallback-stick-slope") p.run.fallbackStickSlope = toDouble(opts.name(), v);
+        if (key == "preset") {
+        } // applied above
+        else if (key == "out")
+            p.out = v;
+        else if (key == "in")
+            p.in.push_back(v);
+        else if (key == "grid")
+            p.grid = v;
+        else if (key == "work")
+            p.run.workDir = v;
+        else if (key == "ccx")
+            p.run.ccx = v;
+        else if (key == "timeout")
+            p.run.timeoutS = int(toDouble(opts.name(), v));
+        else if (key == "fallback-stick-slope")
+            p.run.fallbackStickSlope = toDouble(opts.name(), v);
         else if (key == "reuse") {
             p.run.reuse = v != "0";
             p.run.reuseOnly = v == "only";
-        }
-        else if (key == "jobs") p.jobs = std::clamp(int(toDouble(opts.name(), v)), 1, 2);
-        else if (key == "snapshot-reduction") p.reduction = toDouble(opts.name(), v);
+        } else if (key == "jobs")
+            p.jobs = std::clamp(int(toDouble(opts.name(), v)), 1, 2);
+        else if (key == "snapshot-reduction")
+            p.reduction = toDouble(opts.name(), v);
         else if (key == "element") {
             if (v != "CAX4R" && v != "CAX8R") opts.fail("CAX4R or CAX8R, not '" + v + "'");
             p.c.element = v;
-        } else if (key == "contact") p.c.contact = v;
-        else if (key == "min-u") p.minU = toDouble(opts.name(), v);
-        else if (key == "bar") p.bar = toDouble(opts.name(), v);
-        else if (key == "across-material") p.acrossMaterial = v != "0";
+        } else if (key == "contact")
+            p.c.contact = v;
+        else if (key == "min-u")
+            p.minU = toDouble(opts.name(), v);
+        else if (key == "bar")
+            p.bar = toDouble(opts.name(), v);
+        else if (key == "across-material")
+            p.acrossMaterial = v != "0";
         else if (key == "edge") {
             if (v != "interp" && v != "track") opts.fail("interp or track, not '" + v + "'");
             p.edge = v;
-        }
-        else if (setSweepOption(p.sweep, key, v)) {}
-        else if (!setCaseKey(p.c, key, toDouble(opts.name(), v))) opts.unknown();
+        } else if (setSweepOption(p.sweep, key, v)) {
+        } else if (!setCaseKey(p.c, key, toDouble(opts.name(), v)))
+            opts.unknown();
     }
     if (p.reduction <= 0) p.reduction = p.c.reductionMax;
     return p;
@@ -221,7 +293,8 @@ std::vector<FeCase> expandGrid(const FeCase &base, const std::string &grid)
 int sweep(const Parsed &p)
 {
     // --cancel only needs to know the sweep (its CSV or directory), not its cases.
-    if (p.out.empty() || (p.grid.empty() && !p.sweep.cancel)) throw cli::UsageError("sweep needs --grid and --out", usage());
+    if (p.out.empty() || (p.grid.empty() && !p.sweep.cancel))
+        throw cli::UsageError("sweep needs --grid and --out", usage());
     const auto cases = expandGrid(p.c, p.grid);
     // A case leaves this process as `icacam fe run` options (Slurm tasks): they must make
     // the same case again.
@@ -242,13 +315,22 @@ int sweep(const Parsed &p)
 int feCommand(const std::vector<std::string> &args)
 {
     if (args.empty()) throw cli::UsageError("a verb is needed", usage());
-    if (args[0] == "-h" || args[0] == "--help") { std::cout << usage(); return 0; }
+    if (args[0] == "-h" || args[0] == "--help") {
+        std::cout << usage();
+        return 0;
+    }
     const std::string sub = args[0];
     static const std::set<std::string> kVerbs = {"deck", "run", "sweep", "report", "compare", "fit", "aspect"};
     if (!kVerbs.count(sub)) throw cli::UsageError("unknown verb '" + sub + "'", usage());
     const Parsed p = parse(args, 1);
-    if (p.help) { std::cout << usage(); return 0; }
-    if (sub == "deck") { std::cout << makeDeck(p.c); return 0; }
+    if (p.help) {
+        std::cout << usage();
+        return 0;
+    }
+    if (sub == "deck") {
+        std::cout << makeDeck(p.c);
+        return 0;
+    }
     if (sub == "run") {
         FeCase c = p.c;
         const RunResult r = runCase(c, p.run);
@@ -258,7 +340,8 @@ int feCommand(const std::vector<std::string> &args)
     }
     if (sub == "sweep") return sweep(p);
     if (sub == "fit" || sub == "aspect")
-        throw std::runtime_error("the generated tables are made by `icacam fe tables` from one FE base (data/fe/README.md)");
+        throw std::runtime_error(
+            "the generated tables are made by `icacam fe tables` from one FE base (data/fe/README.md)");
     if (sub == "compare") return compareCommand(p.in, p.out, p.minU, p.bar, p.edge == "track", p.acrossMaterial);
     if (sub == "report") {
         if (p.in.empty() || p.out.empty()) throw cli::UsageError("report needs --in and --out", usage());

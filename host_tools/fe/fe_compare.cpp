@@ -1,4 +1,4 @@
-#include "fe_compare.h"
+#include "host_tools/fe/fe_compare.h"
 
 #include <cmath>
 #include <cstdio>
@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <tuple>
 
-#include "fe_rows.h"
+#include "host_tools/fe/fe_rows.h"
 #include "vision/model/fe_model.h"
 
 namespace icacam::host::fe {
@@ -24,14 +24,16 @@ int compareCommand(const std::vector<std::string> &in, const std::string &out, d
     // acrossMaterial: K and E left out of the match (the K/E independence checks).
     auto key = [acrossMaterial](const FeRow &r, bool withMu = true) {
         char b[200];
-        std::snprintf(b, sizeof b, "%g|%g|%g|%g|%g|%g|%g|%.4f", acrossMaterial ? 0.0 : r.kMpa, r.n, withMu ? r.mu : -1.0,
-                      acrossMaterial ? 0.0 : r.eMpa, r.nu, r.d0, r.h0, r.reduction);
+        std::snprintf(b, sizeof b, "%g|%g|%g|%g|%g|%g|%g|%.4f", acrossMaterial ? 0.0 : r.kMpa, r.n,
+                      withMu ? r.mu : -1.0, acrossMaterial ? 0.0 : r.eMpa, r.nu, r.d0, r.h0, r.reduction);
         return std::string(b);
     };
     auto setup = [acrossMaterial](const FeRow &r) {
         char b[160];
-        if (acrossMaterial) std::snprintf(b, sizeof b, "K %g E %g, %s", r.kMpa, r.eMpa / 1000, meshKey(r).c_str());
-        else std::snprintf(b, sizeof b, "%s cs%g st%g", meshKey(r).c_str(), r.contactSlope, r.stickSlope);
+        if (acrossMaterial)
+            std::snprintf(b, sizeof b, "K %g E %g, %s", r.kMpa, r.eMpa / 1000, meshKey(r).c_str());
+        else
+            std::snprintf(b, sizeof b, "%s cs%g st%g", meshKey(r).c_str(), r.contactSlope, r.stickSlope);
         return std::string(b);
     };
     std::map<std::string, FeRow> ref;
@@ -50,7 +52,10 @@ int compareCommand(const std::vector<std::string> &in, const std::string &out, d
         if (it == lineOf.end() || u <= 0) return -1.0;
         std::vector<double> us, mus;
         for (const auto &[mu, uu] : it->second)
-            if (us.empty() || uu > us.back()) { mus.push_back(mu); us.push_back(uu); }
+            if (us.empty() || uu > us.back()) {
+                mus.push_back(mu);
+                us.push_back(uu);
+            }
         if (us.size() < 2 || us.size() > size_t(vision::kMaxRowPoints)) return -1.0;
         return vision::feMuAlongU(us.data(), mus.data(), int(us.size()), u, &outside);
     };
@@ -60,13 +65,15 @@ int compareCommand(const std::vector<std::string> &in, const std::string &out, d
     if (tracked) md << " --edge track";
     if (acrossMaterial) md << " --across-material 1";
     md << "` (u: " << (tracked ? "contact edge tracked between the nodes' touchdowns" : "interpolated contact edge")
-       << "; Δu relative to the first file; bar " << 100 * bar
-       << " % where u > " << minU << " mm). u = R_o − R_i is a difference of two radii of 5–7 mm, "
-          "50–70 times u where u is 0.1 mm and more below, so the two radii's own differences (µm) say which edge moved. Δμ %: the μ "
+       << "; Δu relative to the first file; bar " << 100 * bar << " % where u > " << minU
+       << " mm). u = R_o − R_i is a difference of two radii of 5–7 mm, "
+          "50–70 times u where u is 0.1 mm and more below, so the two radii's own differences (µm) say which edge "
+          "moved. Δμ %: the μ "
           "that the reference's u(μ) at the same n and reduction gives for the other's u, against the case's μ — "
           "the difference in u as an instrument reading μ from it would see it (in brackets: extrapolated "
           "beyond the reference's u range).\n\n"
-       << "| K | n | μ | reduction | reference | u ref (mm) | other | u other (mm) | Δu % | ΔR_i µm | ΔR_o µm | Δμ % | within bar |\n"
+       << "| K | n | μ | reduction | reference | u ref (mm) | other | u other (mm) | Δu % | ΔR_i µm | ΔR_o µm | Δμ % | "
+          "within bar |\n"
        << "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     double worst = 0, worstMu = 0;
     int counted = 0, within = 0, countedMu = 0, withinMu = 0;
@@ -115,10 +122,10 @@ int compareCommand(const std::vector<std::string> &in, const std::string &out, d
                 }
             }
             char b[480];
-            std::snprintf(b, sizeof b, "| %g | %g | %g | %.2f | %s | %.4f | %s | %.4f | %s | %+.1f | %+.1f | %s | %s |\n", r.kMpa,
-                          r.n, r.mu, r.reduction, setup(r).c_str(), uOf(r), setup(o).c_str(), uOf(o),
-                          delta, dRi, dRo, dMu,
-                          judged ? (std::fabs(rel) <= bar ? "yes" : "**no**") : "(u ≤ bar's floor)");
+            std::snprintf(b, sizeof b,
+                          "| %g | %g | %g | %.2f | %s | %.4f | %s | %.4f | %s | %+.1f | %+.1f | %s | %s |\n", r.kMpa,
+                          r.n, r.mu, r.reduction, setup(r).c_str(), uOf(r), setup(o).c_str(), uOf(o), delta, dRi, dRo,
+                          dMu, judged ? (std::fabs(rel) <= bar ? "yes" : "**no**") : "(u ≤ bar's floor)");
             md << b;
         }
     char sum[200];
@@ -128,7 +135,8 @@ int compareCommand(const std::vector<std::string> &in, const std::string &out, d
     if (countedMu > 0) {
         char b[240];
         std::snprintf(b, sizeof b,
-                      "In μ (the judged comparisons inside the reference's u range): %d of %d within %g %%; largest |Δμ| %.1f %%.\n",
+                      "In μ (the judged comparisons inside the reference's u range): %d of %d within %g %%; largest "
+                      "|Δμ| %.1f %%.\n",
                       withinMu, countedMu, 100 * bar, 100 * worstMu);
         md << b;
     }
@@ -136,12 +144,14 @@ int compareCommand(const std::vector<std::string> &in, const std::string &out, d
         md << "\n| reduction | judged | within bar | largest \\|Δu\\| % |\n|---|---|---|---|\n";
         for (const auto &[pct, v] : perReduction) {
             char b[120];
-            std::snprintf(b, sizeof b, "| %ld %% | %d | %d | %.1f |\n", pct, std::get<0>(v), std::get<1>(v), 100 * std::get<2>(v));
+            std::snprintf(b, sizeof b, "| %ld %% | %d | %d | %.1f |\n", pct, std::get<0>(v), std::get<1>(v),
+                          100 * std::get<2>(v));
             md << b;
         }
     }
     for (const auto &[label, cells] : at50) {
-        md << "\nΔu % at 50 %, " << label << " (rows n, columns μ; in brackets where u ≤ " << minU << " mm):\n\n| n \\ μ |";
+        md << "\nΔu % at 50 %, " << label << " (rows n, columns μ; in brackets where u ≤ " << minU
+           << " mm):\n\n| n \\ μ |";
         for (double mu : mus50) md << " " << mu << " |";
         md << "\n|---|";
         for (size_t k = 0; k < mus50.size(); ++k) md << "---|";
@@ -155,7 +165,8 @@ int compareCommand(const std::vector<std::string> &in, const std::string &out, d
             md << "\n";
         }
     }
-    if (out.empty()) std::cout << md.str();
+    if (out.empty())
+        std::cout << md.str();
     else {
         std::ofstream f(out);
         f << md.str();

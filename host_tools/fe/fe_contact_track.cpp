@@ -1,4 +1,4 @@
-#include "fe_contact_track.h"
+#include "host_tools/fe/fe_contact_track.h"
 
 #include <algorithm>
 #include <cmath>
@@ -45,7 +45,10 @@ double predictedTouchdown(const std::vector<SideFrame> &frames, std::size_t j, s
         if ((bLo < 0) != (bHi < 0)) {
             for (int it = 0; it < 40; ++it) {
                 const double mid = 0.5 * (lo + hi);
-                if ((bend(t, g, mid) < 0) == (bLo < 0)) lo = mid; else hi = mid;
+                if ((bend(t, g, mid) < 0) == (bLo < 0))
+                    lo = mid;
+                else
+                    hi = mid;
             }
             p = 0.5 * (lo + hi);
         }
@@ -97,7 +100,8 @@ std::vector<double> touchdownReductions(const std::vector<SideFrame> &frames, do
                 double p = predictedTouchdown(frames, size_t(j), f - 1, tolMm);
                 if (p < 0) {
                     const double g0 = pv.gapMm[size_t(j)], g1 = std::max(fr.gapMm[size_t(j)], -g0);
-                    p = g0 > tolMm && g0 > g1 ? pv.reduction + (fr.reduction - pv.reduction) * (g0 - tolMm) / (g0 - g1) : fr.reduction;
+                    p = g0 > tolMm && g0 > g1 ? pv.reduction + (fr.reduction - pv.reduction) * (g0 - tolMm) / (g0 - g1)
+                                              : fr.reduction;
                 }
                 at = std::clamp(p, pv.reduction, fr.reduction);
             }
@@ -116,13 +120,14 @@ namespace {
 // material position goes from the last node down (a) to the next one (b) linearly in
 // reduction between their touchdowns, and its radius is taken at that fraction of the
 // deformed segment a–b.
-double edgeAlong(const std::vector<SideFrame> &frames, const std::vector<double> &touchdown, std::size_t k, double tolMm,
-                 const std::vector<int> &seq)
+double edgeAlong(const std::vector<SideFrame> &frames, const std::vector<double> &touchdown, std::size_t k,
+                 double tolMm, const std::vector<int> &seq)
 {
     const SideFrame &fr = frames[k];
     const double red = fr.reduction;
     std::size_t ia = 0;
-    while (ia + 1 < seq.size() && touchdown[size_t(seq[ia + 1])] >= 0 && touchdown[size_t(seq[ia + 1])] <= red + 1e-12) ++ia;
+    while (ia + 1 < seq.size() && touchdown[size_t(seq[ia + 1])] >= 0 && touchdown[size_t(seq[ia + 1])] <= red + 1e-12)
+        ++ia;
     const int a = seq[ia];
     if (ia + 1 == seq.size()) return fr.rMm[size_t(a)];
     const int b = seq[ia + 1];
@@ -138,7 +143,8 @@ double edgeAlong(const std::vector<SideFrame> &frames, const std::vector<double>
 }
 } // namespace
 
-double trackedContactEdge(const std::vector<SideFrame> &frames, const std::vector<double> &touchdown, std::size_t k, double tolMm)
+double trackedContactEdge(const std::vector<SideFrame> &frames, const std::vector<double> &touchdown, std::size_t k,
+                          double tolMm)
 {
     const SideFrame &fr = frames[k];
     const int top = int(fr.rMm.size()) - 1;

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "fe_case.h"
+#include "host_tools/fe/fe_case.h"
 
 namespace icacam::host::fe {
 

@@ -1,11 +1,11 @@
-#include "fe_fit.h"
+#include "host_tools/fe/fe_fit.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <sstream>
 #include <map>
 #include <set>
+#include <sstream>
 #include <stdexcept>
 
 namespace icacam::host::fe {
@@ -24,8 +24,10 @@ std::string list(const std::vector<double> &v, const char *f = "%.6g")
 std::string kRange(double lo, double hi)
 {
     char b[60];
-    if (lo == hi) std::snprintf(b, sizeof b, "%g", lo);
-    else std::snprintf(b, sizeof b, "%g-%g", lo, hi);
+    if (lo == hi)
+        std::snprintf(b, sizeof b, "%g", lo);
+    else
+        std::snprintf(b, sizeof b, "%g-%g", lo, hi);
     return b;
 }
 } // namespace
@@ -40,8 +42,8 @@ std::string feModelTableText(const TableSources &src, const std::string &sourceD
     // Every snapshot reduction from 30 % to 60 % that has base data (`reduction` must be one).
     std::vector<double> reds;
     std::map<double, PointGrid> byRed;
-    std::map<double, KCarry> carryByRed; // how u moves with K, per reduction (fe_rows.h)
-    std::set<double> kCovered; // the K range the model answers for (below)
+    std::map<double, KCarry> carryByRed;   // how u moves with K, per reduction (fe_rows.h)
+    std::set<double> kCovered;             // the K range the model answers for (below)
     double contactPerK = 0, stickPerK = 0; // the base's regularisation (one family, fe_rows.h)
     // The base is chosen among the named base's runs only; the K carry among the base's and
     // the family's runs (it needs the family at the base's K as its reference).
@@ -58,23 +60,30 @@ std::string feModelTableText(const TableSources &src, const std::string &sourceD
         // The K range the model answers for: the K the carry spans (the base's among them),
         // else the base's own.
         const KCarry &c = carryByRed[r];
-        if (c.found) kCovered.insert(c.k.begin(), c.k.end());
-        else kCovered.insert(base.kAveraged.begin(), base.kAveraged.end());
+        if (c.found)
+            kCovered.insert(c.k.begin(), c.k.end());
+        else
+            kCovered.insert(base.kAveraged.begin(), base.kAveraged.end());
         contactPerK = base.contactPerK;
         stickPerK = base.stickPerK;
     }
     if (byRed.empty()) throw std::runtime_error("tables: no usable rows in the base " + src.base);
     reduction = std::round(reduction * 1e6) / 1e6;
-    if (!byRed.count(reduction)) throw std::runtime_error("tables: no base data at reduction " + std::to_string(reduction));
+    if (!byRed.count(reduction))
+        throw std::runtime_error("tables: no base data at reduction " + std::to_string(reduction));
     std::set<double> ns, mus;
     double kMin = 1e9, kMax = 0;
     std::string mesh;
     int tracked = 0, rows = 0;
     for (const auto &[r, pts] : byRed)
         for (const auto &[k, p] : pts) {
-            ns.insert(p.n); mus.insert(p.mu);
-            kMin = std::min(kMin, p.kMin); kMax = std::max(kMax, p.kMax); mesh = p.mesh;
-            tracked += p.tracked; rows += p.count;
+            ns.insert(p.n);
+            mus.insert(p.mu);
+            kMin = std::min(kMin, p.kMin);
+            kMax = std::max(kMax, p.kMax);
+            mesh = p.mesh;
+            tracked += p.tracked;
+            rows += p.count;
         }
     const double kLo = kCovered.empty() ? kMin : *kCovered.begin();
     const double kHi = kCovered.empty() ? kMax : *kCovered.rbegin();
@@ -170,21 +179,29 @@ std::string feModelTableText(const TableSources &src, const std::string &sourceD
       << "inline constexpr double kReduction = " << reduction << "; // the model's own reduction when none is given\n"
       << "inline constexpr double kD0Mm = 10, kH0Mm = 15;\n"
       << "inline constexpr double kKMinMpa = " << kLo << ", kKMaxMpa = " << kHi << ";\n"
-      << "inline constexpr int kRCount = " << reds.size() << ", kNCount = " << nv.size() << ", kMuCount = " << mv.size() << ";\n"
+      << "inline constexpr int kRCount = " << reds.size() << ", kNCount = " << nv.size() << ", kMuCount = " << mv.size()
+      << ";\n"
       << "inline constexpr double kR[kRCount] = {" << list(reds) << "};\n"
       << "inline constexpr double kN[kNCount] = {" << list(nv) << "};\n"
       << "inline constexpr double kMu[kMuCount] = {" << list(mv) << "};\n"
       << "// [reduction][n][μ] in mm\n"
-      << "inline constexpr double kU[kRCount][kNCount][kMuCount] = {\n" << table([](const Point &p) { return p.u; }) << "};\n"
-      << "inline constexpr double kRi[kRCount][kNCount][kMuCount] = {\n" << table([](const Point &p) { return p.ri; }) << "};\n"
-      << "inline constexpr double kRo[kRCount][kNCount][kMuCount] = {\n" << table([](const Point &p) { return p.ro; }) << "};\n"
-      << "inline constexpr double kRmax[kRCount][kNCount][kMuCount] = {\n" << table([](const Point &p) { return p.rMax; }) << "};\n"
+      << "inline constexpr double kU[kRCount][kNCount][kMuCount] = {\n"
+      << table([](const Point &p) { return p.u; }) << "};\n"
+      << "inline constexpr double kRi[kRCount][kNCount][kMuCount] = {\n"
+      << table([](const Point &p) { return p.ri; }) << "};\n"
+      << "inline constexpr double kRo[kRCount][kNCount][kMuCount] = {\n"
+      << table([](const Point &p) { return p.ro; }) << "};\n"
+      << "inline constexpr double kRmax[kRCount][kNCount][kMuCount] = {\n"
+      << table([](const Point &p) { return p.rMax; }) << "};\n"
       << "inline constexpr int kKCount = " << carryK.size() << ";\n"
       << "inline constexpr double kK[kKCount] = {" << list(carryK) << "}; // MPa\n"
       << "// [K][reduction][n][μ] in mm\n"
-      << "inline constexpr double kDU[kKCount][kRCount][kNCount][kMuCount] = {\n" << carryU << "};\n"
-      << "inline constexpr double kDRi[kKCount][kRCount][kNCount][kMuCount] = {\n" << carryRi << "};\n"
-      << "inline constexpr double kDRmax[kKCount][kRCount][kNCount][kMuCount] = {\n" << carryRmax << "};\n"
+      << "inline constexpr double kDU[kKCount][kRCount][kNCount][kMuCount] = {\n"
+      << carryU << "};\n"
+      << "inline constexpr double kDRi[kKCount][kRCount][kNCount][kMuCount] = {\n"
+      << carryRi << "};\n"
+      << "inline constexpr double kDRmax[kKCount][kRCount][kNCount][kMuCount] = {\n"
+      << carryRmax << "};\n"
       << "} // namespace icacam::vision::fe_table\n";
     std::ostringstream said;
     said << byRed[reds.front()].size() << "-" << byRed[reduction].size() << " (n, mu) points at " << reds.size()

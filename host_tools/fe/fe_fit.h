@@ -3,8 +3,8 @@
 #include <string>
 #include <vector>
 
-#include "fe_rows.h"
-#include "fe_table_sources.h"
+#include "host_tools/fe/fe_rows.h"
+#include "host_tools/fe/fe_table_sources.h"
 
 namespace icacam::host::fe {
 

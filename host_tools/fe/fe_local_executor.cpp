@@ -1,4 +1,4 @@
-#include "fe_local_executor.h"
+#include "host_tools/fe/fe_local_executor.h"
 
 #include <exception>
 #include <mutex>
@@ -20,7 +20,12 @@ size_t LocalExecutor::solve(const std::vector<FeCase> &cases, const GatherFn &ga
             }
             const FeCase planned = c;
             RunResult r;
-            try { r = runCase(c, run_); } catch (const std::exception &e) { r.status = "error"; r.message = e.what(); }
+            try {
+                r = runCase(c, run_);
+            } catch (const std::exception &e) {
+                r.status = "error";
+                r.message = e.what();
+            }
             std::lock_guard<std::mutex> l(m);
             printRunResult(c, r);
             gather({planned, csvRows(c, r)});

@@ -1,8 +1,8 @@
 #pragma once
 // The sweep on this machine: `jobs` ccx runs at a time, each case's result printed and
 // gathered as it finishes.
-#include "fe_executor.h"
-#include "fe_runner.h"
+#include "host_tools/fe/fe_executor.h"
+#include "host_tools/fe/fe_runner.h"
 
 namespace icacam::host::fe {
 

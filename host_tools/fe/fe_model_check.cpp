@@ -1,4 +1,4 @@
-#include "fe_model_check.h"
+#include "host_tools/fe/fe_model_check.h"
 
 #include <algorithm>
 #include <cmath>
@@ -28,7 +28,10 @@ void writeLeaveOneOut(std::ostream &md, const std::vector<FeRow> &rows)
         {
             ++count;
             sum += std::fabs(rel);
-            if (std::fabs(rel) > worst) { worst = std::fabs(rel); where = what; }
+            if (std::fabs(rel) > worst) {
+                worst = std::fabs(rel);
+                where = what;
+            }
         }
     };
     md << "\n## Between the grid points (leave one out)\n\n"
@@ -48,7 +51,11 @@ void writeLeaveOneOut(std::ostream &md, const std::vector<FeRow> &rows)
             double us[vision::kMaxRowPoints], mus[vision::kMaxRowPoints];
             int c = 0;
             for (size_t j = 0; j < line.size() && c < vision::kMaxRowPoints; ++j)
-                if (j != skip) { us[c] = line[j]->u; mus[c] = line[j]->mu; ++c; }
+                if (j != skip) {
+                    us[c] = line[j]->u;
+                    mus[c] = line[j]->mu;
+                    ++c;
+                }
             return vision::feMuAlongU(us, mus, c, u, outside);
         };
         Stat sMu, sN;
@@ -80,15 +87,18 @@ void writeLeaveOneOut(std::ostream &md, const std::vector<FeRow> &rows)
                 allN.add(rel, what);
             }
         char b[300];
-        std::snprintf(b, sizeof b, "| %ld %% | %d | %.1f | %.1f (%s) | %d | %.1f | %.1f (%s) |\n", std::lround(100 * red),
-                      sMu.count, sMu.count ? 100 * sMu.sum / sMu.count : 0.0, 100 * sMu.worst, sMu.where.c_str(), sN.count,
-                      sN.count ? 100 * sN.sum / sN.count : 0.0, 100 * sN.worst, sN.where.c_str());
+        std::snprintf(b, sizeof b, "| %ld %% | %d | %.1f | %.1f (%s) | %d | %.1f | %.1f (%s) |\n",
+                      std::lround(100 * red), sMu.count, sMu.count ? 100 * sMu.sum / sMu.count : 0.0, 100 * sMu.worst,
+                      sMu.where.c_str(), sN.count, sN.count ? 100 * sN.sum / sN.count : 0.0, 100 * sN.worst,
+                      sN.where.c_str());
         md << b;
     }
     char b[300];
-    std::snprintf(b, sizeof b, "\nAll reductions: one μ out %d points, mean %.1f %%, max %.1f %%; one n out %d points, "
-                  "mean %.1f %%, max %.1f %%.\n", allMu.count, allMu.count ? 100 * allMu.sum / allMu.count : 0.0,
-                  100 * allMu.worst, allN.count, allN.count ? 100 * allN.sum / allN.count : 0.0, 100 * allN.worst);
+    std::snprintf(b, sizeof b,
+                  "\nAll reductions: one μ out %d points, mean %.1f %%, max %.1f %%; one n out %d points, "
+                  "mean %.1f %%, max %.1f %%.\n",
+                  allMu.count, allMu.count ? 100 * allMu.sum / allMu.count : 0.0, 100 * allMu.worst, allN.count,
+                  allN.count ? 100 * allN.sum / allN.count : 0.0, 100 * allN.worst);
     md << b;
 }
 
@@ -101,17 +111,19 @@ void writeRunResiduals(std::ostream &md, const std::vector<FeRow> &rows)
     if (const BaseChoice b = chooseBase(rows, 0.5); b.kAveraged.size() <= 1) {
         char b1[400];
         const KCarry c = kCarry(rows, 0.5, b);
-        std::snprintf(b1, sizeof b1, "The base is one K (K %g MPa on %s): the model is its runs at the grid points. "
-                      "The spread over K is in docs/fe/factorial.md; %s.\n", b.kMpa, b.mesh.c_str(),
+        std::snprintf(b1, sizeof b1,
+                      "The base is one K (K %g MPa on %s): the model is its runs at the grid points. "
+                      "The spread over K is in docs/fe/factorial.md; %s.\n",
+                      b.kMpa, b.mesh.c_str(),
                       c.found ? ("the model carries it (u and the radii at K minus at the base's K, from " + c.mesh +
                                  ", K " + std::to_string(int(c.k.front())) + "-" + std::to_string(int(c.k.back())) +
-                                 " MPa; KCarry in fe_rows.h)").c_str()
+                                 " MPa; KCarry in fe_rows.h)")
+                                    .c_str()
                               : "no family covers the grid at several K: the model is the same at every K");
         md << b1;
         return;
     }
-    md
-       << "μ read back at each run's own u (each K separately) through the model's interpolation of the "
+    md << "μ read back at each run's own u (each K separately) through the model's interpolation of the "
           "averaged points, where the run's u > 0.1 mm.\n\n"
        << "| reduction | runs | within 1 % | within 2 % | mean % | max % (at) |\n|---|---|---|---|---|---|\n";
     int all = 0, all1 = 0, all2 = 0;
@@ -121,7 +133,10 @@ void writeRunResiduals(std::ostream &md, const std::vector<FeRow> &rows)
         const PointGrid pts = basePoints(rows, red, base);
         if (pts.empty()) continue;
         std::map<double, std::pair<std::vector<double>, std::vector<double>>> line; // n → (u, μ) in μ order
-        for (const auto &[key, p] : pts) { line[p.n].first.push_back(p.u); line[p.n].second.push_back(p.mu); }
+        for (const auto &[key, p] : pts) {
+            line[p.n].first.push_back(p.u);
+            line[p.n].second.push_back(p.mu);
+        }
         int count = 0, in1 = 0, in2 = 0;
         double sum = 0, worst = 0;
         std::string where;
@@ -145,10 +160,12 @@ void writeRunResiduals(std::ostream &md, const std::vector<FeRow> &rows)
                 where = w;
             }
         }
-        all += count; all1 += in1; all2 += in2;
+        all += count;
+        all1 += in1;
+        all2 += in2;
         char b[240];
-        std::snprintf(b, sizeof b, "| %ld %% | %d | %d | %d | %.1f | %.1f (%s) |\n", std::lround(100 * red), count, in1, in2,
-                      count ? 100 * sum / count : 0.0, 100 * worst, where.c_str());
+        std::snprintf(b, sizeof b, "| %ld %% | %d | %d | %d | %.1f | %.1f (%s) |\n", std::lround(100 * red), count, in1,
+                      in2, count ? 100 * sum / count : 0.0, 100 * worst, where.c_str());
         md << b;
     }
     md << "\nAll reductions: " << all << " runs, " << all1 << " within 1 %, " << all2 << " within 2 %.\n";

@@ -4,7 +4,7 @@
 #include <ostream>
 #include <vector>
 
-#include "fe_rows.h"
+#include "host_tools/fe/fe_rows.h"
 
 namespace icacam::host::fe {
 

@@ -1,4 +1,4 @@
-#include "fe_paper_form.h"
+#include "host_tools/fe/fe_paper_form.h"
 
 #include <algorithm>
 #include <cmath>
@@ -60,11 +60,16 @@ void writeTable1Form(std::ostream &md, const fs::path &svgPath, const PointGrid 
 {
     std::map<double, std::pair<std::vector<double>, std::vector<double>>> byN; // n → (u, μ)
     for (const auto &[k, p] : pts)
-        if (p.u > 0.02) { byN[p.n].first.push_back(p.u); byN[p.n].second.push_back(p.mu); }
+        if (p.u > 0.02) {
+            byN[p.n].first.push_back(p.u);
+            byN[p.n].second.push_back(p.mu);
+        }
     md << "\n## The paper's form on our data (Eq. 2 / Table 1, Eq. 3 / Fig. 4)\n\n"
        << "Per n, μ = a u³ + b u² + c u + d by least squares through the FE points with u > 0.02 mm "
-          "(at least 4 needed; with exactly 4 the cubic interpolates). Paper: Table 1 (Eq. 3 with d's constant −0.00788).\n\n"
-       << "| n | points | a | b | c | d | paper a | paper b | paper c | paper d | max abs. dev. μ | mean abs. dev. μ |\n"
+          "(at least 4 needed; with exactly 4 the cubic interpolates). Paper: Table 1 (Eq. 3 with d's constant "
+          "−0.00788).\n\n"
+       << "| n | points | a | b | c | d | paper a | paper b | paper c | paper d | max abs. dev. μ | mean abs. dev. μ "
+          "|\n"
        << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     std::vector<double> nFit;
     std::vector<std::vector<double>> coef(4);
@@ -75,8 +80,8 @@ void writeTable1Form(std::ostream &md, const fs::path &svgPath, const PointGrid 
         const auto pc = vision::PaperModel::coefficients(n);
         char b[400];
         if (c.empty()) {
-            std::snprintf(b, sizeof b, "| %g | %zu | (too few) | | | | %.4f | %.4f | %.4f | %.4f | | |\n", n, uv.first.size(),
-                          pc.a, pc.b, pc.c, pc.d);
+            std::snprintf(b, sizeof b, "| %g | %zu | (too few) | | | | %.4f | %.4f | %.4f | %.4f | | |\n", n,
+                          uv.first.size(), pc.a, pc.b, pc.c, pc.d);
             md << b;
             continue;
         }
@@ -89,28 +94,31 @@ void writeTable1Form(std::ostream &md, const fs::path &svgPath, const PointGrid 
         worst = std::max(worst, mx);
         sumDev += sum;
         devCount += int(uv.first.size());
-        std::snprintf(b, sizeof b, "| %g | %zu | %.4f | %.4f | %.4f | %.4f | %.4f | %.4f | %.4f | %.4f | %.4f | %.4f |\n", n,
-                      uv.first.size(), c[0], c[1], c[2], c[3], pc.a, pc.b, pc.c, pc.d, mx, sum / double(uv.first.size()));
+        std::snprintf(
+            b, sizeof b, "| %g | %zu | %.4f | %.4f | %.4f | %.4f | %.4f | %.4f | %.4f | %.4f | %.4f | %.4f |\n", n,
+            uv.first.size(), c[0], c[1], c[2], c[3], pc.a, pc.b, pc.c, pc.d, mx, sum / double(uv.first.size()));
         md << b;
         nFit.push_back(n);
         for (int i = 0; i < 4; ++i) coef[size_t(i)].push_back(c[size_t(i)]);
     }
     if (devCount > 0) {
         char b[200];
-        std::snprintf(b, sizeof b, "\nPer-n cubics against their FE points: max |Δμ| %.4f, mean %.4f.\n", worst, sumDev / devCount);
+        std::snprintf(b, sizeof b, "\nPer-n cubics against their FE points: max |Δμ| %.4f, mean %.4f.\n", worst,
+                      sumDev / devCount);
         md << b;
     }
     // Eq. 3: each coefficient as a cubic in n (needs 4 n with a per-n cubic).
     const char *names[4] = {"a", "b", "c", "d"};
     std::vector<std::vector<double>> eq3(4);
     if (nFit.size() >= 4) {
-        md << "\nEq. 3 form (coefficient = p3 n³ + p2 n² + p1 n + p0) through the " << nFit.size() << " per-n cubics:\n\n"
+        md << "\nEq. 3 form (coefficient = p3 n³ + p2 n² + p1 n + p0) through the " << nFit.size()
+           << " per-n cubics:\n\n"
            << "| coefficient | p3 | p2 | p1 | p0 |\n|---|---|---|---|---|\n";
         for (int i = 0; i < 4; ++i) {
             eq3[size_t(i)] = polyFit(nFit, coef[size_t(i)], 3);
             char b[200];
-            std::snprintf(b, sizeof b, "| %s | %.5f | %.5f | %.5f | %.5f |\n", names[i], eq3[size_t(i)][0], eq3[size_t(i)][1],
-                          eq3[size_t(i)][2], eq3[size_t(i)][3]);
+            std::snprintf(b, sizeof b, "| %s | %.5f | %.5f | %.5f | %.5f |\n", names[i], eq3[size_t(i)][0],
+                          eq3[size_t(i)][1], eq3[size_t(i)][2], eq3[size_t(i)][3]);
             md << b;
         }
         double mx = 0, sum = 0;
@@ -125,7 +133,8 @@ void writeTable1Form(std::ostream &md, const fs::path &svgPath, const PointGrid 
                 ++cnt;
             }
         char b[200];
-        std::snprintf(b, sizeof b, "\nEq. 2/3 form against all %d FE points: max |Δμ| %.4f, mean %.4f.\n", cnt, mx, sum / cnt);
+        std::snprintf(b, sizeof b, "\nEq. 2/3 form against all %d FE points: max |Δμ| %.4f, mean %.4f.\n", cnt, mx,
+                      sum / cnt);
         md << b;
     } else {
         md << "\nEq. 3 form: needs per-n cubics at 4 or more n (have " << nFit.size() << ").\n";
@@ -141,22 +150,29 @@ void writeTable1Form(std::ostream &md, const fs::path &svgPath, const PointGrid 
         for (int k = 0; k <= 40; ++k) {
             const auto pc = vision::PaperModel::coefficients(0.05 + 0.45 * k / 40);
             const double v[4] = {pc.a, pc.b, pc.c, pc.d};
-            lo = std::min(lo, v[i]); hi = std::max(hi, v[i]);
+            lo = std::min(lo, v[i]);
+            hi = std::max(hi, v[i]);
         }
-        for (double v : coef[size_t(i)]) { lo = std::min(lo, v); hi = std::max(hi, v); }
+        for (double v : coef[size_t(i)]) {
+            lo = std::min(lo, v);
+            hi = std::max(hi, v);
+        }
         if (hi - lo < 1e-9) hi = lo + 1;
         const double pad = 0.1 * (hi - lo);
-        lo -= pad; hi += pad;
+        lo -= pad;
+        hi += pad;
         auto X = [&](double n) { return ox + (n - 0.0) / 0.55 * pw; };
         auto Y = [&](double v) { return oy + ph - (v - lo) / (hi - lo) * ph; };
-        svg << "<rect x='" << ox << "' y='" << oy << "' width='" << pw << "' height='" << ph << "' fill='none' stroke='black'/>\n"
+        svg << "<rect x='" << ox << "' y='" << oy << "' width='" << pw << "' height='" << ph
+            << "' fill='none' stroke='black'/>\n"
             << "<text x='" << ox + 5 << "' y='" << oy + 15 << "'>" << names[i] << "(n)</text>\n";
         char lab[64];
         std::snprintf(lab, sizeof lab, "%.3g", hi);
         svg << "<text x='" << ox - 45 << "' y='" << oy + 10 << "' font-size='10'>" << lab << "</text>\n";
         std::snprintf(lab, sizeof lab, "%.3g", lo);
         svg << "<text x='" << ox - 45 << "' y='" << oy + ph << "' font-size='10'>" << lab << "</text>\n";
-        for (double n : {0.05, 0.25, 0.5}) svg << "<text x='" << X(n) - 8 << "' y='" << oy + ph + 14 << "' font-size='10'>" << n << "</text>\n";
+        for (double n : {0.05, 0.25, 0.5})
+            svg << "<text x='" << X(n) - 8 << "' y='" << oy + ph + 14 << "' font-size='10'>" << n << "</text>\n";
         std::string path;
         for (int k = 0; k <= 40; ++k) {
             const double n = 0.05 + 0.45 * k / 40;
@@ -180,9 +196,9 @@ void writeTable1Form(std::ostream &md, const fs::path &svgPath, const PointGrid 
         for (size_t k = 0; k < nFit.size(); ++k)
             svg << "<circle cx='" << X(nFit[k]) << "' cy='" << Y(coef[size_t(i)][k]) << "' r='4' fill='#1f77b4'/>\n";
     }
-    svg << "<text x='50' y='" << H - 8 << "' font-size='11'>dots: per-n cubics through our FE points; line: our Eq. 3 form; "
+    svg << "<text x='50' y='" << H - 8
+        << "' font-size='11'>dots: per-n cubics through our FE points; line: our Eq. 3 form; "
            "dashed: the paper's Eq. 3</text>\n</svg>\n";
 }
-
 
 } // namespace icacam::host::fe

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <ostream>
 
-#include "fe_rows.h"
+#include "host_tools/fe/fe_rows.h"
 
 namespace icacam::host::fe {
 

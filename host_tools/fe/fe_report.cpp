@@ -1,4 +1,4 @@
-#include "fe_report.h"
+#include "host_tools/fe/fe_report.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,9 +9,9 @@
 #include <map>
 #include <set>
 
-#include "fe_rows.h"
-#include "fe_model_check.h"
-#include "fe_paper_form.h"
+#include "host_tools/fe/fe_model_check.h"
+#include "host_tools/fe/fe_paper_form.h"
+#include "host_tools/fe/fe_rows.h"
 #include "vision/model/paper_model.h"
 
 namespace icacam::host::fe {
@@ -44,9 +44,9 @@ int reportCommand(const std::vector<std::string> &in, const std::string &outDir,
         const double uPaper = 0.5 * (lo + hi);
         mi.uMm = p.u;
         char b[400];
-        std::snprintf(b, sizeof b, "| %g | %g | %.4f | %.4f | %+.1f | %.4f | %.4f | %.4f | %.4f | %.4f |\n", p.n,
-                      p.mu, p.u, uPaper, uPaper > 0 ? 100 * (p.u - uPaper) / uPaper : 0.0,
-                      paper.estimate(mi).mu, p.ri, p.ro, p.rMax, p.force);
+        std::snprintf(b, sizeof b, "| %g | %g | %.4f | %.4f | %+.1f | %.4f | %.4f | %.4f | %.4f | %.4f |\n", p.n, p.mu,
+                      p.u, uPaper, uPaper > 0 ? 100 * (p.u - uPaper) / uPaper : 0.0, paper.estimate(mi).mu, p.ri, p.ro,
+                      p.rMax, p.force);
         md << b;
     }
     // Beyond the paper: u over the reduction range the snapshots cover (30–60 %).
@@ -84,7 +84,8 @@ int reportCommand(const std::vector<std::string> &in, const std::string &outDir,
         << "<line x1='" << x0 << "' y1='" << y0 << "' x2='" << x0 << "' y2='" << y0 - 340 << "' stroke='black'/>\n"
         << "<text x='" << x0 + 220 << "' y='" << H - 5 << "'>u (mm)</text><text x='5' y='30'>mu</text>\n";
     for (int t = 0; t <= 7; ++t)
-        svg << "<text x='" << x0 + t * 0.2 * sx - 8 << "' y='" << y0 + 15 << "' font-size='11'>" << t * 0.2 << "</text>\n";
+        svg << "<text x='" << x0 + t * 0.2 * sx - 8 << "' y='" << y0 + 15 << "' font-size='11'>" << t * 0.2
+            << "</text>\n";
     for (int t = 0; t <= 7; ++t)
         svg << "<text x='20' y='" << y0 - t * 0.05 * sy + 4 << "' font-size='11'>" << t * 0.05 << "</text>\n";
     std::set<double> ns;
@@ -105,14 +106,17 @@ int reportCommand(const std::vector<std::string> &in, const std::string &outDir,
         svg << "<path d='" << path << "' fill='none' stroke='" << col << "' stroke-dasharray='4,3'/>\n";
         for (const auto &[k, p] : pts)
             if (p.n == n)
-                svg << "<circle cx='" << x0 + p.u * sx << "' cy='" << y0 - p.mu * sy << "' r='4' fill='" << col << "'/>\n";
+                svg << "<circle cx='" << x0 + p.u * sx << "' cy='" << y0 - p.mu * sy << "' r='4' fill='" << col
+                    << "'/>\n";
         svg << "<text x='" << x0 + 420 << "' y='" << 40 + ci * 16 << "' fill='" << col << "'>n = " << n << "</text>\n";
     }
-    svg << "<text x='" << x0 + 300 << "' y='" << 40 << "' font-size='11'>dots: FE, dashed: paper Eq. 2/3</text>\n</svg>\n";
+    svg << "<text x='" << x0 + 300 << "' y='" << 40
+        << "' font-size='11'>dots: FE, dashed: paper Eq. 2/3</text>\n</svg>\n";
     writeTable1Form(md, fs::path(outDir) / "coefficients_vs_n.svg", pts);
     writeLeaveOneOut(md, rows);
     writeRunResiduals(md, rows);
-    std::cout << "report: " << pts.size() << " points -> " << outDir << "/comparison.md, mu_vs_u.svg, coefficients_vs_n.svg\n";
+    std::cout << "report: " << pts.size() << " points -> " << outDir
+              << "/comparison.md, mu_vs_u.svg, coefficients_vs_n.svg\n";
     return 0;
 }
 

@@ -1,4 +1,4 @@
-#include "fe_results.h"
+#include "host_tools/fe/fe_results.h"
 
 #include <cstdlib>
 #include <sstream>
@@ -32,17 +32,32 @@ FrdResults parseFrd(const std::string &text)
     enum { kNone, kCoords, kDisp, kOther } block = kNone;
     double time = 0;
     while (std::getline(in, line)) {
-        if (line.size() >= 6 && line.compare(0, 6, "    2C") == 0) { block = kCoords; continue; }
-        if (line.size() >= 7 && line.compare(0, 7, "  100CL") == 0) { time = num(line, 12, 12); block = kOther; continue; }
-        if (line.size() >= 9 && line.compare(0, 3, " -4") == 0) {
-            if (line.compare(3, 6, "  DISP") == 0) { block = kDisp; r.steps.push_back({time, {}}); }
-            else block = kOther;
+        if (line.size() >= 6 && line.compare(0, 6, "    2C") == 0) {
+            block = kCoords;
             continue;
         }
-        if (line.compare(0, 3, " -3") == 0) { block = kNone; continue; }
+        if (line.size() >= 7 && line.compare(0, 7, "  100CL") == 0) {
+            time = num(line, 12, 12);
+            block = kOther;
+            continue;
+        }
+        if (line.size() >= 9 && line.compare(0, 3, " -4") == 0) {
+            if (line.compare(3, 6, "  DISP") == 0) {
+                block = kDisp;
+                r.steps.push_back({time, {}});
+            } else
+                block = kOther;
+            continue;
+        }
+        if (line.compare(0, 3, " -3") == 0) {
+            block = kNone;
+            continue;
+        }
         if (line.compare(0, 3, " -1") != 0) continue;
-        if (block == kCoords) readNodeLine(line, r.coords);
-        else if (block == kDisp) readNodeLine(line, r.steps.back().disp);
+        if (block == kCoords)
+            readNodeLine(line, r.coords);
+        else if (block == kDisp)
+            readNodeLine(line, r.steps.back().disp);
     }
     if (r.coords.empty()) throw std::runtime_error("frd: no node block");
     return r;

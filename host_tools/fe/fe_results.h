@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "fe_case.h"
+#include "host_tools/fe/fe_case.h"
 
 namespace icacam::host::fe {
 

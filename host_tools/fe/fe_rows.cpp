@@ -1,4 +1,4 @@
-#include "fe_rows.h"
+#include "host_tools/fe/fe_rows.h"
 
 #include <algorithm>
 #include <cmath>
@@ -20,7 +20,10 @@ std::vector<std::string> split(const std::string &line)
     if (!line.empty() && line.back() == ',') out.emplace_back();
     return out;
 }
-double d(const std::string &s) { return s.empty() ? 0.0 : std::strtod(s.c_str(), nullptr); }
+double d(const std::string &s)
+{
+    return s.empty() ? 0.0 : std::strtod(s.c_str(), nullptr);
+}
 } // namespace
 
 std::string meshKey(const FeRow &r)
@@ -33,11 +36,13 @@ std::string meshKey(const FeRow &r)
 
 bool reachedSnapshot(const FeRow &r, double reduction)
 {
-    return (r.status == "ok" || r.status == "failed") && std::fabs(r.reduction - reduction) < 1e-6 &&
-           r.reduction > 0;
+    return (r.status == "ok" || r.status == "failed") && std::fabs(r.reduction - reduction) < 1e-6 && r.reduction > 0;
 }
 
-bool isPaperSpecimen(const FeRow &r) { return r.eMpa == 210000 && r.d0 == 10 && r.h0 == 15; }
+bool isPaperSpecimen(const FeRow &r)
+{
+    return r.eMpa == 210000 && r.d0 == 10 && r.h0 == 15;
+}
 
 std::vector<FeRow> readSweepCsv(const std::string &path)
 {
@@ -48,8 +53,8 @@ std::vector<FeRow> readSweepCsv(const std::string &path)
     const auto head = split(line);
     std::map<std::string, size_t> col;
     for (size_t i = 0; i < head.size(); ++i) col[head[i]] = i;
-    for (const char *need : {"case", "status", "k_mpa", "n", "mu", "e_mpa", "d0_mm", "h0_mm", "reduction",
-                             "elem_mm", "r_i_mm", "r_o_interp_mm", "r_max_mm", "u_interp_mm", "force_kn"})
+    for (const char *need : {"case", "status", "k_mpa", "n", "mu", "e_mpa", "d0_mm", "h0_mm", "reduction", "elem_mm",
+                             "r_i_mm", "r_o_interp_mm", "r_max_mm", "u_interp_mm", "force_kn"})
         if (!col.count(need)) throw std::runtime_error(path + ": missing column " + need);
     std::vector<FeRow> rows;
     while (std::getline(f, line)) {
@@ -60,19 +65,32 @@ std::vector<FeRow> readSweepCsv(const std::string &path)
             return it != col.end() && it->second < c.size() ? c[it->second] : std::string();
         };
         FeRow r;
-        r.caseId = get("case"); r.status = get("status"); r.message = get("message");
-        r.kMpa = d(get("k_mpa")); r.n = d(get("n")); r.mu = d(get("mu")); r.eMpa = d(get("e_mpa"));
-        r.d0 = d(get("d0_mm")); r.h0 = d(get("h0_mm")); r.reductionMax = d(get("reduction_max"));
-        r.reduction = d(get("reduction")); r.elem = d(get("elem_mm"));
+        r.caseId = get("case");
+        r.status = get("status");
+        r.message = get("message");
+        r.kMpa = d(get("k_mpa"));
+        r.n = d(get("n"));
+        r.mu = d(get("mu"));
+        r.eMpa = d(get("e_mpa"));
+        r.d0 = d(get("d0_mm"));
+        r.h0 = d(get("h0_mm"));
+        r.reductionMax = d(get("reduction_max"));
+        r.reduction = d(get("reduction"));
+        r.elem = d(get("elem_mm"));
         if (col.count("element")) r.element = get("element");
         if (col.count("contact") && !get("contact").empty()) r.contact = get("contact");
         if (col.count("corner_mm")) r.cornerMm = d(get("corner_mm"));
         if (col.count("stick_slope")) r.stickSlope = d(get("stick_slope"));
         if (col.count("contact_slope")) r.contactSlope = d(get("contact_slope"));
         if (col.count("nu")) r.nu = d(get("nu"));
-        r.ri = d(get("r_i_mm")); r.ro = d(get("r_o_mm")); r.roInterp = d(get("r_o_interp_mm"));
-        r.rMax = d(get("r_max_mm")); r.u = d(get("u_mm")); r.uInterp = d(get("u_interp_mm"));
-        r.force = d(get("force_kn")); r.wallS = d(get("wall_s"));
+        r.ri = d(get("r_i_mm"));
+        r.ro = d(get("r_o_mm"));
+        r.roInterp = d(get("r_o_interp_mm"));
+        r.rMax = d(get("r_max_mm"));
+        r.u = d(get("u_mm"));
+        r.uInterp = d(get("u_interp_mm"));
+        r.force = d(get("force_kn"));
+        r.wallS = d(get("wall_s"));
         if (!get("u_track_mm").empty()) r.uTrack = d(get("u_track_mm"));
         rows.push_back(r);
     }
@@ -150,14 +168,23 @@ BaseChoice chooseBase(const std::vector<FeRow> &rows, double reduction)
     for (const auto &[key, f] : families) {
         bool better = !chosen;
         if (!better) {
-            if (complete(f) != complete(*info)) better = complete(f);
-            else if (!complete(f)) better = f.rows > info->rows;
-            else if (f.size != info->size) better = f.size < info->size;
-            else if (key.second.second != chosen->second.second) better = key.second.second > chosen->second.second;
-            else if (key.second.first != chosen->second.first) better = key.second.first > chosen->second.first;
-            else better = f.rows > info->rows;
+            if (complete(f) != complete(*info))
+                better = complete(f);
+            else if (!complete(f))
+                better = f.rows > info->rows;
+            else if (f.size != info->size)
+                better = f.size < info->size;
+            else if (key.second.second != chosen->second.second)
+                better = key.second.second > chosen->second.second;
+            else if (key.second.first != chosen->second.first)
+                better = key.second.first > chosen->second.first;
+            else
+                better = f.rows > info->rows;
         }
-        if (better) { chosen = &key; info = &f; }
+        if (better) {
+            chosen = &key;
+            info = &f;
+        }
     }
     if (!chosen) return b;
     b.mesh = chosen->first;
@@ -167,7 +194,11 @@ BaseChoice chooseBase(const std::vector<FeRow> &rows, double reduction)
     for (const auto &r : rows)
         if (inBase(r) && meshKey(r) == b.mesh && b.sameRegularisation(r)) ++kCount[r.kMpa];
     int best = 0;
-    for (auto [k, c] : kCount) if (c > best) { best = c; b.kMpa = k; }
+    for (auto [k, c] : kCount)
+        if (c > best) {
+            best = c;
+            b.kMpa = k;
+        }
     b.found = best > 0;
     if (!b.found) return b;
     // The (n, μ) grid of each family and K at this reduction.
@@ -220,16 +251,28 @@ PointGrid basePoints(const std::vector<FeRow> &rows, double reduction, const Bas
     for (const auto &r : rows) {
         if (!base.includes(r, reduction)) continue;
         Point &p = pts[{r.n, r.mu}];
-        p.n = r.n; p.mu = r.mu; p.elem = r.elem; p.mesh = base.mesh;
+        p.n = r.n;
+        p.mu = r.mu;
+        p.elem = r.elem;
+        p.mesh = base.mesh;
         const double u = r.uBest();
         p.tracked += r.uTrack >= 0;
-        p.u += u; p.ri += r.ri; p.ro += r.ri + u; p.rMax += r.rMax; p.force += r.force / r.kMpa;
-        p.kMin = std::min(p.kMin, r.kMpa); p.kMax = std::max(p.kMax, r.kMpa);
+        p.u += u;
+        p.ri += r.ri;
+        p.ro += r.ri + u;
+        p.rMax += r.rMax;
+        p.force += r.force / r.kMpa;
+        p.kMin = std::min(p.kMin, r.kMpa);
+        p.kMax = std::max(p.kMax, r.kMpa);
         ++p.count;
     }
     for (auto &[k, p] : pts) {
         const double c = p.count;
-        p.u /= c; p.ri /= c; p.ro /= c; p.rMax /= c; p.force /= c;
+        p.u /= c;
+        p.ri /= c;
+        p.ro /= c;
+        p.rMax /= c;
+        p.force /= c;
     }
     return pts;
 }
@@ -247,15 +290,26 @@ KCarry kCarry(const std::vector<FeRow> &rows, double reduction, const BaseChoice
         famSize[{meshKey(r), slopesPerK(r)}] = r.cornerMm > 0 ? r.cornerMm : r.elem;
         Point &p = fams[{meshKey(r), slopesPerK(r)}][r.kMpa][{r.n, r.mu}];
         const double u = r.uBest();
-        p.n = r.n; p.mu = r.mu; p.u += u; p.ri += r.ri; p.ro += r.ri + u; p.rMax += r.rMax;
+        p.n = r.n;
+        p.mu = r.mu;
+        p.u += u;
+        p.ri += r.ri;
+        p.ro += r.ri + u;
+        p.rMax += r.rMax;
         ++p.count;
     }
     for (auto &[fam, byK] : fams)
         for (auto &[k, pts] : byK)
-            for (auto &[key, p] : pts) { p.u /= p.count; p.ri /= p.count; p.ro /= p.count; p.rMax /= p.count; }
+            for (auto &[key, p] : pts) {
+                p.u /= p.count;
+                p.ri /= p.count;
+                p.ro /= p.count;
+                p.rMax /= p.count;
+            }
     const PointGrid basePts = basePoints(rows, reduction, base);
     auto covers = [&](const PointGrid &g) {
-        for (const auto &[key, p] : basePts) if (!g.count(key)) return false;
+        for (const auto &[key, p] : basePts)
+            if (!g.count(key)) return false;
         return true;
     };
     const Family *best = nullptr;
@@ -267,15 +321,22 @@ KCarry kCarry(const std::vector<FeRow> &rows, double reduction, const BaseChoice
         for (double k : base.kAveraged) hasBaseK = hasBaseK && byK.count(k) && covers(byK.at(k));
         if (!hasBaseK) continue;
         std::vector<double> ks;
-        for (const auto &[k, pts] : byK) if (covers(pts)) ks.push_back(k);
+        for (const auto &[k, pts] : byK)
+            if (covers(pts)) ks.push_back(k);
         if (ks.size() < 2) continue;
         const double size = famSize.at(fam);
         bool better = !best || ks.size() > bestK.size();
         if (best && ks.size() == bestK.size()) {
-            if (size != bestSize) better = size < bestSize;
-            else better = fam.second.second > best->second.second;
+            if (size != bestSize)
+                better = size < bestSize;
+            else
+                better = fam.second.second > best->second.second;
         }
-        if (better) { best = &fam; bestK = ks; bestSize = size; }
+        if (better) {
+            best = &fam;
+            bestK = ks;
+            bestSize = size;
+        }
     }
     if (!best) return c;
     c.found = true;
@@ -288,14 +349,23 @@ KCarry kCarry(const std::vector<FeRow> &rows, double reduction, const BaseChoice
         Point ref; // the family at the base's K (their mean, as the base averages them)
         for (double k : base.kAveraged) {
             const Point &p = byK.at(k).at(key);
-            ref.u += p.u; ref.ri += p.ri; ref.ro += p.ro; ref.rMax += p.rMax;
+            ref.u += p.u;
+            ref.ri += p.ri;
+            ref.ro += p.ro;
+            ref.rMax += p.rMax;
         }
         const double m = double(base.kAveraged.size());
         for (double k : c.k) {
             const Point &p = byK.at(k).at(key);
             Point &d = c.delta[k][key];
-            d.n = p.n; d.mu = p.mu; d.mesh = c.mesh; d.count = p.count;
-            d.u = p.u - ref.u / m; d.ri = p.ri - ref.ri / m; d.ro = p.ro - ref.ro / m; d.rMax = p.rMax - ref.rMax / m;
+            d.n = p.n;
+            d.mu = p.mu;
+            d.mesh = c.mesh;
+            d.count = p.count;
+            d.u = p.u - ref.u / m;
+            d.ri = p.ri - ref.ri / m;
+            d.ro = p.ro - ref.ro / m;
+            d.rMax = p.rMax - ref.rMax / m;
         }
     }
     return c;

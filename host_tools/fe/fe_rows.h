@@ -10,8 +10,8 @@ namespace icacam::host::fe {
 
 struct FeRow {
     std::string caseId, status;
-    std::string message; // the runner's note: why ccx stopped, a broken contact zone, …
-    std::string element = "CAX4R"; // column absent in the first sweeps: they were all CAX4R
+    std::string message;                             // the runner's note: why ccx stopped, a broken contact zone, …
+    std::string element = "CAX4R";                   // column absent in the first sweeps: they were all CAX4R
     std::string contact = "node-to-surface penalty"; // as the CSV's contact column says
     double cornerMm = 0;
     double contactSlope = 0, stickSlope = 0, nu = 0.3; // slopes in N/mm³; 0: column absent
@@ -50,8 +50,8 @@ bool isPaperSpecimen(const FeRow &r);
 struct BaseChoice {
     std::string mesh;
     double contactPerK = 0, stickPerK = 0; // the base's slopes, N/mm³ per MPa of K
-    double kMpa = 0;               // the most common K (ties: the lowest)
-    std::vector<double> kAveraged; // every K of the base, kMpa included
+    double kMpa = 0;                       // the most common K (ties: the lowest)
+    std::vector<double> kAveraged;         // every K of the base, kMpa included
     // Every K of a family (one mesh, one set of slopes per K) that covers the base grid both
     // at that K and at the base's K — the averaged ones and the factorial that checked
     // K-independence: the K range the model answers for.
@@ -86,12 +86,12 @@ PointGrid basePoints(const std::vector<FeRow> &rows, double reduction, const Bas
 // strain K/E at yield moves the fold-over's onset), not u itself (docs/fe.md, the factorial).
 // Chosen as the family with the most such K, then the finest mesh, then the stiffest stick.
 struct KCarry {
-    std::string mesh;              // the carry family's mesh (meshKey)
+    std::string mesh; // the carry family's mesh (meshKey)
     double contactPerK = 0, stickPerK = 0;
-    std::vector<double> k;         // every K of the carry, the base's among them; rising
+    std::vector<double> k; // every K of the carry, the base's among them; rising
     // K → (n, μ) → (u, R_i, R_o, R_max) at K minus at the base's K; force unused.
     std::map<double, PointGrid> delta;
-    bool found = false;            // at least two K
+    bool found = false; // at least two K
 };
 KCarry kCarry(const std::vector<FeRow> &rows, double reduction, const BaseChoice &base);
 

@@ -1,6 +1,6 @@
-#include "fe_runner.h"
+#include "host_tools/fe/fe_runner.h"
 
-#include "fe_contact_track.h"
+#include "host_tools/fe/fe_contact_track.h"
 
 #include <algorithm>
 #include <chrono>
@@ -81,7 +81,8 @@ RunResult runCase(FeCase &c, const RunOptions &o)
         r = runOnce(c, o);
         r.wallS += wall;
         r.message = "retried with stick slope " + std::to_string(int(c.stickSlope)) + " after: " + why;
-        for (char &ch : r.message) if (ch == ',') ch = ';';
+        for (char &ch : r.message)
+            if (ch == ',') ch = ';';
     }
     return r;
 }
@@ -105,7 +106,8 @@ RunResult runOnce(FeCase c, const RunOptions &o)
             deck << deckText;
         }
         for (const char *ext : {".frd", ".dat", ".sta", ".cvg"}) fs::remove(dir / (std::string("job") + ext));
-        const std::string cmd = "cd " + shellQuote(dir.string()) + " && OMP_NUM_THREADS=1 CCX_NPROC_EQUATION_SOLVER=1 timeout " +
+        const std::string cmd = "cd " + shellQuote(dir.string()) +
+                                " && OMP_NUM_THREADS=1 CCX_NPROC_EQUATION_SOLVER=1 timeout " +
                                 std::to_string(o.timeoutS) + " " + o.ccx + " -i job > ccx.log 2>&1";
         const auto t0 = std::chrono::steady_clock::now();
         rc = std::system(cmd.c_str());
@@ -132,8 +134,8 @@ RunResult runOnce(FeCase c, const RunOptions &o)
         const double red = s.time * c.reductionMax;
         if (c.trackStep > 0) frames.push_back(sideFrame(c, mesh, frd.coords, s.disp, red));
         // Rows only for the snapshots; the tracking frames in between feed roTrackMm.
-        const bool snapshot = std::any_of(c.reductions.begin(), c.reductions.end(),
-                                          [&](double x) { return std::fabs(x - red) < 1e-6; });
+        const bool snapshot =
+            std::any_of(c.reductions.begin(), c.reductions.end(), [&](double x) { return std::fabs(x - red) < 1e-6; });
         if (!snapshot) continue;
         res.radii.push_back(computeRadii(c, mesh, frd.coords, s.disp, red));
         snapshotFrame.push_back(frames.size() - 1);
@@ -142,7 +144,8 @@ RunResult runOnce(FeCase c, const RunOptions &o)
     if (c.trackStep > 0) {
         const auto touchdown = touchdownReductions(frames, kGapTolMm);
         for (size_t i = 0; i < res.radii.size(); ++i)
-            res.radii[i].roTrackMm = std::max(res.radii[i].riMm, trackedContactEdge(frames, touchdown, snapshotFrame[i], kGapTolMm));
+            res.radii[i].roTrackMm =
+                std::max(res.radii[i].riMm, trackedContactEdge(frames, touchdown, snapshotFrame[i], kGapTolMm));
         // Say so in the rows when the contact zone was broken (never silently a lagging edge).
         int broken = 0;
         double from = 0, to = 0;
@@ -153,8 +156,10 @@ RunResult runOnce(FeCase c, const RunOptions &o)
             }
         if (broken > 0) {
             char b[200];
-            std::snprintf(b, sizeof b, "contact zone broken by a lifted node in %d frames from %.0f to %.0f %%: the tracked edge lags there",
-                          broken, 100 * from, 100 * to);
+            std::snprintf(
+                b, sizeof b,
+                "contact zone broken by a lifted node in %d frames from %.0f to %.0f %%: the tracked edge lags there",
+                broken, 100 * from, 100 * to);
             trackNote = b;
         }
     }
@@ -171,7 +176,8 @@ RunResult runOnce(FeCase c, const RunOptions &o)
         // The last error line of the log says why (e.g. too many cutbacks).
         const auto at = log.rfind("*ERROR");
         res.message = at == std::string::npos ? "ccx did not finish" : log.substr(at, log.find('\n', at) - at);
-        for (char &ch : res.message) if (ch == ',') ch = ';';
+        for (char &ch : res.message)
+            if (ch == ',') ch = ';';
     }
     if (!trackNote.empty()) res.message = res.message.empty() ? trackNote : res.message + "; " + trackNote;
     if (!o.keep) fs::remove_all(dir);
@@ -184,7 +190,8 @@ void printRunResult(const FeCase &c, const RunResult &r)
                 r.message.empty() ? "" : (" (" + r.message + ")").c_str());
     for (const Radii &x : r.radii) {
         double f = 0;
-        for (const auto &p : r.force) if (std::fabs(p.time - x.reduction) < 1e-6) f = p.fy;
+        for (const auto &p : r.force)
+            if (std::fabs(p.time - x.reduction) < 1e-6) f = p.fy;
         std::printf("  reduction %.3f  R_i %.4f  R_o %.4f  R_max %.4f  u %.4f (interp %.4f, tracked %.4f)  F %.2f kN\n",
                     x.reduction, x.riMm, x.roMm, x.rMaxMm, x.uMm(), x.uInterpMm(), x.uTrackMm(), f);
     }
@@ -206,12 +213,12 @@ std::vector<std::string> csvRows(const FeCase &c, const RunResult &r)
         std::snprintf(b, sizeof b,
                       "%s,%s,%g,%g,%g,%g,%g,%g,%g,%g,%.4f,%g,%g,%s,%s-to-surface penalty,%g,%g,%g,"
                       "%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%d,%.3f,%.1f,CalculiX 2.20 OMP=1,%s,%g,%.5f,%.5f",
-                      c.label().c_str(), r.status.c_str(), c.kMpa, c.n, c.mu, c.eMpa, c.nu, c.d0Mm,
-                      c.h0Mm, c.reductionMax, x ? x->reduction : 0.0, c.elemMm, c.cornerMm, c.element.c_str(), c.contact.c_str(), c.contactSlope,
-                      c.stickSlope, c.incMax, x ? x->riMm : 0.0, x ? x->roMm : 0.0,
-                      x ? x->roInterpMm : 0.0, x ? x->rMaxMm : 0.0, x ? x->uMm() : 0.0,
-                      x ? x->uInterpMm() : 0.0, x ? x->contactNodes : 0, force, r.wallS,
-                      r.message.c_str(), c.trackStep, x ? x->roTrackMm : -1.0, x ? x->uTrackMm() : -1.0);
+                      c.label().c_str(), r.status.c_str(), c.kMpa, c.n, c.mu, c.eMpa, c.nu, c.d0Mm, c.h0Mm,
+                      c.reductionMax, x ? x->reduction : 0.0, c.elemMm, c.cornerMm, c.element.c_str(),
+                      c.contact.c_str(), c.contactSlope, c.stickSlope, c.incMax, x ? x->riMm : 0.0, x ? x->roMm : 0.0,
+                      x ? x->roInterpMm : 0.0, x ? x->rMaxMm : 0.0, x ? x->uMm() : 0.0, x ? x->uInterpMm() : 0.0,
+                      x ? x->contactNodes : 0, force, r.wallS, r.message.c_str(), c.trackStep, x ? x->roTrackMm : -1.0,
+                      x ? x->uTrackMm() : -1.0);
         rows.emplace_back(b);
     };
     for (const Radii &x : r.radii) {

@@ -3,8 +3,8 @@
 #include <string>
 #include <vector>
 
-#include "fe_case.h"
-#include "fe_results.h"
+#include "host_tools/fe/fe_case.h"
+#include "host_tools/fe/fe_results.h"
 
 namespace icacam::host::fe {
 
@@ -25,7 +25,7 @@ struct RunOptions {
 };
 
 struct RunResult {
-    std::string status;   // ok | failed (ccx stopped before the last snapshot) | error
+    std::string status; // ok | failed (ccx stopped before the last snapshot) | error
     std::string message;
     double wallS = 0;
     std::vector<Radii> radii;      // one per snapshot reached

@@ -1,10 +1,10 @@
-#include "fe_slurm_executor.h"
+#include "host_tools/fe/fe_slurm_executor.h"
 
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
-#include <cstring>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -17,9 +17,9 @@
 #include <sys/file.h>
 #include <unistd.h>
 
-#include "fe_slurm_queue.h"
-#include "fe_slurm_script.h"
-#include "fe_sweep_csv.h"
+#include "host_tools/fe/fe_slurm_queue.h"
+#include "host_tools/fe/fe_slurm_script.h"
+#include "host_tools/fe/fe_sweep_csv.h"
 
 namespace icacam::host::fe {
 
@@ -49,12 +49,17 @@ std::string elapsed(double s)
 {
     char b[32];
     const int t = int(s);
-    if (t >= 3600) std::snprintf(b, sizeof b, "%dh%02dm", t / 3600, t / 60 % 60);
-    else std::snprintf(b, sizeof b, "%dm%02ds", t / 60, t % 60);
+    if (t >= 3600)
+        std::snprintf(b, sizeof b, "%dh%02dm", t / 3600, t / 60 % 60);
+    else
+        std::snprintf(b, sizeof b, "%dm%02ds", t / 60, t % 60);
     return b;
 }
 
-std::string taskKey(const std::string &jobId, int index) { return jobId + "_" + std::to_string(index); }
+std::string taskKey(const std::string &jobId, int index)
+{
+    return jobId + "_" + std::to_string(index);
+}
 } // namespace
 
 SlurmExecutor::SlurmExecutor(const RunOptions &run, const SlurmOptions &slurm) : run_(run), slurm_(slurm)
@@ -90,7 +95,10 @@ SlurmExecutor::~SlurmExecutor()
     if (lock_ >= 0) ::close(lock_);
 }
 
-std::string SlurmExecutor::resultsDir() const { return (fs::path(dir_) / "results").string(); }
+std::string SlurmExecutor::resultsDir() const
+{
+    return (fs::path(dir_) / "results").string();
+}
 
 std::map<std::string, std::string> SlurmExecutor::submittedLabels() const
 {
@@ -122,10 +130,9 @@ std::vector<SlurmExecutor::Task> SlurmExecutor::submit(const std::vector<FeCase>
     }
     std::string array = "--array=0-" + std::to_string(cases.size() - 1);
     if (slurm_.arrayLimit > 0) array += "%" + std::to_string(slurm_.arrayLimit);
-    std::vector<std::string> opts{"--job-name=" + jobName_, array,
-                                  "--output=" + (fs::path(dir_) / "logs" / "%A_%a.log").string(),
-                                  "--chdir=" + dir_, "--ntasks=1",
-                                  "--cpus-per-task=" + std::to_string(slurm_.cpusPerTask)};
+    std::vector<std::string> opts{
+        "--job-name=" + jobName_, array,        "--output=" + (fs::path(dir_) / "logs" / "%A_%a.log").string(),
+        "--chdir=" + dir_,        "--ntasks=1", "--cpus-per-task=" + std::to_string(slurm_.cpusPerTask)};
     if (!slurm_.partition.empty()) opts.push_back("--partition=" + slurm_.partition);
     if (!slurm_.timeLimit.empty()) opts.push_back("--time=" + slurm_.timeLimit);
     for (const auto &w : words(slurm_.sbatchExtra)) opts.push_back(w);
@@ -133,8 +140,9 @@ std::vector<SlurmExecutor::Task> SlurmExecutor::submit(const std::vector<FeCase>
     // The task → case list under the job's id: what a restarted sweep finds its tasks by.
     fs::rename(list, jobs / (job + ".cases"));
     fs::rename(script, jobs / (job + ".sh"));
-    std::cout << "slurm: submitted job " << job << " (" << jobName_ << "): " << cases.size() << (cases.size() == 1 ? " case" : " cases") << ", array "
-              << array.substr(8) << "; script " << (jobs / (job + ".sh")).string() << "\n";
+    std::cout << "slurm: submitted job " << job << " (" << jobName_ << "): " << cases.size()
+              << (cases.size() == 1 ? " case" : " cases") << ", array " << array.substr(8) << "; script "
+              << (jobs / (job + ".sh")).string() << "\n";
     std::vector<Task> tasks;
     for (size_t i = 0; i < cases.size(); ++i) tasks.push_back({job, int(i), cases[i]});
     return tasks;
@@ -205,24 +213,36 @@ size_t SlurmExecutor::solve(const std::vector<FeCase> &cases, const GatherFn &ga
     auto lastPrint = t0;
     while (!flying.empty()) {
         for (auto it = flying.begin(); it != flying.end();)
-            if (gatherIfDone(it->second.c, gather)) { it = flying.erase(it); ++gathered; }
-            else ++it;
+            if (gatherIfDone(it->second.c, gather)) {
+                it = flying.erase(it);
+                ++gathered;
+            } else
+                ++it;
         if (flying.empty()) break;
         const QueueView now = queuedTasks(jobName_);
         std::map<std::string, std::string> state; // "job_task" → state (why, while pending)
         if (now.ok)
             for (const QueuedTask &t : now.tasks)
                 state[taskKey(t.jobId, t.index)] =
-                    t.state + (t.state == "PENDING" && t.reason != "None" && !t.reason.empty() ? " (" + t.reason + ")" : "");
+                    t.state +
+                    (t.state == "PENDING" && t.reason != "None" && !t.reason.empty() ? " (" + t.reason + ")" : "");
         else
             std::cout << "slurm: squeue did not answer (" << now.error << "); waiting\n";
         std::map<std::string, int> counts;
         for (auto it = flying.begin(); it != flying.end();) {
             const Task &t = it->second;
             const auto s = state.find(taskKey(t.jobId, t.index));
-            if (!now.ok || s != state.end()) { ++counts[now.ok ? s->second : "?"]; ++it; continue; }
+            if (!now.ok || s != state.end()) {
+                ++counts[now.ok ? s->second : "?"];
+                ++it;
+                continue;
+            }
             // Left the queue: its rows may have landed since the look above.
-            if (gatherIfDone(t.c, gather)) { ++gathered; it = flying.erase(it); continue; }
+            if (gatherIfDone(t.c, gather)) {
+                ++gathered;
+                it = flying.erase(it);
+                continue;
+            }
             std::cout << t.c.label() << ": no result: task " << taskKey(t.jobId, t.index) << " ended "
                       << endedState(t.jobId, t.index) << "; log " << logTail(t) << "\n";
             ++lost;
@@ -242,7 +262,8 @@ size_t SlurmExecutor::solve(const std::vector<FeCase> &cases, const GatherFn &ga
         if (!flying.empty()) std::this_thread::sleep_for(std::chrono::duration<double>(slurm_.pollS));
     }
     if (lost)
-        std::cout << "slurm: " << lost << " cases without result (listed above): running the same command again "
+        std::cout << "slurm: " << lost
+                  << " cases without result (listed above): running the same command again "
                      "submits them again\n";
     return lost;
 }

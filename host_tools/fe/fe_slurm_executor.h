@@ -9,9 +9,9 @@
 #include <map>
 #include <string>
 
-#include "fe_executor.h"
-#include "fe_runner.h"
-#include "fe_slurm_options.h"
+#include "host_tools/fe/fe_executor.h"
+#include "host_tools/fe/fe_runner.h"
+#include "host_tools/fe/fe_slurm_options.h"
 
 namespace icacam::host::fe {
 

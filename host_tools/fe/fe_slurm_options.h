@@ -7,15 +7,15 @@
 namespace icacam::host::fe {
 
 struct SlurmOptions {
-    std::string partition;    // sbatch --partition; empty: the cluster's default
-    std::string timeLimit;    // sbatch --time per case (Slurm's formats, e.g. 30:00, 1-00:00:00)
-    int cpusPerTask = 1;      // sbatch --cpus-per-task (ccx runs one thread: a reservation only)
-    std::string sbatchExtra;  // further sbatch options, split on blanks (e.g. --account=x --mem=2G)
-    std::string setup;        // a shell line run before each case (e.g. module load calculix)
-    std::string dir;          // shared directory of scripts, results and logs; empty: <CSV>.slurm
-    std::string icacam;       // this program as the nodes see it; empty: this executable's path
-    int arrayLimit = 0;       // > 0: at most this many tasks at once (--array=…%N)
-    double pollS = 15;        // squeue every pollS while waiting
+    std::string partition;   // sbatch --partition; empty: the cluster's default
+    std::string timeLimit;   // sbatch --time per case (Slurm's formats, e.g. 30:00, 1-00:00:00)
+    int cpusPerTask = 1;     // sbatch --cpus-per-task (ccx runs one thread: a reservation only)
+    std::string sbatchExtra; // further sbatch options, split on blanks (e.g. --account=x --mem=2G)
+    std::string setup;       // a shell line run before each case (e.g. module load calculix)
+    std::string dir;         // shared directory of scripts, results and logs; empty: <CSV>.slurm
+    std::string icacam;      // this program as the nodes see it; empty: this executable's path
+    int arrayLimit = 0;      // > 0: at most this many tasks at once (--array=…%N)
+    double pollS = 15;       // squeue every pollS while waiting
 };
 
 // Keys of the options and of the config file: partition, time, cpus-per-task, sbatch, setup,

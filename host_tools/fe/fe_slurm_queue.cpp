@@ -1,4 +1,4 @@
-#include "fe_slurm_queue.h"
+#include "host_tools/fe/fe_slurm_queue.h"
 
 #include <cstdio>
 #include <sstream>
@@ -81,7 +81,11 @@ QueueView queuedTasks(const std::string &jobName)
         if (f.size() < 4) continue;
         QueuedTask t;
         t.jobId = f[0];
-        try { t.index = std::stoi(f[1]); } catch (...) { continue; } // not an array task
+        try {
+            t.index = std::stoi(f[1]);
+        } catch (...) {
+            continue;
+        } // not an array task
         t.state = f[2];
         t.reason = f[3];
         v.tasks.push_back(t);

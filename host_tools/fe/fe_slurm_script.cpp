@@ -1,4 +1,4 @@
-#include "fe_slurm_script.h"
+#include "host_tools/fe/fe_slurm_script.h"
 
 #include <cstdio>
 #include <cstdlib>
@@ -28,12 +28,21 @@ std::string exact(double x)
 
 std::vector<std::string> caseOptions(const FeCase &c)
 {
-    const std::pair<const char *, double> numbers[] = {
-        {"k", c.kMpa},           {"n", c.n},           {"mu", c.mu},
-        {"e", c.eMpa},           {"d0", c.d0Mm},       {"h0", c.h0Mm},
-        {"reduction", c.reductionMax}, {"elem", c.elemMm}, {"corner", c.cornerMm},
-        {"platen", c.platenMm},  {"fold-zone", c.foldZoneMm}, {"contact-slope", c.contactSlope},
-        {"stick-slope", c.stickSlope}, {"inc-max", c.incMax}, {"track-step", c.trackStep}};
+    const std::pair<const char *, double> numbers[] = {{"k", c.kMpa},
+                                                       {"n", c.n},
+                                                       {"mu", c.mu},
+                                                       {"e", c.eMpa},
+                                                       {"d0", c.d0Mm},
+                                                       {"h0", c.h0Mm},
+                                                       {"reduction", c.reductionMax},
+                                                       {"elem", c.elemMm},
+                                                       {"corner", c.cornerMm},
+                                                       {"platen", c.platenMm},
+                                                       {"fold-zone", c.foldZoneMm},
+                                                       {"contact-slope", c.contactSlope},
+                                                       {"stick-slope", c.stickSlope},
+                                                       {"inc-max", c.incMax},
+                                                       {"track-step", c.trackStep}};
     std::vector<std::string> a;
     for (const auto &[key, v] : numbers) {
         a.push_back(std::string("--") + key);
@@ -45,8 +54,14 @@ std::vector<std::string> caseOptions(const FeCase &c)
 
 std::vector<std::string> runOptionArgs(const RunOptions &o)
 {
-    std::vector<std::string> a{"--ccx", o.ccx, "--timeout", std::to_string(o.timeoutS),
-                               "--fallback-stick-slope", exact(o.fallbackStickSlope), "--work", o.workDir};
+    std::vector<std::string> a{"--ccx",
+                               o.ccx,
+                               "--timeout",
+                               std::to_string(o.timeoutS),
+                               "--fallback-stick-slope",
+                               exact(o.fallbackStickSlope),
+                               "--work",
+                               o.workDir};
     if (o.reuse) a.insert(a.end(), {"--reuse", "1"});
     return a;
 }
@@ -78,7 +93,8 @@ std::string jobScriptText(const JobScript &s)
          "rm -f \"$part\"\n";
     t += quote(s.icacam) + " fe run \"$@\" --out \"$part\"\n";
     t += "rc=$?\n"
-         "if [ -s \"$part\" ]; then mv -f \"$part\" \"$results/$label.csv\"; else rm -f \"$part\"; echo \"no rows (exit $rc)\" >&2; fi\n"
+         "if [ -s \"$part\" ]; then mv -f \"$part\" \"$results/$label.csv\"; else rm -f \"$part\"; echo \"no rows "
+         "(exit $rc)\" >&2; fi\n"
          "exit $rc\n";
     return t;
 }

@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "fe_case.h"
-#include "fe_runner.h"
+#include "host_tools/fe/fe_case.h"
+#include "host_tools/fe/fe_runner.h"
 
 namespace icacam::host::fe {
 
@@ -16,9 +16,9 @@ std::vector<std::string> caseOptions(const FeCase &c);
 std::vector<std::string> runOptionArgs(const RunOptions &o);
 
 struct JobScript {
-    std::string icacam;     // the program on the nodes
-    std::string setup;      // a shell line before the case (module load …); may be empty
-    std::string resultsDir; // absolute, on the shared filesystem
+    std::string icacam;        // the program on the nodes
+    std::string setup;         // a shell line before the case (module load …); may be empty
+    std::string resultsDir;    // absolute, on the shared filesystem
     std::vector<FeCase> cases; // task i solves cases[i]
     RunOptions run;
 };

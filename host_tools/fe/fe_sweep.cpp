@@ -1,27 +1,33 @@
-#include "fe_sweep.h"
+#include "host_tools/fe/fe_sweep.h"
 
 #include <iostream>
 #include <memory>
 #include <set>
 #include <stdexcept>
 
-#include "fe_local_executor.h"
-#include "fe_slurm_executor.h"
-#include "fe_slurm_options.h"
-#include "fe_sweep_csv.h"
+#include "host_tools/fe/fe_local_executor.h"
+#include "host_tools/fe/fe_slurm_executor.h"
+#include "host_tools/fe/fe_slurm_options.h"
+#include "host_tools/fe/fe_sweep_csv.h"
 
 namespace icacam::host::fe {
 
 bool setSweepOption(SweepOptions &o, const std::string &key, const std::string &value)
 {
     if (key == "executor") {
-        if (value != "local" && value != "slurm") throw std::runtime_error("--executor: local or slurm, not '" + value + "'");
+        if (value != "local" && value != "slurm")
+            throw std::runtime_error("--executor: local or slurm, not '" + value + "'");
         o.executor = value;
-    } else if (key == "resubmit-failed") o.resubmitFailed = value != "0";
-    else if (key == "cancel") o.cancel = value != "0";
-    else if (key == "slurm-config") o.slurmConfig = value;
-    else if (isSlurmKey(key)) o.slurm[key] = value;
-    else return false;
+    } else if (key == "resubmit-failed")
+        o.resubmitFailed = value != "0";
+    else if (key == "cancel")
+        o.cancel = value != "0";
+    else if (key == "slurm-config")
+        o.slurmConfig = value;
+    else if (isSlurmKey(key))
+        o.slurm[key] = value;
+    else
+        return false;
     return true;
 }
 
@@ -40,7 +46,8 @@ std::vector<std::string> rowLabels(const FeCase &c, const RunOptions &run)
 }
 
 // The grid's cases whose rows in csv say they did not solve: row label → what the solver said.
-std::map<std::string, CaseStatus> failedCases(const std::vector<FeCase> &cases, const std::string &csv, const RunOptions &run)
+std::map<std::string, CaseStatus> failedCases(const std::vector<FeCase> &cases, const std::string &csv,
+                                              const RunOptions &run)
 {
     const auto st = caseStatuses(csv);
     std::map<std::string, CaseStatus> failed;
@@ -95,7 +102,10 @@ int runSweep(const std::vector<FeCase> &cases, const std::string &out, const Run
     size_t unsolved = 0;
     for (const FeCase &c : cases) {
         if (hasRows(c, run, done)) continue;
-        if (run.reuseOnly && !hasReusableResults(c, run)) { ++unsolved; continue; }
+        if (run.reuseOnly && !hasReusableResults(c, run)) {
+            ++unsolved;
+            continue;
+        }
         todo.push_back(c);
     }
     std::cout << "sweep: " << cases.size() << " cases, " << cases.size() - todo.size() - unsolved << " already in "
@@ -106,7 +116,8 @@ int runSweep(const std::vector<FeCase> &cases, const std::string &out, const Run
     if (slurm) {
         const auto failed = failedCases(cases, out, run);
         for (const auto &[label, st] : failed)
-            std::cout << "failed: " << label << ": " << st.status << (st.message.empty() ? "" : ": " + st.message) << "\n";
+            std::cout << "failed: " << label << ": " << st.status << (st.message.empty() ? "" : ": " + st.message)
+                      << "\n";
         if (!failed.empty())
             std::cout << "sweep: " << failed.size() << " failed cases in " << out
                       << "; --resubmit-failed 1 runs them again (only them)\n";

@@ -5,17 +5,17 @@
 #include <string>
 #include <vector>
 
-#include "fe_case.h"
-#include "fe_runner.h"
+#include "host_tools/fe/fe_case.h"
+#include "host_tools/fe/fe_runner.h"
 
 namespace icacam::host::fe {
 
 struct SweepOptions {
-    std::string executor = "local"; // local | slurm
-    int jobs = 1;                   // local: ccx runs at a time
-    bool resubmitFailed = false;    // run the cases whose rows say failed/error again (only those)
-    bool cancel = false;            // slurm: scancel this sweep's queued tasks, nothing else
-    std::string slurmConfig;        // slurm: a key = value file (fe_slurm_options.h)
+    std::string executor = "local";           // local | slurm
+    int jobs = 1;                             // local: ccx runs at a time
+    bool resubmitFailed = false;              // run the cases whose rows say failed/error again (only those)
+    bool cancel = false;                      // slurm: scancel this sweep's queued tasks, nothing else
+    std::string slurmConfig;                  // slurm: a key = value file (fe_slurm_options.h)
     std::map<std::string, std::string> slurm; // slurm: options given on the command line
 };
 

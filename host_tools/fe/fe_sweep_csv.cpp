@@ -1,11 +1,11 @@
-#include "fe_sweep_csv.h"
+#include "host_tools/fe/fe_sweep_csv.h"
 
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <stdexcept>
 
-#include "fe_runner.h"
+#include "host_tools/fe/fe_runner.h"
 
 namespace icacam::host::fe {
 
@@ -78,7 +78,8 @@ void appendRows(const std::string &csv, const std::vector<std::string> &rows)
             rewrite << now << "\n" << rest;
             if (!rewrite) throw std::runtime_error("cannot write " + csv);
         } else if (head != now)
-            throw std::runtime_error(csv + ": its header is not this version's (nor a prefix of it); write to a new file");
+            throw std::runtime_error(csv +
+                                     ": its header is not this version's (nor a prefix of it); write to a new file");
     }
     std::ofstream f(csv, std::ios::app);
     if (fresh) f << csvHeader() << "\n";

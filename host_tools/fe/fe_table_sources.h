@@ -7,10 +7,10 @@
 namespace icacam::host::fe {
 
 struct TableSources {
-    std::string command;               // the command line that makes the tables, as written into each
-    std::string base;                  // the base: u, R_i, R_o, R_max and du/dr of the 10 x 15 mm specimen
-    std::vector<std::string> kFamily;  // the K carry: runs of one family at several K, the base's K among them
-    std::vector<std::string> aspect;   // the slenderness ratios: runs at other H0 and their 1.5 reference
+    std::string command;              // the command line that makes the tables, as written into each
+    std::string base;                 // the base: u, R_i, R_o, R_max and du/dr of the 10 x 15 mm specimen
+    std::vector<std::string> kFamily; // the K carry: runs of one family at several K, the base's K among them
+    std::vector<std::string> aspect;  // the slenderness ratios: runs at other H0 and their 1.5 reference
 };
 
 // The files as one space-separated list (the form the headers keep them in).

@@ -1,15 +1,15 @@
-#include "fe_tables.h"
+#include "host_tools/fe/fe_tables.h"
 
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <stdexcept>
 
-#include "cli_options.h"
-#include "fe_aspect.h"
-#include "fe_fit.h"
+#include "host_tools/cli_options.h"
+#include "host_tools/fe/fe_aspect.h"
+#include "host_tools/fe/fe_fit.h"
+#include "host_tools/loop/reduction_table.h"
 #include "host_tools/number_text.h"
-#include "reduction_table.h"
 
 namespace icacam::host::fe {
 
@@ -44,18 +44,23 @@ TablesRequest parseTablesArgs(const std::vector<std::string> &args)
     TablesRequest r;
     cli::OptionReader opts(args, kUsage);
     while (opts.next()) {
-        if (opts.isHelp()) throw cli::UsageError("--help is answered by the command", kUsage);
+        if (opts.isHelp())
+            throw cli::UsageError("--help is answered by the command", kUsage);
         else if (opts.is("--base")) {
             const std::string v = opts.value();
             if (!r.src.base.empty()) opts.fail("one --base: the tables stand on one FE base");
             r.src.base = repositoryName(v);
-        } else if (opts.is("--k-family")) r.src.kFamily.push_back(repositoryName(opts.value()));
-        else if (opts.is("--aspect")) r.src.aspect.push_back(repositoryName(opts.value()));
-        else if (opts.is("--out")) r.outDir = opts.value();
+        } else if (opts.is("--k-family"))
+            r.src.kFamily.push_back(repositoryName(opts.value()));
+        else if (opts.is("--aspect"))
+            r.src.aspect.push_back(repositoryName(opts.value()));
+        else if (opts.is("--out"))
+            r.outDir = opts.value();
         else if (opts.is("--reduction")) {
             r.reduction = opts.number();
             if (!(r.reduction > 0 && r.reduction < 1)) opts.fail("a height reduction between 0 and 1 (exclusive)");
-        } else opts.unknown();
+        } else
+            opts.unknown();
     }
     if (r.src.base.empty()) opts.missing("--base CSV");
     std::string c = "icacam fe tables --base " + r.src.base;
@@ -85,7 +90,10 @@ std::vector<TableText> tablesText(const TablesRequest &request, const std::strin
 int tablesCommand(const std::vector<std::string> &args)
 {
     for (const std::string &a : args)
-        if (a == "-h" || a == "--help") { std::cout << kUsage; return 0; }
+        if (a == "-h" || a == "--help") {
+            std::cout << kUsage;
+            return 0;
+        }
     const TablesRequest request = parseTablesArgs(args);
     // Every text first: a failing input leaves the committed tables as they are.
     const std::vector<TableText> tables = tablesText(request, "");

@@ -5,14 +5,14 @@
 #include <string>
 #include <vector>
 
-#include "fe_table_sources.h"
+#include "host_tools/fe/fe_table_sources.h"
 
 namespace icacam::host::fe {
 
 struct TablesRequest {
-    TableSources src;                  // src.command: the canonical command (no --out)
+    TableSources src; // src.command: the canonical command (no --out)
     std::string outDir = "vision/model";
-    double reduction = 0.5;            // the FE model's own reduction when none is declared
+    double reduction = 0.5; // the FE model's own reduction when none is declared
 };
 
 // `--base CSV [--k-family CSV]... [--aspect CSV]... [--reduction 0.5] [--out DIR]`: files named
@@ -21,7 +21,7 @@ struct TablesRequest {
 TablesRequest parseTablesArgs(const std::vector<std::string> &args);
 
 struct TableText {
-    std::string file;    // the header's name in outDir
+    std::string file; // the header's name in outDir
     std::string text;
     std::string summary; // one line on what it holds
 };

@@ -1,4 +1,4 @@
-#include "journal_records.h"
+#include "host_tools/loop/journal_records.h"
 
 #include <algorithm>
 #include <cmath>
@@ -19,13 +19,21 @@ namespace {
 bool parseFlat(const std::string &s, std::map<std::string, std::string> *out)
 {
     size_t i = 0;
-    auto ws = [&] { while (i < s.size() && (s[i] == ' ' || s[i] == '\t' || s[i] == '\r')) ++i; };
+    auto ws = [&] {
+        while (i < s.size() && (s[i] == ' ' || s[i] == '\t' || s[i] == '\r')) ++i;
+    };
     auto str = [&](std::string *v) {
         if (i >= s.size() || s[i] != '"') return false;
         for (++i; i < s.size(); ++i) {
             char c = s[i];
-            if (c == '"') { ++i; return true; }
-            if (c != '\\') { v->push_back(c); continue; }
+            if (c == '"') {
+                ++i;
+                return true;
+            }
+            if (c != '\\') {
+                v->push_back(c);
+                continue;
+            }
             if (++i >= s.size()) return false;
             switch (s[i]) {
             case 'n': v->push_back('\n'); break;
@@ -66,7 +74,10 @@ bool parseFlat(const std::string &s, std::map<std::string, std::string> *out)
         }
         (*out)[key] = value;
         ws();
-        if (i < s.size() && s[i] == ',') { ++i; continue; }
+        if (i < s.size() && s[i] == ',') {
+            ++i;
+            continue;
+        }
         if (i < s.size() && s[i] == '}') return true;
         return false;
     }
@@ -97,8 +108,9 @@ std::string joinKey(const std::string &id)
 // The device's principal results (vision/reading_record.h): renamed device_* so that they
 // are symptoms and not taken for a radii record. Its per-edge diagnostics are left out: the
 // re-measurement's diag_* carry the current pipeline's.
-const char *const kMeasured[] = {"mu", "mu_sigma", "u_mm", "r_inner_mm", "r_outer_mm", "r_max_mm", "reduction",
-                                 "reduction_est", "scale_factor", "status", "flags", "message", "ms"};
+const char *const kMeasured[] = {"mu",        "mu_sigma",      "u_mm",         "r_inner_mm", "r_outer_mm", "r_max_mm",
+                                 "reduction", "reduction_est", "scale_factor", "status",     "flags",      "message",
+                                 "ms"};
 // Settings and conditions the device recorded with each result.
 const char *const kConditions[] = {"n",          "k_mpa",    "d0_mm",       "h0_mm",  "mm_per_px",
                                    "h_final_mm", "material", "calibration", "trigger"};
@@ -121,7 +133,9 @@ bool readJournalManifest(const std::string &journalDir, const std::string &refer
     *info = {};
     Manifest ref;
     if (!readManifest(referenceCsv, &ref, error)) return false;
-    auto hasColumn = [&](const char *c) { return std::find(ref.columns.begin(), ref.columns.end(), c) != ref.columns.end(); };
+    auto hasColumn = [&](const char *c) {
+        return std::find(ref.columns.begin(), ref.columns.end(), c) != ref.columns.end();
+    };
     const std::string idColumn = hasColumn("id") ? "id" : hasColumn("record_id") ? "record_id" : "";
     if (idColumn.empty()) {
         *error = "reference CSV '" + referenceCsv + "' has no id (or record_id) column";
@@ -129,7 +143,10 @@ bool readJournalManifest(const std::string &journalDir, const std::string &refer
     }
     std::map<std::string, const ManifestRow *> byId;
     for (const ManifestRow &r : ref.rows) {
-        if (!r.error.empty()) { info->skipped.push_back("reference line " + std::to_string(r.line) + ": " + r.error); continue; }
+        if (!r.error.empty()) {
+            info->skipped.push_back("reference line " + std::to_string(r.line) + ": " + r.error);
+            continue;
+        }
         byId[joinKey(r.get(idColumn))] = &r;
     }
     // D0 and H0: each result record carries what the device was told; a journal written
@@ -159,22 +176,36 @@ bool readJournalManifest(const std::string &journalDir, const std::string &refer
     for (const char *c : kConditions) out->columns.push_back(c);
     for (const char *c : kMeasured) out->columns.push_back(std::string("device_") + c);
     for (const std::string &c : ref.columns)
-        if (c != "id") out->columns.push_back(std::find(out->columns.begin(), out->columns.end(), c) == out->columns.end() ? c : "ref_" + c);
+        if (c != "id")
+            out->columns.push_back(
+                std::find(out->columns.begin(), out->columns.end(), c) == out->columns.end() ? c : "ref_" + c);
     std::map<std::string, bool> used;
     std::string line;
     while (std::getline(in, line)) {
         ++info->lines;
         const std::string where = "journal line " + std::to_string(info->lines);
         std::map<std::string, std::string> f;
-        if (!intact(line) || !parseFlat(line, &f)) { info->skipped.push_back(where + ": damaged (CRC or JSON)"); continue; }
-        if (f["type"] == "scalecheck") { ++info->scaleChecks; continue; }
+        if (!intact(line) || !parseFlat(line, &f)) {
+            info->skipped.push_back(where + ": damaged (CRC or JSON)");
+            continue;
+        }
+        if (f["type"] == "scalecheck") {
+            ++info->scaleChecks;
+            continue;
+        }
         if (f["type"] != "result") continue;
         ++info->results;
         const std::string id = f["id"], what = "journal record " + id;
         const auto it = byId.find(joinKey(id));
-        if (it == byId.end()) { info->skipped.push_back(what + ": no row in the reference CSV"); continue; }
+        if (it == byId.end()) {
+            info->skipped.push_back(what + ": no row in the reference CSV");
+            continue;
+        }
         used[it->first] = true;
-        if (f["image"].empty()) { info->skipped.push_back(what + ": no saved frame (journal.images none, or an error before capture)"); continue; }
+        if (f["image"].empty()) {
+            info->skipped.push_back(what + ": no saved frame (journal.images none, or an error before capture)");
+            continue;
+        }
         if (!f["calibration"].empty()) {
             // The frame's boundaries were mapped through a calibration file the loop does not read.
             info->skipped.push_back(what + ": measured through calibration '" + f["calibration"] +
@@ -188,16 +219,21 @@ bool readJournalManifest(const std::string &journalDir, const std::string &refer
         for (const char *c : kConditions) row.cells[c] = f[c];
         for (const char *c : kMeasured) row.cells[std::string("device_") + c] = f[c];
         const bool recordGeometry = !f["d0_mm"].empty() && !f["h0_mm"].empty();
-        if (recordGeometry) ++fromRecords;
-        else ++fromElsewhere;
+        if (recordGeometry)
+            ++fromRecords;
+        else
+            ++fromElsewhere;
         if (!recordGeometry && !refGeometry && savedGeometry)
             row.cells["d0_mm"] = settings["d0_mm"], row.cells["h0_mm"] = settings["h0_mm"];
         for (const auto &[k, v] : it->second->cells) {
             if (k == idColumn) continue;
             const bool journalHas = row.cells.count(k) > 0;
-            const bool journalEmpty = journalHas && (row.cells[k].empty() || (k == "h_final_mm" && row.cells[k] == "0"));
-            if (!journalHas || journalEmpty) row.cells[k] = v;
-            else row.cells["ref_" + k] = v;
+            const bool journalEmpty =
+                journalHas && (row.cells[k].empty() || (k == "h_final_mm" && row.cells[k] == "0"));
+            if (!journalHas || journalEmpty)
+                row.cells[k] = v;
+            else
+                row.cells["ref_" + k] = v;
         }
         out->rows.push_back(std::move(row));
         ++info->joined;
@@ -205,13 +241,13 @@ bool readJournalManifest(const std::string &journalDir, const std::string &refer
     for (const auto &[key, row] : byId)
         if (!used.count(key)) info->skipped.push_back("reference id " + row->get(idColumn) + ": not in the journal");
     const std::string older = refGeometry     ? "from the reference CSV"
-                              : savedGeometry ? "from the device's settings.conf as it is now (d0_mm " + settings["d0_mm"] +
-                                                    ", h0_mm " + settings["h0_mm"] + ")"
+                              : savedGeometry ? "from the device's settings.conf as it is now (d0_mm " +
+                                                    settings["d0_mm"] + ", h0_mm " + settings["h0_mm"] + ")"
                                               : "not recorded: 10 and 15 mm assumed";
-    info->geometry = fromElsewhere == 0 ? "d0_mm and h0_mm as each record carries them"
-                                        : "d0_mm and h0_mm as each record carries them; for " +
-                                              std::to_string(fromElsewhere) + " of " +
-                                              std::to_string(fromRecords + fromElsewhere) + " records " + older;
+    info->geometry = fromElsewhere == 0
+                         ? "d0_mm and h0_mm as each record carries them"
+                         : "d0_mm and h0_mm as each record carries them; for " + std::to_string(fromElsewhere) +
+                               " of " + std::to_string(fromRecords + fromElsewhere) + " records " + older;
     return true;
 }
 

@@ -7,15 +7,15 @@
 #include <string>
 #include <vector>
 
-#include "manifest.h"
+#include "host_tools/manifest.h"
 
 namespace icacam::host::loop {
 
 struct JournalJoin {
-    int lines = 0;       // lines in journal.jsonl
-    int results = 0;     // intact result lines
-    int joined = 0;      // results with a reference row and a saved frame: the manifest's rows
-    int scaleChecks = 0; // scale-check lines (not measurements)
+    int lines = 0;                    // lines in journal.jsonl
+    int results = 0;                  // intact result lines
+    int joined = 0;                   // results with a reference row and a saved frame: the manifest's rows
+    int scaleChecks = 0;              // scale-check lines (not measurements)
     std::vector<std::string> skipped; // "what: why", one per line or reference row left out
     // Where D0 and H0 came from: the result records do not carry them (the reference CSV's
     // d0_mm/h0_mm, else the device's settings.conf as it is now, else 10 and 15 mm).

@@ -1,4 +1,4 @@
-#include "loop_analysis.h"
+#include "host_tools/loop/loop_analysis.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,8 +7,8 @@
 #include <random>
 #include <set>
 
-#include "fe_base_data.h"
-#include "manifest.h"
+#include "host_tools/loop/fe_base_data.h"
+#include "host_tools/manifest.h"
 
 namespace icacam::host::loop {
 
@@ -49,8 +49,10 @@ double normalUpperQuantile(double p) // x with P(Z > x) = p
     double lo = -38, hi = 38;
     for (int i = 0; i < 200; ++i) {
         const double mid = 0.5 * (lo + hi);
-        if (0.5 * std::erfc(mid / std::sqrt(2.0)) > p) lo = mid;
-        else hi = mid;
+        if (0.5 * std::erfc(mid / std::sqrt(2.0)) > p)
+            lo = mid;
+        else
+            hi = mid;
     }
     return 0.5 * (lo + hi);
 }
@@ -90,7 +92,7 @@ double nestedZ(double sse0, int p0, double sse1, int p1, size_t n)
     if (df1 < 1 || df2 < 1 || !(sse1 > 0)) return 0;
     const double f = std::max(0.0, (sse0 - sse1) / df1) / (sse1 / df2);
     const double p = incompleteBeta(0.5 * df2, 0.5 * df1, df2 / (df2 + df1 * f)); // P(F' > f)
-    return p < 1e-300 ? 37.0 : normalUpperQuantile(std::min(p, 0.5)) ;
+    return p < 1e-300 ? 37.0 : normalUpperQuantile(std::min(p, 0.5));
 }
 
 double sumSquares(const std::vector<double> &v)
@@ -158,7 +160,10 @@ void fitPredict(const Candidate *c, const std::vector<double> &y, const std::vec
     double sy = 0;
     int cnt = 0;
     for (size_t i = 0; i < n; ++i)
-        if (train(i)) { sy += y[i]; ++cnt; }
+        if (train(i)) {
+            sy += y[i];
+            ++cnt;
+        }
     const double my = cnt ? sy / cnt : 0;
     if (c && c->kind == "categorical") {
         std::set<std::string> lv;
@@ -169,7 +174,10 @@ void fitPredict(const Candidate *c, const std::vector<double> &y, const std::vec
         double sx = 0;
         int nx = 0;
         for (size_t i = 0; i < n; ++i)
-            if (train(i) && std::isfinite(c->x[i])) { sx += c->x[i]; ++nx; }
+            if (train(i) && std::isfinite(c->x[i])) {
+                sx += c->x[i];
+                ++nx;
+            }
         d.xMean[0] = nx ? sx / nx : 0;
     }
     const size_t p = d.size();
@@ -188,7 +196,10 @@ void fitPredict(const Candidate *c, const std::vector<double> &y, const std::vec
     const bool ok = solve(a, b, &q);
     for (size_t i = 0; i < n; ++i) {
         if (k >= 0 && fold[i] != k) continue;
-        if (!ok) { (*pred)[i] = my; continue; }
+        if (!ok) {
+            (*pred)[i] = my;
+            continue;
+        }
         d.row(i, &f);
         double v = 0;
         for (size_t r = 0; r < p; ++r) v += f[r] * q[r];
@@ -200,8 +211,8 @@ void fitPredict(const Candidate *c, const std::vector<double> &y, const std::vec
     }
 }
 
-std::vector<double> cvErrors(const Candidate *c, const std::vector<double> &y, const std::vector<int> &fold,
-                             int folds, const std::vector<double> *sens = nullptr)
+std::vector<double> cvErrors(const Candidate *c, const std::vector<double> &y, const std::vector<int> &fold, int folds,
+                             const std::vector<double> *sens = nullptr)
 {
     std::vector<double> pred(y.size(), 0);
     for (int k = 0; k < folds; ++k) fitPredict(c, y, fold, k, &pred, sens);
@@ -237,7 +248,10 @@ double explainedShare(const Candidate &symptom, const Candidate &cause, double *
     int params = 2;
     if (cause.kind == "categorical") {
         std::map<std::string, std::pair<double, int>> sums;
-        for (size_t i : idx) { sums[cause.levels[i]].first += symptom.x[i]; sums[cause.levels[i]].second++; }
+        for (size_t i : idx) {
+            sums[cause.levels[i]].first += symptom.x[i];
+            sums[cause.levels[i]].second++;
+        }
         for (size_t i : idx) {
             const auto &[sum, n] = sums[cause.levels[i]];
             sse += (symptom.x[i] - sum / n) * (symptom.x[i] - sum / n);
@@ -247,7 +261,10 @@ double explainedShare(const Candidate &symptom, const Candidate &cause, double *
         double mx = 0, sxx = 0, sxy = 0;
         for (size_t i : idx) mx += cause.x[i];
         mx /= double(idx.size());
-        for (size_t i : idx) { sxx += (cause.x[i] - mx) * (cause.x[i] - mx); sxy += (cause.x[i] - mx) * (symptom.x[i] - my); }
+        for (size_t i : idx) {
+            sxx += (cause.x[i] - mx) * (cause.x[i] - mx);
+            sxy += (cause.x[i] - mx) * (symptom.x[i] - my);
+        }
         const double b = sxx > 0 ? sxy / sxx : 0;
         for (size_t i : idx) {
             const double r = symptom.x[i] - my - b * (cause.x[i] - mx);
@@ -381,10 +398,15 @@ std::vector<RankedCandidate> rankCandidates(const std::vector<Candidate> &candid
     const std::vector<int> fold = foldAssignment(y.size(), folds, opt.seed);
     // The forms an effect can take: an offset in μ, a relative scale of u (optics), an
     // additive shift of u (a process that widens the ring: Δμ = dμ/du · Δu).
-    struct Form { const char *name; const std::vector<double> *sens; std::vector<double> e0; };
+    struct Form {
+        const char *name;
+        const std::vector<double> *sens;
+        std::vector<double> e0;
+    };
     std::vector<Form> formList;
     formList.push_back({"mu", nullptr, cvErrors(nullptr, y, fold, folds)});
-    if (scaleSensitivity) formList.push_back({"scale", scaleSensitivity, cvErrors(nullptr, y, fold, folds, scaleSensitivity)});
+    if (scaleSensitivity)
+        formList.push_back({"scale", scaleSensitivity, cvErrors(nullptr, y, fold, folds, scaleSensitivity)});
     if (uSensitivity) formList.push_back({"u", uSensitivity, cvErrors(nullptr, y, fold, folds, uSensitivity)});
     const size_t forms = formList.size();
     const size_t tries = candidates.size() * forms + (physicalForms ? physicalForms->size() : 0) +
@@ -395,9 +417,12 @@ std::vector<RankedCandidate> rankCandidates(const std::vector<Candidate> &candid
         std::vector<double> pred(y.size(), 0);
         fitPredict(c, y, fold, -1, &pred, sens);
         for (size_t i = 0; i < y.size(); ++i) pred[i] = y[i] - pred[i];
-        if (!c) *params = sens ? 2 : 1;
-        else if (c->kind == "categorical") *params = int(std::set<std::string>(c->levels.begin(), c->levels.end()).size()) + (sens ? 1 : 0);
-        else *params = sens ? 3 : 2;
+        if (!c)
+            *params = sens ? 2 : 1;
+        else if (c->kind == "categorical")
+            *params = int(std::set<std::string>(c->levels.begin(), c->levels.end()).size()) + (sens ? 1 : 0);
+        else
+            *params = sens ? 3 : 2;
         return sumSquares(pred);
     };
     std::vector<std::vector<double>> errors; // held-out errors per candidate, as in out
@@ -459,7 +484,10 @@ std::vector<RankedCandidate> rankCandidates(const std::vector<Candidate> &candid
             double sx = 0, sy2 = 0, sxy = 0, mx = 0, myv = mean(y);
             int cnt = 0;
             for (size_t i = 0; i < y.size(); ++i)
-                if (std::isfinite(c.x[i])) { mx += c.x[i]; ++cnt; }
+                if (std::isfinite(c.x[i])) {
+                    mx += c.x[i];
+                    ++cnt;
+                }
             mx = cnt ? mx / cnt : 0;
             for (size_t i = 0; i < y.size(); ++i) {
                 if (!std::isfinite(c.x[i])) continue;
@@ -485,8 +513,7 @@ std::vector<RankedCandidate> rankCandidates(const std::vector<Candidate> &candid
         RankedCandidate &c = out[order[k]];
         if (c.symptom || !c.significant) continue;
         size_t pos = k;
-        while (pos > 0 && out[order[pos - 1]].symptom && pairedZ(errors[order[k]], errors[order[pos - 1]]) < 2.0)
-            --pos;
+        while (pos > 0 && out[order[pos - 1]].symptom && pairedZ(errors[order[k]], errors[order[pos - 1]]) < 2.0) --pos;
         if (pos == k) continue;
         for (size_t j = pos; j < k; ++j) c.preferredOver.push_back(out[order[j]].name);
         const size_t moved = order[k];
@@ -503,14 +530,16 @@ std::vector<RankedCandidate> rankCandidates(const std::vector<Candidate> &candid
     size_t lead = order.size(); // the first significant symptom, when no significant cause leads
     if (!order.empty() && !(out[order[0]].significant && !out[order[0]].symptom))
         for (size_t k = 0; k < order.size() && lead == order.size(); ++k)
-            if (out[order[k]].symptom && out[order[k]].significant && candidates[order[k]].kind != "categorical") lead = k;
+            if (out[order[k]].symptom && out[order[k]].significant && candidates[order[k]].kind != "categorical")
+                lead = k;
     if (lead < order.size()) {
         const double zSingle = normalUpperQuantile(opt.alpha);
         size_t best = order.size();
         double bestR2 = -1;
         for (size_t k = 0; k < order.size(); ++k) {
             const RankedCandidate &c = out[order[k]];
-            if (c.symptom || c.significant || !(c.gain > 0 && c.z > zSingle && c.gain >= opt.minRelativeGain * c.cvRmsBefore))
+            if (c.symptom || c.significant ||
+                !(c.gain > 0 && c.z > zSingle && c.gain >= opt.minRelativeGain * c.cvRmsBefore))
                 continue;
             bool told = pairedZ(errors[order[k]], errors[order[lead]]) >= 2.0;
             for (size_t j = 0; j < k && !told; ++j)
@@ -547,7 +576,10 @@ bool ReductionSlope::load(const std::vector<std::string> &paths, std::string *er
 {
     FeBaseData base;
     if (!readFeBaseData(paths, &base, error)) return false;
-    struct Case { double n = 0, mu = 0; std::vector<std::pair<double, double>> pts; };
+    struct Case {
+        double n = 0, mu = 0;
+        std::vector<std::pair<double, double>> pts;
+    };
     std::map<std::pair<long, long>, Case> cases; // by (n, μ): duplicates of a point average out in the fit
     std::vector<double> snapshots;               // every reduction a base run reached
     bool anyCase = false;
@@ -591,7 +623,8 @@ bool ReductionSlope::load(const std::vector<std::string> &paths, std::string *er
     }
     for (int i = 0; i < 6; ++i) ata[size_t(i * 6 + i)] += 1e-9; // keeps a thin grid solvable
     if (cases_ < 6 || !solve(ata, atb, &coef_)) {
-        *error = "too few FE cases (" + std::to_string(cases_) + " of the 6 needed) with an open ICA over reductions >= 0.35 in the base data (" + base.mesh + ")";
+        *error = "too few FE cases (" + std::to_string(cases_) +
+                 " of the 6 needed) with an open ICA over reductions >= 0.35 in the base data (" + base.mesh + ")";
         return false;
     }
     // Coverage of the linear carry about 50 %: the snapshots' span plus half their spacing,
@@ -626,7 +659,10 @@ double uAtModelReduction(const vision::FrictionModel &model, const ReductionSlop
         m.uMm = u50;
         const double mu = model.estimate(m).mu;
         const double next = in.uMm - scaleFactor * geo * slope.slope(in.n, mu) * (reduction - 0.5);
-        if (std::fabs(next - u50) < 1e-9) { u50 = next; break; }
+        if (std::fabs(next - u50) < 1e-9) {
+            u50 = next;
+            break;
+        }
         u50 = 0.5 * (u50 + next);
     }
     return u50;
@@ -640,8 +676,10 @@ double uForMu(const vision::FrictionModel &model, double mu, double n, double d0
     double lo = 0, hi = 1.25 * d0Mm / 10.0;
     for (int i = 0; i < 100; ++i) {
         in.uMm = 0.5 * (lo + hi);
-        if (model.estimate(in).mu < mu) lo = in.uMm;
-        else hi = in.uMm;
+        if (model.estimate(in).mu < mu)
+            lo = in.uMm;
+        else
+            hi = in.uMm;
     }
     return 0.5 * (lo + hi);
 }

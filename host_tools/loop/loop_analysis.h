@@ -19,11 +19,11 @@ struct LoopRecord {
     std::map<std::string, std::string> columns; // every recorded column, as text
     std::map<std::string, double> diagnostics;  // measured by the pipeline (or derived)
     double n = 0, kMpa = 0, d0Mm = 10, h0Mm = 15;
-    double uMm = 0;       // measured ICA width
-    double muModel = 0;   // the model's μ at the measured u
-    double muRef = 0;     // reference μ (independent method)
-    double scaleSens = 0; // dμ/du · u: μ's change per unit relative scale error of u
-    double uSens = 0;     // dμ/du: μ's change per mm of u
+    double uMm = 0;        // measured ICA width
+    double muModel = 0;    // the model's μ at the measured u
+    double muRef = 0;      // reference μ (independent method)
+    double scaleSens = 0;  // dμ/du · u: μ's change per unit relative scale error of u
+    double uSens = 0;      // dμ/du: μ's change per mm of u
     double reduction = -1; // 1 - h_final/h0 when recorded, else -1
     bool usable = false;   // measured and with a reference
 };
@@ -31,15 +31,15 @@ struct LoopRecord {
 // Candidate explanation of the residual: one recorded column or one diagnostic.
 struct Candidate {
     std::string name;
-    std::string kind; // "numeric", "categorical" or "diagnostic"
-    std::vector<double> x;            // numeric value per usable record (NaN: missing)
-    std::vector<std::string> levels;  // categorical level per usable record
-    bool symptom = false;             // a measured quantity (isSymptom), not a recorded condition
+    std::string kind;                // "numeric", "categorical" or "diagnostic"
+    std::vector<double> x;           // numeric value per usable record (NaN: missing)
+    std::vector<std::string> levels; // categorical level per usable record
+    bool symptom = false;            // a measured quantity (isSymptom), not a recorded condition
 };
 
 // A measured quantity (a symptom) rather than a recorded condition (a cause): every
-// pipeline diagnostic (diag_*), what a device measured (device_*, from its journal), the radii of a radii record set (r_inner_mm, r_outer_mm,
-// r_bulge_mm), what a device measured (mu, u_mm, reduction_est, status, flags, ...), and any
+// pipeline diagnostic (diag_*), what a device measured (device_*, from its journal), the radii of a radii record set
+// (r_inner_mm, r_outer_mm, r_bulge_mm), what a device measured (mu, u_mm, reduction_est, status, flags, ...), and any
 // column named after one of them (r_outer_px, u_over_r0, ...).
 bool isSymptom(const std::string &name);
 
@@ -83,7 +83,7 @@ struct FittedForm {
 struct RankingOptions {
     int folds = 5;
     uint32_t seed = 1;
-    double alpha = 0.01;          // family-wise, Bonferroni over the candidates and forms
+    double alpha = 0.01;           // family-wise, Bonferroni over the candidates and forms
     double minRelativeGain = 0.05; // a chosen effect must cut the CV RMS by at least 5 %
 };
 
@@ -105,8 +105,7 @@ std::vector<Candidate> buildCandidates(const std::vector<LoopRecord> &usable);
 // uSensitivity (dμ/du per record) adds the form "u": an additive shift of u linear in the
 // candidate (how a process that widens the ring acts).
 std::vector<RankedCandidate> rankCandidates(const std::vector<Candidate> &candidates,
-                                            const std::vector<double> &residual,
-                                            const RankingOptions &opt,
+                                            const std::vector<double> &residual, const RankingOptions &opt,
                                             const std::vector<double> *scaleSensitivity = nullptr,
                                             const std::vector<double> *uSensitivity = nullptr,
                                             const std::map<std::string, std::vector<double>> *physicalForms = nullptr,
@@ -118,16 +117,18 @@ std::vector<RankedCandidate> rankCandidates(const std::vector<Candidate> &candid
 // factor or an n per group), tried against its own baseline like the other forms.
 
 // Cross-validated predictions of the residual by one candidate (for before/after plots).
-std::vector<double> cvPredict(const Candidate &c, const std::vector<double> &residual,
-                              const std::vector<int> &fold, int folds,
-                              const std::vector<double> *scaleSensitivity = nullptr);
+std::vector<double> cvPredict(const Candidate &c, const std::vector<double> &residual, const std::vector<int> &fold,
+                              int folds, const std::vector<double> *scaleSensitivity = nullptr);
 
 // du/dr (mm per unit height reduction, D0 = 10 mm) from FE snapshots: per (n, μ) case, the
 // slope at 50 % of a least-squares quadratic in r of u over the reductions 0.35–0.5; then a smooth quadratic surface in
 // (n, μ) through those slopes. Built from data/fe/sweep.csv.
 class ReductionSlope {
 public:
-    bool load(const std::string &sweepCsv, std::string *error) { return load(std::vector<std::string>{sweepCsv}, error); }
+    bool load(const std::string &sweepCsv, std::string *error)
+    {
+        return load(std::vector<std::string>{sweepCsv}, error);
+    }
     // One or more sweep CSVs: the base data are chosen over all of them (fe_base_data.h).
     bool load(const std::vector<std::string> &sweepCsvs, std::string *error);
     // Direct construction (tests): slope = c0 + c1 n + c2 μ + c3 n² + c4 nμ + c5 μ².
@@ -160,8 +161,8 @@ constexpr double kFeUFloorMm = 0.02;
 
 // u at the model's 50 % reduction: u50 = u − (du/dr)(r − 0.5), du/dr at (n, μ(u50)) found by
 // fixed-point iteration, scaled with D0 by geometric similarity.
-double uAtModelReduction(const vision::FrictionModel &model, const ReductionSlope &slope,
-                         const vision::ModelInputs &in, double reduction, double scaleFactor = 1.0);
+double uAtModelReduction(const vision::FrictionModel &model, const ReductionSlope &slope, const vision::ModelInputs &in,
+                         double reduction, double scaleFactor = 1.0);
 
 // Inverse of the model in u at fixed n (bisection on [0, 1.25] mm at D0 = 10): for tests and
 // synthetic record sets.

@@ -1,5 +1,5 @@
 // `icacam loop`: close the loop on measured records (PRODUCT.md §5, docs/loop.md).
-#include "loop_command.h"
+#include "host_tools/loop/loop_command.h"
 
 #include <cmath>
 #include <cstdio>
@@ -8,15 +8,15 @@
 #include <iostream>
 #include <stdexcept>
 
-#include "cli_options.h"
-#include "image_file.h"
-#include "journal_records.h"
-#include "loop_physics_report.h"
-#include "loop_plot.h"
-#include "manifest.h"
-#include "number_text.h"
-#include "record_measurer.h"
-#include "reduction_table.h"
+#include "host_tools/cli_options.h"
+#include "host_tools/image_file.h"
+#include "host_tools/loop/journal_records.h"
+#include "host_tools/loop/loop_physics_report.h"
+#include "host_tools/loop/loop_plot.h"
+#include "host_tools/loop/reduction_table.h"
+#include "host_tools/manifest.h"
+#include "host_tools/number_text.h"
+#include "host_tools/record_measurer.h"
 #include "vision/end_face_analyzer.h"
 #include "vision/model/friction_models.h"
 
@@ -42,11 +42,19 @@ std::string usage()
                        "  --model NAME   the friction model (default ") +
            vision::kDefaultModel + "; known: " + cli::modelNames() +
            ")\n"
-           "  --folds N      k of the k-fold cross-validation (default " + std::to_string(d.folds) + ")\n"
-           "  --seed S       the folds' random seed (default " + std::to_string(d.seed) + ")\n"
-           "  --alpha A      family-wise significance of a chosen effect (default " + numberText("%g", d.alpha) + ")\n"
+           "  --folds N      k of the k-fold cross-validation (default " +
+           std::to_string(d.folds) +
+           ")\n"
+           "  --seed S       the folds' random seed (default " +
+           std::to_string(d.seed) +
+           ")\n"
+           "  --alpha A      family-wise significance of a chosen effect (default " +
+           numberText("%g", d.alpha) +
+           ")\n"
            "  --fe-sweep CSV the FE runs of the physical reduction correction (default the base the\n"
-           "                 models' tables came from: " + vision::reduction_table::kFeSources + ")\n"
+           "                 models' tables came from: " +
+           vision::reduction_table::kFeSources +
+           ")\n"
            "Measures every record (image + mm_per_px, or r_inner_mm + r_outer_mm; with --journal an\n"
            "icacam-fw journal folder's saved frames, joined by record id with the CSV's mu_ref and\n"
            "recorded columns, re-measured with the current pipeline), takes the residual\n"
@@ -100,9 +108,15 @@ bool measureImage(const ManifestRow &row, const Manifest &manifest, host::Record
 {
     host::RecordReading reading;
     measurer.measure(row, manifest, &reading);
-    if (!reading.measured) { *why = reading.message; return false; }
+    if (!reading.measured) {
+        *why = reading.message;
+        return false;
+    }
     const Measurement &m = reading.m;
-    if (!m.hasValue()) { *why = errorMessage(m.error); return false; }
+    if (!m.hasValue()) {
+        *why = errorMessage(m.error);
+        return false;
+    }
     // u at the declared scale: the loop looks for what was not declared, so the reading's
     // own silhouette correction (reading_interpreter.h) is taken back out.
     const double k = m.scaleFactor;
@@ -134,18 +148,30 @@ bool measureRecord(const ManifestRow &row, const Manifest &manifest, const Frict
                    host::RecordMeasurer &measurer, LoopRecord *r, std::string *why)
 {
     auto num = [&](const char *key, double fallback, double *out) {
-        if (!row.has(key) || row.get(key).empty()) { *out = fallback; return true; }
+        if (!row.has(key) || row.get(key).empty()) {
+            *out = fallback;
+            return true;
+        }
         if (parseNumber(row.get(key), out)) return true;
         *why = std::string("bad number in ") + key;
         return false;
     };
     double hFinal = 0;
-    if (!row.error.empty()) { *why = row.error; return false; }
+    if (!row.error.empty()) {
+        *why = row.error;
+        return false;
+    }
     if (!num("n", -1, &r->n) || !num("k_mpa", 0, &r->kMpa) || !num("d0_mm", 10, &r->d0Mm) ||
         !num("h0_mm", 15, &r->h0Mm) || !num("h_final_mm", 0, &hFinal) || !num("mu_ref", NAN, &r->muRef))
         return false;
-    if (!(r->n > 0)) { *why = "missing n"; return false; }
-    if (!std::isfinite(r->muRef)) { *why = "no mu_ref"; return false; }
+    if (!(r->n > 0)) {
+        *why = "missing n";
+        return false;
+    }
+    if (!std::isfinite(r->muRef)) {
+        *why = "no mu_ref";
+        return false;
+    }
     if (hFinal > 0 && r->h0Mm > 0) r->reduction = 1.0 - hFinal / r->h0Mm;
     double ri = 0, ro = 0;
     if (row.has("r_inner_mm") && row.has("r_outer_mm") && parseNumber(row.get("r_inner_mm"), &ri) &&
@@ -177,7 +203,8 @@ bool measureRecord(const ManifestRow &row, const Manifest &manifest, const Frict
     return true;
 }
 
-void plotCandidate(const std::string &path, const Candidate &c, const std::vector<double> &res, const RankedCandidate &rc)
+void plotCandidate(const std::string &path, const Candidate &c, const std::vector<double> &res,
+                   const RankedCandidate &rc)
 {
     Series s;
     s.y = res;
@@ -187,7 +214,10 @@ void plotCandidate(const std::string &path, const Candidate &c, const std::vecto
         std::map<std::string, int> idx;
         for (const std::string &l : c.levels) idx.emplace(l, 0);
         int k = 0;
-        for (auto &[l, i] : idx) { i = k++; ticks.push_back(l.empty() ? "(none)" : l); }
+        for (auto &[l, i] : idx) {
+            i = k++;
+            ticks.push_back(l.empty() ? "(none)" : l);
+        }
         for (size_t i = 0; i < c.levels.size(); ++i)
             s.x.push_back(idx[c.levels[i]] + 0.25 * (double(i % 7) / 6.0 - 0.5));
     } else {
@@ -218,18 +248,20 @@ LoopSummary runJournalLoop(const std::string &journalDir, const std::string &ref
     if (!readJournalManifest(journalDir, referenceCsv, &manifest, &join, &err)) throw std::runtime_error(err);
     const std::string source = "Journal: `" + journalDir + "` (" + std::to_string(join.lines) + " lines, " +
                                std::to_string(join.results) + " results, " + std::to_string(join.scaleChecks) +
-                               " scale checks), joined by record id with `" + referenceCsv + "`: " +
-                               std::to_string(join.joined) + " records with a reference value and a saved frame, "
+                               " scale checks), joined by record id with `" + referenceCsv +
+                               "`: " + std::to_string(join.joined) +
+                               " records with a reference value and a saved frame, "
                                "re-measured with the current pipeline (the device's own results are the device_* "
-                               "columns); " + join.geometry;
+                               "columns); " +
+                               join.geometry;
     LoopSummary s = runLoopOn(manifest, source, join.skipped, reportDir, modelName, opt, feSweeps);
     s.journal = join;
     return s;
 }
 
-LoopSummary runLoopOn(const Manifest &manifest, const std::string &source, const std::vector<std::string> &skippedBefore,
-                      const std::string &reportDir, const std::string &modelName, const RankingOptions &opt,
-                      const std::vector<std::string> &feSweeps)
+LoopSummary runLoopOn(const Manifest &manifest, const std::string &source,
+                      const std::vector<std::string> &skippedBefore, const std::string &reportDir,
+                      const std::string &modelName, const RankingOptions &opt, const std::vector<std::string> &feSweeps)
 {
     const FrictionModel *model = frictionModel(modelName);
     if (!model) throw std::runtime_error("unknown model '" + modelName + "' (known: " + cli::modelNames() + ")");
@@ -242,8 +274,10 @@ LoopSummary runLoopOn(const Manifest &manifest, const std::string &source, const
         LoopRecord r;
         r.id = row.get("id", "line" + std::to_string(row.line));
         std::string why;
-        if (measureRecord(row, manifest, *model, measurer, &r, &why)) usable.push_back(std::move(r));
-        else skipped.push_back(r.id + ": " + why);
+        if (measureRecord(row, manifest, *model, measurer, &r, &why))
+            usable.push_back(std::move(r));
+        else
+            skipped.push_back(r.id + ": " + why);
     }
     LoopSummary s;
     s.records = int(manifest.rows.size());
@@ -270,7 +304,8 @@ LoopSummary runLoopOn(const Manifest &manifest, const std::string &source, const
     if (anyRecorded && !model->correctsReduction()) {
         std::string e;
         slopeLoaded = slope.load(feSweeps, &e);
-        if (!slopeLoaded) std::cerr << "icacam loop: no physical correction: " << e << "\n";
+        if (!slopeLoaded)
+            std::cerr << "icacam loop: no physical correction: " << e << "\n";
         else {
             std::vector<double> change(usable.size(), 0);
             for (size_t i = 0; i < usable.size(); ++i) {
@@ -296,7 +331,10 @@ LoopSummary runLoopOn(const Manifest &manifest, const std::string &source, const
             double sum = 0;
             int cnt = 0;
             for (size_t i = 0; i < res.size(); ++i)
-                if (fold[i] != k) { sum += res[i]; ++cnt; }
+                if (fold[i] != k) {
+                    sum += res[i];
+                    ++cnt;
+                }
             for (size_t i = 0; i < res.size(); ++i)
                 if (fold[i] == k) e[i] = res[i] - (cnt ? sum / cnt : 0);
         }
@@ -315,13 +353,14 @@ LoopSummary runLoopOn(const Manifest &manifest, const std::string &source, const
     // The reduction leads when it is chosen as recorded or as the image measures it
     // (diag_reduction_est, from the silhouette): the recorded value is used when there is
     // one, the image's estimate otherwise.
-    const bool isReduction =
-        s.chosen == "reduction" || s.chosen == "h_final_mm" || s.chosen == "diag_reduction_est";
+    const bool isReduction = s.chosen == "reduction" || s.chosen == "h_final_mm" || s.chosen == "diag_reduction_est";
     const bool reductionLeads = isReduction && !model->correctsReduction();
     if (reductionLeads) {
         std::string e;
-        if (!slopeLoaded && !slope.load(feSweeps, &e)) std::cerr << "icacam loop: no physical correction: " << e << "\n";
-        else s.physical = true;
+        if (!slopeLoaded && !slope.load(feSweeps, &e))
+            std::cerr << "icacam loop: no physical correction: " << e << "\n";
+        else
+            s.physical = true;
     }
     if (s.physical) {
         std::vector<double> after(usable.size()), delta(usable.size());
@@ -349,7 +388,10 @@ LoopSummary runLoopOn(const Manifest &manifest, const std::string &source, const
         auto fitScale = [&](int k) {
             double sdd = 0, sdr = 0;
             for (size_t i = 0; i < res.size(); ++i)
-                if (k < 0 || fold[i] != k) { sdd += delta[i] * delta[i]; sdr += delta[i] * res[i]; }
+                if (k < 0 || fold[i] != k) {
+                    sdd += delta[i] * delta[i];
+                    sdr += delta[i] * res[i];
+                }
             return sdd > 0 ? sdr / sdd : 0.0;
         };
         s.slopeScale = fitScale(-1);
@@ -368,8 +410,10 @@ LoopSummary runLoopOn(const Manifest &manifest, const std::string &source, const
     for (const Candidate &c : cands)
         if (c.name == s.chosen) lead = &c;
     if (lead) s.cvRmsPatch = s.ranking.front().cvRmsPatch;
-    if (s.physical) s.reading = "fe_slope";
-    else if (lead && (isReduction || lead->symptom)) s.reading = "patch";
+    if (s.physical)
+        s.reading = "fe_slope";
+    else if (lead && (isReduction || lead->symptom))
+        s.reading = "patch";
     else if (lead && lead->kind == "categorical") {
         const GroupReading reading = readingOf(usable, *lead);
         s.grouping = fitGrouping(*model, usable, *lead, reading, fold, folds);
@@ -389,7 +433,10 @@ LoopSummary runLoopOn(const Manifest &manifest, const std::string &source, const
         for (const RankedCandidate &r : s.ranking)
             f << ++k << "," << r.name << "," << r.kind << "," << r.form << "," << f4(r.cvRmsBefore, "%.5f") << ","
               << f4(r.cvRmsAfter, "%.5f") << "," << f4(r.gain, "%.5f") << "," << f4(r.z, "%.2f") << ","
-              << f4(r.correlation, "%.3f") << "," << (r.name == s.chosen ? "yes" : r.significant ? "significant" : "no")
+              << f4(r.correlation, "%.3f") << ","
+              << (r.name == s.chosen ? "yes"
+                  : r.significant    ? "significant"
+                                     : "no")
               << "," << (r.symptom ? "yes" : "no") << "\n";
     }
     // records.csv (corrected: the physical form fitted on every record)
@@ -421,11 +468,17 @@ LoopSummary runLoopOn(const Manifest &manifest, const std::string &source, const
         before.label = modelName + " (before), RMS " + f4(s.rmsBefore);
         before.colour = 0xb0b0b0;
         after.colour = 0xd62728;
-        for (size_t i = 0; i < usable.size(); ++i) { before.x.push_back(usable[i].muRef); before.y.push_back(usable[i].muModel); }
+        for (size_t i = 0; i < usable.size(); ++i) {
+            before.x.push_back(usable[i].muRef);
+            before.y.push_back(usable[i].muModel);
+        }
         std::vector<Series> ser{before};
         if (s.physical) {
             after.label = "reduction-corrected (after), RMS " + f4(s.rmsPhysical);
-            for (size_t i = 0; i < usable.size(); ++i) { after.x.push_back(usable[i].muRef); after.y.push_back(muPhys[i]); }
+            for (size_t i = 0; i < usable.size(); ++i) {
+                after.x.push_back(usable[i].muRef);
+                after.y.push_back(muPhys[i]);
+            }
             ser.push_back(after);
         } else if (!s.grouping.cvErrors.empty()) {
             after.label = "with " + s.chosen + " as " + (s.reading == "n" ? "n per material" : "a scale per group") +
@@ -439,11 +492,10 @@ LoopSummary runLoopOn(const Manifest &manifest, const std::string &source, const
             after.label = "with " + s.chosen + " (after, CV), RMS " + f4(s.cvRmsAfter);
             for (const Candidate &c : cands)
                 if (c.name == s.chosen) {
-                    const std::vector<double> p =
-                        cvPredict(c, res, fold, folds,
-                                  s.ranking.front().form == "scale" ? &sens
-                                  : s.ranking.front().form == "u"   ? &uSens
-                                                                    : nullptr);
+                    const std::vector<double> p = cvPredict(c, res, fold, folds,
+                                                            s.ranking.front().form == "scale" ? &sens
+                                                            : s.ranking.front().form == "u"   ? &uSens
+                                                                                              : nullptr);
                     for (size_t i = 0; i < usable.size(); ++i) {
                         after.x.push_back(usable[i].muRef);
                         after.y.push_back(usable[i].muModel - p[i]);
@@ -459,16 +511,15 @@ LoopSummary runLoopOn(const Manifest &manifest, const std::string &source, const
     {
         std::ofstream f(fs::path(reportDir) / "report.md");
         f << "# icacam loop report\n\n";
-        f << source << ", model `" << modelName << "`, " << folds << "-fold CV, seed "
-          << opt.seed << ". Records: " << s.records << ", usable " << s.usable << ".\n\n";
+        f << source << ", model `" << modelName << "`, " << folds << "-fold CV, seed " << opt.seed
+          << ". Records: " << s.records << ", usable " << s.usable << ".\n\n";
         for (const std::string &k : skipped) f << "- skipped " << k << "\n";
         f << "\n## Error in μ (μ_model − μ_ref)\n\n| | RMS |\n|---|---|\n";
         f << "| before (model as is) | " << f4(s.rmsBefore) << " |\n";
         f << "| constant offset only (k-fold) | " << f4(s.cvRmsOffset) << " |\n";
         if (!s.ranking.empty())
-            f << "| regression patch: the best linear model of the residual in " << s.ranking.front().name
-              << " (form `" << s.ranking.front().patchForm << "`, k-fold) | " << f4(s.ranking.front().cvRmsPatch)
-              << " |\n";
+            f << "| regression patch: the best linear model of the residual in " << s.ranking.front().name << " (form `"
+              << s.ranking.front().patchForm << "`, k-fold) | " << f4(s.ranking.front().cvRmsPatch) << " |\n";
         if (s.physical) {
             f << "| **after: u carried to 50 % with FE du/dr, μ = model(u50, n)** (no parameter fitted here) | **"
               << f4(s.rmsPhysical) << "** |\n";
@@ -487,12 +538,16 @@ LoopSummary runLoopOn(const Manifest &manifest, const std::string &source, const
               << s.ranking.size() << " candidates, α = " << opt.alpha << ", and ≥ " << opt.minRelativeGain * 100
               << " % of the CV RMS). The model is left as it is.\n";
         } else if (s.physical) {
-            f << "`" << s.chosen << "`: the " << (s.chosen == "diag_reduction_est" ? "silhouette (R_max against the FE) says" : "recorded final height says")
+            f << "`" << s.chosen << "`: the "
+              << (s.chosen == "diag_reduction_est" ? "silhouette (R_max against the FE) says"
+                                                   : "recorded final height says")
               << " the specimens were not upset to the model's "
                  "50 % height reduction. The ICA width u grows with the reduction (the contact edge keeps moving "
                  "out while the folded side becomes contact), so the model, which maps u to μ at 50 %, reads a "
                  "deeper upset as more friction. Correction: u50 = u − (du/dr)(r − 0.5), du/dr from the FE sweep "
-                 "(`" << joined(feSweeps) << "`, " << slope.cases() << " cases, quadratic in n and μ), then μ = model(u50, n). "
+                 "(`"
+              << joined(feSweeps) << "`, " << slope.cases()
+              << " cases, quadratic in n and μ), then μ = model(u50, n). "
                  "Check of the FE slope: the least-squares scale of the FE du/dr on these records is "
               << f4(s.slopeScale, "%.3f")
               << (std::fabs(s.slopeScale - 1) <= 0.15
@@ -501,7 +556,8 @@ LoopSummary runLoopOn(const Manifest &manifest, const std::string &source, const
                         "part (the contact edge's resolution, docs/fe.md): better-converged FE runs past 50 %, "
                         "not a factor fitted to these records, are the next step.\n");
         } else if (isReduction && model->correctsReduction()) {
-            f << "`" << s.chosen << "`: the model `" << model->name() << "` already carries u to 50 % with the FE "
+            f << "`" << s.chosen << "`: the model `" << model->name()
+              << "` already carries u to 50 % with the FE "
                  "du/dr (vision/model/reduction_table.h). A reduction effect left in its residual means the FE slope "
                  "is off: the residual grows with the reduction when the FE du/dr is too small (run with "
                  "`--model paper` for the least-squares scale of the FE slope). Reported here as its "
@@ -515,9 +571,9 @@ LoopSummary runLoopOn(const Manifest &manifest, const std::string &source, const
         for (size_t k = 0; k < s.ranking.size() && k < 15; ++k) {
             const RankedCandidate &r = s.ranking[k];
             f << "| " << k + 1 << " | " << r.name << (r.significant ? " *" : "") << " | " << r.kind
-              << (r.symptom ? " (symptom)" : "") << " | " << r.form << " | "
-              << f4(r.cvRmsBefore) << " | " << f4(r.cvRmsAfter) << " | " << f4(r.gain, "%.5f") << " | "
-              << f4(r.z, "%.1f") << " | " << f4(r.correlation, "%.2f") << " |\n";
+              << (r.symptom ? " (symptom)" : "") << " | " << r.form << " | " << f4(r.cvRmsBefore) << " | "
+              << f4(r.cvRmsAfter) << " | " << f4(r.gain, "%.5f") << " | " << f4(r.z, "%.1f") << " | "
+              << f4(r.correlation, "%.2f") << " |\n";
         }
         f << "\n(* significant; a symptom is a measured quantity, the rest are recorded conditions)\n\n## Plots\n\n";
         for (const std::string &p : plots) f << "![" << p << "](" << p << ")\n\n";
@@ -545,28 +601,40 @@ int loopCommand(const std::vector<std::string> &args)
 {
     if (!args.empty() && args[0] == "table")
         throw cli::UsageError(std::string("the generated tables (the reduction carry's du/dr among them) are made "
-                                          "by `icacam fe tables`, as: ") + vision::reduction_table::kProvenance,
+                                          "by `icacam fe tables`, as: ") +
+                                  vision::reduction_table::kProvenance,
                               usage());
     std::string manifestPath, journalDir, referenceCsv, reportDir, modelName = vision::kDefaultModel;
     std::vector<std::string> feSweeps;
     loop::RankingOptions opt;
     cli::OptionReader opts(args, usage());
     while (opts.next()) {
-        if (opts.isHelp()) { std::cout << usage(); return 0; }
-        else if (opts.is("--manifest")) manifestPath = opts.value();
-        else if (opts.is("--journal")) journalDir = opts.value();
-        else if (opts.is("--reference")) referenceCsv = opts.value();
-        else if (opts.is("--report")) reportDir = opts.value();
+        if (opts.isHelp()) {
+            std::cout << usage();
+            return 0;
+        } else if (opts.is("--manifest"))
+            manifestPath = opts.value();
+        else if (opts.is("--journal"))
+            journalDir = opts.value();
+        else if (opts.is("--reference"))
+            referenceCsv = opts.value();
+        else if (opts.is("--report"))
+            reportDir = opts.value();
         else if (opts.is("--model")) {
             modelName = opts.value();
-            if (!frictionModel(modelName)) opts.fail("unknown model '" + modelName + "' (known: " + cli::modelNames() + ")");
-        } else if (opts.is("--fe-sweep")) feSweeps.push_back(opts.value());
-        else if (opts.is("--folds")) opt.folds = int(opts.wholeNumber(2, 1000));
-        else if (opts.is("--seed")) opt.seed = uint32_t(opts.wholeNumber(0, 4294967295L));
+            if (!frictionModel(modelName))
+                opts.fail("unknown model '" + modelName + "' (known: " + cli::modelNames() + ")");
+        } else if (opts.is("--fe-sweep"))
+            feSweeps.push_back(opts.value());
+        else if (opts.is("--folds"))
+            opt.folds = int(opts.wholeNumber(2, 1000));
+        else if (opts.is("--seed"))
+            opt.seed = uint32_t(opts.wholeNumber(0, 4294967295L));
         else if (opts.is("--alpha")) {
             opt.alpha = opts.number();
             if (!(opt.alpha > 0 && opt.alpha < 1)) opts.fail("a probability between 0 and 1 (exclusive)");
-        } else opts.unknown();
+        } else
+            opts.unknown();
     }
     if (manifestPath.empty() == journalDir.empty() || reportDir.empty())
         opts.missing("--report and one of --manifest or --journal");
@@ -576,9 +644,9 @@ int loopCommand(const std::vector<std::string> &args)
     if (feSweeps.empty())
         for (const std::string &name : loop::splitSources(vision::reduction_table::kFeSources))
             feSweeps.push_back(repoFile(name));
-    const loop::LoopSummary s = journalDir.empty()
-                                    ? loop::runLoop(manifestPath, reportDir, modelName, opt, feSweeps)
-                                    : loop::runJournalLoop(journalDir, referenceCsv, reportDir, modelName, opt, feSweeps);
+    const loop::LoopSummary s =
+        journalDir.empty() ? loop::runLoop(manifestPath, reportDir, modelName, opt, feSweeps)
+                           : loop::runJournalLoop(journalDir, referenceCsv, reportDir, modelName, opt, feSweeps);
     std::cout << "records " << s.records << " usable " << s.usable << "\n"
               << "rms_before " << f4(s.rmsBefore) << "\ncv_rms_offset " << f4(s.cvRmsOffset) << "\n"
               << "top " << (s.ranking.empty() ? "-" : s.ranking.front().name) << "\n"

@@ -2,9 +2,9 @@
 #include <string>
 #include <vector>
 
-#include "journal_records.h"
-#include "loop_analysis.h"
-#include "loop_physics.h"
+#include "host_tools/loop/journal_records.h"
+#include "host_tools/loop/loop_analysis.h"
+#include "host_tools/loop/loop_physics.h"
 
 namespace icacam::host {
 // `icacam loop --manifest FILE --report DIR [--model paper] [--folds 5] [--seed S] [--fe-sweep CSV]`
@@ -16,13 +16,13 @@ namespace icacam::host::loop {
 struct LoopSummary {
     int records = 0, usable = 0;
     std::vector<RankedCandidate> ranking;
-    std::string chosen;          // empty: nothing significant, the model is left as it is
-    double rmsBefore = 0;        // RMS of μ_model − μ_ref (no correction)
-    double cvRmsOffset = 0;      // k-fold, constant offset only
-    double cvRmsAfter = 0;       // k-fold, after the chosen effect (= rmsBefore if none)
-    bool physical = false;       // the chosen effect was corrected through FE du/dr
-    double rmsPhysical = 0;      // RMS after the physical reduction correction (no fitted parameter)
-    double slopeScale = 0;       // least-squares scale of the FE du/dr on all records (1: FE as is)
+    std::string chosen;             // empty: nothing significant, the model is left as it is
+    double rmsBefore = 0;           // RMS of μ_model − μ_ref (no correction)
+    double cvRmsOffset = 0;         // k-fold, constant offset only
+    double cvRmsAfter = 0;          // k-fold, after the chosen effect (= rmsBefore if none)
+    bool physical = false;          // the chosen effect was corrected through FE du/dr
+    double rmsPhysical = 0;         // RMS after the physical reduction correction (no fitted parameter)
+    double slopeScale = 0;          // least-squares scale of the FE du/dr on all records (1: FE as is)
     double cvRmsPhysicalScaled = 0; // k-fold with that scale fitted per fold
     // The chosen effect in its physical form (docs/loop.md): "fe_slope" (the reduction through
     // the FE du/dr), "scale" (a length factor per group of images: a recalibration), "n" (an n
@@ -49,8 +49,9 @@ LoopSummary runJournalLoop(const std::string &journalDir, const std::string &ref
 
 // On records already read; source: the report's first words about where they come from;
 // skippedBefore: records left out before measuring, with why.
-LoopSummary runLoopOn(const Manifest &manifest, const std::string &source, const std::vector<std::string> &skippedBefore,
-                      const std::string &reportDir, const std::string &modelName, const RankingOptions &opt,
+LoopSummary runLoopOn(const Manifest &manifest, const std::string &source,
+                      const std::vector<std::string> &skippedBefore, const std::string &reportDir,
+                      const std::string &modelName, const RankingOptions &opt,
                       const std::vector<std::string> &feSweeps);
 
 // The space-separated repository paths of a table's kFeSources.

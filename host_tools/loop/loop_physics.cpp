@@ -1,4 +1,4 @@
-#include "loop_physics.h"
+#include "host_tools/loop/loop_physics.h"
 
 #include <algorithm>
 #include <cctype>
@@ -23,12 +23,17 @@ constexpr double kShiftMax = 0.3;
 double muWith(const vision::FrictionModel &model, const LoopRecord &r, GroupReading reading, double p)
 {
     vision::ModelInputs in = inputsOf(r);
-    if (reading == GroupReading::Scale) in.uMm = r.uMm / p;
-    else in.n = std::clamp(r.n + p, kNMin, kNMax);
+    if (reading == GroupReading::Scale)
+        in.uMm = r.uMm / p;
+    else
+        in.n = std::clamp(r.n + p, kNMin, kNMax);
     return model.estimate(in).mu;
 }
 
-double neutral(GroupReading reading) { return reading == GroupReading::Scale ? 1.0 : 0.0; }
+double neutral(GroupReading reading)
+{
+    return reading == GroupReading::Scale ? 1.0 : 0.0;
+}
 
 double declaredN(const std::vector<LoopRecord> &usable, const std::vector<size_t> &members)
 {
@@ -40,8 +45,7 @@ double declaredN(const std::vector<LoopRecord> &usable, const std::vector<size_t
 // Least squares of μ(p) − μ_ref over the members (Gauss–Newton, numerical derivative).
 // Returns p, and Σ J² and the sum of squares at p for the uncertainty.
 double fitParameter(const vision::FrictionModel &model, const std::vector<LoopRecord> &usable,
-                    const std::vector<size_t> &members, GroupReading reading, double start, double *sumJ2,
-                    double *sse)
+                    const std::vector<size_t> &members, GroupReading reading, double start, double *sumJ2, double *sse)
 {
     const double lo = reading == GroupReading::Scale ? kScaleMin : -kShiftMax;
     const double hi = reading == GroupReading::Scale ? kScaleMax : kShiftMax;
@@ -76,8 +80,8 @@ double fitParameter(const vision::FrictionModel &model, const std::vector<LoopRe
 
 // Fits every level on the records where `train` holds.
 std::map<std::string, GroupFit> fitLevels(const vision::FrictionModel &model, const std::vector<LoopRecord> &usable,
-                                          const Candidate &g, GroupReading reading,
-                                          const std::vector<bool> &train, double *scatter, bool jackknife = false)
+                                          const Candidate &g, GroupReading reading, const std::vector<bool> &train,
+                                          double *scatter, bool jackknife = false)
 {
     std::map<std::string, std::vector<size_t>> members;
     for (size_t i = 0; i < usable.size(); ++i)
@@ -149,7 +153,8 @@ void silhouetteCheck(const std::vector<LoopRecord> &usable, const Candidate &g, 
         const auto it = r.diagnostics.find("diag_rmax_over_r0");
         double fe = 0;
         if (it == r.diagnostics.end() ||
-            !vision::feRadiusAt(vision::FeRadius::Max, r.n, r.muRef, r.reduction >= 0 ? r.reduction : 0.5, &fe) || !(fe > 0))
+            !vision::feRadiusAt(vision::FeRadius::Max, r.n, r.muRef, r.reduction >= 0 ? r.reduction : 0.5, &fe) ||
+            !(fe > 0))
             continue;
         ratios[g.levels[i]].push_back(it->second * 5.0 / fe); // R_max/R0 · 5 mm against the D0 = 10 FE
     }
@@ -180,7 +185,10 @@ void silhouetteCheck(const std::vector<LoopRecord> &usable, const Candidate &g, 
 
 } // namespace
 
-const char *formName(GroupReading reading) { return reading == GroupReading::Scale ? "factor" : "n"; }
+const char *formName(GroupReading reading)
+{
+    return reading == GroupReading::Scale ? "factor" : "n";
+}
 
 FittedForm groupingForm(const vision::FrictionModel &model, const std::vector<LoopRecord> &usable,
                         const Candidate &grouping, const std::vector<int> &fold, int folds)
@@ -236,8 +244,8 @@ GroupReading readingOf(const std::vector<LoopRecord> &usable, const Candidate &g
     return all.size() >= 2 ? GroupReading::N : GroupReading::Scale;
 }
 
-PhysicalFit fitGrouping(const vision::FrictionModel &model, const std::vector<LoopRecord> &usable,
-                        const Candidate &g, GroupReading reading, const std::vector<int> &fold, int folds)
+PhysicalFit fitGrouping(const vision::FrictionModel &model, const std::vector<LoopRecord> &usable, const Candidate &g,
+                        GroupReading reading, const std::vector<int> &fold, int folds)
 {
     PhysicalFit out;
     out.reading = reading;
@@ -278,7 +286,12 @@ LinearEffect fitLinearEffect(const Candidate &c, const std::vector<double> &y, c
     int nx = 0;
     e.xMin = INFINITY, e.xMax = -INFINITY;
     for (double x : c.x)
-        if (std::isfinite(x)) { xm += x; ++nx; e.xMin = std::min(e.xMin, x); e.xMax = std::max(e.xMax, x); }
+        if (std::isfinite(x)) {
+            xm += x;
+            ++nx;
+            e.xMin = std::min(e.xMin, x);
+            e.xMax = std::max(e.xMax, x);
+        }
     if (nx < 3) return e;
     xm /= nx;
     double s00 = 0, s01 = 0, s11 = 0, t0 = 0, t1 = 0;

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "loop_analysis.h"
+#include "host_tools/loop/loop_analysis.h"
 
 namespace icacam::host::loop {
 
@@ -58,11 +58,11 @@ FittedForm groupingForm(const vision::FrictionModel &model, const std::vector<Lo
 // A numeric recorded condition in its best linear form: residual = sens·(a + b·x), b with its
 // standard uncertainty, on every usable record.
 struct LinearEffect {
-    std::string form;   // "mu", "scale" or "u" (as in RankedCandidate)
-    double slope = 0;   // b: μ, relative u or mm of u per unit of x
-    double sigma = 0;   // standard uncertainty of b
+    std::string form; // "mu", "scale" or "u" (as in RankedCandidate)
+    double slope = 0; // b: μ, relative u or mm of u per unit of x
+    double sigma = 0; // standard uncertainty of b
     double xMin = 0, xMax = 0;
-    double muSpan = 0;  // the μ the effect moves across the recorded range, at the median sensitivity
+    double muSpan = 0; // the μ the effect moves across the recorded range, at the median sensitivity
 };
 LinearEffect fitLinearEffect(const Candidate &c, const std::vector<double> &residual, const std::string &form,
                              const std::vector<double> &scaleSens, const std::vector<double> &uSens);

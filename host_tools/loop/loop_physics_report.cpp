@@ -1,4 +1,4 @@
-#include "loop_physics_report.h"
+#include "host_tools/loop/loop_physics_report.h"
 
 #include <cmath>
 #include <cstdio>
@@ -44,8 +44,10 @@ std::string nextStudy(const std::string &name)
         return "temperature-dependent flow curves (*PLASTIC tables per temperature in CalculiX) and, if the "
                "lubricant is the suspect, μ measured at those temperatures: FE runs at the recorded temperatures "
                "giving du/dT(n, μ)";
-    return "an FE study that varies `" + name + "` over its recorded range (its physics is not in the sweep), "
-           "giving du/d(" + name + ")";
+    return "an FE study that varies `" + name +
+           "` over its recorded range (its physics is not in the sweep), "
+           "giving du/d(" +
+           name + ")";
 }
 
 } // namespace
@@ -58,7 +60,9 @@ void writePhysicalCsv(const std::string &path, const LoopSummary &s)
         for (const GroupFit &g : s.grouping.groups)
             f << s.chosen << "," << s.reading << "," << g.level << "," << g.records << "," << fmt(g.declared) << ","
               << fmt(g.value, "%.5f") << "," << fmt(g.sigma, "%.5f") << "," << fmt(kCoverage * g.sigma, "%.5f") << ","
-              << (!g.fitted ? "too_few_records" : differs(g) ? (s.reading == "scale" ? "recalibrate" : "revise_n") : "consistent")
+              << (!g.fitted    ? "too_few_records"
+                  : differs(g) ? (s.reading == "scale" ? "recalibrate" : "revise_n")
+                               : "consistent")
               << "," << (g.silhouette > 0 ? fmt(g.silhouette, "%.5f") : "") << ","
               << (g.silhouette > 0 ? fmt(g.silhouetteSigma, "%.5f") : "") << "\n";
     else if (s.reading == "process")
@@ -76,11 +80,11 @@ void writePhysicalSection(std::ostream &f, const LoopSummary &s)
     f << "| held-out error in μ (k-fold) | RMS |\n|---|---|\n";
     f << "| before (model as is) | " << fmt(s.rmsBefore) << " |\n";
     f << "| constant offset only | " << fmt(s.cvRmsOffset) << " |\n";
-    f << "| patch: the best linear regression of the residual (form `" << lead.patchForm << "`) | "
-      << fmt(s.cvRmsPatch) << " |\n";
+    f << "| patch: the best linear regression of the residual (form `" << lead.patchForm << "`) | " << fmt(s.cvRmsPatch)
+      << " |\n";
     if (s.reading == "scale" || s.reading == "n")
-        f << "| **physical: " << (s.reading == "scale" ? "a length factor per group" : "an n per material")
-          << "** | **" << fmt(s.cvRmsAfter) << "** |\n";
+        f << "| **physical: " << (s.reading == "scale" ? "a length factor per group" : "an n per material") << "** | **"
+          << fmt(s.cvRmsAfter) << "** |\n";
     f << "\n";
     if (s.reading == "scale") {
         f << "Read as a length scale per group of images (`" << s.chosen
@@ -89,19 +93,24 @@ void writePhysicalSection(std::ostream &f, const LoopSummary &s)
              "scatter's (after the fit, "
           << fmt(s.grouping.scatter) << " in μ) and the jackknife's over the group's records; U = " << kCoverage
           << " σ (≈ 95 %).\n\n";
-        f << "| " << s.chosen << " | records | factor s (measured/true) | σ | U (k = 2) | fix mm_per_px by × | verdict | "
+        f << "| " << s.chosen
+          << " | records | factor s (measured/true) | σ | U (k = 2) | fix mm_per_px by × | verdict | "
              "silhouette check: R_max against the consistent groups' (± 2σ) |\n"
              "|---|---|---|---|---|---|---|---|\n";
         for (const GroupFit &g : s.grouping.groups)
             f << "| " << g.level << " | " << g.records << " | " << fmt(g.value) << " | " << fmt(g.sigma) << " | "
               << fmt(kCoverage * g.sigma) << " | " << fmt(1 / g.value) << " | "
-              << (!g.fitted ? "too few records" : differs(g) ? "**recalibrate**" : "consistent with 1")
+              << (!g.fitted    ? "too few records"
+                  : differs(g) ? "**recalibrate**"
+                               : "consistent with 1")
               << (g.silhouette > 0 && g.fitted && differs(g)
-                      ? (std::fabs(g.silhouette - 1) > kCoverage * g.silhouetteSigma && (g.silhouette - 1) * (g.value - 1) > 0
+                      ? (std::fabs(g.silhouette - 1) > kCoverage * g.silhouetteSigma &&
+                                 (g.silhouette - 1) * (g.value - 1) > 0
                              ? " (the silhouette agrees)"
                              : " (the silhouette does not: check before recalibrating)")
                       : "")
-              << " | " << (g.silhouette > 0 ? fmt(g.silhouette) + " ± " + fmt(kCoverage * g.silhouetteSigma) : std::string("—"))
+              << " | "
+              << (g.silhouette > 0 ? fmt(g.silhouette) + " ± " + fmt(kCoverage * g.silhouetteSigma) : std::string("—"))
               << " |\n";
         f << "\nRecommended: for every group marked *recalibrate*, recalibrate that camera (`icacam calibrate`, its "
              "calibration file) or multiply its `mm_per_px` by 1/s; its lengths read s × true. Groups consistent "
@@ -116,11 +125,15 @@ void writePhysicalSection(std::ostream &f, const LoopSummary &s)
              "scatter's (after the fit, "
           << fmt(s.grouping.scatter) << " in μ) and the jackknife's over the material's records; U = " << kCoverage
           << " σ (≈ 95 %).\n\n";
-        f << "| " << s.chosen << " | records | declared n | fitted n | σ | U (k = 2) | verdict |\n|---|---|---|---|---|---|---|\n";
+        f << "| " << s.chosen
+          << " | records | declared n | fitted n | σ | U (k = 2) | verdict |\n|---|---|---|---|---|---|---|\n";
         for (const GroupFit &g : s.grouping.groups)
             f << "| " << g.level << " | " << g.records << " | " << fmt(g.declared) << " | " << fmt(g.value) << " | "
               << fmt(g.sigma) << " | " << fmt(kCoverage * g.sigma) << " | "
-              << (!g.fitted ? "too few records" : differs(g) ? "**declared n is off**" : "consistent") << " |\n";
+              << (!g.fitted    ? "too few records"
+                  : differs(g) ? "**declared n is off**"
+                               : "consistent")
+              << " |\n";
         f << "\nRecommended: for a material marked *declared n is off*, refit its flow curve σ = K·ε^n over the "
              "strains the upset reaches (a flow curve read at the wrong strain range gives another n) and declare "
              "the new n; the fitted n above is what its records say.\n";
@@ -135,7 +148,8 @@ void writePhysicalSection(std::ostream &f, const LoopSummary &s)
           << s.chosen << "`"
           << (e.form == "scale" ? " (u changes by " + fmt(100 * e.slope, "%.2f") + " % per unit)" : std::string())
           << "; over the recorded range " << fmt(e.xMin, "%.3g") << "–" << fmt(e.xMax, "%.3g")
-          << " it moves μ by about " << fmt(e.muSpan) << ". It is applied here as that regression (the patch); "
+          << " it moves μ by about " << fmt(e.muSpan)
+          << ". It is applied here as that regression (the patch); "
              "there is no physical form to add yet.\n\n";
         f << "Next step: " << nextStudy(s.chosen) << ".\n";
     } else if (s.reading == "patch") {

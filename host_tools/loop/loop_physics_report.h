@@ -4,7 +4,7 @@
 #include <ostream>
 #include <string>
 
-#include "loop_command.h"
+#include "host_tools/loop/loop_command.h"
 
 namespace icacam::host::loop {
 

@@ -1,4 +1,4 @@
-#include "loop_plot.h"
+#include "host_tools/loop/loop_plot.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,10 @@
 namespace icacam::host::loop {
 
 namespace {
-cv::Scalar bgr(unsigned rgb) { return {double(rgb & 0xff), double((rgb >> 8) & 0xff), double((rgb >> 16) & 0xff)}; }
+cv::Scalar bgr(unsigned rgb)
+{
+    return {double(rgb & 0xff), double((rgb >> 8) & 0xff), double((rgb >> 16) & 0xff)};
+}
 std::string fmt(double v)
 {
     char b[32];
@@ -29,16 +32,38 @@ bool scatterPlot(const std::string &path, const std::string &title, const std::s
     for (const Series &s : series)
         for (size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) {
             if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i])) continue;
-            x0 = std::min(x0, s.x[i]); x1 = std::max(x1, s.x[i]);
-            y0 = std::min(y0, s.y[i]); y1 = std::max(y1, s.y[i]);
+            x0 = std::min(x0, s.x[i]);
+            x1 = std::max(x1, s.x[i]);
+            y0 = std::min(y0, s.y[i]);
+            y1 = std::max(y1, s.y[i]);
         }
-    if (x0 > x1) { x0 = 0; x1 = 1; y0 = 0; y1 = 1; }
-    if (identity) { x0 = y0 = std::min(x0, y0); x1 = y1 = std::max(x1, y1); }
-    if (!xTicks.empty()) { x0 = -0.5; x1 = double(xTicks.size()) - 0.5; }
-    if (x1 - x0 < 1e-12) { x0 -= 0.5; x1 += 0.5; }
-    if (y1 - y0 < 1e-12) { y0 -= 0.5; y1 += 0.5; }
+    if (x0 > x1) {
+        x0 = 0;
+        x1 = 1;
+        y0 = 0;
+        y1 = 1;
+    }
+    if (identity) {
+        x0 = y0 = std::min(x0, y0);
+        x1 = y1 = std::max(x1, y1);
+    }
+    if (!xTicks.empty()) {
+        x0 = -0.5;
+        x1 = double(xTicks.size()) - 0.5;
+    }
+    if (x1 - x0 < 1e-12) {
+        x0 -= 0.5;
+        x1 += 0.5;
+    }
+    if (y1 - y0 < 1e-12) {
+        y0 -= 0.5;
+        y1 += 0.5;
+    }
     const double px = 0.05 * (x1 - x0) * (xTicks.empty() ? 1 : 0), py = 0.05 * (y1 - y0);
-    x0 -= px; x1 += px; y0 -= py; y1 += py;
+    x0 -= px;
+    x1 += px;
+    y0 -= py;
+    y1 += py;
     auto X = [&](double x) { return int(std::lround(L + (x - x0) / (x1 - x0) * (W - L - R))); };
     auto Y = [&](double y) { return int(std::lround(H - B - (y - y0) / (y1 - y0) * (H - T - B))); };
     const cv::Scalar black(0, 0, 0), grey(210, 210, 210);

@@ -1,10 +1,10 @@
 // The reduction carry's generated table behind vision/model/reduction_corrected_model.h
 // (docs/loop.md, "In the product").
-#include "reduction_table.h"
+#include "host_tools/loop/reduction_table.h"
 
 #include <stdexcept>
 
-#include "loop_analysis.h"
+#include "host_tools/loop/loop_analysis.h"
 #include "host_tools/number_text.h"
 
 namespace icacam::host::loop {
@@ -34,13 +34,13 @@ std::string reductionTableText(const fe::TableSources &src, const std::string &s
     o += "inline constexpr double kSlope[6] = {";
     for (size_t i = 0; i < 6; ++i) o += (i ? ", " : "") + numberText("%.9g", slope.coefficients()[i]);
     o += "};\n";
-    o += "inline constexpr double kSlopeNMin = " + numberText("%.6g", slope.nMin()) + ", kSlopeNMax = " +
-         numberText("%.6g", slope.nMax()) + ";\n";
-    o += "inline constexpr double kSlopeMuMin = " + numberText("%.6g", slope.muMin()) + ", kSlopeMuMax = " +
-         numberText("%.6g", slope.muMax()) + ";\n";
+    o += "inline constexpr double kSlopeNMin = " + numberText("%.6g", slope.nMin()) +
+         ", kSlopeNMax = " + numberText("%.6g", slope.nMax()) + ";\n";
+    o += "inline constexpr double kSlopeMuMin = " + numberText("%.6g", slope.muMin()) +
+         ", kSlopeMuMax = " + numberText("%.6g", slope.muMax()) + ";\n";
     o += "inline constexpr double kMaxCurvatureMm = " + numberText("%.6g", slope.maxCurvature()) + ";\n";
-    o += "inline constexpr double kReductionMin = " + numberText("%.6g", slope.reductionMin()) + ", kReductionMax = " +
-         numberText("%.6g", slope.reductionMax()) + ";\n";
+    o += "inline constexpr double kReductionMin = " + numberText("%.6g", slope.reductionMin()) +
+         ", kReductionMax = " + numberText("%.6g", slope.reductionMax()) + ";\n";
     o += "} // namespace icacam::vision::reduction_table\n";
     return o;
 }

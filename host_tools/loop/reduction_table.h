@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "fe/fe_table_sources.h"
+#include "host_tools/fe/fe_table_sources.h"
 
 namespace icacam::host::loop {
 

@@ -6,12 +6,15 @@
 
 #include <opencv2/core.hpp>
 
-#include "image_file.h"
-#include "opencv_baseline.h"
+#include "host_tools/image_file.h"
+#include "tests/bench/opencv_baseline.h"
 
 int main(int argc, char **argv)
 {
-    if (argc < 2) { std::fprintf(stderr, "usage: cv_baseline IMAGE [--repeat N]\n"); return 2; }
+    if (argc < 2) {
+        std::fprintf(stderr, "usage: cv_baseline IMAGE [--repeat N]\n");
+        return 2;
+    }
     int repeat = 1;
     if (argc >= 4 && std::string(argv[2]) == "--repeat") repeat = std::max(1, std::atoi(argv[3]));
     cv::setNumThreads(1);

@@ -1,4 +1,4 @@
-#include "opencv_baseline.h"
+#include "tests/bench/opencv_baseline.h"
 
 #include <cmath>
 #include <vector>

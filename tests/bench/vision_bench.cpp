@@ -4,8 +4,8 @@
 
 #include <opencv2/core.hpp>
 
-#include "end_face_renderer.h"
-#include "opencv_baseline.h"
+#include "host_tools/end_face_renderer.h"
+#include "tests/bench/opencv_baseline.h"
 #include "vision/end_face_analyzer.h"
 #include "vision/model/paper_model.h"
 

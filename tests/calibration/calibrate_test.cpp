@@ -12,9 +12,9 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "calibrate_command.h"
 #include "calibration/calibration_file.h"
-#include "calibration_renderer.h"
+#include "host_tools/calibrate_command.h"
+#include "host_tools/calibration_renderer.h"
 #include "vision/plane_calibration.h"
 
 using namespace icacam;
@@ -40,8 +40,8 @@ std::pair<cv::Vec3d, cv::Vec3d> flatPose(const host::CameraModel &cam, const hos
 }
 
 // Renders `count` views (blurred by blurPx) and the flat view into a folder.
-fs::path renderSet(const std::string &name, const host::BoardPhotoRenderer &r, const host::ChessboardSpec &b,
-                   int count, double blurPx)
+fs::path renderSet(const std::string &name, const host::BoardPhotoRenderer &r, const host::ChessboardSpec &b, int count,
+                   double blurPx)
 {
     const fs::path d = freshDir(name);
     const auto poses = host::calibrationPoses(r.camera(), b, count, 7);
@@ -67,11 +67,11 @@ fs::path renderCircleSet(const std::string &name, const host::BoardPhotoRenderer
     return d;
 }
 
-std::string runCalibrate(const fs::path &dir, const std::string &out,
-                         const std::string &board = "chessboard:9x7:1.4", const std::vector<std::string> &extra = {})
+std::string runCalibrate(const fs::path &dir, const std::string &out, const std::string &board = "chessboard:9x7:1.4",
+                         const std::vector<std::string> &extra = {})
 {
     std::vector<std::string> args{"--images", dir.string(), "--board", board, "--flat", (dir / "flat.png").string(),
-                                  "--out", out};
+                                  "--out",    out};
     args.insert(args.end(), extra.begin(), extra.end());
     try {
         host::calibrateCommand(args);
@@ -82,7 +82,10 @@ std::string runCalibrate(const fs::path &dir, const std::string &out,
 }
 
 // The angle between the fixture's normal and the camera's axis (degrees).
-double tiltDeg(const vision::PlaneCalibration &p) { return std::acos(std::min(1.0, std::fabs(p.r[8]))) * 180 / M_PI; }
+double tiltDeg(const vision::PlaneCalibration &p)
+{
+    return std::acos(std::min(1.0, std::fabs(p.r[8]))) * 180 / M_PI;
+}
 
 } // namespace
 
@@ -127,8 +130,8 @@ TEST(Calibrate, RecoversTheCameraAndTheFixturePlane)
                                               std::hypot((g.x - g0.x).toDouble(), (g.y - g0.y).toDouble())));
         }
     const double sTrue = vision::planeScaleAt(truth, 741, 531), sGot = vision::planeScaleAt(got, 741, 531);
-    std::printf("calibrate: worst distance error %.4f mm, scale %.6f vs %.6f mm/px (%.3f %%)\n", worst, sGot,
-                sTrue, 100 * (sGot / sTrue - 1));
+    std::printf("calibrate: worst distance error %.4f mm, scale %.6f vs %.6f mm/px (%.3f %%)\n", worst, sGot, sTrue,
+                100 * (sGot / sTrue - 1));
     EXPECT_LT(worst, 0.004);
     EXPECT_NEAR(sGot / sTrue, 1, 0.001);
     fs::remove_all(d);
@@ -223,7 +226,8 @@ TEST(Calibrate, AcceptsSoftViewsThatCalibrateWell)
     EXPECT_NEAR(tiltDeg(p), tiltDeg(truth), 0.1);
     // The old fixed limit, asked for explicitly, refuses all but the sharp flat view.
     testing::internal::CaptureStderr();
-    const std::string limited = runCalibrate(d, (d / "limited.cal").string(), "chessboard:9x7:1.4", {"--max-blur", "3"});
+    const std::string limited =
+        runCalibrate(d, (d / "limited.cal").string(), "chessboard:9x7:1.4", {"--max-blur", "3"});
     testing::internal::GetCapturedStderr();
     EXPECT_NE(limited.find("only 1 usable view"), std::string::npos) << limited;
     fs::remove_all(d);
@@ -326,6 +330,7 @@ TEST(CalibrationFile, RoundTripsAndNamesBadLines)
     EXPECT_NE(calibration::parseCalibrationText("format = icacam-calibration-1\nimage_size = 10\n", &x)
                   .find("image_size needs 2 numbers"),
               std::string::npos);
-    EXPECT_NE(calibration::readCalibrationFile((d / "missing.cal").string(), &x).find("cannot read"), std::string::npos);
+    EXPECT_NE(calibration::readCalibrationFile((d / "missing.cal").string(), &x).find("cannot read"),
+              std::string::npos);
     fs::remove_all(d);
 }

@@ -6,25 +6,25 @@
 // result with a large error must never be a silent ok.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <random>
 #include <string>
 #include <vector>
-#include <random>
 
 #include <opencv2/calib3d.hpp>
 #include <opencv2/imgcodecs.hpp>
 
-#include "calibrate_command.h"
 #include "calibration/calibration_file.h"
-#include "calibration_renderer.h"
-#include "manifest.h"
-#include "measure_command.h"
-#include "synth_command.h"
+#include "host_tools/calibrate_command.h"
+#include "host_tools/calibration_renderer.h"
+#include "host_tools/manifest.h"
+#include "host_tools/measure_command.h"
+#include "host_tools/synth_command.h"
 #include "vision/end_face_analyzer.h"
 #include "vision/model/paper_model.h"
 
@@ -113,8 +113,8 @@ TEST(CalibratedMeasure, MuThroughATiltedDistortingCamera)
         face.heightMm = hFinal;
         vision::SpecimenSpec ruler{n, 500, 10, 15, vision::planeScaleAt(fixture, cxPx, cyPx), hFinal};
         const vision::Measurement mr = analyzer.measure(v, ruler, model);
-        ASSERT_TRUE(mc.hasValue() && mr.hasValue()) << "case " << i << ": " << vision::errorName(mc.error)
-                                                    << " / " << vision::errorName(mr.error);
+        ASSERT_TRUE(mc.hasValue() && mr.hasValue())
+            << "case " << i << ": " << vision::errorName(mc.error) << " / " << vision::errorName(mr.error);
         vision::SpecimenSpec local = ruler;
         local.mmPerPx = vision::planeScaleAt(face, mc.centreX, mc.centreY);
         const vision::Measurement ml = analyzer.measure(v, local, model);
@@ -191,7 +191,8 @@ TEST(CalibratedMeasure, ManifestCalibrationColumn)
           << "missing,a.png,0.2,cal/none.cal,15,7.5\n"
           << "neither,a.png,0.2,,15,7.5\n";
     }
-    ASSERT_EQ(host::measureCommand({"--manifest", (d / "manifest.csv").string(), "--out", (d / "out.csv").string()}), 0);
+    ASSERT_EQ(host::measureCommand({"--manifest", (d / "manifest.csv").string(), "--out", (d / "out.csv").string()}),
+              0);
     std::ifstream in(d / "out.csv");
     std::string header, line;
     std::getline(in, header);

@@ -80,8 +80,8 @@ struct AimRig {
         cfg.mmPerPx = 0.0153924;
         cfg.cameraMaxWidth = 1456;
         cfg.cameraMaxHeight = 1088;
-        device = std::make_unique<fw::Device>(fw::DeviceHal{*camera, trigger, led, display, serial, storage, clock}, cfg,
-                                              model);
+        device = std::make_unique<fw::Device>(fw::DeviceHal{*camera, trigger, led, display, serial, storage, clock},
+                                              cfg, model);
     }
     ~AimRig() { fs::remove_all(dir); }
     // All `aim` picture lines so far.
@@ -99,7 +99,10 @@ struct AimRig {
     }
 };
 
-bool sampleHere() { return fs::exists(kSample); }
+bool sampleHere()
+{
+    return fs::exists(kSample);
+}
 
 TEST(Aim, LivePictureWithTheEndFaceFocusScoreAndHintUntilTimeRunsOut)
 {
@@ -178,7 +181,7 @@ TEST(Aim, ButtonLevelReadAfterAMeasurementUndoesALostRelease)
     rig.device->tick();
     EXPECT_NE(rig.serial.out.find("\"type\":\"result\""), std::string::npos);
     rig.serial.out.clear();
-    rig.device->tick(); // the level is read: the button is up
+    rig.device->tick();      // the level is read: the button is up
     rig.clock.advance(3000); // would have been a long press (aim mode) without the re-read
     rig.device->tick();
     EXPECT_TRUE(rig.pictures().empty()) << rig.serial.out;
@@ -213,8 +216,8 @@ TEST(Snapshot, FullFramePngWithTheFittedBoundariesInTheJournal)
     vision::EndFaceAnalyzer analyzer;
     ASSERT_EQ(analyzer.configure(1456, 1088), vision::ErrorCode::None);
     vision::PaperModel model;
-    const vision::Measurement m = analyzer.measure({grey.data(), 1456, 1088, g.stride, 1},
-                                                   {0.1742, 647, 10, 15, 0.0153924, 0}, model);
+    const vision::Measurement m =
+        analyzer.measure({grey.data(), 1456, 1088, g.stride, 1}, {0.1742, 647, 10, 15, 0.0153924, 0}, model);
     ASSERT_TRUE(m.hasValue());
     auto meanRadius = [&](uint8_t r, uint8_t gr, uint8_t b, long *count) {
         double sum = 0;

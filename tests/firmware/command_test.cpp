@@ -29,7 +29,9 @@ TEST(Command, JsonAndWordsMeanTheSame)
 
 TEST(Command, RefusalsCarryACodeAndWords)
 {
-    struct Case { const char *line, *code; } cases[] = {
+    struct Case {
+        const char *line, *code;
+    } cases[] = {
         {"", "malformed"},
         {"{", "malformed"},
         {R"({"cmd":"status"} x)", "malformed"},
@@ -90,9 +92,7 @@ TEST(Command, RandomBytesNeverParseSilently)
         std::string s(size_t(rng() % 64), '\0');
         for (char &ch : s) ch = char(rng() % 256);
         auto p = parseCommand(s);
-        if (!p.ok) {
-            EXPECT_FALSE(p.message.empty());
-        }
+        if (!p.ok) { EXPECT_FALSE(p.message.empty()); }
     }
 }
 
@@ -106,8 +106,10 @@ TEST(LineAssembler, OversizedLineIsReportedOnceAndDropped)
     for (;;) {
         auto ev = a.push(&rest);
         if (ev == LineAssembler::Event::None) break;
-        if (ev == LineAssembler::Event::Overflow) ++overflows;
-        else lines.emplace_back(a.line());
+        if (ev == LineAssembler::Event::Overflow)
+            ++overflows;
+        else
+            lines.emplace_back(a.line());
     }
     EXPECT_EQ(overflows, 1);
     ASSERT_EQ(lines.size(), 2u);

@@ -71,11 +71,13 @@ TEST(Config, LiveKeysOnlyOverSerial)
 TEST(Config, FinalHeightMustBeBelowTheInitialHeight)
 {
     Config c;
-    auto issues = parseConfig("[specimen]\nn = 0.2\nh_final_mm = 16\nh0_mm = 15\n[calibration]\nmm_per_px = 0.01\n"
-                              "[journal]\ndir = /tmp\n[camera]\nframes = /tmp\n[display]\ndir = /tmp\n[serial]\nlink = /tmp/x\n",
-                              &c);
+    auto issues =
+        parseConfig("[specimen]\nn = 0.2\nh_final_mm = 16\nh0_mm = 15\n[calibration]\nmm_per_px = 0.01\n"
+                    "[journal]\ndir = /tmp\n[camera]\nframes = /tmp\n[display]\ndir = /tmp\n[serial]\nlink = /tmp/x\n",
+                    &c);
     bool named = false;
-    for (auto &i : issues) named |= i.message.find("h_final_mm (16) must be below specimen.h0_mm (15)") != std::string::npos;
+    for (auto &i : issues)
+        named |= i.message.find("h_final_mm (16) must be below specimen.h0_mm (15)") != std::string::npos;
     EXPECT_TRUE(named);
     Config ok;
     EXPECT_EQ(setConfigKey(&ok, "h_final_mm", "7.4", true), "");

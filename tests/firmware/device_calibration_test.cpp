@@ -10,17 +10,17 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "calibration/calibration_file.h"
-#include "calibration_renderer.h"
 #include "firmware/device.h"
 #include "firmware/device_calibration.h"
 #include "firmware/json_line.h"
-#include "tests/support/recording_serial.h"
 #include "hal/file/clocks.h"
 #include "hal/file/file_camera.h"
 #include "hal/file/file_led.h"
 #include "hal/file/file_trigger.h"
 #include "hal/file/folder_storage.h"
-#include "synth_command.h"
+#include "host_tools/calibration_renderer.h"
+#include "host_tools/synth_command.h"
+#include "tests/support/recording_serial.h"
 #include "vision/model/paper_model.h"
 
 using namespace icacam;
@@ -28,7 +28,6 @@ namespace fs = std::filesystem;
 using test::RecordingSerial;
 
 namespace {
-
 
 struct NullDisplay final : hal::Display {
     hal::Error show(const hal::MonoBitmap &) override { return {}; }
@@ -73,7 +72,8 @@ struct Rig {
     void frame(const std::string &name, const cv::Mat &img) { cv::imwrite((dir / "frames" / name).string(), img); }
     bool start()
     {
-        camera = std::make_unique<hal::FileCamera>(clock, hal::FileCameraOptions{(dir / "frames").string(), 1, false, 0, {}});
+        camera = std::make_unique<hal::FileCamera>(clock,
+                                                   hal::FileCameraOptions{(dir / "frames").string(), 1, false, 0, {}});
         EXPECT_TRUE(storage.open((dir / "journal").string()).ok());
         device = std::make_unique<fw::Device>(fw::DeviceHal{*camera, trigger, led, display, serial, storage, clock},
                                               cfg, model);
@@ -96,7 +96,10 @@ calibration::CalibrationFile fileFor(const host::CameraModel &cam)
 }
 
 // An untilted, undistorted camera 60 mm above the fixture: 0.015 mm/px on the fixture.
-host::CameraModel straightCamera() { return host::CameraModel{}; }
+host::CameraModel straightCamera()
+{
+    return host::CameraModel{};
+}
 
 } // namespace
 
@@ -105,9 +108,12 @@ TEST(DeviceCalibration, StartUpNamesWhatIsWrongWithTheFile)
     Rig rig;
     fw::DeviceCalibration cal;
     rig.cfg.calibrationFile = "missing.cal";
-    EXPECT_NE(fw::loadDeviceCalibration(rig.cfg, &cal).find("cannot read calibration '" + (rig.dir / "missing.cal").string()),
-              std::string::npos);
-    { std::ofstream(rig.dir / "other.cal") << "format = something-else-2\n"; }
+    EXPECT_NE(
+        fw::loadDeviceCalibration(rig.cfg, &cal).find("cannot read calibration '" + (rig.dir / "missing.cal").string()),
+        std::string::npos);
+    {
+        std::ofstream(rig.dir / "other.cal") << "format = something-else-2\n";
+    }
     rig.cfg.calibrationFile = "other.cal";
     EXPECT_NE(fw::loadDeviceCalibration(rig.cfg, &cal).find("unknown format 'something-else-2'"), std::string::npos);
     host::CameraModel big = straightCamera();
@@ -133,8 +139,8 @@ TEST(DeviceCalibration, MeasuresInTheEndFacePlaneAndJournalsWhichCalibration)
     s.rMaxMm = 5.0 * std::sqrt(2.0) * (1.008 + 0.034 * u);
     rig.frame("a.png", r.endFace(s, 0.4, -0.3, 7.5, 0.9, 2.0, 5));
     rig.frame("b.png", cv::Mat(600, 800, CV_8U, cv::Scalar(90))); // another camera's size
-    rig.cfg.calibrationFile = "cam.cal"; // no mm_per_px: the calibration scales
-    rig.cfg.h0Mm = 15, rig.cfg.hFinalMm = 7.5; // end face 7.5 mm above the fixture
+    rig.cfg.calibrationFile = "cam.cal";                          // no mm_per_px: the calibration scales
+    rig.cfg.h0Mm = 15, rig.cfg.hFinalMm = 7.5;                    // end face 7.5 mm above the fixture
     ASSERT_TRUE(rig.start());
     rig.say("{\"cmd\":\"trigger\",\"id\":\"t1\"}"); // the longest record: a value, a calibration, a tag
     const fw::FlatObject a = rig.serial.last("result");
@@ -180,7 +186,8 @@ TEST(DeviceCalibration, SetOverSerialIsCheckedAndSurvivesARestart)
     EXPECT_NE(rig.serial.out.find("{\"type\":\"settings\",\"calibration_file\":\"cam.cal\"}"), std::string::npos)
         << rig.serial.out;
     rig.say("get calibration.file");
-    EXPECT_NE(rig.serial.out.rfind("{\"type\":\"settings\",\"calibration_file\":\"cam.cal\"}"), rig.serial.out.find("cam.cal\"}"));
+    EXPECT_NE(rig.serial.out.rfind("{\"type\":\"settings\",\"calibration_file\":\"cam.cal\"}"),
+              rig.serial.out.find("cam.cal\"}"));
     fw::Device again({*rig.camera, rig.trigger, rig.led, rig.display, rig.serial, rig.storage, rig.clock}, rig.cfg,
                      rig.model);
     ASSERT_TRUE(again.start().ok());
@@ -202,7 +209,8 @@ TEST(ScaleCheck, ReferenceDiscPassesAtTheRightScaleAndFailsAtAWrongOne)
         host::CameraModel moved = cam;
         moved.fixtureTvec *= 1.02;
         ASSERT_EQ(calibration::writeCalibrationFile((rig.dir / "moved.cal").string(), fileFor(moved)), "");
-        for (int i = 0; i < 3; ++i) rig.frame("disc" + std::to_string(i) + ".png", r.disc(12, 0.5, -0.4, 0, 40, 200, 0.9, 2.0, uint32_t(i)));
+        for (int i = 0; i < 3; ++i)
+            rig.frame("disc" + std::to_string(i) + ".png", r.disc(12, 0.5, -0.4, 0, 40, 200, 0.9, 2.0, uint32_t(i)));
         rig.cfg.calibrationFile = "cam.cal";
         ASSERT_TRUE(rig.start());
         rig.say("scalecheck 12");
@@ -216,7 +224,8 @@ TEST(ScaleCheck, ReferenceDiscPassesAtTheRightScaleAndFailsAtAWrongOne)
         const fw::FlatObject b = rig.serial.last("scalecheck");
         EXPECT_EQ(text(b, "status"), "fail");
         EXPECT_EQ(text(b, "tag"), "s2");
-        std::printf("scale check, calibration 2 %% off: ratio %.7f: %s\n", number(b, "ratio"), text(b, "message").c_str());
+        std::printf("scale check, calibration 2 %% off: ratio %.7f: %s\n", number(b, "ratio"),
+                    text(b, "message").c_str());
         EXPECT_NE(text(b, "message").find("scale off by +2.0"), std::string::npos) << text(b, "message");
         EXPECT_NE(text(b, "message").find("check the calibration"), std::string::npos);
         // Journaled like a measurement, and `results` gives it back.
@@ -239,7 +248,9 @@ TEST(ScaleCheck, ReferenceDiscPassesAtTheRightScaleAndFailsAtAWrongOne)
         const host::CameraModel cam = host::exampleTiltedCamera();
         const host::BoardPhotoRenderer r(cam);
         ASSERT_EQ(calibration::writeCalibrationFile((rig.dir / "cam.cal").string(), fileFor(cam)), "");
-        for (int i = 0; i < 2; ++i) rig.frame("thick" + std::to_string(i) + ".png", r.disc(10, -0.6, 0.3, 1.0, 45, 190, 0.9, 2.0, uint32_t(20 + i)));
+        for (int i = 0; i < 2; ++i)
+            rig.frame("thick" + std::to_string(i) + ".png",
+                      r.disc(10, -0.6, 0.3, 1.0, 45, 190, 0.9, 2.0, uint32_t(20 + i)));
         rig.cfg.calibrationFile = "cam.cal";
         ASSERT_TRUE(rig.start());
         rig.say("scalecheck 10 0.5 1");
@@ -256,7 +267,8 @@ TEST(ScaleCheck, ReferenceDiscPassesAtTheRightScaleAndFailsAtAWrongOne)
     {
         Rig rig;
         const host::BoardPhotoRenderer r(straightCamera()); // 0.015 mm/px on the fixture
-        for (int i = 0; i < 2; ++i) rig.frame("disc" + std::to_string(i) + ".png", r.disc(10, -1, 0.5, 0, 210, 60, 1.0, 2.0, uint32_t(i)));
+        for (int i = 0; i < 2; ++i)
+            rig.frame("disc" + std::to_string(i) + ".png", r.disc(10, -1, 0.5, 0, 210, 60, 1.0, 2.0, uint32_t(i)));
         rig.cfg.mmPerPx = 0.015;
         ASSERT_TRUE(rig.start());
         rig.say("scalecheck 10 0.5");

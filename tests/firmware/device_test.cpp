@@ -7,12 +7,12 @@
 
 #include "firmware/device.h"
 #include "firmware/font5x7.h"
-#include "tests/support/recording_serial.h"
 #include "hal/file/clocks.h"
 #include "hal/file/file_camera.h"
 #include "hal/file/file_led.h"
 #include "hal/file/file_trigger.h"
 #include "hal/file/folder_storage.h"
+#include "tests/support/recording_serial.h"
 #include "vision/model/paper_model.h"
 
 using namespace icacam;
@@ -45,7 +45,7 @@ struct Rig {
     std::unique_ptr<fw::Device> device;
 
     explicit Rig(const std::string &frames, uint64_t quota = 0, bool loop = false)
-        : dir(makeDir()), camera(clock, {frames.empty() ? dir : frames, 1, loop, 0, {}})
+            : dir(makeDir()), camera(clock, {frames.empty() ? dir : frames, 1, loop, 0, {}})
     {
         EXPECT_TRUE(storage.open(dir + "/journal", quota).ok());
         fw::Config cfg;
@@ -54,8 +54,8 @@ struct Rig {
         cfg.cameraMaxWidth = 256;
         cfg.cameraMaxHeight = 256;
         cfg.captureTimeoutMs = 700;
-        device = std::make_unique<fw::Device>(
-            fw::DeviceHal{camera, trigger, led, display, serial, storage, clock}, cfg, model);
+        device = std::make_unique<fw::Device>(fw::DeviceHal{camera, trigger, led, display, serial, storage, clock}, cfg,
+                                              model);
     }
     ~Rig() { fs::remove_all(dir); }
     static std::string makeDir()
@@ -77,7 +77,9 @@ TEST(Device, CameraTimeoutIsShownInWordsAndJournaled)
 {
     char t[] = "/tmp/icacam-frames-XXXXXX";
     const std::string frames = ::mkdtemp(t);
-    { std::ofstream(frames + "/list.txt") << "!timeout\n"; }
+    {
+        std::ofstream(frames + "/list.txt") << "!timeout\n";
+    }
     Rig rig(frames + "/list.txt");
     ASSERT_TRUE(rig.device->start().ok());
     EXPECT_NE(rig.serial.out.find("\"type\":\"hello\""), std::string::npos);
@@ -90,8 +92,9 @@ TEST(Device, CameraTimeoutIsShownInWordsAndJournaled)
     EXPECT_EQ(rig.display.row(0), "#1 error");
     EXPECT_EQ(rig.display.row(2), "camera timeout: no");
     EXPECT_FALSE(rig.led.isOn());
-    EXPECT_EQ(fw::Journal::checkLine(rig.storage.read(fw::Journal::kFile).value.substr(0,
-                  rig.storage.read(fw::Journal::kFile).value.size() - 1)), 1);
+    EXPECT_EQ(fw::Journal::checkLine(rig.storage.read(fw::Journal::kFile)
+                                         .value.substr(0, rig.storage.read(fw::Journal::kFile).value.size() - 1)),
+              1);
     fs::remove_all(frames);
 }
 
@@ -123,8 +126,8 @@ TEST(Device, SettingsSurviveARestart)
     rig.device->tick();
     EXPECT_NE(rig.serial.out.find("\"code\":\"bad_argument\""), std::string::npos);
     EXPECT_NE(rig.serial.out.find("{\"type\":\"settings\",\"n\":0.37,\"tag\":\"g\"}"), std::string::npos);
-    fw::Device again({rig.camera, rig.trigger, rig.led, rig.display, rig.serial, rig.storage, rig.clock},
-                     fw::Config{}, rig.model);
+    fw::Device again({rig.camera, rig.trigger, rig.led, rig.display, rig.serial, rig.storage, rig.clock}, fw::Config{},
+                     rig.model);
     ASSERT_TRUE(again.start().ok());
     EXPECT_DOUBLE_EQ(again.config().n, 0.37);
 }
@@ -174,8 +177,8 @@ TEST(Device, FinalHeightIsALiveJournaledKeyCheckedAgainstTheInitialHeight)
     EXPECT_NE(rig.serial.out.find("{\"type\":\"settings\",\"h_final_mm\":7.3}"), std::string::npos) << rig.serial.out;
     EXPECT_NE(rig.serial.out.find("must be below specimen.h0_mm"), std::string::npos) << rig.serial.out;
     EXPECT_DOUBLE_EQ(rig.device->config().hFinalMm, 7.3); // the bad value changed nothing
-    fw::Device again({rig.camera, rig.trigger, rig.led, rig.display, rig.serial, rig.storage, rig.clock},
-                     fw::Config{}, rig.model);
+    fw::Device again({rig.camera, rig.trigger, rig.led, rig.display, rig.serial, rig.storage, rig.clock}, fw::Config{},
+                     rig.model);
     ASSERT_TRUE(again.start().ok());
     EXPECT_DOUBLE_EQ(again.config().hFinalMm, 7.3);
     // A result record names the final height it was measured with and the model.
@@ -216,7 +219,7 @@ TEST(Device, ConfiguredImagingControlsAreJournaledWithEachResult)
     EXPECT_EQ(r.find("red_gain")->number, 1.9);
     EXPECT_EQ(r.find("blue_gain")->number, 1.4);
     EXPECT_EQ(r.find("lens_position")->number, 3.5);
-    EXPECT_EQ(r.find("latency_us")->number, 0);        // the file camera starts when asked
+    EXPECT_EQ(r.find("latency_us")->number, 0);          // the file camera starts when asked
     EXPECT_EQ(r.find("trigger_latency_ms")->number, 25); // the LED's settle time
     // The journal holds the same line; `status` the controls of the last frame.
     EXPECT_NE(rig.storage.read(fw::Journal::kFile).value.find("\"exposure_us\":12000"), std::string::npos);
@@ -224,7 +227,8 @@ TEST(Device, ConfiguredImagingControlsAreJournaledWithEachResult)
     device.tick();
     const fw::FlatObject st = rig.serial.last("status");
     ASSERT_TRUE(st.find("camera_controls"));
-    EXPECT_EQ(st.find("camera_controls")->text, "exposure_us 12000 gain 2.500 red_gain 1.900 blue_gain 1.400 lens_position 3.500");
+    EXPECT_EQ(st.find("camera_controls")->text,
+              "exposure_us 12000 gain 2.500 red_gain 1.900 blue_gain 1.400 lens_position 3.500");
     EXPECT_EQ(st.find("camera_latency_us")->number, 0);
 }
 

@@ -31,10 +31,10 @@ namespace {
 struct DriverModel {
     const char *name;
     int64_t periodUs, exposureUs;
-    int64_t stampAfterStartUs;    // the timestamp the rule reads
-    int64_t completeAfterStartUs; // when the application gets the buffer
+    int64_t stampAfterStartUs;       // the timestamp the rule reads
+    int64_t completeAfterStartUs;    // when the application gets the buffer
     int64_t bufferStampAfterStartUs; // the buffer's own timestamp (what a naive rule reads)
-    int64_t declaredDelayUs;      // the stamp's delay bound the backend is told
+    int64_t declaredDelayUs;         // the stamp's delay bound the backend is told
     int buffers;
 };
 
@@ -97,7 +97,8 @@ public:
                 out->source = std::string("sim-") + m_.name;
                 return {};
             }
-            if (clock_.monotonicMs() >= deadline) return hal::Error::make(hal::Errc::Timeout, "simulated sensor: nothing fresh");
+            if (clock_.monotonicMs() >= deadline)
+                return hal::Error::make(hal::Errc::Timeout, "simulated sensor: nothing fresh");
             clock_.advance(1);
             advance();
         }
@@ -208,7 +209,8 @@ Outcome runModel(const DriverModel &m, int shots, uint32_t seed)
         ++o.measured;
     }
     std::printf("%s: %d shots, each the first frame exposed after the light; a rule on the buffer timestamp would "
-                "have measured another frame in %d\n", m.name, o.measured, o.naiveWouldDiffer);
+                "have measured another frame in %d\n",
+                m.name, o.measured, o.naiveWouldDiffer);
     fs::remove_all(dir);
     return o;
 }

@@ -23,7 +23,10 @@ struct TempDir {
     ~TempDir() { fs::remove_all(path); }
 };
 
-std::string record(long id) { return "{\"type\":\"result\",\"id\":" + std::to_string(id) + ",\"mu\":0.1}\n"; }
+std::string record(long id)
+{
+    return "{\"type\":\"result\",\"id\":" + std::to_string(id) + ",\"mu\":0.1}\n";
+}
 
 } // namespace
 
@@ -99,7 +102,10 @@ TEST(Journal, FullStorageIsAnErrorNotACrash)
     EXPECT_EQ(j.saveImage("img.pgm", std::string(500, 'x')).code, hal::Errc::Full);
 }
 
-TEST(Journal, Crc32KnownValue) { EXPECT_EQ(fw::crc32("123456789"), 0xCBF43926u); }
+TEST(Journal, Crc32KnownValue)
+{
+    EXPECT_EQ(fw::crc32("123456789"), 0xCBF43926u);
+}
 
 TEST(Debouncer, BounceShortAndLong)
 {

@@ -9,16 +9,16 @@
 
 #include "firmware/device.h"
 #include "firmware/json_line.h"
-#include "vision/model/friction_models.h"
 #include "hal/file/clocks.h"
 #include "hal/file/file_camera.h"
 #include "hal/file/file_led.h"
 #include "hal/file/file_trigger.h"
 #include "hal/file/folder_storage.h"
-#include "manifest.h"
-#include "record_measurer.h"
-#include "result_writer.h"
+#include "host_tools/manifest.h"
+#include "host_tools/record_measurer.h"
+#include "host_tools/result_writer.h"
 #include "tests/support/recording_serial.h"
+#include "vision/model/friction_models.h"
 #include "vision/reading_record.h"
 
 using namespace icacam;
@@ -72,8 +72,10 @@ fw::FlatObject hostResult(const std::string &manifestText, const vision::Frictio
     host::ResultRow row;
     row.id = "x";
     row.model = model.name();
-    if (reading.measured) row.m = &reading.m;
-    else row.message = reading.message;
+    if (reading.measured)
+        row.m = &reading.m;
+    else
+        row.message = reading.message;
     writer.write(row);
     std::string line = out.str();
     line.pop_back();
@@ -105,7 +107,8 @@ TEST(OneInstrument, DeviceAndMeasureGiveTheSameReading)
     cfg.cameraMaxWidth = 2048, cfg.cameraMaxHeight = 1536;
     // Nothing more declared: the reduction is inferred from the silhouette on both.
     const fw::FlatObject d1 = deviceResult("synth-0002.jpg", cfg, *model);
-    const fw::FlatObject h1 = hostResult("id,image,n,k_mpa,mm_per_px\na,images/synth-0002.jpg,0.1742,647,0.0153924\n", *model);
+    const fw::FlatObject h1 =
+        hostResult("id,image,n,k_mpa,mm_per_px\na,images/synth-0002.jpg,0.1742,647,0.0153924\n", *model);
     ASSERT_NE(d1.find("mu"), nullptr);
     EXPECT_EQ(d1.find("mu")->type, fw::JsonField::Type::Number);
     expectSameReading(d1, h1);
@@ -113,9 +116,10 @@ TEST(OneInstrument, DeviceAndMeasureGiveTheSameReading)
     // Declared final height and tolerances, set the device's way and the manifest's way.
     cfg.hFinalMm = 7.6, cfg.nTol = 0.02, cfg.toleranceMu = 0.02, cfg.toleranceRel = 0.04, cfg.mmPerPxTolRel = 0.01;
     const fw::FlatObject d2 = deviceResult("synth-0002.jpg", cfg, *model);
-    const fw::FlatObject h2 = hostResult("id,image,n,k_mpa,mm_per_px,h_final_mm,n_tol,tolerance_mu,tolerance_rel,mm_per_px_tol\n"
-                                         "a,images/synth-0002.jpg,0.1742,647,0.0153924,7.6,0.02,0.02,0.04,0.01\n",
-                                         *model);
+    const fw::FlatObject h2 =
+        hostResult("id,image,n,k_mpa,mm_per_px,h_final_mm,n_tol,tolerance_mu,tolerance_rel,mm_per_px_tol\n"
+                   "a,images/synth-0002.jpg,0.1742,647,0.0153924,7.6,0.02,0.02,0.04,0.01\n",
+                   *model);
     expectSameReading(d2, h2);
     EXPECT_NE(d1.find("mu_sigma")->text, d2.find("mu_sigma")->text); // the declarations changed the budget
     EXPECT_EQ(d2.find("tolerance_mu")->number, 0.02);

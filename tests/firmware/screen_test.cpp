@@ -19,7 +19,8 @@ TEST(Font, GlyphsAreDistinctSoTheScreenCanBeReadBack)
 TEST(Font, TextRoundTrips)
 {
     hal::MonoBitmap bmp;
-    const std::string text = "\xCE\xBC=0.182\xC2\xB1" "0.004 \xCF\x83 ~{}";
+    const std::string text = "\xCE\xBC=0.182\xC2\xB1"
+                             "0.004 \xCF\x83 ~{}";
     fw::drawText(&bmp, 0, 3, text);
     EXPECT_EQ(fw::readRow(bmp, 3), text);
     EXPECT_EQ(fw::readRow(bmp, 2), "");
@@ -42,7 +43,8 @@ TEST(Screen, ErrorsAreShownInWords)
     m.muSigma = 0.004;
     m.flags = vision::kFlagNOutOfRange;
     fw::drawResult(&bmp, 13, m, "");
-    EXPECT_EQ(fw::readRow(bmp, 2), "\xCE\xBC=0.182\xC2\xB1" "0.004");
+    EXPECT_EQ(fw::readRow(bmp, 2), "\xCE\xBC=0.182\xC2\xB1"
+                                   "0.004");
     EXPECT_EQ(fw::readRow(bmp, 5), "n outside 0.05-0.5");
     fw::drawProblem(&bmp, "#14 error", "camera timeout: no frame within 2000 ms");
     EXPECT_EQ(fw::readRow(bmp, 2), "camera timeout: no");

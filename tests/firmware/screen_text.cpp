@@ -8,13 +8,19 @@
 int main(int argc, char **argv)
 {
     using namespace icacam;
-    if (argc != 2) { std::fprintf(stderr, "usage: fw_screen_text PICTURE.png\n"); return 64; }
+    if (argc != 2) {
+        std::fprintf(stderr, "usage: fw_screen_text PICTURE.png\n");
+        return 64;
+    }
     constexpr int kMaxScale = 8;
     std::vector<uint8_t> px(size_t(hal::MonoBitmap::kWidth) * hal::MonoBitmap::kHeight * kMaxScale * kMaxScale);
     hal::DecodedImage img;
     hal::Error e = hal::decodeImage(argv[1], px.data(), px.size(), hal::MonoBitmap::kWidth * kMaxScale,
                                     hal::MonoBitmap::kHeight * kMaxScale, 0, &img);
-    if (!e.ok() || img.channels != 1) { std::fprintf(stderr, "fw_screen_text: %s\n", e.message.c_str()); return 1; }
+    if (!e.ok() || img.channels != 1) {
+        std::fprintf(stderr, "fw_screen_text: %s\n", e.message.c_str());
+        return 1;
+    }
     const int scale = img.width / hal::MonoBitmap::kWidth;
     if (scale < 1 || img.width != scale * hal::MonoBitmap::kWidth || img.height != scale * hal::MonoBitmap::kHeight) {
         std::fprintf(stderr, "fw_screen_text: not a picture of the 128x64 display\n");

@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <string>
 
-#include "manifest.h"
+#include "host_tools/manifest.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {

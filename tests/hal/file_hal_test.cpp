@@ -147,7 +147,6 @@ TEST(PtySerial, BytesBothWaysAndNoStallWithoutReader)
     // The far end reads again: output flows again.
     char drain[65536];
     ::fcntl(host.get(), F_SETFL, O_NONBLOCK);
-    while (::read(host.get(), drain, sizeof drain) > 0) {
-    }
+    while (::read(host.get(), drain, sizeof drain) > 0) {}
     EXPECT_TRUE(s.write("back\n").ok());
 }

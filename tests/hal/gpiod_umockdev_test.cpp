@@ -34,10 +34,10 @@ struct FakeChip {
     std::mutex m;
     bool busy[kLines] = {};
     uint32_t requestFlags[kLines] = {};
-    std::vector<int> setValues; // every GPIOHANDLE_SET_LINE_VALUES, first value
+    std::vector<int> setValues;          // every GPIOHANDLE_SET_LINE_VALUES, first value
     std::vector<unsigned long> requests; // ioctl request codes seen, in order
-    int handleFd = -1;          // handed out by GPIO_GET_LINEHANDLE_IOCTL
-    int eventFd = -1;           // handed out by GPIO_GET_LINEEVENT_IOCTL
+    int handleFd = -1;                   // handed out by GPIO_GET_LINEHANDLE_IOCTL
+    int eventFd = -1;                    // handed out by GPIO_GET_LINEEVENT_IOCTL
     uint32_t eventFlags = 0;
 };
 
@@ -49,7 +49,10 @@ gboolean onIoctl(UMockdevIoctlBase *, UMockdevIoctlClient *client, gpointer user
     std::lock_guard<std::mutex> lock(chip->m);
     const unsigned long req = umockdev_ioctl_client_get_request(client);
     chip->requests.push_back(req);
-    auto fail = [&](int err) { umockdev_ioctl_client_complete(client, -1, err); return TRUE; };
+    auto fail = [&](int err) {
+        umockdev_ioctl_client_complete(client, -1, err);
+        return TRUE;
+    };
     switch (req) {
     case GPIO_GET_CHIPINFO_IOCTL: {
         auto *info = test::ioctlArg<gpiochip_info>(client);
@@ -93,8 +96,7 @@ gboolean onIoctl(UMockdevIoctlBase *, UMockdevIoctlClient *client, gpointer user
         chip->setValues.push_back(v->values[0]);
         break;
     }
-    default:
-        return fail(ENOTTY);
+    default: return fail(ENOTTY);
     }
     umockdev_ioctl_client_complete(client, 0, 0);
     return TRUE;
@@ -110,8 +112,7 @@ protected:
         GError *err = nullptr;
         handler_ = umockdev_ioctl_base_new();
         g_signal_connect(handler_, "handle-ioctl", G_CALLBACK(onIoctl), &chip_);
-        ASSERT_TRUE(umockdev_testbed_attach_ioctl(bed_, "/dev/gpiochip0", handler_, &err))
-            << (err ? err->message : "");
+        ASSERT_TRUE(umockdev_testbed_attach_ioctl(bed_, "/dev/gpiochip0", handler_, &err)) << (err ? err->message : "");
     }
     void TearDown() override
     {
@@ -246,4 +247,7 @@ TEST_F(GpiodMock, ActiveLowLedInvertsTheLevel)
 
 } // namespace
 
-int main(int argc, char **argv) { return icacam::test::runUnderUmockdev(argc, argv, "gpiod_umockdev_test"); }
+int main(int argc, char **argv)
+{
+    return icacam::test::runUnderUmockdev(argc, argv, "gpiod_umockdev_test");
+}

@@ -29,10 +29,10 @@ constexpr unsigned kLines = 32;
 struct FakeChip {
     std::mutex m;
     std::vector<unsigned long> requests;
-    gpio_v2_line_request last{};  // the last line request, as the kernel received it
+    gpio_v2_line_request last{};   // the last line request, as the kernel received it
     std::vector<uint64_t> setBits; // every SET_VALUES, the bits of line 0 of the request
-    int nextFd = -1;              // handed out as the request's fd
-    uint64_t level = 0;           // GET_VALUES answers this
+    int nextFd = -1;               // handed out as the request's fd
+    uint64_t level = 0;            // GET_VALUES answers this
 };
 
 gboolean onIoctl(UMockdevIoctlBase *, UMockdevIoctlClient *client, gpointer user)
@@ -41,7 +41,10 @@ gboolean onIoctl(UMockdevIoctlBase *, UMockdevIoctlClient *client, gpointer user
     std::lock_guard<std::mutex> lock(chip->m);
     const unsigned long req = umockdev_ioctl_client_get_request(client);
     chip->requests.push_back(req);
-    auto fail = [&](int err) { umockdev_ioctl_client_complete(client, -1, err); return TRUE; };
+    auto fail = [&](int err) {
+        umockdev_ioctl_client_complete(client, -1, err);
+        return TRUE;
+    };
     switch (req) {
     case GPIO_GET_CHIPINFO_IOCTL: {
         auto *info = test::ioctlArg<gpiochip_info>(client);
@@ -80,8 +83,7 @@ gboolean onIoctl(UMockdevIoctlBase *, UMockdevIoctlClient *client, gpointer user
         v->bits = chip->level & v->mask;
         break;
     }
-    default:
-        return fail(ENOTTY);
+    default: return fail(ENOTTY);
     }
     umockdev_ioctl_client_complete(client, 0, 0);
     return TRUE;
@@ -110,8 +112,7 @@ protected:
         GError *err = nullptr;
         handler_ = umockdev_ioctl_base_new();
         g_signal_connect(handler_, "handle-ioctl", G_CALLBACK(onIoctl), &chip_);
-        ASSERT_TRUE(umockdev_testbed_attach_ioctl(bed_, "/dev/gpiochip0", handler_, &err))
-            << (err ? err->message : "");
+        ASSERT_TRUE(umockdev_testbed_attach_ioctl(bed_, "/dev/gpiochip0", handler_, &err)) << (err ? err->message : "");
     }
     void TearDown() override
     {
@@ -177,7 +178,7 @@ TEST_F(GpiodV2Mock, ButtonByNameWithBiasKernelDebounceAndEdgesInOrder)
         EXPECT_TRUE(flags & GPIO_V2_LINE_FLAG_BIAS_PULL_UP);
         EXPECT_TRUE(flags & GPIO_V2_LINE_FLAG_EDGE_RISING);
         EXPECT_TRUE(flags & GPIO_V2_LINE_FLAG_EDGE_FALLING);
-        EXPECT_FALSE(flags & GPIO_V2_LINE_FLAG_ACTIVE_LOW); // raw edges, decided in the HAL
+        EXPECT_FALSE(flags & GPIO_V2_LINE_FLAG_ACTIVE_LOW);                        // raw edges, decided in the HAL
         EXPECT_EQ(attr(chip_.last.config, GPIO_V2_LINE_ATTR_ID_DEBOUNCE), 15000u); // the kernel debounces
     }
     hal::ButtonEdge edges[8];
@@ -235,4 +236,7 @@ TEST_F(GpiodV2Mock, UnknownLineNameIsNotFound)
 
 } // namespace
 
-int main(int argc, char **argv) { return icacam::test::runUnderUmockdev(argc, argv, "gpiod_v2_umockdev_test"); }
+int main(int argc, char **argv)
+{
+    return icacam::test::runUnderUmockdev(argc, argv, "gpiod_v2_umockdev_test");
+}

@@ -38,19 +38,16 @@ TEST(HilCamera, EveryFrameIsExposedAfterItWasAskedForWithItsControls)
         hal::CapturedFrame f;
         const hal::Error e = gCamera->capture({notBefore, 3000}, &f);
         ASSERT_TRUE(e.ok()) << e.message;
-        std::printf("frame %u: latency %lld us, stale %d, exposure %d us, gain %.3f, colour gains %.3f %.3f, lens %.3f\n",
-                    f.sequence, static_cast<long long>(f.latencyUs), f.staleFrames, f.controls.exposureUs,
-                    f.controls.analogueGain, f.controls.redGain, f.controls.blueGain, f.controls.lensPosition);
+        std::printf(
+            "frame %u: latency %lld us, stale %d, exposure %d us, gain %.3f, colour gains %.3f %.3f, lens %.3f\n",
+            f.sequence, static_cast<long long>(f.latencyUs), f.staleFrames, f.controls.exposureUs,
+            f.controls.analogueGain, f.controls.redGain, f.controls.blueGain, f.controls.lensPosition);
         EXPECT_GE(f.latencyUs, 0);
         EXPECT_GE(f.timestampMs, notBefore);
         EXPECT_LT(f.latencyUs, 200000) << "more than 200 ms after the instant: frames lost?";
-        if (i > 0) {
-            EXPECT_GT(f.sequence, lastSeq);
-        }
+        if (i > 0) { EXPECT_GT(f.sequence, lastSeq); }
         lastSeq = f.sequence;
-        if (gLibcamera) {
-            EXPECT_NEAR(f.controls.exposureUs, 8000, 800);
-        }
+        if (gLibcamera) { EXPECT_NEAR(f.controls.exposureUs, 8000, 800); }
         EXPECT_GT(f.view.width, 0);
     }
 }
@@ -73,7 +70,7 @@ int main(int argc, char **argv)
 #endif
     } else {
 #ifdef ICACAM_HAVE_V4L2
-        struct stat st{};
+        struct stat st {};
         if (::stat(which.c_str(), &st) == 0) {
             hal::V4l2Options o;
             o.device = which;

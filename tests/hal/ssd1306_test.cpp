@@ -66,7 +66,7 @@ TEST(Ssd1306, Sh1106PanelIsClearedOver132ColumnsAndDrawnFromColumnTwo)
     hal::MonoBitmap pic;
     pic.set(0, 0, true);
     ASSERT_TRUE(display.show(pic).ok());
-    EXPECT_EQ(bus.writes[2].size(), 133u); // 132 columns of RAM cleared
+    EXPECT_EQ(bus.writes[2].size(), 133u);                 // 132 columns of RAM cleared
     const std::vector<uint8_t> at{0x00, 0xB0, 0x02, 0x10}; // column 2: the panel's first
     EXPECT_EQ(bus.writes[18], at);
     EXPECT_EQ(bus.writes[19][1], 0x01);
@@ -78,9 +78,7 @@ TEST(Ssd1306, RotationAndContrastAreSentAtInit)
     hal::Ssd1306Display a(upright), b(turned, {false, true, 0x20});
     ASSERT_TRUE(a.init().ok());
     ASSERT_TRUE(b.init().ok());
-    auto has = [](const std::vector<uint8_t> &w, uint8_t c) {
-        return std::find(w.begin() + 1, w.end(), c) != w.end();
-    };
+    auto has = [](const std::vector<uint8_t> &w, uint8_t c) { return std::find(w.begin() + 1, w.end(), c) != w.end(); };
     EXPECT_TRUE(has(upright.writes[0], 0xA1) && has(upright.writes[0], 0xC8));
     EXPECT_TRUE(has(turned.writes[0], 0xA0) && has(turned.writes[0], 0xC0));
     const auto &t = turned.writes[0];

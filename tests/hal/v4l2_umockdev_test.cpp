@@ -28,10 +28,10 @@
 #include "firmware/font5x7.h"
 #include "hal/file/clocks.h"
 #include "hal/file/folder_storage.h"
-#include "vision/model/paper_model.h"
 #include "hal/v4l2/v4l2_camera.h"
 #include "tests/support/recording_serial.h"
 #include "tests/support/umockdev_mock.h"
+#include "vision/model/paper_model.h"
 
 namespace {
 
@@ -53,13 +53,16 @@ struct FakeVideo {
     uint32_t width = 64, height = 48;
     std::vector<std::vector<uint8_t>> memory;
     std::vector<bool> queued;
-    struct Frame { int64_t ns; uint8_t fill; };
+    struct Frame {
+        int64_t ns;
+        uint8_t fill;
+    };
     std::deque<Frame> exposures; // frames the sensor will deliver, into the next queued buffer
     std::vector<uint8_t> jpeg;   // MJPEG: every frame's bytes
     bool streaming = false, unplugged = false;
     // What a UVC camera lists: formats with their discrete sizes (empty: ENUM_FMT unsupported).
     std::vector<std::pair<uint32_t, std::vector<std::pair<uint32_t, uint32_t>>>> listed;
-    std::map<uint32_t, int32_t> controls; // supported controls and their values
+    std::map<uint32_t, int32_t> controls;      // supported controls and their values
     uint32_t intervalNum = 0, intervalDen = 0; // G_PARM (0: unsupported)
     uint32_t sequence = 0;
     uint32_t pixfmt = 0;
@@ -114,14 +117,16 @@ gboolean onIoctl(UMockdevIoctlBase *, UMockdevIoctlClient *client, gpointer user
         if (!sd) return done(EFAULT);
         auto *cs = reinterpret_cast<v4l2_ext_controls *>(sd->data);
         if (cs->count != 1) return done(EINVAL);
-        UMockdevIoctlData *cd = umockdev_ioctl_data_resolve(sd, offsetof(v4l2_ext_controls, controls),
-                                                            sizeof(v4l2_ext_control), nullptr);
+        UMockdevIoctlData *cd =
+            umockdev_ioctl_data_resolve(sd, offsetof(v4l2_ext_controls, controls), sizeof(v4l2_ext_control), nullptr);
         if (!cd) return done(EFAULT);
         auto *c = reinterpret_cast<v4l2_ext_control *>(cd->data);
         auto it = v->controls.find(c->id);
         if (it == v->controls.end()) return done(EINVAL);
-        if (req == VIDIOC_S_EXT_CTRLS) it->second = c->value;
-        else c->value = it->second;
+        if (req == VIDIOC_S_EXT_CTRLS)
+            it->second = c->value;
+        else
+            c->value = it->second;
         return done(0);
     }
     case VIDIOC_QUERYCAP: {
@@ -144,7 +149,8 @@ gboolean onIoctl(UMockdevIoctlBase *, UMockdevIoctlClient *client, gpointer user
         f->fmt.pix.height = std::min(f->fmt.pix.height, v->height);
         const uint32_t bpp = v->pixfmt == V4L2_PIX_FMT_YUYV ? 2 : 1;
         f->fmt.pix.bytesperline = f->fmt.pix.width * bpp;
-        f->fmt.pix.sizeimage = f->fmt.pix.bytesperline * f->fmt.pix.height * (v->pixfmt == V4L2_PIX_FMT_NV12 ? 3 : 2) / 2;
+        f->fmt.pix.sizeimage =
+            f->fmt.pix.bytesperline * f->fmt.pix.height * (v->pixfmt == V4L2_PIX_FMT_NV12 ? 3 : 2) / 2;
         if (v->pixfmt != V4L2_PIX_FMT_NV12) f->fmt.pix.sizeimage = f->fmt.pix.bytesperline * f->fmt.pix.height;
         return done(0);
     }
@@ -198,8 +204,7 @@ gboolean onIoctl(UMockdevIoctlBase *, UMockdevIoctlClient *client, gpointer user
         b->timestamp.tv_usec = (fr.ns % 1000000000) / 1000;
         return done(0);
     }
-    default:
-        return done(ENOTTY);
+    default: return done(ENOTTY);
     }
 }
 
@@ -248,7 +253,9 @@ std::vector<uint8_t> encodeJpeg(int w, int h)
     jpeg_start_compress(&c, TRUE);
     std::vector<uint8_t> row(size_t(w) * 3);
     while (c.next_scanline < c.image_height) {
-        for (int x = 0; x < w; ++x) row[size_t(x) * 3] = row[size_t(x) * 3 + 1] = row[size_t(x) * 3 + 2] = grey[size_t(c.next_scanline) * size_t(w) + size_t(x)];
+        for (int x = 0; x < w; ++x)
+            row[size_t(x) * 3] = row[size_t(x) * 3 + 1] = row[size_t(x) * 3 + 2] =
+                grey[size_t(c.next_scanline) * size_t(w) + size_t(x)];
         JSAMPROW r = row.data();
         jpeg_write_scanlines(&c, &r, 1);
     }
@@ -313,9 +320,9 @@ TEST_F(V4l2Mock, NegotiatesAFormatTheDriverHasAndStreams)
         for (unsigned long r : video_.seen)
             if (r != VIDIOC_ENUM_FMT && r != VIDIOC_G_PARM && r != VIDIOC_S_EXT_CTRLS && r != VIDIOC_G_EXT_CTRLS)
                 seen.push_back(r);
-        const std::vector<unsigned long> start{VIDIOC_QUERYCAP, VIDIOC_S_FMT, VIDIOC_REQBUFS,
-                                               VIDIOC_QUERYBUF, VIDIOC_QBUF, VIDIOC_QUERYBUF, VIDIOC_QBUF,
-                                               VIDIOC_QUERYBUF, VIDIOC_QBUF, VIDIOC_STREAMON};
+        const std::vector<unsigned long> start{VIDIOC_QUERYCAP, VIDIOC_S_FMT,    VIDIOC_REQBUFS, VIDIOC_QUERYBUF,
+                                               VIDIOC_QBUF,     VIDIOC_QUERYBUF, VIDIOC_QBUF,    VIDIOC_QUERYBUF,
+                                               VIDIOC_QBUF,     VIDIOC_STREAMON};
         EXPECT_EQ(seen, start);
     }
 }
@@ -416,7 +423,7 @@ TEST_F(V4l2Mock, SkipsFramesExposedBeforeTheTriggerAndRecyclesBuffers)
     hal::V4l2Camera cam(clock_, opts("/dev/video0", 2), &mapper_);
     ASSERT_TRUE(cam.configure({vision::PixelFormat::YUYV, 640, 480}).ok());
     const int64_t t = nowNs();
-    expose(t - 50000000, 11); // stale: exposed 50 ms before capture() was called
+    expose(t - 50000000, 11);   // stale: exposed 50 ms before capture() was called
     expose(t + 1000000000, 22); // after the trigger
     hal::CapturedFrame frame;
     hal::Error e = cam.capture(500, &frame);
@@ -454,9 +461,9 @@ TEST_F(V4l2Mock, OnlyAFrameExposedAfterTheLedSettledIsHandedOut)
     const int64_t litMs = clock_.monotonicMs() + settleInMs;
     const int64_t L = nowNs() + settleInMs * 1000000; // the same instant on the kernel's clock (±1 ms)
     const int64_t exposure = 10000000, delay = 2000000;
-    expose(L - 60000000, 1);                          // stale: filled before the LED came on
-    expose(L - 3000000 + exposure + delay, 2);        // in flight: began 3 ms before L
-    expose(L + 3000000 + exposure + delay, 3);        // fresh: began 3 ms after L
+    expose(L - 60000000, 1);                   // stale: filled before the LED came on
+    expose(L - 3000000 + exposure + delay, 2); // in flight: began 3 ms before L
+    expose(L + 3000000 + exposure + delay, 3); // fresh: began 3 ms after L
     expose(L + 3000000 + exposure + delay + 33333333, 4);
     hal::CapturedFrame frame;
     const hal::Error e = cam.capture({litMs, 500}, &frame);
@@ -534,13 +541,21 @@ struct QuietTrigger final : hal::TriggerButton {
 };
 struct PlainLed final : hal::LedRing {
     bool on = false;
-    hal::Error set(bool v) override { on = v; return {}; }
+    hal::Error set(bool v) override
+    {
+        on = v;
+        return {};
+    }
     bool isOn() const override { return on; }
 };
 using test::RecordingSerial;
 struct RecordingDisplay final : hal::Display {
     hal::MonoBitmap last;
-    hal::Error show(const hal::MonoBitmap &p) override { last = p; return {}; }
+    hal::Error show(const hal::MonoBitmap &p) override
+    {
+        last = p;
+        return {};
+    }
 };
 
 TEST_F(V4l2Mock, FirmwareReportsUnplugAndMeasuresAgainAfterReplug)
@@ -657,4 +672,7 @@ TEST_F(V4l2Mock, FirmwareStartsWithoutItsCameraAndMeasuresOnceTheNodeAppears)
 
 } // namespace
 
-int main(int argc, char **argv) { return icacam::test::runUnderUmockdev(argc, argv, "v4l2_umockdev_test"); }
+int main(int argc, char **argv)
+{
+    return icacam::test::runUnderUmockdev(argc, argv, "v4l2_umockdev_test");
+}

@@ -5,9 +5,9 @@
 
 #include <opencv2/imgcodecs.hpp>
 
-#include "end_face_renderer.h"
-#include "measure_command.h"
-#include "test_support.h"
+#include "host_tools/end_face_renderer.h"
+#include "host_tools/measure_command.h"
+#include "tests/host_tools/test_support.h"
 
 using namespace icacam;
 namespace fs = std::filesystem;
@@ -108,10 +108,13 @@ TEST(BadInput, SlendernessOutsideTheModelIsFlaggedNeverSilent)
     man.close();
     auto run = [&](const char *model) {
         const std::string out = (dir / (std::string(model) + ".csv")).string();
-        EXPECT_EQ(host::measureCommand({"--manifest", (dir / "manifest.csv").string(), "--out", out, "--model", model}), 0);
+        EXPECT_EQ(host::measureCommand({"--manifest", (dir / "manifest.csv").string(), "--out", out, "--model", model}),
+                  0);
         return test::readCsvById(out);
     };
-    auto flagged = [](std::map<std::string, std::string> &r) { return r["flags"].find("aspect_outside_model") != std::string::npos; };
+    auto flagged = [](std::map<std::string, std::string> &r) {
+        return r["flags"].find("aspect_outside_model") != std::string::npos;
+    };
     // The paper's fit knows 10 x 15 only: every other slenderness says so.
     auto paper = run("paper");
     EXPECT_FALSE(flagged(paper["paper"]));

@@ -5,10 +5,10 @@
 #include <iostream>
 #include <sstream>
 
-#include "cli_options.h"
-#include "fe/fe_command.h"
-#include "loop/loop_command.h"
-#include "measure_command.h"
+#include "host_tools/cli_options.h"
+#include "host_tools/fe/fe_command.h"
+#include "host_tools/loop/loop_command.h"
+#include "host_tools/measure_command.h"
 #include "vision/model/friction_models.h"
 
 using icacam::host::cli::OptionReader;
@@ -27,10 +27,14 @@ Read readArgs(const std::vector<std::string> &args)
     Read r;
     OptionReader opts(args, "usage: test\n");
     while (opts.next()) {
-        if (opts.is("--out")) r.out = opts.value();
-        else if (opts.is("--hard")) r.hard = opts.flag();
-        else if (opts.is("--count")) r.count = double(opts.wholeNumber(1, 100));
-        else opts.unknown();
+        if (opts.is("--out"))
+            r.out = opts.value();
+        else if (opts.is("--hard"))
+            r.hard = opts.flag();
+        else if (opts.is("--count"))
+            r.count = double(opts.wholeNumber(1, 100));
+        else
+            opts.unknown();
     }
     return r;
 }
@@ -68,7 +72,7 @@ TEST(OptionReader, SpaceAndEqualsFormsReadTheSame)
     EXPECT_EQ(a.count, 7);
     EXPECT_EQ(b.count, 7);
     EXPECT_TRUE(a.hard && b.hard);
-    EXPECT_EQ(readArgs({"--out="}).out, "");            // an explicit empty value
+    EXPECT_EQ(readArgs({"--out="}).out, "");                // an explicit empty value
     EXPECT_EQ(readArgs({"--out", "--hard"}).out, "--hard"); // a value may look like an option
 }
 

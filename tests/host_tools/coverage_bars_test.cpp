@@ -1,15 +1,14 @@
 // The uncertainty's bars on rendered sets, one condition per test (PRODUCT.md §7,
 // docs/uncertainty.md "Coverage"): `icacam measure` (default model) on 40 new scenes of a
-// condition the manifest does not declare (30 through the tilted cameras: slower to render); no ok result beyond the tolerance
-// (max(0.01, 5 % of μ)), at least 90 % of the results within 2 σ (σ without the model's own
-// fit error: the truth is the paper's model), and where nothing is undeclared a σ that is
-// neither inflated nor too small: median |Δμ|/σ between 0.3 and 1. The first two always run;
-// the σ-ratio bar only with -DICACAM_COVERAGE_RATIO_BAR=ON: without a declared final height
-// the reduction the silhouette implies is uncertain by ≈ 0.009, wider than the development
+// condition the manifest does not declare (30 through the tilted cameras: slower to render); no ok result beyond the
+// tolerance (max(0.01, 5 % of μ)), at least 90 % of the results within 2 σ (σ without the model's own fit error: the
+// truth is the paper's model), and where nothing is undeclared a σ that is neither inflated nor too small: median
+// |Δμ|/σ between 0.3 and 1. The first two always run; the σ-ratio bar only with -DICACAM_COVERAGE_RATIO_BAR=ON: without
+// a declared final height the reduction the silhouette implies is uncertain by ≈ 0.009, wider than the development
 // set's exact 50 % needs (docs/uncertainty.md, "What is missing").
 #include <gtest/gtest.h>
 
-#include "coverage_support.h"
+#include "tests/host_tools/coverage_support.h"
 
 using namespace icacam;
 
@@ -26,10 +25,9 @@ void expectBars(const std::string &condition, uint32_t seed, bool nothingUndecla
     const host::ConditionScore *c = set.report.find(condition);
     ASSERT_TRUE(c);
     EXPECT_EQ(c->total, scenes);
-    EXPECT_EQ(c->silentWrong, 0) << condition << ": ok results beyond the tolerance (worst ok " << c->worstOkDmu
-                                 << ", " << c->worstOkId << ")";
-    EXPECT_GE(c->withinFraction(), 0.9) << condition << ": " << c->withinK << " of " << c->measured
-                                        << " within 2 σ";
+    EXPECT_EQ(c->silentWrong, 0) << condition << ": ok results beyond the tolerance (worst ok " << c->worstOkDmu << ", "
+                                 << c->worstOkId << ")";
+    EXPECT_GE(c->withinFraction(), 0.9) << condition << ": " << c->withinK << " of " << c->measured << " within 2 σ";
 #ifdef ICACAM_COVERAGE_RATIO_BAR
     if (nothingUndeclared) {
         EXPECT_GE(c->medianRatio, 0.3) << condition << ": σ inflated";
@@ -51,10 +49,9 @@ TEST(CoverageBars, EverythingDeclaredExactly)
 #ifdef ICACAM_SANITIZED
     GTEST_SKIP() << "coverage bars are not run under a sanitizer";
 #endif
-    const test::ScoredSet set =
-        test::renderMeasureScore("bars-exact", "declared", 120, 9107, {},
-                                 {{"h_final_mm", "7.5"}, {"h_final_tol_mm", "0.005"}, {"n_tol", "0.001"},
-                                  {"mm_per_px_tol", "0.001"}});
+    const test::ScoredSet set = test::renderMeasureScore(
+        "bars-exact", "declared", 120, 9107, {},
+        {{"h_final_mm", "7.5"}, {"h_final_tol_mm", "0.005"}, {"n_tol", "0.001"}, {"mm_per_px_tol", "0.001"}});
     const host::ConditionScore *c = set.report.find("declared");
     ASSERT_TRUE(c);
     EXPECT_EQ(c->silentWrong, 0) << "worst ok " << c->worstOkDmu << " (" << c->worstOkId << ")";
@@ -64,9 +61,27 @@ TEST(CoverageBars, EverythingDeclaredExactly)
     std::filesystem::remove_all(set.dir);
 }
 
-TEST(CoverageBars, Declared) { expectBars("declared", 9101, true); }
-TEST(CoverageBars, LowResolution) { expectBars("lowres", 9102, true); }
-TEST(CoverageBars, ReductionNotDeclared) { expectBars("reduction", 9103, false); }
-TEST(CoverageBars, ScaleMeasuredOnTheFixture) { expectBars("fixture_scale", 9104, false); }
-TEST(CoverageBars, TiltedDistortingCamera) { expectBars("tilt", 9105, false, 30); }
-TEST(CoverageBars, CalibratedTiltedCamera) { expectBars("calibrated_tilt", 9106, false, 30); }
+TEST(CoverageBars, Declared)
+{
+    expectBars("declared", 9101, true);
+}
+TEST(CoverageBars, LowResolution)
+{
+    expectBars("lowres", 9102, true);
+}
+TEST(CoverageBars, ReductionNotDeclared)
+{
+    expectBars("reduction", 9103, false);
+}
+TEST(CoverageBars, ScaleMeasuredOnTheFixture)
+{
+    expectBars("fixture_scale", 9104, false);
+}
+TEST(CoverageBars, TiltedDistortingCamera)
+{
+    expectBars("tilt", 9105, false, 30);
+}
+TEST(CoverageBars, CalibratedTiltedCamera)
+{
+    expectBars("calibrated_tilt", 9106, false, 30);
+}

@@ -10,11 +10,11 @@
 #include <utility>
 #include <vector>
 
-#include "coverage_score.h"
-#include "manifest.h"
-#include "measure_command.h"
-#include "synth_conditions.h"
-#include "test_support.h"
+#include "host_tools/coverage_score.h"
+#include "host_tools/manifest.h"
+#include "host_tools/measure_command.h"
+#include "host_tools/synth_conditions.h"
+#include "tests/host_tools/test_support.h"
 
 namespace icacam::test {
 

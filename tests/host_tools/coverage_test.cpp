@@ -10,7 +10,7 @@
 
 #include <opencv2/imgcodecs.hpp>
 
-#include "coverage_support.h"
+#include "tests/host_tools/coverage_support.h"
 
 using namespace icacam;
 
@@ -121,8 +121,8 @@ TEST(Score, TakesTheBudgetWithoutTheModelTermWhenTheTruthIsTheModelsOwn)
 TEST(SynthConditions, TruthMatchesTheImagesWhenTheConditionIsDeclared)
 {
     const int count = 4;
-    test::ScoredSet set = test::renderMeasureScore("synth-conditions", "declared,reduction,fixture_scale,tilt,lowres",
-                                                   count, 4242);
+    test::ScoredSet set =
+        test::renderMeasureScore("synth-conditions", "declared,reduction,fixture_scale,tilt,lowres", count, 4242);
     const auto &truthRows = set.truth.rows;
     ASSERT_EQ(truthRows.size(), size_t(5 * count));
     std::ostringstream declared;
@@ -145,14 +145,16 @@ TEST(SynthConditions, TruthMatchesTheImagesWhenTheConditionIsDeclared)
         if (cond == "reduction") {
             EXPECT_GE(num(t, "reduction"), 0.45);
             EXPECT_LE(num(t, "reduction"), 0.55);
-        } else EXPECT_EQ(num(t, "reduction"), 0.5) << t.get("id");
+        } else
+            EXPECT_EQ(num(t, "reduction"), 0.5) << t.get("id");
         if (cond == "fixture_scale") {
             EXPECT_GE(wd, 70);
             EXPECT_LE(wd, 150);
             EXPECT_NEAR(scaleError, wd / (wd - 7.5) - 1, 2e-4);
             EXPECT_NEAR(mmPerPx / trueScale, 1 + scaleError, 2e-3);
             mmPerPx /= 1 + scaleError;
-        } else EXPECT_NEAR(scaleError, 0, 1e-4) << t.get("id");
+        } else
+            EXPECT_NEAR(scaleError, 0, 1e-4) << t.get("id");
         if (cond == "tilt") {
             EXPECT_GE(num(t, "tilt_deg"), 6);
             EXPECT_LE(num(t, "tilt_deg"), 15);

@@ -7,7 +7,7 @@
 #include <thread>
 #include <unistd.h>
 
-#include "ctl_command.h"
+#include "host_tools/ctl_command.h"
 
 namespace {
 struct PtyPair {
@@ -32,7 +32,10 @@ std::string readLine(int fd)
     while (::read(fd, &c, 1) == 1 && c != '\n') line += c;
     return line;
 }
-void writeAll(int fd, const std::string &s) { ASSERT_EQ(::write(fd, s.data(), s.size()), ssize_t(s.size())); }
+void writeAll(int fd, const std::string &s)
+{
+    ASSERT_EQ(::write(fd, s.data(), s.size()), ssize_t(s.size()));
+}
 } // namespace
 
 TEST(Ctl, SendsTheRequestAndReadsTheAnswer)

@@ -6,8 +6,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "measure_command.h"
-#include "test_support.h"
+#include "host_tools/measure_command.h"
+#include "tests/host_tools/test_support.h"
 
 using namespace icacam;
 namespace fs = std::filesystem;
@@ -18,8 +18,7 @@ TEST(Devset, AccuracyBar)
     if (!fs::exists(dev / "manifest.csv")) GTEST_SKIP() << "no devset at " << dev;
     const fs::path dir = test::tempDir("devset");
     const std::string out = (dir / "out.csv").string();
-    ASSERT_EQ(host::measureCommand({"--manifest", (dev / "manifest.csv").string(), "--out", out,
-                                    "--model", "paper"}),
+    ASSERT_EQ(host::measureCommand({"--manifest", (dev / "manifest.csv").string(), "--out", out, "--model", "paper"}),
               0);
     auto got = test::readCsvById(out);
     auto truth = test::readCsvById((dev / "truth.csv").string());

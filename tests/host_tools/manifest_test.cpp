@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "manifest.h"
+#include "host_tools/manifest.h"
 
 using namespace icacam::host;
 
@@ -8,7 +8,8 @@ TEST(Manifest, ParsesQuotedFieldsAndExtraColumns)
 {
     Manifest m;
     std::string err;
-    ASSERT_TRUE(parseManifest("id,image,n,mm_per_px,note\r\na,\"x,1.png\",0.2,0.01,\"he said \"\"hi\"\"\"\n\n", &m, &err));
+    ASSERT_TRUE(
+        parseManifest("id,image,n,mm_per_px,note\r\na,\"x,1.png\",0.2,0.01,\"he said \"\"hi\"\"\"\n\n", &m, &err));
     ASSERT_EQ(m.rows.size(), 1u);
     EXPECT_EQ(m.rows[0].get("image"), "x,1.png");
     EXPECT_EQ(m.rows[0].get("note"), "he said \"hi\"");

@@ -15,10 +15,10 @@
 #include <string>
 #include <vector>
 
-#include "manifest.h"
-#include "measure_command.h"
-#include "synth_conditions.h"
-#include "test_support.h"
+#include "host_tools/manifest.h"
+#include "host_tools/measure_command.h"
+#include "host_tools/synth_conditions.h"
+#include "tests/host_tools/test_support.h"
 
 using namespace icacam;
 
@@ -87,8 +87,8 @@ void writeTrueCameraManifest(const std::filesystem::path &dir)
         ASSERT_GE(cells.size(), 6u);
         const auto &t = truth[cells[0]];
         const double hFinal = 15 * (1 - std::stod(t.at("reduction")));
-        out << cells[0] << "," << cells[1] << "," << cells[2] << "," << cells[3] << "," << cells[4] << ","
-            << cells[5] << "," << hFinal << "," << t.at("camera_truth") << "\n";
+        out << cells[0] << "," << cells[1] << "," << cells[2] << "," << cells[3] << "," << cells[4] << "," << cells[5]
+            << "," << hFinal << "," << t.at("camera_truth") << "\n";
     }
 }
 

@@ -8,14 +8,13 @@
 #include <string>
 #include <vector>
 
-#include "manifest.h"
+#include "host_tools/manifest.h"
 
 namespace icacam::test {
 
 inline std::filesystem::path tempDir(const std::string &name)
 {
-    auto p = std::filesystem::temp_directory_path() /
-             ("icacam-test-" + name + "-" + std::to_string(::getpid()));
+    auto p = std::filesystem::temp_directory_path() / ("icacam-test-" + name + "-" + std::to_string(::getpid()));
     std::filesystem::remove_all(p);
     std::filesystem::create_directories(p);
     return p;
@@ -34,6 +33,9 @@ inline std::map<std::string, std::map<std::string, std::string>> readCsvById(con
     return out;
 }
 
-inline std::string sharedData() { return ICACAM_SHARED_DATA; }
+inline std::string sharedData()
+{
+    return ICACAM_SHARED_DATA;
+}
 
 } // namespace icacam::test

@@ -40,8 +40,7 @@ inline bool addGpioChip0(UMockdevTestbed *bed, std::string *error)
     gchar *sys = umockdev_testbed_get_sys_dir(bed);
     const std::string bus = std::string(sys) + "/bus/gpio/devices";
     g_mkdir_with_parents(bus.c_str(), 0755);
-    (void)symlink((std::string(sys) + "/devices/platform/gpio-mock/gpiochip0").c_str(),
-                  (bus + "/gpiochip0").c_str());
+    (void)symlink((std::string(sys) + "/devices/platform/gpio-mock/gpiochip0").c_str(), (bus + "/gpiochip0").c_str());
     g_free(sys);
     return true;
 }

@@ -1,8 +1,8 @@
 // Zero heap allocations per measurement after configure(): operator new is counted.
 #include <gtest/gtest.h>
 
+#include "host_tools/end_face_renderer.h"
 #include "tests/support/allocation_counter.h"
-#include "end_face_renderer.h"
 #include "vision/end_face_analyzer.h"
 #include "vision/model/paper_model.h"
 

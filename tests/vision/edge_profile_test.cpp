@@ -71,8 +71,8 @@ TEST(RadialProfile, RayPositionsDriftLessThanStated)
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) img[size_t(y) * w + x] = uint8_t(x);
     const LumaView v{img.data(), w, h, w, 1};
-    RaySpec ray{Q16_16::fromDouble(10.3), Q16_16::fromDouble(20.7), {}, {}, Q16_16::fromDouble(0),
-                Q16_16::fromDouble(0.25)};
+    RaySpec ray{Q16_16::fromDouble(10.3), Q16_16::fromDouble(20.7), {}, {},
+                Q16_16::fromDouble(0),    Q16_16::fromDouble(0.25)};
     rayDirection(1, 16, &ray.cosT, &ray.sinT); // 22.5°
     std::vector<uint16_t> out(900);
     ASSERT_EQ(sampleRay(v, ray, 900, out.data()), 900);

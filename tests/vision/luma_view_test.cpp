@@ -49,8 +49,7 @@ TEST(LumaView, RgbFormatsConvertWithBt601Weights)
     std::vector<uint8_t> bgr = {0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255};
     std::vector<uint8_t> bgrx = {0, 0, 255, 9, 0, 255, 0, 9, 255, 0, 0, 9, 255, 255, 255, 9};
     const uint8_t want[4] = {77, 149, 29, 255}; // (w·255 + 128) >> 8
-    for (auto [fmt, buf, stride] : {std::tuple{PixelFormat::RGB24, &rgb, 12},
-                                    std::tuple{PixelFormat::BGR24, &bgr, 12},
+    for (auto [fmt, buf, stride] : {std::tuple{PixelFormat::RGB24, &rgb, 12}, std::tuple{PixelFormat::BGR24, &bgr, 12},
                                     std::tuple{PixelFormat::XRGB32, &bgrx, 16}}) {
         std::vector<uint8_t> scratch(lumaScratchBytes(fmt, 4, 1));
         LumaView lv;

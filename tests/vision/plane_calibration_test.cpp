@@ -9,7 +9,7 @@
 
 #include <opencv2/calib3d.hpp>
 
-#include "calibration_renderer.h"
+#include "host_tools/calibration_renderer.h"
 #include "vision/boundary_fit.h"
 #include "vision/plane_calibration.h"
 
@@ -104,7 +104,7 @@ TEST(PlaneCalibration, PinholeWithoutTiltIsAPlainScale)
     PlaneCalibration c;
     c.fx = c.fy = 4000;
     c.cx = 700, c.cy = 500;
-    c.t[2] = 100; // fixture 100 mm in front; z of the fixture points away from the camera
+    c.t[2] = 100;    // fixture 100 mm in front; z of the fixture points away from the camera
     c.heightMm = 20; // the plane 20 mm nearer: 80 mm, 0.02 mm/px
     const vision::PlanePoint q = vision::pixelToPlane(c, 900, 400);
     ASSERT_TRUE(q.valid);

@@ -80,10 +80,10 @@ void put(std::string *out, const char *fmt, auto... args)
 // for bit; fixed-point values as their raw integers.
 void printFit(std::string *out, const char *name, const vision::BoundaryFit &f)
 {
-    put(out, "%s rEqPx %a rEqSigmaPx %a scatterPx %a coverage %a used %d\n", name, f.rEqPx, f.rEqSigmaPx,
-        f.scatterPx, f.coverage, f.used);
-    put(out, "%s contrast %a ellipticity %.12g axisDeg %a centre %a %a harmonics %d\n", name, f.contrast,
-        f.ellipticity, f.axisDeg, f.centreX, f.centreY, f.harmonics);
+    put(out, "%s rEqPx %a rEqSigmaPx %a scatterPx %a coverage %a used %d\n", name, f.rEqPx, f.rEqSigmaPx, f.scatterPx,
+        f.coverage, f.used);
+    put(out, "%s contrast %a ellipticity %.12g axisDeg %a centre %a %a harmonics %d\n", name, f.contrast, f.ellipticity,
+        f.axisDeg, f.centreX, f.centreY, f.harmonics);
 }
 
 void printPoints(std::string *out, const char *name, const vision::EdgeSample *pts, int n)
@@ -110,8 +110,7 @@ std::string measureAll(std::string *failure)
                       "# with ICACAM_WRITE_REFERENCE set; aarch64 (qemu) must print the same, bit for bit.\n";
     for (const auto &row : readManifest()) {
         hal::DecodedImage img;
-        const hal::Error e =
-            hal::decodeImage(kSample + "/" + row.image, buf.get(), cap, kMaxW, kMaxH, 0, &img);
+        const hal::Error e = hal::decodeImage(kSample + "/" + row.image, buf.get(), cap, kMaxW, kMaxH, 0, &img);
         if (!e.ok()) {
             *failure = row.image + ": " + e.message;
             return {};
@@ -124,10 +123,9 @@ std::string measureAll(std::string *failure)
         const vision::Measurement m = analyzer.measure(luma, row.spec, model);
         put(&out, "image %s %dx%d luma-fnv1a %016llx\n", row.id.c_str(), img.width, img.height,
             static_cast<unsigned long long>(digest(buf.get(), img.width, img.height, img.stride)));
-        put(&out, "status %s error %d flags %08x\n", vision::statusName(m.status), int(m.error),
-            unsigned(m.flags));
-        put(&out, "centre %a %a rMaxPx %a edgeWidthPx %a saturated %a\n", m.centreX, m.centreY, m.rMaxPx,
-            m.edgeWidthPx, m.saturatedFraction);
+        put(&out, "status %s error %d flags %08x\n", vision::statusName(m.status), int(m.error), unsigned(m.flags));
+        put(&out, "centre %a %a rMaxPx %a edgeWidthPx %a saturated %a\n", m.centreX, m.centreY, m.rMaxPx, m.edgeWidthPx,
+            m.saturatedFraction);
         printFit(&out, "inner", m.inner);
         printFit(&out, "outer", m.outer);
         put(&out, "mm rInner %a rOuter %a rMax %a\n", m.rInnerMm, m.rOuterMm, m.rMaxMm);

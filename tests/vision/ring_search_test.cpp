@@ -21,9 +21,12 @@ namespace {
 // refinement leaves behind (64 rays at the coarse step from 0.88 R0: the mean profile the
 // search names its edges from).
 struct Search {
-    std::vector<uint16_t> coarse = std::vector<uint16_t>(size_t(EndFaceAnalyzer::kCoarseRays) * EndFaceAnalyzer::kMaxCoarseSamples);
-    std::vector<uint16_t> fine = std::vector<uint16_t>(size_t(EndFaceAnalyzer::kFineRays) * EndFaceAnalyzer::kMaxFineSamples);
-    std::vector<int16_t> deriv = std::vector<int16_t>(size_t(EndFaceAnalyzer::kFineRays) * EndFaceAnalyzer::kMaxFineSamples);
+    std::vector<uint16_t> coarse =
+        std::vector<uint16_t>(size_t(EndFaceAnalyzer::kCoarseRays) * EndFaceAnalyzer::kMaxCoarseSamples);
+    std::vector<uint16_t> fine =
+        std::vector<uint16_t>(size_t(EndFaceAnalyzer::kFineRays) * EndFaceAnalyzer::kMaxFineSamples);
+    std::vector<int16_t> deriv =
+        std::vector<int16_t>(size_t(EndFaceAnalyzer::kFineRays) * EndFaceAnalyzer::kMaxFineSamples);
     std::vector<int32_t> meanProfile = std::vector<int32_t>(EndFaceAnalyzer::kMaxCoarseSamples);
     std::vector<int32_t> meanDeriv = std::vector<int32_t>(EndFaceAnalyzer::kMaxCoarseSamples);
     std::vector<EdgeSample> innerPts = std::vector<EdgeSample>(EndFaceAnalyzer::kFineRays);
@@ -36,15 +39,22 @@ struct Search {
         const double step = EndFaceAnalyzer::coarseStep(r0);
         const int count = std::min(EndFaceAnalyzer::kMaxCoarseSamples, int((rB - rA) / step));
         for (int i = 0; i < EndFaceAnalyzer::kCoarseRays; ++i) {
-            RaySpec ray{Q16_16::fromDouble(cx), Q16_16::fromDouble(cy), {}, {}, Q16_16::fromDouble(rA),
-                        Q16_16::fromDouble(step)};
+            RaySpec ray{Q16_16::fromDouble(cx), Q16_16::fromDouble(cy),  {}, {},
+                        Q16_16::fromDouble(rA), Q16_16::fromDouble(step)};
             rayDirection(i, EndFaceAnalyzer::kCoarseRays, &ray.cosT, &ray.sinT);
             sampleRay(v, ray, count, coarse.data() + size_t(i) * EndFaceAnalyzer::kMaxCoarseSamples);
         }
-        RingSearch s{&v,           r0,          cx,
-                     cy,           coarse.data(), fine.data(),
-                     deriv.data(), meanProfile.data(), meanDeriv.data(),
-                     innerPts.data(), outerPts.data()};
+        RingSearch s{&v,
+                     r0,
+                     cx,
+                     cy,
+                     coarse.data(),
+                     fine.data(),
+                     deriv.data(),
+                     meanProfile.data(),
+                     meanDeriv.data(),
+                     innerPts.data(),
+                     outerPts.data()};
         m = Measurement{};
         return s.run(&m);
     }
@@ -88,10 +98,12 @@ TEST(RingSearch, FindsTheDrawnBoundariesAboutTheDrawnCentre)
     ASSERT_EQ(s.m.rayCount, EndFaceAnalyzer::kFineRays);
     int valid = 0;
     for (int i = 0; i < s.m.rayCount; ++i) {
-        for (const auto &[pts, r] : {std::pair{s.m.innerPoints, face.rInner}, std::pair{s.m.outerPoints, face.rOuter}}) {
+        for (const auto &[pts, r] :
+             {std::pair{s.m.innerPoints, face.rInner}, std::pair{s.m.outerPoints, face.rOuter}}) {
             if (!pts[i].valid) continue;
             ++valid;
-            EXPECT_NEAR(std::hypot(pts[i].x.toDouble() - face.cx, pts[i].y.toDouble() - face.cy), r, 0.5) << "ray " << i;
+            EXPECT_NEAR(std::hypot(pts[i].x.toDouble() - face.cx, pts[i].y.toDouble() - face.cy), r, 0.5)
+                << "ray " << i;
         }
     }
     EXPECT_EQ(valid, 2 * EndFaceAnalyzer::kFineRays);

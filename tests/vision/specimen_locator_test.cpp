@@ -17,10 +17,16 @@ namespace {
 
 // The analyzer's acceptance of a peak: at least 20 votes, and 12 times the mean 3×3 sum of the
 // accumulator (end_face_analyzer.cpp).
-bool acceptedAsSpecimen(const CentreEstimate &e) { return e.found && e.votes >= 20 && e.votes * 100 >= 12 * e.background; }
+bool acceptedAsSpecimen(const CentreEstimate &e)
+{
+    return e.found && e.votes >= 20 && e.votes * 100 >= 12 * e.background;
+}
 
 // One decimated cell in full-frame pixels: the locator's resolution.
-double cellPx(int width, int height) { return std::ceil(std::max(width, height) / double(SpecimenLocator::kMaxCells)); }
+double cellPx(int width, int height)
+{
+    return std::ceil(std::max(width, height) / double(SpecimenLocator::kMaxCells));
+}
 
 // Searched as the analyzer searches for a specimen of initial radius r0: 0.8 … 1.8 r0.
 CentreEstimate locate(const LumaView &v, double r0)
@@ -36,7 +42,11 @@ TEST(SpecimenLocator, PeakIsTheDrawnCentreWithinACell)
 {
     // Several sizes, centres and frames, so the decimation grid meets the centre at different
     // phases (4, 7 and 10 px cells).
-    struct Case { double r0; int w, h; double cx, cy; };
+    struct Case {
+        double r0;
+        int w, h;
+        double cx, cy;
+    };
     for (const Case c : {Case{80, 384, 288, 170.8, 140.2}, Case{80, 640, 480, 402.5, 211.7},
                          Case{120, 640, 480, 250.1, 260.9}, Case{250, 900, 880, 451.3, 438.6}}) {
         test::SyntheticEndFace face;

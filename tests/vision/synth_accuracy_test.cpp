@@ -5,8 +5,8 @@
 #include <cmath>
 #include <random>
 
-#include "end_face_renderer.h"
-#include "synth_command.h"
+#include "host_tools/end_face_renderer.h"
+#include "host_tools/synth_command.h"
 #include "vision/end_face_analyzer.h"
 #include "vision/model/paper_model.h"
 
@@ -33,7 +33,10 @@ TEST(SynthAccuracy, RandomScenesWithNuisances)
         const vision::SpecimenSpec spec{n, 500, 10, 15, s.mmPerPx};
         const vision::Measurement m = analyzer.measure(v, spec, model);
         const double muTrue = model.estimate({s.rOuterEqMm() - s.rInnerEqMm(), n}).mu;
-        if (!m.hasValue()) { errs.push_back(1); continue; }
+        if (!m.hasValue()) {
+            errs.push_back(1);
+            continue;
+        }
         const double e = std::fabs(m.mu - muTrue);
         errs.push_back(e);
         // Scenes at the exact scale and 50 %: the silhouette check stays quiet.

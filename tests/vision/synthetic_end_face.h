@@ -16,14 +16,14 @@ namespace icacam::test {
 
 struct SyntheticEndFace {
     int width = 900, height = 880;
-    double cx = 451.3, cy = 438.6; // the drawn centre, pixels
-    double r0 = 250;               // the specimen's initial radius, pixels
+    double cx = 451.3, cy = 438.6;                                    // the drawn centre, pixels
+    double r0 = 250;                                                  // the specimen's initial radius, pixels
     double rInner = 1.12 * r0, rOuter = 1.24 * r0, rMax = 1.454 * r0; // the drawn boundaries, pixels
     // Relative amplitude and phase of a second harmonic on the contact edge (0: a circle).
     double outerC2 = 0, outerPhase = 0;
     double face = 150, ica = 170, barrel = 30, background = 40; // grey levels
-    double blurSigma = 1.0;                                       // of every step, pixels
-    int pixelStep = 1; // 2: the luma of a YUYV frame (chroma bytes set to 128)
+    double blurSigma = 1.0;                                     // of every step, pixels
+    int pixelStep = 1;                                          // 2: the luma of a YUYV frame (chroma bytes set to 128)
 
     // The same specimen at another initial radius.
     void scaleTo(double newR0)

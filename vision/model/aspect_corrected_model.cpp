@@ -1,18 +1,27 @@
-#include "aspect_corrected_model.h"
+#include "vision/model/aspect_corrected_model.h"
 
 #include <array>
 #include <cmath>
 
-#include "aspect_table.h"
-#include "grid.h"
+#include "vision/model/aspect_table.h"
+#include "vision/model/grid.h"
 
 namespace icacam::vision {
 
 namespace t = aspect_table;
 
-double AspectCorrectedModel::baseAspect() { return t::kBaseAspect; }
-double AspectCorrectedModel::aspectMin() { return t::kAspect[0]; }
-double AspectCorrectedModel::aspectMax() { return t::kAspect[t::kACount - 1]; }
+double AspectCorrectedModel::baseAspect()
+{
+    return t::kBaseAspect;
+}
+double AspectCorrectedModel::aspectMin()
+{
+    return t::kAspect[0];
+}
+double AspectCorrectedModel::aspectMax()
+{
+    return t::kAspect[t::kACount - 1];
+}
 
 namespace {
 using RatioTable = double[t::kACount][t::kNCount][t::kRCount][t::kMuCount];
@@ -22,7 +31,7 @@ using RatioTable = double[t::kACount][t::kNCount][t::kRCount][t::kMuCount];
 double lookup(const RatioTable &tab, double aspect, double n, double reduction, double mu)
 {
     constexpr std::array<GridAxis, 4> axes{GridAxis{t::kAspect, t::kACount}, GridAxis{t::kN, t::kNCount},
-                                          GridAxis{t::kR, t::kRCount}, GridAxis{t::kMu, t::kMuCount}};
+                                           GridAxis{t::kR, t::kRCount}, GridAxis{t::kMu, t::kMuCount}};
     return gridValue(&tab[0][0][0][0], axes, {aspect, n, reduction, mu});
 }
 } // namespace

@@ -10,7 +10,7 @@
 // so it iterates. At H0/D0 = 1.5 it is the base model unchanged. Outside the simulated
 // slenderness it sets kModelAspectOutside (μ still computed with the nearest ratio).
 // Pure C++20: no heap, no OS calls, no exceptions.
-#include "friction_model.h"
+#include "vision/model/friction_model.h"
 
 namespace icacam::vision {
 

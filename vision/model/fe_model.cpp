@@ -1,10 +1,10 @@
-#include "fe_model.h"
+#include "vision/model/fe_model.h"
 
 #include <array>
 #include <cmath>
 
-#include "fe_model_table.h"
-#include "grid.h"
+#include "vision/model/fe_model_table.h"
+#include "vision/model/grid.h"
 
 namespace icacam::vision {
 
@@ -61,9 +61,18 @@ double uAtK(const Index &p, double k)
     const double v = t::kU[p[0]][p[1]][p[2]] + carryAt(&t::kDU[0][0][0][0], p, k);
     return v > 0 ? v : v == v ? 0 : kNoData;
 }
-double riAtK(const Index &p, double k) { return t::kRi[p[0]][p[1]][p[2]] + carryAt(&t::kDRi[0][0][0][0], p, k); }
-double roAtK(const Index &p, double k) { return t::kRo[p[0]][p[1]][p[2]] + carryAt(&t::kDRi[0][0][0][0], p, k) + carryAt(&t::kDU[0][0][0][0], p, k); }
-double rMaxAtK(const Index &p, double k) { return t::kRmax[p[0]][p[1]][p[2]] + carryAt(&t::kDRmax[0][0][0][0], p, k); }
+double riAtK(const Index &p, double k)
+{
+    return t::kRi[p[0]][p[1]][p[2]] + carryAt(&t::kDRi[0][0][0][0], p, k);
+}
+double roAtK(const Index &p, double k)
+{
+    return t::kRo[p[0]][p[1]][p[2]] + carryAt(&t::kDRi[0][0][0][0], p, k) + carryAt(&t::kDU[0][0][0][0], p, k);
+}
+double rMaxAtK(const Index &p, double k)
+{
+    return t::kRmax[p[0]][p[1]][p[2]] + carryAt(&t::kDRmax[0][0][0][0], p, k);
+}
 
 // The row of one (reduction, n) grid point at K: its (u, μ) points.
 Row rowAt(int ri, int ni, double kMpa)
@@ -77,8 +86,16 @@ Row rowAt(int ri, int ni, double kMpa)
 void pchip(const Row &r, double x, double &y, double &dy, bool &outside)
 {
     outside = r.count < 2 || x < r.u[0] - 1e-9 || x > r.u[r.count - 1] + 1e-9;
-    if (r.count == 0) { y = 0; dy = 0; return; }
-    if (r.count == 1) { y = r.mu[0]; dy = 0; return; }
+    if (r.count == 0) {
+        y = 0;
+        dy = 0;
+        return;
+    }
+    if (r.count == 1) {
+        y = r.mu[0];
+        dy = 0;
+        return;
+    }
     int k = 0;
     while (k < r.count - 2 && x > r.u[k + 1]) ++k;
     auto slope = [&](int i) { return (r.mu[i + 1] - r.mu[i]) / (r.u[i + 1] - r.u[i]); };
@@ -91,21 +108,27 @@ void pchip(const Row &r, double x, double &y, double &dy, bool &outside)
     };
     const double h = r.u[k + 1] - r.u[k];
     double s = (x - r.u[k]) / h;
-    if (s < 0) { y = r.mu[k] + (x - r.u[k]) * tangent(k); dy = tangent(k); return; }
-    if (s > 1) { y = r.mu[k + 1] + (x - r.u[k + 1]) * tangent(k + 1); dy = tangent(k + 1); return; }
+    if (s < 0) {
+        y = r.mu[k] + (x - r.u[k]) * tangent(k);
+        dy = tangent(k);
+        return;
+    }
+    if (s > 1) {
+        y = r.mu[k + 1] + (x - r.u[k + 1]) * tangent(k + 1);
+        dy = tangent(k + 1);
+        return;
+    }
     const double m0 = tangent(k) * h, m1 = tangent(k + 1) * h;
     const double s2 = s * s, s3 = s2 * s;
-    y = (2 * s3 - 3 * s2 + 1) * r.mu[k] + (s3 - 2 * s2 + s) * m0 + (-2 * s3 + 3 * s2) * r.mu[k + 1] +
-        (s3 - s2) * m1;
+    y = (2 * s3 - 3 * s2 + 1) * r.mu[k] + (s3 - 2 * s2 + s) * m0 + (-2 * s3 + 3 * s2) * r.mu[k + 1] + (s3 - s2) * m1;
     dy = ((6 * s2 - 6 * s) * r.mu[k] + (3 * s2 - 4 * s + 1) * m0 + (-6 * s2 + 6 * s) * r.mu[k + 1] +
-          (3 * s2 - 2 * s) * m1) / h;
+          (3 * s2 - 2 * s) * m1) /
+         h;
 }
-
 
 // A table at K over (reduction, n, μ): multilinear on the grid (NaN where a weighted grid
 // point has no data).
-template <class AtK>
-double lookup(AtK atK, double k, double red, double n, double mu)
+template <class AtK> double lookup(AtK atK, double k, double red, double n, double mu)
 {
     return blendCorners(locateOnGrid(kGrid, {red, n, mu}), [&](const Index &p) { return atK(p, k); });
 }
@@ -134,8 +157,10 @@ ModelEstimate FeModel::estimate(const ModelInputs &in) const
     // The reduction: the declared final height's, else the model's own (50 %).
     double red = t::kReduction;
     if (in.hFinalMm > 0) {
-        if (in.h0Mm > 0 && in.hFinalMm < in.h0Mm) red = 1.0 - in.hFinalMm / in.h0Mm;
-        else e.range |= kModelReductionOutside;
+        if (in.h0Mm > 0 && in.hFinalMm < in.h0Mm)
+            red = 1.0 - in.hFinalMm / in.h0Mm;
+        else
+            e.range |= kModelReductionOutside;
     }
     if (red < t::kR[0] - 1e-9 || red > t::kR[t::kRCount - 1] + 1e-9) e.range |= kModelReductionOutside;
     // u(μ) at the specimen's K: the base plus the K carry (the fold-over's onset moves with

@@ -2,7 +2,7 @@
 // μ(u, n) and the radii R_i, R_o, R_max from our own CalculiX runs (docs/fe.md).
 // The table is generated: vision/model/fe_model_table.h, by `icacam fe tables` from one FE base.
 // Pure C++20: no heap, no OS calls, no exceptions.
-#include "friction_model.h"
+#include "vision/model/friction_model.h"
 
 namespace icacam::vision {
 

@@ -1,9 +1,9 @@
-#include "friction_models.h"
+#include "vision/model/friction_models.h"
 
-#include "aspect_corrected_model.h"
-#include "fe_model.h"
-#include "paper_model.h"
-#include "reduction_corrected_model.h"
+#include "vision/model/aspect_corrected_model.h"
+#include "vision/model/fe_model.h"
+#include "vision/model/paper_model.h"
+#include "vision/model/reduction_corrected_model.h"
 
 namespace icacam::vision {
 

@@ -4,7 +4,7 @@
 #include <array>
 #include <string_view>
 
-#include "friction_model.h"
+#include "vision/model/friction_model.h"
 
 namespace icacam::vision {
 

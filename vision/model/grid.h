@@ -47,16 +47,20 @@ constexpr AxisSpot locateOnAxis(const GridAxis &a, double x)
     if (a.count <= 1) return s;
     const double *v = a.values;
     if (!(x >= v[0])) { // below (NaN too: held at the first value, flagged by the caller)
-        if (a.below == Beyond::Nothing) s.none = true;
-        else if (a.below == Beyond::Extend && x == x) s.w = (x - v[0]) / (v[1] - v[0]);
+        if (a.below == Beyond::Nothing)
+            s.none = true;
+        else if (a.below == Beyond::Extend && x == x)
+            s.w = (x - v[0]) / (v[1] - v[0]);
         return s;
     }
     if (x >= v[a.count - 1]) {
         s.i = a.count - 2;
         s.w = 1;
         if (x == v[a.count - 1]) return s;
-        if (a.above == Beyond::Nothing) s.none = true;
-        else if (a.above == Beyond::Extend) s.w = (x - v[s.i]) / (v[s.i + 1] - v[s.i]);
+        if (a.above == Beyond::Nothing)
+            s.none = true;
+        else if (a.above == Beyond::Extend)
+            s.w = (x - v[s.i]) / (v[s.i + 1] - v[s.i]);
         return s;
     }
     while (s.i < a.count - 2 && x >= v[s.i + 1]) ++s.i;
@@ -64,8 +68,7 @@ constexpr AxisSpot locateOnAxis(const GridAxis &a, double x)
     return s;
 }
 
-template <std::size_t D>
-struct GridSpot {
+template <std::size_t D> struct GridSpot {
     std::array<AxisSpot, D> axis{};
     bool none = false; // some axis gives no value here
 };
@@ -83,8 +86,7 @@ constexpr GridSpot<D> locateOnGrid(const std::array<GridAxis, D> &axes, const st
 
 // visit(index, weight) for each corner of the cell with a weight other than 0; index[d] is
 // the grid index along axis d. Nothing is visited when the spot has no value.
-template <std::size_t D, class Visit>
-constexpr void forEachCorner(const GridSpot<D> &s, Visit &&visit)
+template <std::size_t D, class Visit> constexpr void forEachCorner(const GridSpot<D> &s, Visit &&visit)
 {
     if (s.none) return;
     for (unsigned corner = 0; corner < (1u << D); ++corner) {
@@ -101,8 +103,7 @@ constexpr void forEachCorner(const GridSpot<D> &s, Visit &&visit)
 
 // Σ weight × node(index) over the corners; NaN when the spot has no value or a weighted
 // corner's node is NaN.
-template <std::size_t D, class Node>
-constexpr double blendCorners(const GridSpot<D> &s, Node &&node)
+template <std::size_t D, class Node> constexpr double blendCorners(const GridSpot<D> &s, Node &&node)
 {
     if (s.none) return kNoData;
     double sum = 0;

@@ -1,4 +1,4 @@
-#include "paper_model.h"
+#include "vision/model/paper_model.h"
 
 #include <cmath>
 
@@ -14,10 +14,8 @@ double cubic(double x, double c3, double c2, double c1, double c0)
 PaperModel::Coefficients PaperModel::coefficients(double n)
 {
     // Eq. 3 of the paper.
-    return {cubic(n, -9.78142, 11.32378, -4.23226, 0.60661),
-            cubic(n, 18.01546, -20.67774, 7.38683, -0.92918),
-            cubic(n, -8.26771, 9.20005, -2.88130, 0.49425),
-            cubic(n, 0.78652, -0.91056, 0.35799, -0.00788)};
+    return {cubic(n, -9.78142, 11.32378, -4.23226, 0.60661), cubic(n, 18.01546, -20.67774, 7.38683, -0.92918),
+            cubic(n, -8.26771, 9.20005, -2.88130, 0.49425), cubic(n, 0.78652, -0.91056, 0.35799, -0.00788)};
 }
 
 ModelEstimate PaperModel::estimate(const ModelInputs &in) const
@@ -42,7 +40,8 @@ ModelEstimate PaperModel::estimate(const ModelInputs &in) const
     // Beyond u ≈ 1.25 mm the cubic turns over at low n: the fit has no data there.
     if (u < 0 || u > 1.25 || e.dMuDu <= 0) e.range |= kModelUOutside;
     // The paper simulated one slenderness, H0/D0 = 1.5; u depends on it (docs/fe.md).
-    if (in.d0Mm > 0 && in.h0Mm > 0 && std::fabs(in.h0Mm / in.d0Mm - 1.5) > kAspectTolerance) e.range |= kModelAspectOutside;
+    if (in.d0Mm > 0 && in.h0Mm > 0 && std::fabs(in.h0Mm / in.d0Mm - 1.5) > kAspectTolerance)
+        e.range |= kModelAspectOutside;
     return e;
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-#include "friction_model.h"
+#include "vision/model/friction_model.h"
 
 namespace icacam::vision {
 
@@ -9,7 +9,9 @@ namespace icacam::vision {
 // study: n 0.05–0.5, K 250–1250 MPa, μ 0.05–0.3, D0 = 10 mm, H0 = 15 mm, 50 % reduction.
 class PaperModel final : public FrictionModel {
 public:
-    struct Coefficients { double a, b, c, d; };
+    struct Coefficients {
+        double a, b, c, d;
+    };
     static Coefficients coefficients(double n);
 
     const char *name() const override { return "paper"; }

@@ -1,12 +1,12 @@
-#include "radii_consistency.h"
+#include "vision/model/radii_consistency.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 
-#include "aspect_corrected_model.h"
-#include "grid.h"
-#include "fe_model_table.h"
+#include "vision/model/aspect_corrected_model.h"
+#include "vision/model/fe_model_table.h"
+#include "vision/model/grid.h"
 
 namespace icacam::vision {
 
@@ -14,12 +14,21 @@ namespace t = fe_table; // the base's radii at every snapshot (K: the base's)
 
 namespace {
 
-double snapStep() { return t::kRCount > 1 ? t::kR[t::kRCount - 1] - t::kR[t::kRCount - 2] : 0.05; }
+double snapStep()
+{
+    return t::kRCount > 1 ? t::kR[t::kRCount - 1] - t::kR[t::kRCount - 2] : 0.05;
+}
 
 } // namespace
 
-double radiiReductionMin() { return std::max(0.35, t::kR[0]); }
-double radiiReductionMax() { return t::kR[t::kRCount - 1] + snapStep(); }
+double radiiReductionMin()
+{
+    return std::max(0.35, t::kR[0]);
+}
+double radiiReductionMax()
+{
+    return t::kR[t::kRCount - 1] + snapStep();
+}
 
 bool feRMaxAt(double n, double mu, double reduction, double *rMaxMm)
 {
@@ -33,7 +42,7 @@ bool feRadiusAt(FeRadius which, double n, double mu, double reduction, double *m
     // n and μ held at the simulated ends (R_max saturates at high μ), the reduction continued
     // past the last snapshot (up to radiiReductionMax) but not before the first.
     constexpr std::array<GridAxis, 3> axes{GridAxis{t::kR, t::kRCount, Beyond::Nothing, Beyond::Extend},
-                                          GridAxis{t::kN, t::kNCount}, GridAxis{t::kMu, t::kMuCount}};
+                                           GridAxis{t::kN, t::kNCount}, GridAxis{t::kMu, t::kMuCount}};
     const double v = gridValue(&tab[0][0][0], axes, {reduction, n, mu});
     if (!(v == v)) return false; // no data there
     *mm = v;

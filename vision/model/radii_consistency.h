@@ -44,9 +44,9 @@ inline constexpr double kMeasuredRMaxRelSigma = 0.0065;
 inline constexpr double kRadiiZLimit = 3.5;
 
 struct RadiiCheck {
-    bool valid = false;      // the FE had data at (n, μ)
-    double rMaxFeMm = 0;     // FE R_max at the declared (or assumed 50 %) reduction, scaled to D0
-    double z = 0;            // (measured − FE) / σ at that reduction
+    bool valid = false;       // the FE had data at (n, μ)
+    double rMaxFeMm = 0;      // FE R_max at the declared (or assumed 50 %) reduction, scaled to D0
+    double z = 0;             // (measured − FE) / σ at that reduction
     double reductionEst = -1; // the reduction R_max implies at this μ and n; -1 if none in range
     bool inconsistent() const { return valid && (z > kRadiiZLimit || z < -kRadiiZLimit); }
 };

@@ -1,9 +1,9 @@
-#include "reduction_corrected_model.h"
+#include "vision/model/reduction_corrected_model.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "reduction_table.h"
+#include "vision/model/reduction_table.h"
 
 namespace icacam::vision {
 
@@ -17,8 +17,14 @@ double ReductionCorrectedModel::slopeAt(double n, double mu)
     return c[0] + c[1] * n + c[2] * mu + c[3] * n * n + c[4] * n * mu + c[5] * mu * mu;
 }
 
-double ReductionCorrectedModel::reductionMin() { return t::kReductionMin; }
-double ReductionCorrectedModel::reductionMax() { return t::kReductionMax; }
+double ReductionCorrectedModel::reductionMin()
+{
+    return t::kReductionMin;
+}
+double ReductionCorrectedModel::reductionMax()
+{
+    return t::kReductionMax;
+}
 
 double ReductionCorrectedModel::uAtBaseReduction(const ModelInputs &in, double reduction) const
 {

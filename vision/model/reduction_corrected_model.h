@@ -11,7 +11,7 @@
 // height it is the base model unchanged. A reduction outside what the FE snapshots cover
 // sets kModelReductionOutside (μ is still computed, never silently).
 // Pure C++20: no heap, no OS calls, no exceptions.
-#include "friction_model.h"
+#include "vision/model/friction_model.h"
 
 namespace icacam::vision {
 

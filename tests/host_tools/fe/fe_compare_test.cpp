@@ -6,7 +6,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "fe_compare.h"
+#include "host_tools/fe/fe_compare.h"
 
 using namespace icacam::host::fe;
 namespace fs = std::filesystem;
@@ -42,8 +42,8 @@ TEST(FeCompare, JudgesDeltaUAndReportsWhichRadiusMoved)
     std::ofstream(dir / "other.csv") << kHead << row(0.05, 0.05, 0.5, 6.56, 0.130) << row(0.05, 0.3, 0.5, 5.10, 1.1055)
                                      << row(0.05, 0.3, 0.45, 5.0, 0.09) << row(0.05, 0.25, 0.5, 5.5, 0.8)
                                      << row(0.05, 0.2, 0.5, 5.6, 0.76);
-    ASSERT_EQ(compareCommand({(dir / "ref.csv").string(), (dir / "other.csv").string()}, (dir / "out.md").string(),
-                             0.1, 0.01, true),
+    ASSERT_EQ(compareCommand({(dir / "ref.csv").string(), (dir / "other.csv").string()}, (dir / "out.md").string(), 0.1,
+                             0.01, true),
               0);
     const std::string md = slurp(dir / "out.md");
     // Beyond the reference's u range the μ is extrapolated along the line and bracketed:
@@ -54,8 +54,10 @@ TEST(FeCompare, JudgesDeltaUAndReportsWhichRadiusMoved)
     EXPECT_NE(md.find("| 0.7600 | +5.6 | +0.0 | +40.0 | +5.3 | **no** |"), std::string::npos) << md;
     EXPECT_NE(md.find("(u ≤ bar's floor)"), std::string::npos) << md; // 0.05 mm: not judged
     EXPECT_NE(md.find("1 of 3 comparisons with u > 0.1 mm within 1 %; largest |Δu| 13.3 %"), std::string::npos) << md;
-    EXPECT_NE(md.find("In μ (the judged comparisons inside the reference's u range): 0 of 1 within 1 %; largest |Δμ| 5.3 %"),
-              std::string::npos) << md;
+    EXPECT_NE(
+        md.find("In μ (the judged comparisons inside the reference's u range): 0 of 1 within 1 %; largest |Δμ| 5.3 %"),
+        std::string::npos)
+        << md;
     EXPECT_EQ(md.find("| 0.25 |"), std::string::npos) << "a row without a reference is not compared";
     fs::remove_all(dir);
 }

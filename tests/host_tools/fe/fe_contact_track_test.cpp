@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "fe_contact_track.h"
+#include "host_tools/fe/fe_contact_track.h"
 
 using namespace icacam::host::fe;
 
@@ -16,7 +16,10 @@ constexpr double kSpacing = 0.1; // mm of former side between nodes
 constexpr int kTop = 40;         // nodes 0 … 40, 40 = the corner
 
 // The true edge: s mm of former side rolled onto the platen, from 30 % of reduction on.
-double trueEdge(double red) { return red <= 0.3 ? 0.0 : 9.0 * std::pow(red - 0.3, 1.5); }
+double trueEdge(double red)
+{
+    return red <= 0.3 ? 0.0 : 9.0 * std::pow(red - 0.3, 1.5);
+}
 
 // A side that leaves the platen tangentially (gap ∝ distance²) and lies flat where rolled on,
 // its nodes at radius 5 + s (+ a uniform radial growth) so the true R_o is known.

@@ -5,8 +5,8 @@
 #include <sstream>
 #include <string>
 
-#include "fe_case.h"
-#include "fe_runner.h"
+#include "host_tools/fe/fe_case.h"
+#include "host_tools/fe/fe_runner.h"
 
 using namespace icacam::host::fe;
 
@@ -19,7 +19,8 @@ int countLines(const std::string &deck, const std::string &from, const std::stri
     std::istringstream s(deck.substr(a + from.size(), b - a - from.size()));
     std::string line;
     int n = 0;
-    while (std::getline(s, line)) if (!line.empty()) ++n;
+    while (std::getline(s, line))
+        if (!line.empty()) ++n;
     return n;
 }
 } // namespace

@@ -5,8 +5,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "fe_case.h"
-#include "fe_results.h"
+#include "host_tools/fe/fe_case.h"
+#include "host_tools/fe/fe_results.h"
 
 using namespace icacam::host::fe;
 

@@ -2,7 +2,7 @@
 // the model and which stay checks.
 #include <gtest/gtest.h>
 
-#include "fe_rows.h"
+#include "host_tools/fe/fe_rows.h"
 
 using namespace icacam::host::fe;
 
@@ -14,12 +14,18 @@ FeRow row(double k, double n, double mu, double u, double contactPerK = 200, dou
     r.element = "CAX8R";
     r.elem = 0.5;
     r.cornerMm = 0.1;
-    r.kMpa = k; r.n = n; r.mu = mu;
-    r.eMpa = 210000; r.d0 = 10; r.h0 = 15;
+    r.kMpa = k;
+    r.n = n;
+    r.mu = mu;
+    r.eMpa = 210000;
+    r.d0 = 10;
+    r.h0 = 15;
     r.reduction = 0.5;
     r.contactSlope = contactPerK * k;
     r.stickSlope = stickPerK * k;
-    r.ri = 5; r.rMax = 7; r.force = 0.14 * k;
+    r.ri = 5;
+    r.rMax = 7;
+    r.force = 0.14 * k;
     r.uTrack = u;
     return r;
 }
@@ -34,9 +40,9 @@ TEST(FeBaseChoice, AveragesTheKThatCoverTheGridWithTheSamePenaltyPerK)
 {
     std::vector<FeRow> rows;
     grid(rows, 500, 1.0);
-    grid(rows, 500, 1.0); // the most common K: 500
-    grid(rows, 1250, 0.9); // scaled slopes, full grid: joins
-    grid(rows, 250, 0.5, 100, 10); // other (softer) slopes per K: a check, not the base
+    grid(rows, 500, 1.0);                     // the most common K: 500
+    grid(rows, 1250, 0.9);                    // scaled slopes, full grid: joins
+    grid(rows, 250, 0.5, 100, 10);            // other (softer) slopes per K: a check, not the base
     rows.push_back(row(750, 0.05, 0.1, 0.1)); // partial grid: a check
     const BaseChoice b = chooseBase(rows, 0.5);
     ASSERT_TRUE(b.found);
@@ -108,7 +114,10 @@ TEST(FeBaseChoice, TheFinestCompleteMeshIsTheBase)
     // The mesh is chosen over the cases, not per reduction: a finer run that stopped before
     // 50 % does not hand that reduction to another mesh.
     for (auto &r : rows)
-        if (r.cornerMm == 0.05 && r.n == 0.5 && r.mu == 0.3) { r.status = "failed"; r.reduction = 0.45; }
+        if (r.cornerMm == 0.05 && r.n == 0.5 && r.mu == 0.3) {
+            r.status = "failed";
+            r.reduction = 0.45;
+        }
     EXPECT_EQ(chooseBase(rows, 0.5).mesh, "CAX8R h0.5 c0.05");
     EXPECT_EQ(basePoints(rows, 0.5).count({0.5, 0.3}), 0u);
 }
@@ -127,8 +136,8 @@ TEST(FeBaseChoice, TheStiffestRegularisationOnTheFinestMeshIsTheBase)
             }
     };
     finer(1.0, 20);
-    finer(1.0, 20); // more rows with the base's first stick slope …
-    finer(1.2, 200); // … but a stick slope ten times stiffer covers the grid too
+    finer(1.0, 20);        // more rows with the base's first stick slope …
+    finer(1.2, 200);       // … but a stick slope ten times stiffer covers the grid too
     grid(rows, 500, 0.8);  // the factorial on a coarser mesh (slopes 200 K / 20 K) …
     grid(rows, 1250, 0.8); // … checked K 500-1250
     const BaseChoice b = chooseBase(rows, 0.5);
@@ -164,9 +173,10 @@ TEST(FeKCarry, HowUMovesWithKFromTheFamilyWithTheMostK)
     grid(rows, 500, 0.8);
     grid(rows, 250, 0.7);
     grid(rows, 1250, 0.95);
-    for (auto &r : rows) if (r.cornerMm == 0.1) r.ri = 5 - (r.uTrack - 0.8); // R_i moves against u
-    grid(rows, 750, 0.5, 100, 10); // another regularisation at one more K: no base K, no carry
-    rows.push_back(row(2000, 0.05, 0.1, 2.0)); // a partial grid: not a K of the carry
+    for (auto &r : rows)
+        if (r.cornerMm == 0.1) r.ri = 5 - (r.uTrack - 0.8); // R_i moves against u
+    grid(rows, 750, 0.5, 100, 10);                          // another regularisation at one more K: no base K, no carry
+    rows.push_back(row(2000, 0.05, 0.1, 2.0));              // a partial grid: not a K of the carry
     const BaseChoice b = chooseBase(rows, 0.5);
     ASSERT_EQ(b.mesh, "CAX8R h0.5 c0.05");
     const KCarry c = kCarry(rows, 0.5, b);

@@ -13,13 +13,16 @@
 #include <map>
 #include <tuple>
 
-#include "fe_rows.h"
+#include "host_tools/fe/fe_rows.h"
 #include "vision/model/fe_model.h"
 
 using namespace icacam;
 
 namespace {
-std::string data(const char *name) { return std::string(ICACAM_SOURCE_DIR) + "/data/fe/" + name; }
+std::string data(const char *name)
+{
+    return std::string(ICACAM_SOURCE_DIR) + "/data/fe/" + name;
+}
 } // namespace
 
 TEST(FeSimilarity, TwiceTheSpecimenGivesTwiceTheLengths)

@@ -7,7 +7,7 @@
 
 #include <unistd.h>
 
-#include "fe_runner.h"
+#include "host_tools/fe/fe_runner.h"
 
 using namespace icacam::host::fe;
 

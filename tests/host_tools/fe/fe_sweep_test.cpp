@@ -8,10 +8,10 @@
 
 #include <unistd.h>
 
-#include "fe_runner.h"
-#include "fe_slurm_options.h"
-#include "fe_slurm_script.h"
-#include "fe_sweep_csv.h"
+#include "host_tools/fe/fe_runner.h"
+#include "host_tools/fe/fe_slurm_options.h"
+#include "host_tools/fe/fe_slurm_script.h"
+#include "host_tools/fe/fe_sweep_csv.h"
 
 using namespace icacam::host::fe;
 namespace fs = std::filesystem;

@@ -15,11 +15,11 @@
 
 #include <unistd.h>
 
-#include "loop_command.h"
-#include "manifest.h"
-#include "synth_loop_set.h"
-#include "vision/model/reduction_table.h"
+#include "host_tools/loop/loop_command.h"
+#include "host_tools/manifest.h"
+#include "host_tools/synth_loop_set.h"
 #include "tests/support/table_inputs.h"
+#include "vision/model/reduction_table.h"
 
 namespace fs = std::filesystem;
 using namespace icacam::host;
@@ -96,9 +96,7 @@ TEST(LoopEffects, CameraScaleErrorFoundAsARecalibration)
             EXPECT_LT(2 * g->sigma, 0.02) << "an uncertainty too wide to tell 4 % from nothing";
             // The geometry's own check (the set's silhouettes come from the same FE snapshots,
             // so this checks the wiring: the bad camera's R_max reads 4 % large against the others).
-            if (error > 0) {
-                EXPECT_NEAR(g->silhouette, 1 + error, 0.005) << "seed " << seed << " " << camera;
-            }
+            if (error > 0) { EXPECT_NEAR(g->silhouette, 1 + error, 0.005) << "seed " << seed << " " << camera; }
         }
     }
 }
@@ -136,9 +134,7 @@ TEST(LoopEffects, WrongDeclaredNFoundPerMaterial)
             ASSERT_NE(g, nullptr) << material;
             EXPECT_NEAR(g->declared, declared.at(material), 1e-4);
             EXPECT_NEAR(g->value, n, 0.03) << "seed " << seed << " " << material;
-            if (std::fabs(declared.at(material) - n) > 0.01) {
-                EXPECT_NEAR(g->value, n, 2 * g->sigma) << material;
-            }
+            if (std::fabs(declared.at(material) - n) > 0.01) { EXPECT_NEAR(g->value, n, 2 * g->sigma) << material; }
         }
     }
 }
@@ -172,8 +168,8 @@ TEST(LoopEffects, NullSetAddsNothing)
 
 TEST(LoopEffects, SymptomsAreTheMeasuredQuantities)
 {
-    for (const char *m : {"r_inner_mm", "r_outer_mm", "r_bulge_mm", "diag_u_px", "u_mm", "mu", "reduction_est",
-                          "r_outer_px", "status"})
+    for (const char *m :
+         {"r_inner_mm", "r_outer_mm", "r_bulge_mm", "diag_u_px", "u_mm", "mu", "reduction_est", "r_outer_px", "status"})
         EXPECT_TRUE(isSymptom(m)) << m;
     for (const char *c : {"camera_id", "material", "press_speed_mm_s", "h_final_mm", "reduction", "n", "k_mpa",
                           "ambient_c", "mm_per_px", "lens"})

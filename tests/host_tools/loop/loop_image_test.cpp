@@ -12,12 +12,12 @@
 
 #include <unistd.h>
 
-#include "loop_command.h"
-#include "vision/model/reduction_table.h"
-#include "manifest.h"
-#include "measure_command.h"
-#include "synth_loop_set.h"
+#include "host_tools/loop/loop_command.h"
+#include "host_tools/manifest.h"
+#include "host_tools/measure_command.h"
+#include "host_tools/synth_loop_set.h"
 #include "tests/support/table_inputs.h"
+#include "vision/model/reduction_table.h"
 
 namespace fs = std::filesystem;
 using namespace icacam::host;

@@ -19,14 +19,14 @@
 #include "hal/file/file_led.h"
 #include "hal/file/file_trigger.h"
 #include "hal/file/folder_storage.h"
-#include "journal_records.h"
-#include "loop_command.h"
-#include "manifest.h"
-#include "synth_loop_set.h"
+#include "host_tools/loop/journal_records.h"
+#include "host_tools/loop/loop_command.h"
+#include "host_tools/manifest.h"
+#include "host_tools/synth_loop_set.h"
 #include "tests/support/recording_serial.h"
+#include "tests/support/table_inputs.h"
 #include "vision/model/paper_model.h"
 #include "vision/model/reduction_table.h"
-#include "tests/support/table_inputs.h"
 
 namespace fs = std::filesystem;
 using namespace icacam;

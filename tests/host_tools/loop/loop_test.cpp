@@ -13,11 +13,11 @@
 
 #include <unistd.h>
 
-#include "loop_analysis.h"
-#include "loop_command.h"
-#include "vision/model/reduction_table.h"
-#include "vision/model/paper_model.h"
+#include "host_tools/loop/loop_analysis.h"
+#include "host_tools/loop/loop_command.h"
 #include "tests/support/table_inputs.h"
+#include "vision/model/paper_model.h"
+#include "vision/model/reduction_table.h"
 
 namespace fs = std::filesystem;
 using namespace icacam::host::loop;
@@ -56,15 +56,18 @@ std::string makeSet(const std::string &name, Effect effect, int count, uint32_t 
         const std::string op = ops[rng() % 3], lens = lenses[rng() % 2];
         double u = uForMu(paper, mu, n); // u at 50 %
         double scale = 1.0;
-        if (effect == Effect::Process) u += slope.slope(n, mu) * (red - 0.5);
-        else red = 0.5 + 0.002 * (ured(rng) - 0.5); // held at 50 % within the press's tolerance
-        if (effect == Effect::Optical && lens == "L25") scale = 1.08; // the lab kept the other lens's mm_per_px: 8 % off
+        if (effect == Effect::Process)
+            u += slope.slope(n, mu) * (red - 0.5);
+        else
+            red = 0.5 + 0.002 * (ured(rng) - 0.5); // held at 50 % within the press's tolerance
+        if (effect == Effect::Optical && lens == "L25")
+            scale = 1.08; // the lab kept the other lens's mm_per_px: 8 % off
         const double ro = uro(rng);
         const double ri = ro - u;
         char line[400];
-        std::snprintf(line, sizeof line, "%s-%03d,%.4f,700,10,15,%.5f,%.5f,%.4f,%.3f,%s,%s,%.2f,%.1f,%d\n", name.c_str(),
-                      i + 1, n, ri * scale, ro * scale, mu + noise(rng), 15 * (1 - red), op.c_str(), lens.c_str(),
-                      speed, temp, i + 1);
+        std::snprintf(line, sizeof line, "%s-%03d,%.4f,700,10,15,%.5f,%.5f,%.4f,%.3f,%s,%s,%.2f,%.1f,%d\n",
+                      name.c_str(), i + 1, n, ri * scale, ro * scale, mu + noise(rng), 15 * (1 - red), op.c_str(),
+                      lens.c_str(), speed, temp, i + 1);
         f << line;
     }
     return path;
@@ -122,12 +125,12 @@ TEST(LoopSlope, CorrectionInvertsTheForwardEffect)
 TEST(LoopSets, ProcessEffectRankedFirstAndCorrectedPhysically)
 {
     for (uint32_t seed : {11u, 21u}) {
-    const LoopSummary s = run("process" + std::to_string(seed), Effect::Process, seed);
-    ASSERT_FALSE(s.ranking.empty());
-    const std::string top = s.ranking.front().name;
-    EXPECT_TRUE(top == "reduction" || top == "h_final_mm") << top;
-    EXPECT_TRUE(s.physical);
-    EXPECT_LT(s.cvRmsAfter, 0.5 * s.rmsBefore) << s.rmsBefore << " -> " << s.cvRmsAfter;
+        const LoopSummary s = run("process" + std::to_string(seed), Effect::Process, seed);
+        ASSERT_FALSE(s.ranking.empty());
+        const std::string top = s.ranking.front().name;
+        EXPECT_TRUE(top == "reduction" || top == "h_final_mm") << top;
+        EXPECT_TRUE(s.physical);
+        EXPECT_LT(s.cvRmsAfter, 0.5 * s.rmsBefore) << s.rmsBefore << " -> " << s.cvRmsAfter;
     }
 }
 

@@ -7,8 +7,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "fe_aspect.h"
-#include "fe_rows.h"
+#include "host_tools/fe/fe_aspect.h"
+#include "host_tools/fe/fe_rows.h"
 #include "tests/support/table_inputs.h"
 #include "vision/model/aspect_corrected_model.h"
 #include "vision/model/aspect_table.h"
@@ -19,7 +19,10 @@ using namespace icacam;
 namespace t = icacam::vision::aspect_table;
 
 namespace {
-std::vector<std::string> tableInputs() { return test::repositoryPaths(t::kInputs); }
+std::vector<std::string> tableInputs()
+{
+    return test::repositoryPaths(t::kInputs);
+}
 int index(const double *axis, int count, double x)
 {
     for (int i = 0; i < count; ++i)
@@ -129,8 +132,8 @@ TEST(AspectTable, PairsRunsOfTheSameRegularisationOnly)
                        "stick_slope,r_i_mm,r_o_mm,r_o_interp_mm,r_max_mm,u_mm,u_interp_mm,force_kn,u_track_mm\n";
     auto row = [](double h0, double stick, double u) {
         std::ostringstream s;
-        s << "c,ok,500,0.25,0.2,210000,0.3,10," << h0 << ",0.5,0.5,0.1,CAX8R,100000," << stick << ",5.5," << 5.5 + u << ","
-          << 5.5 + u << ",7.3," << u << "," << u << ",80," << u << "\n";
+        s << "c,ok,500,0.25,0.2,210000,0.3,10," << h0 << ",0.5,0.5,0.1,CAX8R,100000," << stick << ",5.5," << 5.5 + u
+          << "," << 5.5 + u << ",7.3," << u << "," << u << ",80," << u << "\n";
         return s.str();
     };
     std::ofstream(dir / "base.csv") << head << row(15, 100000, 0.82) << row(15, 10000, 0.80);

@@ -4,12 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
-#include <vector>
 #include <filesystem>
 #include <map>
+#include <sstream>
+#include <vector>
 
-#include "fe_rows.h"
+#include "host_tools/fe/fe_rows.h"
 #include "tests/support/table_inputs.h"
 #include "vision/model/fe_model.h"
 #include "vision/model/fe_model_table.h"
@@ -19,7 +19,10 @@ namespace t = icacam::vision::fe_table;
 
 namespace {
 // The files the table names: its base, and the base with the K family (the carry's runs).
-std::vector<std::string> baseFile() { return test::repositoryPaths(t::kBase); }
+std::vector<std::string> baseFile()
+{
+    return test::repositoryPaths(t::kBase);
+}
 std::vector<std::string> tableInputs()
 {
     std::vector<std::string> in = baseFile();
@@ -54,13 +57,14 @@ TEST(FeModel, TableMatchesCommittedData)
             for (int j = 0; j < t::kMuCount; ++j) {
                 if (std::isnan(t::kU[r][i][j])) continue;
                 const auto it = base.find({t::kN[i], t::kMu[j]});
-                ASSERT_NE(it, base.end()) << "table point n=" << t::kN[i] << " mu=" << t::kMu[j] << " r=" << t::kR[r]
-                                          << " not in CSV";
+                ASSERT_NE(it, base.end())
+                    << "table point n=" << t::kN[i] << " mu=" << t::kMu[j] << " r=" << t::kR[r] << " not in CSV";
                 EXPECT_NEAR(t::kU[r][i][j], it->second, 2e-5) << "stale table: rerun icacam fe tables";
                 ++found;
                 ++inTable;
             }
-        EXPECT_EQ(inTable, base.size()) << "the CSV has points the table lacks at r=" << t::kR[r] << ": rerun icacam fe tables";
+        EXPECT_EQ(inTable, base.size()) << "the CSV has points the table lacks at r=" << t::kR[r]
+                                        << ": rerun icacam fe tables";
     }
     EXPECT_GE(found, 1);
 }

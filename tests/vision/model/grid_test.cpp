@@ -51,8 +51,7 @@ long double reference(const Table &t, const std::vector<double> &x, bool magnitu
     return v;
 }
 
-template <size_t D>
-double lookup(const Table &t, const std::vector<double> &x)
+template <size_t D> double lookup(const Table &t, const std::vector<double> &x)
 {
     std::array<GridAxis, D> axes;
     std::array<double, D> xs;
@@ -98,10 +97,14 @@ std::vector<double> randomPoint(std::mt19937 &rng, const Table &t)
     std::vector<double> x;
     for (const auto &a : t.axes) {
         const double lo = a.front(), hi = a.back(), span = std::max(hi - lo, 0.5), r = u(rng);
-        if (r < 0.15) x.push_back(a[std::uniform_int_distribution<size_t>(0, a.size() - 1)(rng)]);
-        else if (r < 0.3) x.push_back(lo - span * u(rng));
-        else if (r < 0.45) x.push_back(hi + span * u(rng));
-        else x.push_back(lo + (hi - lo) * u(rng));
+        if (r < 0.15)
+            x.push_back(a[std::uniform_int_distribution<size_t>(0, a.size() - 1)(rng)]);
+        else if (r < 0.3)
+            x.push_back(lo - span * u(rng));
+        else if (r < 0.45)
+            x.push_back(hi + span * u(rng));
+        else
+            x.push_back(lo + (hi - lo) * u(rng));
     }
     return x;
 }
@@ -125,7 +128,8 @@ TEST(Grid, MatchesTheBruteForceReferenceUnderEveryRule)
                         ++none;
                         continue;
                     }
-                    EXPECT_NEAR(got, double(want), 1e-14 * double(1 + reference(t, x, true))) << dims << "-d, rule " << int(rule);
+                    EXPECT_NEAR(got, double(want), 1e-14 * double(1 + reference(t, x, true)))
+                        << dims << "-d, rule " << int(rule);
                     ++checked;
                 }
             }
@@ -206,7 +210,8 @@ TEST(Grid, AHoleSpoilsOnlyTheLookupsThatWeighIt)
 TEST(Grid, VisitsOnlyTheWeightedCornersAndTheirWeightsSumToOne)
 {
     const double ax[4] = {0, 1, 2, 3};
-    const std::array<GridAxis, 3> axes{GridAxis{ax, 4}, GridAxis{ax, 4, Beyond::Extend, Beyond::Extend}, GridAxis{ax, 2}};
+    const std::array<GridAxis, 3> axes{GridAxis{ax, 4}, GridAxis{ax, 4, Beyond::Extend, Beyond::Extend},
+                                       GridAxis{ax, 2}};
     int corners = 0;
     double sum = 0;
     forEachCorner(locateOnGrid(axes, {1.0, 4.5, 0.25}), [&](const std::array<int, 3> &i, double w) {

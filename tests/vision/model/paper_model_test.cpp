@@ -23,7 +23,7 @@ TEST(PaperModel, Eq3ReproducesTable1)
             const double table = ((row[1] * u + row[2]) * u + row[3]) * u + row[4];
             EXPECT_NEAR(m.estimate({u, row[0]}).mu, table, 0.001) << "n=" << row[0] << " u=" << u;
         }
-    }
+}
 
 TEST(PaperModel, CorrectedConstantMatchesTable2)
 {

@@ -6,10 +6,10 @@
 
 #include <cmath>
 
-#include "end_face_renderer.h"
-#include "loop_analysis.h"
-#include "vision/model/aspect_corrected_model.h"
+#include "host_tools/end_face_renderer.h"
+#include "host_tools/loop/loop_analysis.h"
 #include "vision/end_face_analyzer.h"
+#include "vision/model/aspect_corrected_model.h"
 #include "vision/model/paper_model.h"
 #include "vision/model/radii_consistency.h"
 #include "vision/model/reduction_corrected_model.h"
@@ -101,7 +101,8 @@ Rendered render(double n, double mu, double r)
     return out;
 }
 
-vision::Measurement measure(const Rendered &x, double n, double mmPerPx, double hFinal, const vision::FrictionModel &model)
+vision::Measurement measure(const Rendered &x, double n, double mmPerPx, double hFinal,
+                            const vision::FrictionModel &model)
 {
     static vision::EndFaceAnalyzer analyzer;
     analyzer.configure(x.img.cols, x.img.rows);
@@ -154,9 +155,7 @@ TEST(RadiiConsistency, ThroughThePipelineOnRenderedImages)
     ASSERT_TRUE(m.hasValue());
     EXPECT_EQ((m.flags & vision::kFlagReductionOutside) != 0, 0.545 > vision::ReductionCorrectedModel::reductionMax());
     EXPECT_FALSE(m.flags & vision::kFlagRadiiInconsistent) << "z " << m.rMaxZ;
-    if (m.flags & vision::kFlagReductionOutside) {
-        EXPECT_EQ(m.status, vision::Status::Warn);
-    }
+    if (m.flags & vision::kFlagReductionOutside) { EXPECT_EQ(m.status, vision::Status::Warn); }
     const Rendered mid = render(0.25, 0.15, 0.515);
     m = measure(mid, 0.25, mid.scene.mmPerPx, 15 * (1 - 0.515), model);
     EXPECT_FALSE(m.flags & vision::kFlagReductionOutside);

@@ -13,12 +13,12 @@
 
 #include <unistd.h>
 
-#include "loop_analysis.h"
-#include "loop_command.h"
-#include "vision/model/reduction_table.h"
-#include "reduction_table.h"
+#include "host_tools/loop/loop_analysis.h"
+#include "host_tools/loop/loop_command.h"
+#include "host_tools/loop/reduction_table.h"
 #include "vision/model/paper_model.h"
 #include "vision/model/reduction_corrected_model.h"
+#include "vision/model/reduction_table.h"
 
 using namespace icacam::host::loop;
 using icacam::vision::ModelInputs;

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "fe_tables.h"
+#include "host_tools/fe/fe_tables.h"
 #include "vision/model/aspect_table.h"
 #include "vision/model/fe_model_table.h"
 #include "vision/model/reduction_table.h"
@@ -59,6 +59,7 @@ TEST(GeneratedTables, TheCommandRefusesASecondBaseOrNone)
     EXPECT_THROW(host::fe::parseTablesArgs({"--aspect", "a.csv"}), std::runtime_error);
     EXPECT_THROW(host::fe::parseTablesArgs({"--base", "a.csv", "--reduction", "1.5"}), std::runtime_error);
     EXPECT_THROW(host::fe::parseTablesArgs({"--base", "a.csv", "--bogus", "x"}), std::runtime_error);
-    host::fe::TablesRequest missing = host::fe::parseTablesArgs({"--base", "/nonexistent/base.csv", "--aspect", "x.csv"});
+    host::fe::TablesRequest missing =
+        host::fe::parseTablesArgs({"--base", "/nonexistent/base.csv", "--aspect", "x.csv"});
     EXPECT_THROW(host::fe::tablesText(missing, ""), std::runtime_error);
 }
