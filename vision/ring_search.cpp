@@ -23,6 +23,9 @@ constexpr double kMaxU = 0.32;
 // Every how many fine rays the edge-following mean profile samples (it only names the
 // face edge; the fine rays locate it).
 constexpr int kAlignStride = 8;
+// Below this fraction of rays a boundary's fit counts as low coverage (the reading flags
+// low_coverage at the same fraction).
+constexpr double kLowCoverage = 0.6;
 
 double robustSigma(const int32_t *d, int lo, int hi)
 {
@@ -252,6 +255,22 @@ bool RingSearch::locateOnRays(int sign, int fallbackSign, const double *loPx, co
     // Points the robust fit rejected are shown as such (overlays, diagnostics).
     const double keep = std::max(0.75, 3 * fit->scatterPx);
     for (int i = 0; i < kRays; ++i) pts[i].valid = pts[i].valid && std::fabs(radius[i] - curveOut[i]) <= keep;
+    // A boundary fitted on under kLowCoverage of the rays is as uncertain as the edge the
+    // fit threw away: when the rejected points sit together at another radius (the edge
+    // taken on part of the ring is a neighbouring one, or the curve is), either could be the
+    // boundary on that part, and the equivalent radius moves by the unused fraction times
+    // their offset. Its σ takes that in, so that a reading on such an edge is wide enough to
+    // cover the truth, not only flagged.
+    if (fit->coverage < kLowCoverage) {
+        double offsets[kRays];
+        int n = 0;
+        for (int i = 0; i < kRays; ++i)
+            if (valid[i] && !pts[i].valid) offsets[n++] = std::fabs(radius[i] - curveOut[i]);
+        if (n > 0) {
+            std::nth_element(offsets, offsets + n / 2, offsets + n);
+            fit->rEqSigmaPx = std::hypot(fit->rEqSigmaPx, (1 - fit->coverage) * offsets[n / 2]);
+        }
+    }
     if (nSteps) {
         std::nth_element(steps, steps + nSteps / 2, steps + nSteps);
         *contrastOut = steps[nSteps / 2];
