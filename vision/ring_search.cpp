@@ -1,14 +1,14 @@
-#include "ring_search.h"
+#include "vision/ring_search.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
-#include "angle_table.h"
-#include "boundary_fit.h"
-#include "edge_profile.h"
-#include "end_face_analyzer.h"
-#include "radial_profile.h"
+#include "vision/angle_table.h"
+#include "vision/boundary_fit.h"
+#include "vision/edge_profile.h"
+#include "vision/end_face_analyzer.h"
+#include "vision/radial_profile.h"
 
 namespace icacam::vision {
 
@@ -67,8 +67,14 @@ void boxStep(const int32_t *t, int count, int w, bool allInside, int16_t *d)
     badCount[0] = 0;
     for (int j = 0; j < count; ++j) badCount[j + 1] = int16_t(badCount[j] + (t[j] < 0));
     for (int j = 0; j < count; ++j) {
-        if (j < w || j + w >= count) { d[j] = 0; continue; }
-        if (badCount[j + w + 1] != badCount[j - w]) { d[j] = 0; continue; }
+        if (j < w || j + w >= count) {
+            d[j] = 0;
+            continue;
+        }
+        if (badCount[j + w + 1] != badCount[j - w]) {
+            d[j] = 0;
+            continue;
+        }
         const int32_t diff = (prefix[j + w + 1] - prefix[j + 1]) - (prefix[j] - prefix[j - w]);
         d[j] = int16_t(std::clamp(diff / scale, -32767, 32767));
     }
@@ -77,8 +83,8 @@ void boxStep(const int32_t *t, int count, int w, bool allInside, int16_t *d)
 bool isExtremum(const int32_t *d, int i)
 {
     const int32_t a = std::abs(d[i]);
-    return a > 0 && a >= std::abs(d[i - 1]) && a > std::abs(d[i + 1]) &&
-           (d[i] > 0) == (d[i - 1] >= 0) && (d[i] > 0) == (d[i + 1] >= 0);
+    return a > 0 && a >= std::abs(d[i - 1]) && a > std::abs(d[i + 1]) && (d[i] > 0) == (d[i - 1] >= 0) &&
+           (d[i] > 0) == (d[i + 1] >= 0);
 }
 } // namespace
 
@@ -104,8 +110,8 @@ RingSearch::MeanEdges RingSearch::meanProfileEdges()
     const double noise = robustSigma(meanDeriv, 2, count - 3);
     const double minStrength = std::max<double>(kMinCoarseStrength, 6 * noise);
     auto radiusOf = [&](int i) {
-        const Q16_16 off = parabolaVertex(std::abs(meanDeriv[i - 1]), std::abs(meanDeriv[i]),
-                                          std::abs(meanDeriv[i + 1]));
+        const Q16_16 off =
+            parabolaVertex(std::abs(meanDeriv[i - 1]), std::abs(meanDeriv[i]), std::abs(meanDeriv[i + 1]));
         return rA + (i + off.toDouble()) * step;
     };
     // Mean level over a band of w samples starting `gap` samples from i (negative: inside).
@@ -115,7 +121,10 @@ RingSearch::MeanEdges RingSearch::meanProfileEdges()
         int n = 0;
         for (int k = 3; k < 3 + w; ++k) {
             const int j = i + dir * k;
-            if (j >= 0 && j < count && mean[j] != kOutsideFrame) { sum += mean[j]; ++n; }
+            if (j >= 0 && j < count && mean[j] != kOutsideFrame) {
+                sum += mean[j];
+                ++n;
+            }
         }
         return n ? double(sum) / n : 0.0;
     };
@@ -164,7 +173,7 @@ void RingSearch::sampleWindow(const double *start, double step, int count, int b
     uint32_t saturated = 0, inside = 0;
     for (int i = 0; i < kRays; ++i) {
         fineStart_[i] = start[i];
-        RaySpec ray{Q16_16::fromDouble(cx), Q16_16::fromDouble(cy), rayCosQ_[i], raySinQ_[i],
+        RaySpec ray{Q16_16::fromDouble(cx),       Q16_16::fromDouble(cy),  rayCosQ_[i], raySinQ_[i],
                     Q16_16::fromDouble(start[i]), Q16_16::fromDouble(step)};
         uint16_t *row = fine + size_t(i) * kMaxFine;
         inside += uint32_t(sampleRay(*frame, ray, count, row));
@@ -209,8 +218,8 @@ void RingSearch::sampleWindow(const double *start, double step, int count, int b
 }
 
 bool RingSearch::locateOnRays(int sign, int fallbackSign, const double *loPx, const double *hiPx, int32_t minStrength,
-                              EdgeSample *pts, bool interior, double reachPx, BoundaryFit *fit,
-                              double *curveOut, double *contrastOut)
+                              EdgeSample *pts, bool interior, double reachPx, BoundaryFit *fit, double *curveOut,
+                              double *contrastOut)
 {
     double radius[kRays], steps[kRays];
     bool valid[kRays];
@@ -241,9 +250,8 @@ bool RingSearch::locateOnRays(int sign, int fallbackSign, const double *loPx, co
             p = strongestEdge(d, fineCount_, lo, hi, fallbackSign, interior);
         valid[i] = p.found && p.value >= minStrength;
         radius[i] = fineStart_[i] + p.position.toDouble() * fineStep_;
-        pts[i] = {Q16_16::fromDouble(cx + radius[i] * rayCos_[i]),
-                  Q16_16::fromDouble(cy + radius[i] * raySin_[i]), Q16_16::fromDouble(radius[i]),
-                  p.value, valid[i]};
+        pts[i] = {Q16_16::fromDouble(cx + radius[i] * rayCos_[i]), Q16_16::fromDouble(cy + radius[i] * raySin_[i]),
+                  Q16_16::fromDouble(radius[i]), p.value, valid[i]};
         if (!valid[i]) continue;
         const uint16_t *row = fine + size_t(i) * kMaxFine;
         const int j = int(p.position.toDouble() + 0.5);
@@ -327,7 +335,7 @@ double RingSearch::centreOnContactEdge(const MeanEdges &me)
             } else {
                 const int i = k * kFineStride;
                 uint16_t *out = fine + size_t(k) * kMaxFine;
-                RaySpec ray{Q16_16::fromDouble(cx), Q16_16::fromDouble(cy), rayCosQ_[i], raySinQ_[i],
+                RaySpec ray{Q16_16::fromDouble(cx), Q16_16::fromDouble(cy),  rayCosQ_[i], raySinQ_[i],
                             Q16_16::fromDouble(rA), Q16_16::fromDouble(step)};
                 sampleRay(*frame, ray, count, out);
                 row = out;
@@ -435,7 +443,8 @@ double RingSearch::silhouetteFromRays(const double *outerR, double *coverage, bo
         // Solve the 3 × 3 normal equations by Cramer's rule.
         const double m[3][3] = {{n, sc, ss}, {sc, scc, scs}, {ss, scs, sss}};
         auto det3 = [](const double a[3][3]) {
-            return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+            return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
+                   a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
                    a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
         };
         const double det = det3(m);
@@ -524,11 +533,14 @@ ErrorCode RingSearch::run(Measurement *m)
         for (int i = 0; i < kRays; i += kAlignStride) {
             if (!outerPts[i].valid) continue;
             const double ro = outerR[i];
-            RaySpec ray{Q16_16::fromDouble(cx), Q16_16::fromDouble(cy), rayCosQ_[i], raySinQ_[i],
+            RaySpec ray{Q16_16::fromDouble(cx),     Q16_16::fromDouble(cy), rayCosQ_[i], raySinQ_[i],
                         Q16_16::fromDouble(ro - K), Q16_16::fromDouble(1.0)};
             sampleRay(*frame, ray, K + M + 1, row);
             for (int k = 0; k < K + M + 1; ++k)
-                if (row[k] != kOutsideFrame) { sum[k] += row[k]; n[k]++; }
+                if (row[k] != kOutsideFrame) {
+                    sum[k] += row[k];
+                    n[k]++;
+                }
         }
         uint16_t mean[kSpan];
         for (int k = 0; k < K + M + 1; ++k) {
@@ -546,7 +558,9 @@ ErrorCode RingSearch::run(Measurement *m)
         const int w = std::min(K, int(6 / step) + 1);
         for (int k = -w; k <= std::min(w, M); ++k) {
             const double val = std::max(0, me.signOuter * aD[k + K]);
-            s0 += val; s1 += val * k * step; s2 += val * k * k * step * step;
+            s0 += val;
+            s1 += val * k * step;
+            s2 += val * k * k * step * step;
         }
         if (s0 > 0) {
             const double var = s2 / s0 - (s1 / s0) * (s1 / s0) - 0.92;
@@ -570,8 +584,14 @@ ErrorCode RingSearch::run(Measurement *m)
         const int ia = std::min(idx + g, K - 2), ib = std::min(idx + g + int(8 / step), K - 2);
         double lf = 0, li = 0;
         int nf = 0, ni = 0;
-        for (int j = fa; j <= fb; ++j) { lf += aP[j]; ++nf; }
-        for (int j = ia; j <= ib; ++j) { li += aP[j]; ++ni; }
+        for (int j = fa; j <= fb; ++j) {
+            lf += aP[j];
+            ++nf;
+        }
+        for (int j = ia; j <= ib; ++j) {
+            li += aP[j];
+            ++ni;
+        }
         if (nf && ni && sign * (li / ni - lf / nf) < 0.5 * 256) continue;
         bestK = k;
         bestV = std::abs(aD[idx]);
@@ -593,7 +613,10 @@ ErrorCode RingSearch::run(Measurement *m)
         for (int j = std::max(W, idx0 - W); j <= std::min(K - 2 - W, idx0 + W); ++j) {
             const int64_t diff = (prefix[j + W + 1] - prefix[j + 1]) - (prefix[j] - prefix[j - W]);
             const int32_t v = int32_t(innerSign * diff / (int64_t(W) * 8)); // 1/32 grey
-            if (v > boxV) { boxV = v; bestK = j - K; }
+            if (v > boxV) {
+                boxV = v;
+                bestK = j - K;
+            }
         }
     }
     if (boxV <= 0) return ErrorCode::InnerEdgeNotFound;
@@ -617,8 +640,8 @@ ErrorCode RingSearch::run(Measurement *m)
             lo[i] = c - h;
             hi[i] = std::min(c + h, ro - (W ? 1.0 + W : 2.0));
         }
-        if (!locateOnRays(innerSign, 0, lo, hi, innerStrength, pass == 0 ? nullptr : innerPts, true, reach,
-                          &inner, innerR, &contrastInner) ||
+        if (!locateOnRays(innerSign, 0, lo, hi, innerStrength, pass == 0 ? nullptr : innerPts, true, reach, &inner,
+                          innerR, &contrastInner) ||
             inner.coverage < 0.25)
             return ErrorCode::InnerEdgeNotFound;
     }

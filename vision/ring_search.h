@@ -4,9 +4,9 @@
 // fine rays locate them per angle, and a robust closed curve is fitted to each.
 #include <cstdint>
 
-#include "luma_view.h"
-#include "fixed_point.h"
-#include "measurement.h"
+#include "vision/fixed_point.h"
+#include "vision/luma_view.h"
+#include "vision/measurement.h"
 
 namespace icacam::vision {
 
@@ -14,8 +14,8 @@ constexpr int kMaxRayTable = 256;
 
 struct RingSearch {
     const LumaView *frame;
-    double r0;       // initial specimen radius, pixels
-    double cx, cy;   // refined centre
+    double r0;     // initial specimen radius, pixels
+    double cx, cy; // refined centre
     uint16_t *coarse;
     uint16_t *fine;
     int16_t *deriv;
@@ -29,10 +29,10 @@ struct RingSearch {
     // Internal steps (public only so that RingSearch stays an aggregate).
 
     struct MeanEdges {
-        double rOuter = 0;  // contact edge radius (pixels)
+        double rOuter = 0; // contact edge radius (pixels)
         int signOuter = -1;
         int32_t strengthOuter = 0; // in fine derivative units
-        double rMax = 0;    // silhouette, 0 if not found
+        double rMax = 0;           // silhouette, 0 if not found
         bool found = false;
     };
     MeanEdges meanProfileEdges();
@@ -44,8 +44,8 @@ struct RingSearch {
     // (pts and contrast left alone). fallbackSign ≠ 0: a ray without an edge of `sign`
     // takes its strongest edge of fallbackSign instead.
     bool locateOnRays(int sign, int fallbackSign, const double *loPx, const double *hiPx, int32_t minStrength,
-                      EdgeSample *pts, bool interior, double reachPx, BoundaryFit *fit,
-                      double *curveOut, double *contrastOut);
+                      EdgeSample *pts, bool interior, double reachPx, BoundaryFit *fit, double *curveOut,
+                      double *contrastOut);
     // Samples every fine ray from start[i] (pixels) and fills the smoothed derivative rows.
     // boxHalf > 0: the rows hold a box step detector of that half-width instead.
     void sampleWindow(const double *start, double step, int count, int boxHalf, Measurement *m);
