@@ -7,21 +7,14 @@
 #include "firmware/debouncer.h"
 #include "firmware/journal.h"
 #include "hal/file/folder_storage.h"
+#include "tests/support/temp_dir.h"
 
 using namespace icacam;
 namespace fs = std::filesystem;
 
 namespace {
 
-struct TempDir {
-    std::string path;
-    TempDir()
-    {
-        char tmpl[] = "/tmp/icacam-fw-test-XXXXXX";
-        path = ::mkdtemp(tmpl);
-    }
-    ~TempDir() { fs::remove_all(path); }
-};
+using test::TempDir;
 
 std::string record(long id)
 {

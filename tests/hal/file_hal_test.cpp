@@ -12,21 +12,14 @@
 #include "hal/file/image_decoder.h"
 #include "hal/file/png_display.h"
 #include "hal/file/pty_serial.h"
+#include "tests/support/temp_dir.h"
 
 using namespace icacam;
 namespace fs = std::filesystem;
 
 namespace {
 
-struct TempDir {
-    std::string path;
-    TempDir()
-    {
-        char tmpl[] = "/tmp/icacam-hal-test-XXXXXX";
-        path = ::mkdtemp(tmpl);
-    }
-    ~TempDir() { fs::remove_all(path); }
-};
+using test::TempDir;
 
 void writePgm(const std::string &path, int w, int h)
 {
