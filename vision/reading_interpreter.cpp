@@ -30,6 +30,13 @@ constexpr double kContradictionChi2 = 9.0;
 // it does not, the others take over, and the mixture's spread covers the step between them.
 constexpr double kNominalReductionSigma = 0.003;
 constexpr double kGrossScaleSigma = 0.08;
+// A view the image shows to be oblique (the boundaries share an ellipse, or their centres
+// part) comes from a camera close and off-axis: it sees the barrel's widest section, half-way
+// down, from farther than the end face, and a short lens's barrel distortion shrinks it
+// further. There a fourth explanation joins: the nominal half height with the declared
+// scale and a silhouette read 5 % ± 4 % small (3.75 mm farther at 70–150 mm is 2.5–5 %,
+// distortion at the barrel's radius up to a few per cent more). It leaves u's scale alone.
+constexpr double kForeshortenMean = -0.05, kForeshortenSigma = 0.04;
 // The edge model's own error, beyond the fits' scatter: against the drawn boundaries of the
 // development set's photographs the pipeline's R_i lies 0.005 mm (1 σ) off the truth's
 // equivalent radius and R_o 0.001 mm (a ragged texture boundary, not a step, on the inside).
@@ -61,17 +68,19 @@ struct ScaleAndReduction {
     double pk = 0, pr = 0, pkr = 0; // their (co)variances
 };
 
-// The silhouette's observation d = δk + β·δr + e (e: silhouetteRelSigma) applied to a prior
-// on (δk, δr): the posterior mean and covariance (a linear Gaussian update), widened by χ²
-// where d lies further out than the prior and e explain (as for a Birge ratio).
-ScaleAndReduction update(const ScaleAndReduction &prior, double d, double beta)
+// The silhouette's observation d = δk + β·δr + o + e (e: silhouetteRelSigma; o an offset of
+// the silhouette alone, with its mean and variance) applied to a prior on (δk, δr): the
+// posterior mean and covariance (a linear Gaussian update), widened by χ² where d lies
+// further out than the prior and e explain (as for a Birge ratio).
+ScaleAndReduction update(const ScaleAndReduction &prior, double d, double beta, double offset = 0, double offsetVar = 0)
 {
     const double se = silhouetteRelSigma();
-    const double S = prior.pk + beta * beta * prior.pr + se * se;
-    const double w = std::max(1.0, d * d / S);
+    const double S = prior.pk + beta * beta * prior.pr + se * se + offsetVar;
+    const double v = d - offset;
+    const double w = std::max(1.0, v * v / S);
     ScaleAndReduction p;
-    p.dk = prior.pk / S * d;
-    p.dr = beta * prior.pr / S * d;
+    p.dk = prior.pk / S * v;
+    p.dr = beta * prior.pr / S * v;
     p.pk = w * (prior.pk - prior.pk * prior.pk / S);
     p.pr = w * (prior.pr - beta * beta * prior.pr * prior.pr / S);
     p.pkr = -w * beta * prior.pk * prior.pr / S;
@@ -211,9 +220,10 @@ void interpretEndFace(const SpecimenSpec &spec, const FrictionModel &model, Meas
             sr = update(sr, d, beta);
         }
     } else if (usable) {
-        // Three explanations of the silhouette's discrepancy (see kNominalReductionSigma): each
-        // one's posterior, weighted by how well it predicts d, and their mixture's moments.
-        constexpr int kExplanations = 3;
+        // Three explanations of the silhouette's discrepancy, four in an oblique view (see
+        // kNominalReductionSigma and kForeshortenMean): each one's posterior, weighted by how
+        // well it predicts d, and their mixture's moments.
+        constexpr int kExplanations = 4;
         const double se2 = silhouetteRelSigma() * silhouetteRelSigma();
         ScaleAndReduction prior[kExplanations];
         prior[0] = sr;                                     // pressed to another height
@@ -221,13 +231,18 @@ void interpretEndFace(const SpecimenSpec &spec, const FrictionModel &model, Meas
         prior[1].pr = kNominalReductionSigma * kNominalReductionSigma;
         prior[2].pk = sr.pk; // half height, scale as declared
         prior[2].pr = kNominalReductionSigma * kNominalReductionSigma;
+        prior[3] = prior[2]; // half height, scale as declared, the silhouette foreshortened
+        const double offset[kExplanations] = {0, 0, 0, kForeshortenMean};
+        const double offsetVar[kExplanations] = {0, 0, 0, kForeshortenSigma * kForeshortenSigma};
+        const bool oblique = (f & (kFlagElliptical | kFlagCentreOffset)) != 0;
         ScaleAndReduction post[kExplanations];
         double w[kExplanations], wSum = 0;
         for (int h = 0; h < kExplanations; ++h) {
-            const double S = prior[h].pk + beta * beta * prior[h].pr + se2;
-            w[h] = std::exp(-0.5 * d * d / S) / std::sqrt(S);
+            const double S = prior[h].pk + beta * beta * prior[h].pr + se2 + offsetVar[h];
+            const double v = d - offset[h];
+            w[h] = h != 3 || oblique ? std::exp(-0.5 * v * v / S) / std::sqrt(S) : 0.0;
             wSum += w[h];
-            post[h] = update(prior[h], d, beta);
+            post[h] = update(prior[h], d, beta, offset[h], offsetVar[h]);
         }
         sr = ScaleAndReduction{};
         for (int h = 0; h < kExplanations; ++h) {

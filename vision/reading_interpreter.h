@@ -25,9 +25,11 @@
 // corrected: both are widened to explain it alone). Without one the silhouette cannot tell
 // a specimen pressed further (the undeclared reduction's prior, 45–55 %) from the nominal
 // half height read through a scale grossly off (measured on the fixture, or a wrong edge):
-// the reading is the mixture of the two posteriors, weighted by how well each predicts the
+// the reading is the mixture of the posteriors, weighted by how well each predicts the
 // discrepancy, and its covariance includes their spread, so that whichever is true lies
-// within the budget. A calibrated scale is not checked by the silhouette (a camera
+// within the budget. In a view the image shows to be oblique, a silhouette foreshortened by
+// the camera's closeness and distortion (the nominal height, u's scale as declared) is a
+// further explanation. A calibrated scale is not checked by the silhouette (a camera
 // close enough to need a calibration sees the barrel's widest section partly hidden behind
 // the end face's rim).
 //
