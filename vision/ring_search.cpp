@@ -8,9 +8,16 @@
 #include "vision/boundary_fit.h"
 #include "vision/edge_profile.h"
 #include "vision/end_face_analyzer.h"
+#include "vision/narrow_ring.h"
 #include "vision/radial_profile.h"
 
 namespace icacam::vision {
+
+namespace {
+// Ring width (px) below which the per-ray search's edges are biased by each other's blur
+// (0.4–2 px wide on rendered 2–5 px rings, tests/vision/synth_accuracy_test.cpp).
+constexpr double kNarrowRingPx = 6.0;
+} // namespace
 
 namespace {
 constexpr int kRays = EndFaceAnalyzer::kFineRays;
@@ -597,53 +604,81 @@ ErrorCode RingSearch::run(Measurement *m)
         bestV = std::abs(aD[idx]);
         innerSign = sign;
     }
-    if (!innerSign) return m->saturatedFraction > 0.1 ? ErrorCode::Saturated : ErrorCode::InnerEdgeNotFound;
+    // A ring too narrow for the per-ray search: both edges from the aligned profile's
+    // two-step fit (narrow_ring.h), the original face's edge following the contact edge's
+    // shape at the fitted width.
+    auto narrowRing = [&]() {
+        const NarrowRingFit nf = fitNarrowRing(aP, K + M + 1, K, me.signOuter, 0.0);
+        if (!nf.found) return false;
+        inner = outer;
+        outer.a0 += nf.outerPx, outer.rEqPx += nf.outerPx;
+        inner.a0 += nf.innerPx, inner.rEqPx += nf.innerPx;
+        inner.rEqSigmaPx = nf.sigmaWidthPx;
+        inner.used = 0; // no per-ray point: the edge is the profile's
+        contrastInner = nf.innerStep / 256.0;
+        for (int i = 0; i < kRays; ++i) innerPts[i].valid = false;
+        return true;
+    };
+    // The original face's edge on every fine ray, named by the aligned profile's strongest
+    // step inside the contact edge; false where none is found.
+    auto perRayInner = [&]() {
+        if (!innerSign) return false;
 
-    // The derivative names the edge; its position is taken from a box step detector half
-    // as wide as the ring (up to 12 px), which turning marks next to the edge cannot pull.
-    // On a ring narrower than 12 px a box would reach across the contact edge's blur: there
-    // the derivative itself locates the edge (W = 0).
-    const int W = -bestK >= 12 ? std::min(-bestK / 2, 12) : 0;
-    int32_t boxV = W ? 0 : bestV;
-    if (W) {
-        int64_t prefix[kSpan + 1];
-        prefix[0] = 0;
-        for (int k = 0; k < K + M + 1; ++k) prefix[k + 1] = prefix[k] + aP[k];
-        const int idx0 = bestK + K;
-        for (int j = std::max(W, idx0 - W); j <= std::min(K - 2 - W, idx0 + W); ++j) {
-            const int64_t diff = (prefix[j + W + 1] - prefix[j + 1]) - (prefix[j] - prefix[j - W]);
-            const int32_t v = int32_t(innerSign * diff / (int64_t(W) * 8)); // 1/32 grey
-            if (v > boxV) {
-                boxV = v;
-                bestK = j - K;
+        // The derivative names the edge; its position is taken from a box step detector half
+        // as wide as the ring (up to 12 px), which turning marks next to the edge cannot pull.
+        // On a ring narrower than 12 px a box would reach across the contact edge's blur: there
+        // the derivative itself locates the edge (W = 0).
+        const int W = -bestK >= 12 ? std::min(-bestK / 2, 12) : 0;
+        int32_t boxV = W ? 0 : bestV;
+        if (W) {
+            int64_t prefix[kSpan + 1];
+            prefix[0] = 0;
+            for (int k = 0; k < K + M + 1; ++k) prefix[k + 1] = prefix[k] + aP[k];
+            const int idx0 = bestK + K;
+            for (int j = std::max(W, idx0 - W); j <= std::min(K - 2 - W, idx0 + W); ++j) {
+                const int64_t diff = (prefix[j + W + 1] - prefix[j + 1]) - (prefix[j] - prefix[j - W]);
+                const int32_t v = int32_t(innerSign * diff / (int64_t(W) * 8)); // 1/32 grey
+                if (v > boxV) {
+                    boxV = v;
+                    bestK = j - K;
+                }
             }
         }
-    }
-    if (boxV <= 0) return ErrorCode::InnerEdgeNotFound;
-    const double uGuess = -bestK * step;
-    const double half = std::max(3.0, std::min(0.025 * r0, 0.5 * uGuess));
-    const int32_t innerStrength = std::max<int32_t>(W ? 4 : 6, int32_t(0.3 * boxV));
-    const double reach = std::max(1.0, std::min(3.0, 0.5 * uGuess));
-    // Stage 3, the original face edge on every fine ray: a window following the contact
-    // edge at the named offset.
-    // The search spans ±half about the guess (pass 2: ±2.5 about the fit); the detector
-    // needs W (or 2 for the derivative) more on each side.
-    const int pad = std::max(W, 2) + 3;
-    const int innerCount = std::min(kMaxFine, int(2 * half) + 2 * pad + 1);
-    for (int i = 0; i < kRays; ++i) start[i] = outerR[i] - uGuess - half - pad;
-    sampleWindow(start, step, innerCount, W, m);
-    for (int pass = 0; pass < 2; ++pass) {
-        for (int i = 0; i < kRays; ++i) {
-            const double ro = outerR[i];
-            const double c = pass == 0 ? ro - uGuess : innerR[i];
-            const double h = pass == 0 ? half : 2.5;
-            lo[i] = c - h;
-            hi[i] = std::min(c + h, ro - (W ? 1.0 + W : 2.0));
+        if (boxV <= 0) return false;
+        const double uGuess = -bestK * step;
+        const double half = std::max(3.0, std::min(0.025 * r0, 0.5 * uGuess));
+        const int32_t innerStrength = std::max<int32_t>(W ? 4 : 6, int32_t(0.3 * boxV));
+        const double reach = std::max(1.0, std::min(3.0, 0.5 * uGuess));
+        // Stage 3, the original face edge on every fine ray: a window following the contact
+        // edge at the named offset.
+        // The search spans ±half about the guess (pass 2: ±2.5 about the fit); the detector
+        // needs W (or 2 for the derivative) more on each side.
+        const int pad = std::max(W, 2) + 3;
+        const int innerCount = std::min(kMaxFine, int(2 * half) + 2 * pad + 1);
+        for (int i = 0; i < kRays; ++i) start[i] = outerR[i] - uGuess - half - pad;
+        sampleWindow(start, step, innerCount, W, m);
+        for (int pass = 0; pass < 2; ++pass) {
+            for (int i = 0; i < kRays; ++i) {
+                const double ro = outerR[i];
+                const double c = pass == 0 ? ro - uGuess : innerR[i];
+                const double h = pass == 0 ? half : 2.5;
+                lo[i] = c - h;
+                hi[i] = std::min(c + h, ro - (W ? 1.0 + W : 2.0));
+            }
+            if (!locateOnRays(innerSign, 0, lo, hi, innerStrength, pass == 0 ? nullptr : innerPts, true, reach, &inner,
+                              innerR, &contrastInner) ||
+                inner.coverage < 0.25)
+                return false;
         }
-        if (!locateOnRays(innerSign, 0, lo, hi, innerStrength, pass == 0 ? nullptr : innerPts, true, reach, &inner,
-                          innerR, &contrastInner) ||
-            inner.coverage < 0.25)
-            return ErrorCode::InnerEdgeNotFound;
+        return true;
+    };
+    // Below kNarrowRingPx the two edges' blurs overlap and pull each other's derivative
+    // peaks apart on every ray: there the profile's two-step fit, which models both, is taken
+    // wherever it holds.
+    if (perRayInner()) {
+        if (outer.rEqPx - inner.rEqPx < kNarrowRingPx) narrowRing();
+    } else if (!narrowRing()) {
+        return !innerSign && m->saturatedFraction > 0.1 ? ErrorCode::Saturated : ErrorCode::InnerEdgeNotFound;
     }
     if (!(inner.rEqPx < outer.rEqPx) || (me.rMax > 0 && !(outer.rEqPx < me.rMax + 2)))
         return ErrorCode::InconsistentRing;
