@@ -250,6 +250,9 @@ void interpretEndFace(const SpecimenSpec &spec, const FrictionModel &model, Meas
             sr.dk += w[h] * post[h].dk;
             sr.dr += w[h] * post[h].dr;
         }
+        // A discrepancy the view's foreshortening explains best is not the scale's: the
+        // elliptical or centre_offset flag names its cause.
+        if (oblique && w[3] >= std::max({w[0], w[1], w[2]})) f &= ~uint32_t(kFlagScaleSuspect);
         for (int h = 0; h < kExplanations; ++h) {
             const double gk = post[h].dk - sr.dk, gr = post[h].dr - sr.dr;
             sr.pk += w[h] * (post[h].pk + gk * gk);

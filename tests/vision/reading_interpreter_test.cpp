@@ -71,6 +71,8 @@ TEST(ReadingInterpreter, SmallSilhouetteInAnObliqueViewIsForeshortening)
     EXPECT_LT(std::fabs(oblique.reduction - 0.5), 0.5 * std::fabs(straight.reduction - 0.5));
     EXPECT_LT(std::fabs(oblique.scaleFactor - 1), 0.5 * std::fabs(straight.scaleFactor - 1))
         << "foreshortening leaves u's scale alone";
+    EXPECT_TRUE(straight.flags & kFlagScaleSuspect);
+    EXPECT_FALSE(oblique.flags & kFlagScaleSuspect) << "the view, not the scale, is named";
 }
 
 } // namespace
