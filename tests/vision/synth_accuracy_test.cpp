@@ -12,6 +12,28 @@
 
 using namespace icacam;
 
+namespace {
+
+// A random scene of the given friction and exponent (the barrel from volume constancy, the
+// nuisances as randomScene draws them), rendered.
+struct Rendered {
+    host::EndFaceScene scene;
+    cv::Mat image;
+    vision::LumaView view() const { return {image.data, image.cols, image.rows, int(image.step[0]), 1}; }
+};
+
+Rendered renderRandom(std::mt19937 &rng, double n, double mu)
+{
+    const double u = host::uForMu(mu, n);
+    const double rOuter = 6.85 - 0.95 * u;
+    const double rMax = 5.0 * std::sqrt(2.0) * (1.008 + 0.034 * u);
+    Rendered r{host::randomScene(rng, u, rOuter, rMax, false), {}};
+    r.image = host::renderEndFace(r.scene);
+    return r;
+}
+
+} // namespace
+
 TEST(SynthAccuracy, RandomScenesWithNuisances)
 {
     std::mt19937 rng(20261121);
@@ -24,14 +46,10 @@ TEST(SynthAccuracy, RandomScenesWithNuisances)
     const int cases = 30;
     for (int i = 0; i < cases; ++i) {
         const double n = 0.05 + 0.45 * U(rng), mu = 0.06 + 0.23 * U(rng);
-        const double u = host::uForMu(mu, n);
-        const double rOuter = 6.85 - 0.95 * u;
-        const double rMax = 5.0 * std::sqrt(2.0) * (1.008 + 0.034 * u);
-        host::EndFaceScene s = host::randomScene(rng, u, rOuter, rMax, false);
-        const cv::Mat img = host::renderEndFace(s);
-        const vision::LumaView v{img.data, img.cols, img.rows, int(img.step[0]), 1};
+        const Rendered r = renderRandom(rng, n, mu);
+        const host::EndFaceScene &s = r.scene;
         const vision::SpecimenSpec spec{n, 500, 10, 15, s.mmPerPx};
-        const vision::Measurement m = analyzer.measure(v, spec, model);
+        const vision::Measurement m = analyzer.measure(r.view(), spec, model);
         const double muTrue = model.estimate({s.rOuterEqMm() - s.rInnerEqMm(), n}).mu;
         if (!m.hasValue()) {
             errs.push_back(1);
@@ -87,15 +105,11 @@ TEST(SynthAccuracy, NarrowRingsOfWellLubricatedSpecimens)
     const int cases = 16;
     for (int i = 0; i < cases; ++i) {
         const double n = 0.3 + 0.2 * U(rng), mu = 0.05 + 0.02 * U(rng);
-        const double u = host::uForMu(mu, n);
-        const double rOuter = 6.85 - 0.95 * u;
-        const double rMax = 5.0 * std::sqrt(2.0) * (1.008 + 0.034 * u);
-        host::EndFaceScene s = host::randomScene(rng, u, rOuter, rMax, false);
-        const cv::Mat img = host::renderEndFace(s);
-        const vision::LumaView v{img.data, img.cols, img.rows, int(img.step[0]), 1};
+        const Rendered r = renderRandom(rng, n, mu);
+        const host::EndFaceScene &s = r.scene;
         vision::SpecimenSpec spec{n, 500, 10, 15, s.mmPerPx};
         spec.hFinalMm = 7.5;
-        const vision::Measurement m = analyzer.measure(v, spec, model);
+        const vision::Measurement m = analyzer.measure(r.view(), spec, model);
         const double uTrue = s.rOuterEqMm() - s.rInnerEqMm();
         std::printf("case %2d: u %.1f px  %s", i, uTrue / s.mmPerPx, m.hasValue() ? "" : "not measured\n");
         if (!m.hasValue()) continue;
