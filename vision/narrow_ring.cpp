@@ -15,8 +15,9 @@ constexpr int kMaxPoints = kInside + kOutside + 1;
 constexpr double kModelWidthPx = 0.5;
 // Widest ring taken: the original face's level needs a few pixels inside its step.
 constexpr double kMaxWidthPx = 8.0;
-// Where the face's own level is read: beyond the fit's reach, up to 40 px inside.
-constexpr int kFaceFrom = 16, kFaceTo = 40;
+// Where the face's own level is read: from beyond the fit's reach to the profile's start,
+// in windows of 8 px every 4 px.
+constexpr int kFaceFrom = 16, kFaceWindow = 8;
 // The original face's step must be a visible one (as low_contrast asks of any edge: 5 grey
 // levels, in the profile's Q8 units), and a clipped sample makes a step no blurred step.
 constexpr double kMinInnerStep = 5 * 256;
@@ -158,16 +159,18 @@ NarrowRingFit fitNarrowRing(const int32_t *profile, int count, int edgeIndex, in
     if (!(single >= 4 * best.ssr) || std::fabs(best.coef[1]) < std::max(4 * level, kMinInnerStep)) return out;
     // Two steps closer than their blur are one edge of another shape, not a ring.
     if (best.xo - best.xi > kMaxWidthPx || best.xo - best.xi < best.s) return out;
-    // Inside the inner step lies the original face: its level farther in must be the fit's
-    // innermost one. On a wide ring the fit's inner step is a mark on the ICA, and farther in
-    // the face's level differs.
-    double face = 0;
-    int nFace = 0;
-    for (int k = std::max(0, edgeIndex - kFaceTo); k <= edgeIndex - kFaceFrom; ++k) {
-        face += profile[k];
-        ++nFace;
+    // Inside the inner step lies the original face: its level all the way in must be the
+    // fit's innermost one. On a wide ring the fit's inner step is a mark on the ICA, and
+    // farther in, past the real edge, the face's level differs.
+    int windows = 0;
+    for (int from = 0; from + kFaceWindow <= edgeIndex - kFaceFrom; from += kFaceWindow / 2) {
+        double face = 0;
+        for (int k = from; k < from + kFaceWindow; ++k) face += profile[k];
+        face /= kFaceWindow;
+        if (std::fabs(face - best.coef[0]) > 0.3 * std::fabs(best.coef[1])) return out;
+        ++windows;
     }
-    if (nFace < 8 || std::fabs(face / nFace - best.coef[0]) > 0.3 * std::fabs(best.coef[1])) return out;
+    if (windows == 0) return out;
 
     // The width's statistical error from the curvature of the residual profile along it:
     // at each trial width the contact edge's place and the blur are refitted (on a narrow

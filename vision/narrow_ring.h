@@ -11,9 +11,10 @@
 // second step earns its place: the single-step fit (B = 0) must leave at least four times
 // the residual, the inner step must be four noise levels and 5 grey levels high, the ring
 // at least one blur and at most 8 px wide, no sample clipped,
-// and the face's level farther inside (16–40 px) the fit's innermost level (within 30 % of
-// the inner step): on a wide ring whose inner edge was missed, a mark on the ICA near the
-// contact edge would otherwise pass for the face's edge.
+// and the face's level everywhere farther inside (from 16 px to the profile's start, the
+// widest ICA the search allows) the fit's innermost level (within 30 % of the inner step): on
+// a wide ring whose inner edge was missed, a mark on the ICA near the contact edge would
+// otherwise pass for the face's edge.
 // Pure C++20: no heap, no OS calls, no exceptions.
 #include <cstdint>
 

@@ -677,7 +677,11 @@ ErrorCode RingSearch::run(Measurement *m)
     // wherever it holds.
     if (perRayInner()) {
         if (outer.rEqPx - inner.rEqPx < kNarrowRingPx) narrowRing();
-    } else if (!narrowRing()) {
+    } else if (narrowRing()) {
+        // No ray saw the original face's edge: the profile alone says the ring is narrow,
+        // and the reading says so (warn).
+        m->flags |= kFlagNarrowRing;
+    } else {
         return !innerSign && m->saturatedFraction > 0.1 ? ErrorCode::Saturated : ErrorCode::InnerEdgeNotFound;
     }
     if (!(inner.rEqPx < outer.rEqPx) || (me.rMax > 0 && !(outer.rEqPx < me.rMax + 2)))
