@@ -23,58 +23,65 @@ constexpr int kFaceFrom = 16, kFaceWindow = 8;
 constexpr double kMinInnerStep = 5 * 256;
 constexpr int32_t kClipped = 254 * 256;
 
+// Φ, the normal distribution function, from a table (the fit evaluates it some ten thousand
+// times per ring): 1/64 steps over ±8, linear between, off by under 1e-5.
+struct PhiTable {
+    static constexpr int kPerUnit = 64, kHalf = 8 * kPerUnit;
+    double v[2 * kHalf + 2];
+    PhiTable()
+    {
+        for (int i = 0; i <= 2 * kHalf + 1; ++i)
+            v[i] = 0.5 * std::erfc(-(double(i - kHalf) / kPerUnit) * 0.7071067811865476);
+    }
+};
+
 double phi(double z)
 {
-    return 0.5 * std::erfc(-z * 0.7071067811865476);
+    static const PhiTable table;
+    const double t = z * PhiTable::kPerUnit + PhiTable::kHalf;
+    if (t <= 0) return 0.0;
+    if (t >= 2 * PhiTable::kHalf) return 1.0;
+    const int i = int(t);
+    const double f = t - i;
+    return table.v[i] + f * (table.v[i + 1] - table.v[i]);
 }
 
 struct Profile {
     double x[kMaxPoints], p[kMaxPoints];
     int n = 0;
-    double sumP2 = 0;
+    double mean = 0, sumP2 = 0; // p is kept about its mean (the sums stay well conditioned)
 };
 
-// Least squares of p on the given basis columns (1 plus up to two steps): the residual sum
-// of squares, and the coefficients.
+// Least squares of p on the basis 1, f1 and (if given) f2: the residual sum of squares, and
+// the coefficients (1e300 for a singular basis).
 double solve(const Profile &pr, const double *f1, const double *f2, double coef[3])
 {
-    const int k = f2 ? 3 : 2;
-    double g[3][3] = {}, r[3] = {};
+    double n = 0, s1 = 0, s2 = 0, s11 = 0, s12 = 0, s22 = 0, r0 = 0, r1 = 0, r2 = 0;
     for (int i = 0; i < pr.n; ++i) {
-        const double f[3] = {1.0, f1[i], f2 ? f2[i] : 0.0};
-        for (int a = 0; a < k; ++a) {
-            r[a] += f[a] * pr.p[i];
-            for (int b = 0; b < k; ++b) g[a][b] += f[a] * f[b];
-        }
+        const double a = f1[i], b = f2 ? f2[i] : 0.0, p = pr.p[i];
+        n += 1, s1 += a, s2 += b, s11 += a * a, s12 += a * b, s22 += b * b;
+        r0 += p, r1 += a * p, r2 += b * p;
     }
-    // Gaussian elimination with partial pivoting on the k × k system.
-    for (int c = 0; c < k; ++c) {
-        int piv = c;
-        for (int a = c + 1; a < k; ++a)
-            if (std::fabs(g[a][c]) > std::fabs(g[piv][c])) piv = a;
-        if (std::fabs(g[piv][c]) < 1e-12) return 1e300;
-        if (piv != c) {
-            for (int b = 0; b < k; ++b) std::swap(g[c][b], g[piv][b]);
-            std::swap(r[c], r[piv]);
-        }
-        for (int a = c + 1; a < k; ++a) {
-            const double q = g[a][c] / g[c][c];
-            for (int b = c; b < k; ++b) g[a][b] -= q * g[c][b];
-            r[a] -= q * r[c];
-        }
+    if (!f2) {
+        const double det = n * s11 - s1 * s1;
+        if (std::fabs(det) < 1e-9) return 1e300;
+        coef[0] = (r0 * s11 - s1 * r1) / det;
+        coef[1] = (n * r1 - s1 * r0) / det;
+        coef[2] = 0;
+        const double ssr = std::max(0.0, pr.sumP2 - coef[0] * r0 - coef[1] * r1);
+        coef[0] += pr.mean;
+        return ssr;
     }
-    double rhs[3] = {r[0], r[1], r[2]};
-    for (int c = k - 1; c >= 0; --c) {
-        double v = rhs[c];
-        for (int b = c + 1; b < k; ++b) v -= g[c][b] * coef[b];
-        coef[c] = v / g[c][c];
-    }
-    if (k == 2) coef[2] = 0;
-    double ssr = 0;
-    for (int i = 0; i < pr.n; ++i) {
-        const double e = pr.p[i] - coef[0] - coef[1] * f1[i] - (f2 ? coef[2] * f2[i] : 0.0);
-        ssr += e * e;
-    }
+    // The symmetric 3 × 3 system by Cramer's rule.
+    const double c00 = s11 * s22 - s12 * s12, c01 = s2 * s12 - s1 * s22, c02 = s1 * s12 - s2 * s11;
+    const double det = n * c00 + s1 * c01 + s2 * c02;
+    if (std::fabs(det) < 1e-9) return 1e300;
+    const double c11 = n * s22 - s2 * s2, c12 = s1 * s2 - n * s12, c22 = n * s11 - s1 * s1;
+    coef[0] = (c00 * r0 + c01 * r1 + c02 * r2) / det;
+    coef[1] = (c01 * r0 + c11 * r1 + c12 * r2) / det;
+    coef[2] = (c02 * r0 + c12 * r1 + c22 * r2) / det;
+    const double ssr = std::max(0.0, pr.sumP2 - coef[0] * r0 - coef[1] * r1 - coef[2] * r2);
+    coef[0] += pr.mean;
     return ssr;
 }
 
@@ -97,58 +104,95 @@ TwoStep evaluate(const Profile &pr, double xi, double xo, double s)
 
 } // namespace
 
-NarrowRingFit fitNarrowRing(const int32_t *profile, int count, int edgeIndex, int outerSign, double noise)
+NarrowRingFit fitNarrowRing(const int32_t *profile, int count, int edgeIndex, int outerSign, double noise,
+                            double startWidthPx)
 {
     NarrowRingFit out;
     Profile pr;
     for (int k = std::max(0, edgeIndex - kInside); k <= std::min(count - 1, edgeIndex + kOutside); ++k) {
+        if (profile[k] >= kClipped) return out;
         pr.x[pr.n] = k - edgeIndex;
         pr.p[pr.n] = profile[k];
+        pr.mean += profile[k];
         ++pr.n;
     }
     if (pr.n < 12) return out;
-    for (int i = 0; i < pr.n; ++i)
-        if (pr.p[i] >= kClipped) return out;
+    pr.mean /= pr.n;
+    for (int i = 0; i < pr.n; ++i) {
+        pr.p[i] -= pr.mean;
+        pr.sumP2 += pr.p[i] * pr.p[i];
+    }
 
-    constexpr double kBlurs[] = {0.5, 0.65, 0.8, 1.0, 1.25, 1.55, 1.9, 2.4};
-    // One step: the model the second must beat.
+    // One step, the model the second must beat: a pattern search over its place and blur
+    // from two blurs. Where the per-ray search saw the face's edge the profile only places
+    // it, and this test is not needed.
+    const bool seen = startWidthPx > 0;
     double single = 1e300;
-    for (double s : kBlurs)
-        for (double xo = -3; xo <= 3.001; xo += 0.25) {
+    for (double s0 : {0.8, 1.8}) {
+        if (seen) break;
+        double xo = 0, bl = s0, h = 0.5, hs = 0.15;
+        auto ssrAt = [&](double x, double b) {
             double f1[kMaxPoints], coef[3];
-            for (int i = 0; i < pr.n; ++i) f1[i] = phi((pr.x[i] - xo) / s);
-            single = std::min(single, solve(pr, f1, nullptr, coef));
-        }
-    // Two steps on a coarse grid, the best for each blur kept; each refined by a pattern
-    // search (on a narrow ring blur, width and step heights trade against each other, so
-    // the coarse grid's best blur need not hold the best fit), the best of them taken.
-    constexpr int kBlurCount = int(sizeof(kBlurs) / sizeof(kBlurs[0]));
-    TwoStep start[kBlurCount];
-    for (int b = 0; b < kBlurCount; ++b)
-        for (double xo = -3; xo <= 3.001; xo += 0.25)
-            for (double w = 0.75; w <= 9.001; w += 0.25) {
-                const TwoStep t = evaluate(pr, xo - w, xo, kBlurs[b]);
-                if (t.ssr < start[b].ssr && t.coef[2] * outerSign > 0) start[b] = t;
+            for (int i = 0; i < pr.n; ++i) f1[i] = phi((pr.x[i] - x) / b);
+            return solve(pr, f1, nullptr, coef);
+        };
+        double cur = ssrAt(xo, bl);
+        for (int iteration = 0; h > 0.01 && iteration < 100; ++iteration) {
+            bool moved = false;
+            const double trial[4][2] = {{h, 0}, {-h, 0}, {0, hs}, {0, -hs}};
+            for (const auto &dv : trial) {
+                const double b = bl * (1 + dv[1]);
+                if (b < 0.3) continue;
+                const double c = ssrAt(xo + dv[0], b);
+                if (c < cur) cur = c, xo += dv[0], bl = b, moved = true;
             }
+            if (!moved) h *= 0.5, hs *= 0.5;
+        }
+        single = std::min(single, cur);
+    }
+
+    // Two steps: a pattern search over (x_i, x_o, s) from a few starts, the best taken (on a
+    // narrow ring blur, width and step heights trade against each other: one start can end
+    // in the wrong valley). With a width from the per-ray search, two starts at it; without,
+    // the best of a coarse grid for each of four blurs and three width ranges.
+    constexpr double kGridBlurs[] = {0.6, 0.9, 1.3, 1.9};
+    constexpr double kWidthBuckets[] = {1.0, 2.5, 4.5, kMaxWidthPx + 0.5}; // bounds
+    constexpr int kMaxStarts = 4 * 3;
+    TwoStep start[kMaxStarts];
+    int starts = 0;
+    if (startWidthPx > 0) {
+        for (double s0 : {0.9, 1.6}) start[starts++] = evaluate(pr, -startWidthPx, 0.0, s0);
+    } else {
+        for (double s0 : kGridBlurs)
+            for (int bucket = 0; bucket < 3; ++bucket) {
+                TwoStep &b = start[starts++];
+                for (double xo = -2; xo <= 2.001; xo += 0.5)
+                    for (double w = kWidthBuckets[bucket]; w < kWidthBuckets[bucket + 1] - 0.001; w += 0.5) {
+                        const TwoStep t = evaluate(pr, xo - w, xo, s0);
+                        if (t.ssr < b.ssr && t.coef[2] * outerSign > 0) b = t;
+                    }
+            }
+    }
     TwoStep best;
-    for (TwoStep t : start) {
+    for (int k = 0; k < starts; ++k) {
+        TwoStep t = start[k];
         if (t.ssr >= 1e299) continue;
         double hx = 0.25, hs = 0.08;
-        for (int iteration = 0; hx > 0.004 && iteration < 200; ++iteration) {
+        for (int iteration = 0; hx > (seen ? 0.02 : 0.01) && iteration < 100; ++iteration) {
             bool moved = false;
             const double trial[6][3] = {{hx, 0, 0}, {-hx, 0, 0}, {0, hx, 0}, {0, -hx, 0}, {0, 0, hs}, {0, 0, -hs}};
             for (const auto &dv : trial) {
                 const double xi = t.xi + dv[0], xo = t.xo + dv[1], bl = t.s * (1 + dv[2]);
                 if (xo - xi < 0.5 || bl < 0.3) continue;
                 const TwoStep c = evaluate(pr, xi, xo, bl);
-                if (c.ssr < t.ssr && c.coef[2] * outerSign > 0) {
+                if (c.ssr < t.ssr) {
                     t = c;
                     moved = true;
                 }
             }
             if (!moved) hx *= 0.5, hs *= 0.5;
         }
-        if (t.ssr < best.ssr) best = t;
+        if (t.ssr < best.ssr && t.coef[2] * outerSign > 0) best = t;
     }
     if (best.ssr >= 1e299) return out;
 
@@ -175,11 +219,12 @@ NarrowRingFit fitNarrowRing(const int32_t *profile, int count, int edgeIndex, in
     // The width's statistical error from the curvature of the residual profile along it:
     // at each trial width the contact edge's place and the blur are refitted (on a narrow
     // ring width, blur and step heights trade against each other), and the model's error.
+    const int reach = seen ? 1 : 2;
     auto profileAt = [&](double w) {
         double m = 1e300;
-        for (int i = -6; i <= 6; ++i)
-            for (int j = -3; j <= 3; ++j) {
-                const double xo = best.xo + 0.05 * i, bl = best.s * (1 + 0.04 * j);
+        for (int i = -reach; i <= reach; ++i)
+            for (int j = 1 - reach; j <= reach - 1; ++j) {
+                const double xo = best.xo + 0.1 * i, bl = best.s * (1 + 0.06 * j);
                 m = std::min(m, evaluate(pr, xo - w, xo, bl).ssr);
             }
         return m;

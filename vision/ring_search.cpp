@@ -607,8 +607,8 @@ ErrorCode RingSearch::run(Measurement *m)
     // A ring too narrow for the per-ray search: both edges from the aligned profile's
     // two-step fit (narrow_ring.h), the original face's edge following the contact edge's
     // shape at the fitted width.
-    auto narrowRing = [&]() {
-        const NarrowRingFit nf = fitNarrowRing(aP, K + M + 1, K, me.signOuter, 0.0);
+    auto narrowRing = [&](double startWidthPx) {
+        const NarrowRingFit nf = fitNarrowRing(aP, K + M + 1, K, me.signOuter, 0.0, startWidthPx);
         if (!nf.found) return false;
         inner = outer;
         outer.a0 += nf.outerPx, outer.rEqPx += nf.outerPx;
@@ -676,8 +676,8 @@ ErrorCode RingSearch::run(Measurement *m)
     // peaks apart on every ray: there the profile's two-step fit, which models both, is taken
     // wherever it holds.
     if (perRayInner()) {
-        if (outer.rEqPx - inner.rEqPx < kNarrowRingPx) narrowRing();
-    } else if (narrowRing()) {
+        if (outer.rEqPx - inner.rEqPx < kNarrowRingPx) narrowRing(outer.rEqPx - inner.rEqPx);
+    } else if (narrowRing(0.0)) {
         // No ray saw the original face's edge: the profile alone says the ring is narrow,
         // and the reading says so (warn).
         m->flags |= kFlagNarrowRing;

@@ -55,6 +55,22 @@ TEST(NarrowRing, TwoStepsAFewPixelsApartAreResolved)
     }
 }
 
+// Started from the per-ray search's width (biased by up to a pixel on such rings), the fit
+// takes the face's edge as seen and only places it: the same width.
+TEST(NarrowRing, StartedFromThePerRayWidth)
+{
+    int32_t p[kCount];
+    for (double width : {2.5, 4.0}) {
+        drawProfile(p, width, 0.2, 1.1, 120, 170, 40, 0.5, uint32_t(width * 7));
+        for (double start : {width - 0.6, width + 0.9}) {
+            const NarrowRingFit f = fitNarrowRing(p, kCount, kEdge, -1, 0.0, start);
+            ASSERT_TRUE(f.found) << "width " << width << " start " << start;
+            EXPECT_LT(std::fabs(f.outerPx - f.innerPx - width), std::min(0.5, 2 * f.sigmaWidthPx))
+                << "width " << width << " start " << start;
+        }
+    }
+}
+
 TEST(NarrowRing, ADarkerRingIsResolvedAsWell)
 {
     int32_t p[kCount];
