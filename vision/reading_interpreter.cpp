@@ -195,8 +195,8 @@ void interpretEndFace(const SpecimenSpec &spec, const FrictionModel &model, Meas
         m->rMaxZ = rc.z;
         m->reductionEst = rc.reductionEst;
         if (rc.inconsistent()) f |= declared ? kFlagRadiiInconsistent : kFlagScaleSuspect;
-        const RadiiCheck up = checkRadii(m->rMaxMm, n, mu0, spec.d0Mm, r0 + 0.01, spec.h0Mm);
-        const RadiiCheck down = checkRadii(m->rMaxMm, n, mu0, spec.d0Mm, r0 - 0.01, spec.h0Mm);
+        const RadiiCheck up = checkRadii(m->rMaxMm, n, mu0, spec.d0Mm, r0 + 0.01, spec.h0Mm, false);
+        const RadiiCheck down = checkRadii(m->rMaxMm, n, mu0, spec.d0Mm, r0 - 0.01, spec.h0Mm, false);
         const double overContact = m->rMaxMm / m->rOuterMm;
         usable = rc.valid && up.valid && down.valid && m->silhouetteCoverage >= kSilhouetteMinCoverage &&
                  overContact > kSilhouetteOverContactMin && overContact < kSilhouetteOverContactMax;

@@ -22,7 +22,7 @@ for manifest in "$@"; do
         case $image in /*) path=$image ;; *) path=$dir/$image ;; esac
         printf "%s\n%s\n" "$header" "$(echo "$line" | sed "s#,$image,#,$path,#")" > "$tmp/m.csv"
         valgrind --tool=callgrind --callgrind-out-file="$tmp/cg.out" --collect-atstart=no \
-            --toggle-collect='icacam::vision::EndFaceAnalyzer::measure*' \
+            --toggle-collect='icacam::vision::EndFaceAnalyzer::measure(*' \
             "$icacam" measure --manifest "$tmp/m.csv" --model paper --out "$tmp/o.csv" >/dev/null 2>&1 || true
         ins=$(grep -E '^summary:|^totals:' "$tmp/cg.out" | head -1 | awk '{print $2}')
         size=$(python3 -c "

@@ -49,7 +49,8 @@ bool feRadiusAt(FeRadius which, double n, double mu, double reduction, double *m
     return true;
 }
 
-RadiiCheck checkRadii(double rMaxMm, double n, double mu, double d0Mm, double reduction, double h0Mm)
+RadiiCheck checkRadii(double rMaxMm, double n, double mu, double d0Mm, double reduction, double h0Mm,
+                      bool estimateReduction)
 {
     RadiiCheck c;
     const double g = d0Mm > 0 ? d0Mm / t::kD0Mm : 1.0; // R_max scales with D0
@@ -67,6 +68,7 @@ RadiiCheck checkRadii(double rMaxMm, double n, double mu, double d0Mm, double re
     c.rMaxFeMm = fe * g;
     const double sigma = c.rMaxFeMm * std::hypot(kFeRMaxRelSigma, kMeasuredRMaxRelSigma);
     c.z = (rMaxMm - c.rMaxFeMm) / sigma;
+    if (!estimateReduction) return c;
     // The reduction the silhouette implies: R_max rises with r (volume constancy), so bisect.
     double lo = radiiReductionMin(), hi = radiiReductionMax(), vlo, vhi;
     if (!feAt(lo, &vlo) || !feAt(hi, &vhi)) return c;

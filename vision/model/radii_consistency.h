@@ -55,6 +55,9 @@ struct RadiiCheck {
 // h0Mm: the specimen's initial height; at another slenderness than 1.5 the FE R_max is carried
 // by the FE ratio R_max(H0/D0)/R_max(1.5) (vision/model/aspect_table.h: up to 1.8 % smaller at
 // H0/D0 1.0, within ±1 % at 2.0); 0: the paper's 1.5.
-RadiiCheck checkRadii(double rMaxMm, double n, double mu, double d0Mm, double reduction, double h0Mm = 0);
+// estimateReduction: also solve for reductionEst (a bisection: most of the cost); false where
+// only the FE R_max at the given reduction is wanted.
+RadiiCheck checkRadii(double rMaxMm, double n, double mu, double d0Mm, double reduction, double h0Mm = 0,
+                      bool estimateReduction = true);
 
 } // namespace icacam::vision
