@@ -153,7 +153,8 @@ NarrowRingFit fitNarrowRing(const int32_t *profile, int count, int edgeIndex, in
 
     // Two steps: a pattern search over (x_i, x_o, s) from a few starts, the best taken (on a
     // narrow ring blur, width and step heights trade against each other: one start can end
-    // in the wrong valley). With a width from the per-ray search, two starts at it; without,
+    // in the wrong valley). With a width from the per-ray search, two starts at it and at
+    // most 25 steps each (the fit only places the edge the rays saw); without,
     // the best of a coarse grid for each of four blurs and three width ranges.
     constexpr double kGridBlurs[] = {0.6, 0.9, 1.3, 1.9};
     constexpr double kWidthBuckets[] = {1.0, 2.5, 4.5, kMaxWidthPx + 0.5}; // bounds
@@ -178,7 +179,7 @@ NarrowRingFit fitNarrowRing(const int32_t *profile, int count, int edgeIndex, in
         TwoStep t = start[k];
         if (t.ssr >= 1e299) continue;
         double hx = 0.25, hs = 0.08;
-        for (int iteration = 0; hx > (seen ? 0.02 : 0.01) && iteration < 100; ++iteration) {
+        for (int iteration = 0; hx > (seen ? 0.02 : 0.01) && iteration < (seen ? 25 : 100); ++iteration) {
             bool moved = false;
             const double trial[6][3] = {{hx, 0, 0}, {-hx, 0, 0}, {0, hx, 0}, {0, -hx, 0}, {0, 0, hs}, {0, 0, -hs}};
             for (const auto &dv : trial) {
