@@ -104,8 +104,7 @@ TwoStep evaluate(const Profile &pr, double xi, double xo, double s)
 
 } // namespace
 
-NarrowRingFit fitNarrowRing(const int32_t *profile, int count, int edgeIndex, int outerSign, double noise,
-                            double startWidthPx)
+NarrowRingFit fitNarrowRing(const int32_t *profile, int count, int edgeIndex, int outerSign, double startWidthPx)
 {
     NarrowRingFit out;
     Profile pr;
@@ -129,7 +128,7 @@ NarrowRingFit fitNarrowRing(const int32_t *profile, int count, int edgeIndex, in
     const bool seen = startWidthPx > 0;
     double single = 1e300;
     for (double s0 : {0.8, 1.8}) {
-        if (seen) break;
+        if (seen) continue;
         double xo = 0, bl = s0, h = 0.5, hs = 0.15;
         auto ssrAt = [&](double x, double b) {
             double f1[kMaxPoints], coef[3];
@@ -200,8 +199,7 @@ NarrowRingFit fitNarrowRing(const int32_t *profile, int count, int edgeIndex, in
     // The second step must earn its place, and stand well above the noise.
     const double dof = std::max(1, pr.n - 6);
     const double resid = std::sqrt(best.ssr / dof);
-    const double level = std::max(noise, resid);
-    if (!(single >= 4 * best.ssr) || std::fabs(best.coef[1]) < std::max(4 * level, kMinInnerStep)) return out;
+    if (!(single >= 4 * best.ssr) || std::fabs(best.coef[1]) < std::max(4 * resid, kMinInnerStep)) return out;
     // Two steps closer than their blur are one edge of another shape, not a ring.
     if (best.xo - best.xi > kMaxWidthPx || best.xo - best.xi < best.s) return out;
     // Inside the inner step lies the original face: its level all the way in must be the

@@ -29,11 +29,10 @@ struct NarrowRingFit {
 };
 
 // profile: the mean profile at 1 px steps, count samples, the contact edge near edgeIndex;
-// outerSign: the contact edge's step sign going outwards; noise: the profile's noise level
-// (profile units).
+// outerSign: the contact edge's step sign going outwards. The noise level is the fit's own
+// residual.
 // startWidthPx: the per-ray search's width where it found one (the fit starts there), else 0
 // (a coarse grid finds the starts: about ten times the work).
-NarrowRingFit fitNarrowRing(const int32_t *profile, int count, int edgeIndex, int outerSign, double noise,
-                            double startWidthPx = 0);
+NarrowRingFit fitNarrowRing(const int32_t *profile, int count, int edgeIndex, int outerSign, double startWidthPx = 0);
 
 } // namespace icacam::vision

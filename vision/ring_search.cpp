@@ -17,9 +17,6 @@ namespace {
 // Ring width (px) below which the per-ray search's edges are biased by each other's blur
 // (0.4–2 px wide on rendered 2–5 px rings, tests/vision/synth_accuracy_test.cpp).
 constexpr double kNarrowRingPx = 6.0;
-} // namespace
-
-namespace {
 constexpr int kRays = EndFaceAnalyzer::kFineRays;
 constexpr int kMaxFine = EndFaceAnalyzer::kMaxFineSamples;
 constexpr int kMaxCoarse = EndFaceAnalyzer::kMaxCoarseSamples;
@@ -608,7 +605,7 @@ ErrorCode RingSearch::run(Measurement *m)
     // two-step fit (narrow_ring.h), the original face's edge following the contact edge's
     // shape at the fitted width.
     auto narrowRing = [&](double startWidthPx) {
-        const NarrowRingFit nf = fitNarrowRing(aP, K + M + 1, K, me.signOuter, 0.0, startWidthPx);
+        const NarrowRingFit nf = fitNarrowRing(aP, K + M + 1, K, me.signOuter, startWidthPx);
         if (!nf.found) return false;
         inner = outer;
         outer.a0 += nf.outerPx, outer.rEqPx += nf.outerPx;

@@ -40,7 +40,7 @@ TEST(NarrowRing, TwoStepsAFewPixelsApartAreResolved)
     for (double width : {2.0, 2.5, 4.0, 6.0}) {
         for (double shift : {-0.4, 0.3}) {
             drawProfile(p, width, shift, 1.0, 120, 170, 40, 0.5, uint32_t(width * 10));
-            const NarrowRingFit f = fitNarrowRing(p, kCount, kEdge, -1, 0.0);
+            const NarrowRingFit f = fitNarrowRing(p, kCount, kEdge, -1);
             ASSERT_TRUE(f.found) << "width " << width;
             const double err = f.outerPx - f.innerPx - width;
             EXPECT_LT(std::fabs(err), 2 * f.sigmaWidthPx) << "width " << width << " shift " << shift;
@@ -63,7 +63,7 @@ TEST(NarrowRing, StartedFromThePerRayWidth)
     for (double width : {2.5, 4.0}) {
         drawProfile(p, width, 0.2, 1.1, 120, 170, 40, 0.5, uint32_t(width * 7));
         for (double start : {width - 0.6, width + 0.9}) {
-            const NarrowRingFit f = fitNarrowRing(p, kCount, kEdge, -1, 0.0, start);
+            const NarrowRingFit f = fitNarrowRing(p, kCount, kEdge, -1, start);
             ASSERT_TRUE(f.found) << "width " << width << " start " << start;
             EXPECT_LT(std::fabs(f.outerPx - f.innerPx - width), std::min(0.5, 2 * f.sigmaWidthPx))
                 << "width " << width << " start " << start;
@@ -75,7 +75,7 @@ TEST(NarrowRing, ADarkerRingIsResolvedAsWell)
 {
     int32_t p[kCount];
     drawProfile(p, 3.0, 0.0, 1.3, 150, 90, 200, 0.8, 7);
-    const NarrowRingFit f = fitNarrowRing(p, kCount, kEdge, +1, 0.0);
+    const NarrowRingFit f = fitNarrowRing(p, kCount, kEdge, +1);
     ASSERT_TRUE(f.found);
     EXPECT_NEAR(f.outerPx - f.innerPx, 3.0, std::min(0.5, 2 * f.sigmaWidthPx));
 }
@@ -84,7 +84,7 @@ TEST(NarrowRing, ASingleStepHasNoRing)
 {
     int32_t p[kCount];
     drawProfile(p, 3.0, 0.0, 1.0, 170, 170, 40, 0.5, 3); // the face at the ICA's level
-    EXPECT_FALSE(fitNarrowRing(p, kCount, kEdge, -1, 0.0).found);
+    EXPECT_FALSE(fitNarrowRing(p, kCount, kEdge, -1).found);
 }
 
 TEST(NarrowRing, AMarkOnAWideRingIsNotTheFacesEdge)
@@ -94,23 +94,23 @@ TEST(NarrowRing, AMarkOnAWideRingIsNotTheFacesEdge)
     int32_t p[kCount];
     drawProfile(p, 5.0, 0.0, 1.0, 150, 170, 40, 0.5, 5);
     for (int k = 0; k < kEdge - 30; ++k) p[k] = 100 * 256;
-    EXPECT_FALSE(fitNarrowRing(p, kCount, kEdge, -1, 0.0).found);
+    EXPECT_FALSE(fitNarrowRing(p, kCount, kEdge, -1).found);
 }
 
 TEST(NarrowRing, WiderThanEightPixelsIsLeftToThePerRaySearch)
 {
     int32_t p[kCount];
     drawProfile(p, 10.0, 0.0, 1.0, 120, 170, 40, 0.5, 9);
-    EXPECT_FALSE(fitNarrowRing(p, kCount, kEdge, -1, 0.0).found);
+    EXPECT_FALSE(fitNarrowRing(p, kCount, kEdge, -1).found);
 }
 
 TEST(NarrowRing, AFaintOrUnresolvedStepIsNoRing)
 {
     int32_t p[kCount];
     drawProfile(p, 3.0, 0.0, 1.0, 167, 170, 40, 0.05, 11); // 3 grey levels: below what any edge needs
-    EXPECT_FALSE(fitNarrowRing(p, kCount, kEdge, -1, 0.0).found);
+    EXPECT_FALSE(fitNarrowRing(p, kCount, kEdge, -1).found);
     drawProfile(p, 0.8, 0.0, 1.2, 120, 170, 40, 0.05, 13); // closer than the blur
-    EXPECT_FALSE(fitNarrowRing(p, kCount, kEdge, -1, 0.0).found);
+    EXPECT_FALSE(fitNarrowRing(p, kCount, kEdge, -1).found);
 }
 
 } // namespace
