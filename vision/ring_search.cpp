@@ -389,6 +389,7 @@ double RingSearch::silhouetteFromRays(const double *outerR, double *coverage, bo
     const double step = EndFaceAnalyzer::coarseStep(r0);
     const int count = std::min(kMaxCoarse, int((rB - rA) / step));
     const int w = std::max(4, int(0.035 * r0 / step)); // step detector half-width
+    const int wn = std::max(1, w / 4);                 // the locating detector's
     double radius[kCoarse];
     bool valid[kCoarse];
     int32_t prefix[kMaxCoarse + 1];
@@ -412,18 +413,48 @@ double RingSearch::silhouetteFromRays(const double *outerR, double *coverage, bo
         for (int j = base; j <= hi + w; ++j) prefix[j + 1] = prefix[j] + row[j];
         // Step across r: mean of the w samples outside minus the w samples inside (Q8).
         auto stepAt = [&](int j) { return (prefix[j + 1 + w] - prefix[j + 1]) - (prefix[j] - prefix[j - w]); };
-        // Noise: the step detector's spread over the outer quarter (background, mostly).
-        int32_t tmp[kMaxCoarse];
+        // The same step over wn samples a side: it locates the edge the wide one detects.
+        auto narrowAt = [&](int j) { return (prefix[j + 1 + wn] - prefix[j + 1]) - (prefix[j] - prefix[j - wn]); };
+        // Noise: each detector's spread over the outer quarter (background, mostly).
+        int32_t tmp[kMaxCoarse], tmpNarrow[kMaxCoarse];
         int nt = 0;
-        for (int j = std::max(lo, hi - (hi - lo) / 4); j <= hi; ++j) tmp[nt++] = std::abs(stepAt(j));
+        for (int j = std::max(lo, hi - (hi - lo) / 4); j <= hi; ++j, ++nt) {
+            tmp[nt] = std::abs(stepAt(j));
+            tmpNarrow[nt] = std::abs(narrowAt(j));
+        }
         std::nth_element(tmp, tmp + nt / 2, tmp + nt);
+        std::nth_element(tmpNarrow, tmpNarrow + nt / 2, tmpNarrow + nt);
         const double threshold = std::max(3.0 * 1.4826 * tmp[nt / 2], 4.0 * 256 * w);
-        // Outermost clear step, then its local peak.
+        const double narrowThreshold = std::max(3.0 * 1.4826 * tmpNarrow[nt / 2], 4.0 * 256 * wn);
         for (int j = hi; j >= lo; --j) {
             if (std::abs(stepAt(j)) < threshold) continue;
-            int best = j;
-            while (best - 1 >= lo && std::abs(stepAt(best - 1)) >= std::abs(stepAt(best))) --best;
-            radius[i] = rA + (best + 0.5) * step;
+            // The outermost clear step lies within w samples inside where the wide detector
+            // first sees it. A highlight band on the barrel just inside its outline is a
+            // stronger step of the same sign, and the wide detector's peak would slide onto
+            // its flank (1–2 % short): the edge is the narrow detector's strongest peak over
+            // those w samples. Only where the narrow one sees nothing clear there does the
+            // wide one's own peak stand.
+            const int sign = stepAt(j) > 0 ? 1 : -1;
+            int best = -1;
+            int32_t bestA = 0;
+            for (int k = std::min(hi - 1, j + 1); k >= std::max(lo + 1, j - w); --k) {
+                const int32_t a = sign * narrowAt(k);
+                if (a > bestA && a >= sign * narrowAt(k - 1) && a >= sign * narrowAt(k + 1)) {
+                    best = k;
+                    bestA = a;
+                }
+            }
+            if (bestA < narrowThreshold) best = -1;
+            double offset = 0;
+            if (best >= 0) {
+                offset = parabolaVertex(sign * narrowAt(best - 1), sign * narrowAt(best), sign * narrowAt(best + 1))
+                             .toDouble();
+            } else {
+                best = j;
+                while (best - 1 >= lo && std::abs(stepAt(best - 1)) >= std::abs(stepAt(best))) --best;
+            }
+            // The detectors are centred on sample k (samples k + 1 … against … k − 1).
+            radius[i] = rA + (best + offset) * step;
             valid[i] = true;
             break;
         }

@@ -4,7 +4,7 @@
 // tolerance (max(0.01, 5 % of μ)), at least 90 % of the results within 2 σ (σ without the model's own fit error: the
 // truth is the paper's model), and where nothing is undeclared a σ that is neither inflated nor too small: median
 // |Δμ|/σ between 0.3 and 1. The first two always run; the σ-ratio bar only with -DICACAM_COVERAGE_RATIO_BAR=ON: without
-// a declared final height the reduction the silhouette implies is uncertain by ≈ 0.009, wider than the development
+// a declared final height the reduction the silhouette implies is uncertain by ≈ 0.007, wider than the development
 // set's exact 50 % needs (docs/uncertainty.md, "What is missing").
 #include <gtest/gtest.h>
 

@@ -62,8 +62,8 @@ struct Search {
 
 // Bars on a clean picture blurred by σ = 1 px: the fine rays locate each edge to a small
 // fraction of a pixel and 256 of them average what is left (on these pictures the radii come
-// within 0.02 px and the centres within 0.005 px); the silhouette is read on the coarse rays'
-// samples, without interpolation between them, so to within one coarse step (2 px here).
+// within 0.02 px and the centres within 0.005 px); the silhouette is read on the 64 coarse
+// rays (2 px step here) and bounded here by one step.
 constexpr double kEdgeTolPx = 0.05;
 constexpr double kCentreTolPx = 0.02;
 
@@ -107,6 +107,24 @@ TEST(RingSearch, FindsTheDrawnBoundariesAboutTheDrawnCentre)
         }
     }
     EXPECT_EQ(valid, 2 * EndFaceAnalyzer::kFineRays);
+}
+
+TEST(RingSearch, TheSilhouetteIsTheOutlineNotAHighlightInsideIt)
+{
+    // The development set's photographs: a faint barrel/background step (7 grey levels) with
+    // the ring light's highlight on the barrel just inside it (peak 14 px in). A step
+    // detector wide enough for the faint step also spans the highlight's outer flank, and its
+    // peak slides there: 1–2 % short, which reads as a smaller reduction. The outline must be
+    // found where it was drawn, to a fraction of the coarse step.
+    test::SyntheticEndFace face;
+    face.barrel = 51, face.background = 44;
+    face.highlight = 48, face.highlightGap = 14, face.highlightSigma = 3.5;
+    face.blurSigma = 1.2;
+    const auto px = face.draw();
+    Search s;
+    ASSERT_EQ(s.run(face.view(px), face.r0, face.cx, face.cy), ErrorCode::None);
+    EXPECT_NEAR(s.m.rMaxPx, face.rMax, 0.5);
+    EXPECT_GT(s.m.silhouetteCoverage, 0.9);
 }
 
 TEST(RingSearch, AnOffCentreStartIsAbsorbedByTheFit)

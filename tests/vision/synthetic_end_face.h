@@ -23,7 +23,10 @@ struct SyntheticEndFace {
     double outerC2 = 0, outerPhase = 0;
     double face = 150, ica = 170, barrel = 30, background = 40; // grey levels
     double blurSigma = 1.0;                                     // of every step, pixels
-    int pixelStep = 1;                                          // 2: the luma of a YUYV frame (chroma bytes set to 128)
+    // A ring light's highlight on the barrel: a bright band of this amplitude (grey levels)
+    // and Gaussian width, centred highlightGap pixels inside the silhouette.
+    double highlight = 0, highlightGap = 0, highlightSigma = 1;
+    int pixelStep = 1; // 2: the luma of a YUYV frame (chroma bytes set to 128)
 
     // The same specimen at another initial radius.
     void scaleTo(double newR0)
@@ -48,7 +51,10 @@ struct SyntheticEndFace {
                 const double dx = x - cx, dy = y - cy;
                 const double r = std::hypot(dx, dy), theta = std::atan2(dy, dx);
                 const double g = background + (barrel - background) * inside(rMax - r) +
-                                 (ica - barrel) * inside(outerAt(theta) - r) + (face - ica) * inside(rInner - r);
+                                 (ica - barrel) * inside(outerAt(theta) - r) + (face - ica) * inside(rInner - r) +
+                                 highlight *
+                                     std::exp(-0.5 * std::pow((r - (rMax - highlightGap)) / highlightSigma, 2)) *
+                                     (1 - inside(outerAt(theta) - r));
                 px[(size_t(y) * width + x) * pixelStep] = uint8_t(std::clamp(std::lround(g), 0L, 255L));
             }
         return px;
