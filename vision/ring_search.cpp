@@ -415,17 +415,15 @@ double RingSearch::silhouetteFromRays(const double *outerR, double *coverage, bo
         auto stepAt = [&](int j) { return (prefix[j + 1 + w] - prefix[j + 1]) - (prefix[j] - prefix[j - w]); };
         // The same step over wn samples a side: it locates the edge the wide one detects.
         auto narrowAt = [&](int j) { return (prefix[j + 1 + wn] - prefix[j + 1]) - (prefix[j] - prefix[j - wn]); };
-        // Noise: each detector's spread over the outer quarter (background, mostly).
-        int32_t tmp[kMaxCoarse], tmpNarrow[kMaxCoarse];
+        // Noise: the step detector's spread over the outer quarter (background, mostly); the
+        // narrow one's is that of a sum over wn samples a side rather than w: √(wn/w) of it.
+        int32_t tmp[kMaxCoarse];
         int nt = 0;
-        for (int j = std::max(lo, hi - (hi - lo) / 4); j <= hi; ++j, ++nt) {
-            tmp[nt] = std::abs(stepAt(j));
-            tmpNarrow[nt] = std::abs(narrowAt(j));
-        }
+        for (int j = std::max(lo, hi - (hi - lo) / 4); j <= hi; ++j) tmp[nt++] = std::abs(stepAt(j));
         std::nth_element(tmp, tmp + nt / 2, tmp + nt);
-        std::nth_element(tmpNarrow, tmpNarrow + nt / 2, tmpNarrow + nt);
-        const double threshold = std::max(3.0 * 1.4826 * tmp[nt / 2], 4.0 * 256 * w);
-        const double narrowThreshold = std::max(3.0 * 1.4826 * tmpNarrow[nt / 2], 4.0 * 256 * wn);
+        const double noise = 1.4826 * tmp[nt / 2];
+        const double threshold = std::max(3.0 * noise, 4.0 * 256 * w);
+        const double narrowThreshold = std::max(3.0 * noise * std::sqrt(double(wn) / w), 4.0 * 256 * wn);
         for (int j = hi; j >= lo; --j) {
             if (std::abs(stepAt(j)) < threshold) continue;
             // The outermost clear step lies within w samples inside where the wide detector
