@@ -17,6 +17,9 @@ namespace {
 // Ring width (px) below which the per-ray search's edges are biased by each other's blur
 // (0.4–2 px wide on rendered 2–5 px rings, tests/vision/synth_accuracy_test.cpp).
 constexpr double kNarrowRingPx = 6.0;
+// Grey levels between the two sides of the original face's edge below which the rays' edge
+// is not taken (low_contrast warns below 5; no rendered or photographed face shows under 6).
+constexpr double kMinInnerContrast = 2.0;
 constexpr int kRays = EndFaceAnalyzer::kFineRays;
 constexpr int kMaxFine = EndFaceAnalyzer::kMaxFineSamples;
 constexpr int kMaxCoarse = EndFaceAnalyzer::kMaxCoarseSamples;
@@ -701,7 +704,9 @@ ErrorCode RingSearch::run(Measurement *m)
     // Below kNarrowRingPx the two edges' blurs overlap and pull each other's derivative
     // peaks apart on every ray: there the profile's two-step fit, which models both, is taken
     // wherever it holds.
-    if (perRayInner()) {
+    // An "edge" the rays place with under kMinInnerContrast between its two sides is noise
+    // that the derivative happened to peak on, not the original face.
+    if (perRayInner() && std::fabs(contrastInner) >= kMinInnerContrast) {
         if (outer.rEqPx - inner.rEqPx < kNarrowRingPx) narrowRing(outer.rEqPx - inner.rEqPx);
     } else if (narrowRing(0.0)) {
         // No ray saw the original face's edge: the profile alone says the ring is narrow,

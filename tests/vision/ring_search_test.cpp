@@ -3,6 +3,7 @@
 // a contact edge that is not a circle, and name what it could not find.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -197,6 +198,37 @@ TEST(RingSearch, APlainDiscHasNoOriginalFaceEdge)
     const auto px = face.draw();
     Search s;
     EXPECT_EQ(s.run(face.view(px), face.r0, face.cx, face.cy), ErrorCode::InnerEdgeNotFound);
+}
+
+TEST(RingSearch, NoiseOnAPlainDiscIsNoOriginalFaceEdge)
+{
+    // The same disc under sensor noise: somewhere inside the contact edge the noise peaks, and
+    // rays that follow it would report a ring with nothing between its sides. No such edge is
+    // taken for the original face, over many noise draws.
+    test::SyntheticEndFace face;
+    face.face = face.ica;
+    int measured = 0;
+    for (uint32_t seed = 1; seed <= 12; ++seed) {
+        auto px = face.draw();
+        uint32_t state = seed * 2654435761u;
+        for (uint8_t &p : px) {
+            // Sum of four uniforms: about normal, σ ≈ 3.5 grey levels.
+            int n = 0;
+            for (int k = 0; k < 4; ++k) {
+                state = state * 1664525u + 1013904223u;
+                n += int(state >> 29); // 0 … 7
+            }
+            p = uint8_t(std::clamp(int(p) + n - 14, 0, 255));
+        }
+        Search s;
+        const ErrorCode e = s.run(face.view(px), face.r0, face.cx, face.cy);
+        if (e == ErrorCode::None) {
+            ++measured;
+            ADD_FAILURE() << "seed " << seed << ": a ring of " << s.m.outer.rEqPx - s.m.inner.rEqPx << " px, contrast "
+                          << s.m.inner.contrast;
+        }
+    }
+    EXPECT_EQ(measured, 0);
 }
 
 TEST(RingSearch, AClippedFaceIsSaturatedNotARing)
