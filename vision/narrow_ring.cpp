@@ -89,13 +89,17 @@ struct TwoStep {
     double xi = 0, xo = 0, s = 1, ssr = 1e300, coef[3] = {};
 };
 
+// One blurred step at x over the profile's points.
+void stepBasis(const Profile &pr, double x, double s, double *f)
+{
+    for (int i = 0; i < pr.n; ++i) f[i] = phi((pr.x[i] - x) / s);
+}
+
 TwoStep evaluate(const Profile &pr, double xi, double xo, double s)
 {
     double f1[kMaxPoints], f2[kMaxPoints];
-    for (int i = 0; i < pr.n; ++i) {
-        f1[i] = phi((pr.x[i] - xi) / s);
-        f2[i] = phi((pr.x[i] - xo) / s);
-    }
+    stepBasis(pr, xi, s, f1);
+    stepBasis(pr, xo, s, f2);
     TwoStep t;
     t.xi = xi, t.xo = xo, t.s = s;
     t.ssr = solve(pr, f1, f2, t.coef);
@@ -177,6 +181,12 @@ NarrowRingFit fitNarrowRing(const int32_t *profile, int count, int edgeIndex, in
     for (int k = 0; k < starts; ++k) {
         TwoStep t = start[k];
         if (t.ssr >= 1e299) continue;
+        // The current point's two step bases: a trial that moves one step alone reuses the
+        // other's (two thirds of the trials; the fit's cost is these normal-distribution
+        // evaluations).
+        double f1[kMaxPoints], f2[kMaxPoints], g[kMaxPoints], g2[kMaxPoints];
+        stepBasis(pr, t.xi, t.s, f1);
+        stepBasis(pr, t.xo, t.s, f2);
         double hx = 0.25, hs = 0.08;
         for (int iteration = 0; hx > (seen ? 0.02 : 0.01) && iteration < (seen ? 25 : 100); ++iteration) {
             bool moved = false;
@@ -184,10 +194,29 @@ NarrowRingFit fitNarrowRing(const int32_t *profile, int count, int edgeIndex, in
             for (const auto &dv : trial) {
                 const double xi = t.xi + dv[0], xo = t.xo + dv[1], bl = t.s * (1 + dv[2]);
                 if (xo - xi < 0.5 || bl < 0.3) continue;
-                const TwoStep c = evaluate(pr, xi, xo, bl);
+                TwoStep c;
+                c.xi = xi, c.xo = xo, c.s = bl;
+                if (dv[2] == 0 && dv[1] == 0) {
+                    stepBasis(pr, xi, bl, g);
+                    c.ssr = solve(pr, g, f2, c.coef);
+                } else if (dv[2] == 0 && dv[0] == 0) {
+                    stepBasis(pr, xo, bl, g);
+                    c.ssr = solve(pr, f1, g, c.coef);
+                } else {
+                    stepBasis(pr, xi, bl, g);
+                    stepBasis(pr, xo, bl, g2);
+                    c.ssr = solve(pr, g, g2, c.coef);
+                }
                 if (c.ssr < t.ssr) {
                     t = c;
                     moved = true;
+                    // The accepted trial's bases become the current ones.
+                    if (dv[2] != 0) {
+                        std::copy(g, g + pr.n, f1);
+                        std::copy(g2, g2 + pr.n, f2);
+                    } else {
+                        std::copy(g, g + pr.n, dv[0] != 0 ? f1 : f2);
+                    }
                 }
             }
             if (!moved) hx *= 0.5, hs *= 0.5;
