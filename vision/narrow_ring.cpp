@@ -35,7 +35,7 @@ struct PhiTable {
             v[i] = 0.5 * std::erfc(-(double(i - kHalf) / kPerUnit) * 0.7071067811865476);
     }
 };
-const PhiTable table;
+const PhiTable phiTable;
 
 double phi(double z)
 {
@@ -44,7 +44,7 @@ double phi(double z)
     if (t >= 2 * PhiTable::kHalf) return 1.0;
     const int i = int(t);
     const double f = t - i;
-    return table.v[i] + f * (table.v[i + 1] - table.v[i]);
+    return phiTable.v[i] + f * (phiTable.v[i + 1] - phiTable.v[i]);
 }
 
 struct Profile {
