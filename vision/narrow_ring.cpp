@@ -132,12 +132,12 @@ NarrowRingFit fitNarrowRing(const int32_t *profile, int count, int edgeIndex, in
     // it, and this test is not needed.
     const bool seen = startWidthPx > 0;
     double single = 1e300;
-    for (double s0 : {0.8, 1.8}) {
-        if (seen) continue;
-        double xo = 0, bl = s0, h = 0.5, hs = 0.15;
+    constexpr double kSingleBlurs[] = {0.8, 1.8};
+    for (int start = 0; start < (seen ? 0 : 2); ++start) {
+        double xo = 0, bl = kSingleBlurs[start], h = 0.5, hs = 0.15;
         auto ssrAt = [&](double x, double b) {
             double f1[kMaxPoints], coef[3];
-            for (int i = 0; i < pr.n; ++i) f1[i] = phi((pr.x[i] - x) / b);
+            stepBasis(pr, x, b, f1);
             return solve(pr, f1, nullptr, coef);
         };
         double cur = ssrAt(xo, bl);
@@ -184,8 +184,9 @@ NarrowRingFit fitNarrowRing(const int32_t *profile, int count, int edgeIndex, in
         if (t.ssr >= 1e299) continue;
         // The current point's two step bases: a trial that moves one step alone reuses the
         // other's (two thirds of the trials; the fit's cost is these normal-distribution
-        // evaluations).
-        double f1[kMaxPoints], f2[kMaxPoints], g[kMaxPoints], g2[kMaxPoints];
+        // evaluations). An accepted trial's bases swap in for the current ones.
+        double buf[4][kMaxPoints];
+        double *f1 = buf[0], *f2 = buf[1], *g1 = buf[2], *g2 = buf[3];
         stepBasis(pr, t.xi, t.s, f1);
         stepBasis(pr, t.xo, t.s, f2);
         double hx = 0.25, hs = 0.08;
@@ -195,29 +196,17 @@ NarrowRingFit fitNarrowRing(const int32_t *profile, int count, int edgeIndex, in
             for (const auto &dv : trial) {
                 const double xi = t.xi + dv[0], xo = t.xo + dv[1], bl = t.s * (1 + dv[2]);
                 if (xo - xi < 0.5 || bl < 0.3) continue;
+                const bool movesInner = dv[0] != 0 || dv[2] != 0, movesOuter = dv[1] != 0 || dv[2] != 0;
+                if (movesInner) stepBasis(pr, xi, bl, g1);
+                if (movesOuter) stepBasis(pr, xo, bl, g2);
                 TwoStep c;
                 c.xi = xi, c.xo = xo, c.s = bl;
-                if (dv[2] == 0 && dv[1] == 0) {
-                    stepBasis(pr, xi, bl, g);
-                    c.ssr = solve(pr, g, f2, c.coef);
-                } else if (dv[2] == 0 && dv[0] == 0) {
-                    stepBasis(pr, xo, bl, g);
-                    c.ssr = solve(pr, f1, g, c.coef);
-                } else {
-                    stepBasis(pr, xi, bl, g);
-                    stepBasis(pr, xo, bl, g2);
-                    c.ssr = solve(pr, g, g2, c.coef);
-                }
+                c.ssr = solve(pr, movesInner ? g1 : f1, movesOuter ? g2 : f2, c.coef);
                 if (c.ssr < t.ssr) {
                     t = c;
                     moved = true;
-                    // The accepted trial's bases become the current ones.
-                    if (dv[2] != 0) {
-                        std::copy(g, g + pr.n, f1);
-                        std::copy(g2, g2 + pr.n, f2);
-                    } else {
-                        std::copy(g, g + pr.n, dv[0] != 0 ? f1 : f2);
-                    }
+                    if (movesInner) std::swap(f1, g1);
+                    if (movesOuter) std::swap(f2, g2);
                 }
             }
             if (!moved) hx *= 0.5, hs *= 0.5;
