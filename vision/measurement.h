@@ -108,8 +108,10 @@ struct Measurement {
     // declared final height (or 50 % when none), and the reduction R_max implies (-1: none).
     double rMaxZ = 0;
     double reductionEst = -1;
-    // The silhouette's per-ray fit: coverage (0 when only the mean profile named it).
+    // The silhouette's per-ray fit: coverage and the points' robust RMS about it (0 when only
+    // the mean profile named it).
     double silhouetteCoverage = 0;
+    double silhouetteScatterPx = 0;
 
     // The interpretation (reading_interpreter.h): what the reading used and its budget.
     UncertaintyBudget budget;

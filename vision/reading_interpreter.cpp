@@ -68,14 +68,14 @@ struct ScaleAndReduction {
     double pk = 0, pr = 0, pkr = 0; // their (co)variances
 };
 
-// The silhouette's observation d = δk + β·δr + o + e (e: silhouetteRelSigma; o an offset of
-// the silhouette alone, with its mean and variance) applied to a prior on (δk, δr): the
-// posterior mean and covariance (a linear Gaussian update), widened by χ² where d lies
-// further out than the prior and e explain (as for a Birge ratio).
-ScaleAndReduction update(const ScaleAndReduction &prior, double d, double beta, double offset = 0, double offsetVar = 0)
+// The silhouette's observation d = δk + β·δr + o + e (e of variance se2: silhouetteRelSigma;
+// o an offset of the silhouette alone, with its mean and variance) applied to a prior on
+// (δk, δr): the posterior mean and covariance (a linear Gaussian update), widened by χ² where d
+// lies further out than the prior and e explain (as for a Birge ratio).
+ScaleAndReduction update(const ScaleAndReduction &prior, double d, double beta, double se2, double offset = 0,
+                         double offsetVar = 0)
 {
-    const double se = silhouetteRelSigma();
-    const double S = prior.pk + beta * beta * prior.pr + se * se + offsetVar;
+    const double S = prior.pk + beta * beta * prior.pr + se2 + offsetVar;
     const double v = d - offset;
     const double w = std::max(1.0, v * v / S);
     ScaleAndReduction p;
@@ -89,9 +89,10 @@ ScaleAndReduction update(const ScaleAndReduction &prior, double d, double beta, 
 
 } // namespace
 
-double silhouetteRelSigma()
+double silhouetteRelSigma(const Measurement &m)
 {
-    return std::hypot(kFeRMaxRelSigma, kMeasuredRMaxRelSigma);
+    const double scatterRel = m.silhouetteCoverage > 0 && m.rMaxPx > 0 ? m.silhouetteScatterPx / m.rMaxPx : 0;
+    return std::hypot(kFeRMaxRelSigma, measuredRMaxRelSigma(scatterRel));
 }
 
 void interpretEndFace(const SpecimenSpec &spec, const FrictionModel &model, Measurement *m)
@@ -191,7 +192,9 @@ void interpretEndFace(const SpecimenSpec &spec, const FrictionModel &model, Meas
     if (spec.calibration) {
         // Calibrated: R_max is reported, not held against the model.
     } else if (m->rMaxPx > 0) {
-        const RadiiCheck rc = checkRadii(m->rMaxMm, n, mu0, spec.d0Mm, r0, spec.h0Mm);
+        const double scatterRel = m->silhouetteCoverage > 0 ? m->silhouetteScatterPx / m->rMaxPx : 0;
+        const RadiiCheck rc =
+            checkRadii(m->rMaxMm, n, mu0, spec.d0Mm, r0, spec.h0Mm, true, measuredRMaxRelSigma(scatterRel));
         m->rMaxZ = rc.z;
         m->reductionEst = rc.reductionEst;
         if (rc.inconsistent()) f |= declared ? kFlagRadiiInconsistent : kFlagScaleSuspect;
@@ -209,22 +212,22 @@ void interpretEndFace(const SpecimenSpec &spec, const FrictionModel &model, Meas
     } else {
         f |= kFlagNoSilhouette;
     }
+    const double se2 = silhouetteRelSigma(*m) * silhouetteRelSigma(*m);
     if (usable && declared) {
-        const double S = sr.pk + beta * beta * sr.pr + silhouetteRelSigma() * silhouetteRelSigma();
+        const double S = sr.pk + beta * beta * sr.pr + se2;
         if (d * d / S > kContradictionChi2) {
             // Declared scale and height cannot both be right: neither is corrected, and each
             // is widened to explain the whole discrepancy alone.
             sr.pk = std::max(sr.pk, d * d);
             sr.pr = std::max(sr.pr, d * d / (beta * beta));
         } else {
-            sr = update(sr, d, beta);
+            sr = update(sr, d, beta, se2);
         }
     } else if (usable) {
         // Three explanations of the silhouette's discrepancy, four in an oblique view (see
         // kNominalReductionSigma and kForeshortenMean): each one's posterior, weighted by how
         // well it predicts d, and their mixture's moments.
         constexpr int kExplanations = 4;
-        const double se2 = silhouetteRelSigma() * silhouetteRelSigma();
         ScaleAndReduction prior[kExplanations];
         prior[0] = sr;                                     // pressed to another height
         prior[1].pk = kGrossScaleSigma * kGrossScaleSigma; // half height, a scale off
@@ -242,7 +245,7 @@ void interpretEndFace(const SpecimenSpec &spec, const FrictionModel &model, Meas
             const double v = d - offset[h];
             w[h] = h != 3 || oblique ? std::exp(-0.5 * v * v / S) / std::sqrt(S) : 0.0;
             wSum += w[h];
-            post[h] = update(prior[h], d, beta, offset[h], offsetVar[h]);
+            post[h] = update(prior[h], d, beta, se2, offset[h], offsetVar[h]);
         }
         sr = ScaleAndReduction{};
         for (int h = 0; h < kExplanations; ++h) {

@@ -47,7 +47,8 @@ namespace icacam::vision {
 // EndFaceAnalyzer::measureFace; one whose error is set stays an error.
 void interpretEndFace(const SpecimenSpec &spec, const FrictionModel &model, Measurement *m);
 
-// The silhouette's relative 1-σ error against the FE (measurement and FE, radii_consistency.h).
-double silhouetteRelSigma();
+// The silhouette's relative 1-σ error against the FE: the FE's and the measurement's, from
+// the per-ray fit's scatter (radii_consistency.h).
+double silhouetteRelSigma(const Measurement &m);
 
 } // namespace icacam::vision

@@ -63,6 +63,8 @@ const FieldSpec kFields[] = {
     {"outer_axis_deg", Field::Number, 1, [](const Measurement &m) { return m.outer.axisDeg; }},
     {"silhouette_coverage", Field::Number, 3,
      [](const Measurement &m) { return m.rMaxPx > 0 ? m.silhouetteCoverage : nan(); }},
+    {"silhouette_scatter_px", Field::Number, 3,
+     [](const Measurement &m) { return m.rMaxPx > 0 && m.silhouetteCoverage > 0 ? m.silhouetteScatterPx : nan(); }},
     {"reduction_est", Field::Number, 4,
      [](const Measurement &m) { return m.reductionEst >= 0 ? m.reductionEst : nan(); }},
     {"r_max_z", Field::Number, 2, [](const Measurement &m) { return m.rMaxPx > 0 ? m.rMaxZ : nan(); }},

@@ -383,9 +383,10 @@ double RingSearch::centreOnContactEdge(const MeanEdges &me)
     return r;
 }
 
-double RingSearch::silhouetteFromRays(const double *outerR, double *coverage, bool *lopsided)
+double RingSearch::silhouetteFromRays(const double *outerR, double *coverage, double *scatterPx, bool *lopsided)
 {
     *coverage = 0;
+    *scatterPx = 0;
     *lopsided = false;
     constexpr int kCoarse = EndFaceAnalyzer::kCoarseRays;
     const double rA = EndFaceAnalyzer::kCoarseStart * r0, rB = EndFaceAnalyzer::kCoarseEnd * r0;
@@ -505,6 +506,7 @@ double RingSearch::silhouetteFromRays(const double *outerR, double *coverage, bo
     opt.minRejectPx = 2.0;
     if (!fitBoundary(radius, valid, kCoarse, coarseCx_, coarseCy_, opt, &fit) || fit.coverage < 0.4) return 0;
     *coverage = fit.coverage;
+    *scatterPx = fit.scatterPx;
     return fit.rEqPx;
 }
 
@@ -724,7 +726,7 @@ ErrorCode RingSearch::run(Measurement *m)
     // The silhouette per coarse ray refines the mean profile's estimate (the mean profile
     // blurs a weak barrel/background step and can name a highlight's flank instead).
     bool lopsided = false;
-    const double perRay = silhouetteFromRays(outerR, &m->silhouetteCoverage, &lopsided);
+    const double perRay = silhouetteFromRays(outerR, &m->silhouetteCoverage, &m->silhouetteScatterPx, &lopsided);
     m->rMaxPx = perRay > 0 ? perRay : lopsided ? 0 : me.rMax;
     m->innerPoints = innerPts;
     m->outerPoints = outerPts;

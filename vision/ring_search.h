@@ -51,7 +51,8 @@ struct RingSearch {
     void sampleWindow(const double *start, double step, int count, int boxHalf, Measurement *m);
     // Silhouette R_max from the coarse rays, outside the fitted contact edge; 0 if unclear
     // (lopsided: the barrel is seen obliquely, so no silhouette is a circle about the axis).
-    double silhouetteFromRays(const double *outerR, double *coverage, bool *lopsided);
+    // coverage and scatterPx: the per-ray fit's.
+    double silhouetteFromRays(const double *outerR, double *coverage, double *scatterPx, bool *lopsided);
 
     double coarseCx_ = 0, coarseCy_ = 0; // the centre the coarse rays were cast from
     double fineStart_[kMaxRayTable] = {}, fineStep_ = 1;

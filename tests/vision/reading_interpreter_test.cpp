@@ -75,5 +75,24 @@ TEST(ReadingInterpreter, SmallSilhouetteInAnObliqueViewIsForeshortening)
     EXPECT_FALSE(oblique.flags & kFlagScaleSuspect) << "the view, not the scale, is named";
 }
 
+// A silhouette is as good as its rays agree. Where a highlight band merges into the outline
+// on some rays, their points scatter about the fit by a few per cent and the radius may read
+// short by as much: such a silhouette tells the reduction less, and contradicts no scale.
+// The same radius from rays that agree to 0.1 % is a contradiction.
+TEST(ReadingInterpreter, ASilhouetteIsTrustedAsFarAsItsRaysAgree)
+{
+    Measurement tight = face(0.975, false), scattered = face(0.975, false);
+    tight.silhouetteScatterPx = 0.001 * tight.rMaxPx;
+    scattered.silhouetteScatterPx = 0.02 * scattered.rMaxPx;
+    const Measurement t = interpret(tight), s = interpret(scattered);
+    ASSERT_NE(t.status, Status::Error);
+    ASSERT_NE(s.status, Status::Error);
+    EXPECT_LT(t.reductionSigma, s.reductionSigma);
+    EXPECT_LT(std::fabs(s.reduction - 0.5), std::fabs(t.reduction - 0.5));
+    EXPECT_TRUE(t.flags & kFlagScaleSuspect);
+    EXPECT_FALSE(s.flags & kFlagScaleSuspect);
+    EXPECT_GT(std::fabs(t.rMaxZ), 2 * std::fabs(s.rMaxZ)) << "z is measured against each one's own σ";
+}
+
 } // namespace
 } // namespace icacam::vision

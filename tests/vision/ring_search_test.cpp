@@ -81,6 +81,8 @@ TEST(RingSearch, FindsTheDrawnBoundariesAboutTheDrawnCentre)
     EXPECT_NEAR(s.m.inner.rEqPx, face.rInner, kEdgeTolPx);
     EXPECT_NEAR(s.m.rMaxPx, face.rMax, EndFaceAnalyzer::coarseStep(face.r0));
     EXPECT_GT(s.m.silhouetteCoverage, 0.9);
+    EXPECT_GT(s.m.silhouetteScatterPx, 0);
+    EXPECT_LT(s.m.silhouetteScatterPx, 0.5) << "every coarse ray's point on the drawn outline";
     for (const BoundaryFit *f : {&s.m.outer, &s.m.inner}) {
         EXPECT_GT(f->coverage, 0.95);
         EXPECT_LT(f->scatterPx, 0.2);

@@ -50,7 +50,7 @@ bool feRadiusAt(FeRadius which, double n, double mu, double reduction, double *m
 }
 
 RadiiCheck checkRadii(double rMaxMm, double n, double mu, double d0Mm, double reduction, double h0Mm,
-                      bool estimateReduction)
+                      bool estimateReduction, double measuredRelSigma)
 {
     RadiiCheck c;
     const double g = d0Mm > 0 ? d0Mm / t::kD0Mm : 1.0; // R_max scales with D0
@@ -66,7 +66,7 @@ RadiiCheck checkRadii(double rMaxMm, double n, double mu, double d0Mm, double re
     if (!(rMaxMm > 0) || !feAt(reduction, &fe)) return c;
     c.valid = true;
     c.rMaxFeMm = fe * g;
-    const double sigma = c.rMaxFeMm * std::hypot(kFeRMaxRelSigma, kMeasuredRMaxRelSigma);
+    const double sigma = c.rMaxFeMm * std::hypot(kFeRMaxRelSigma, measuredRelSigma);
     c.z = (rMaxMm - c.rMaxFeMm) / sigma;
     if (!estimateReduction) return c;
     // The reduction the silhouette implies: R_max rises with r (volume constancy), so bisect.
