@@ -53,6 +53,13 @@ struct RingSearch {
     // (lopsided: the barrel is seen obliquely, so no silhouette is a circle about the axis).
     // coverage and scatterPx: the per-ray fit's.
     double silhouetteFromRays(const double *outerR, double *coverage, double *scatterPx, bool *lopsided);
+    // One coarse ray's silhouette between samples lo and hi: the outermost clear step of a
+    // detector w samples a side, located by one a quarter as wide (*atSample: its sample
+    // position, sub-sample); false when no step stands out of the ray's noise.
+    bool silhouetteOnRay(const uint16_t *row, int lo, int hi, int w, double *atSample) const;
+    // Whether the barrel band outside the contact edge (radius − the contact edge, per coarse
+    // ray) swings by more than half its mean width around the ring: an oblique view.
+    bool barrelBandLopsided(const double *radius, const bool *valid, const double *outerR) const;
 
     double coarseCx_ = 0, coarseCy_ = 0; // the centre the coarse rays were cast from
     double fineStart_[kMaxRayTable] = {}, fineStep_ = 1;
