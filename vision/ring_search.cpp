@@ -23,6 +23,8 @@ constexpr double kMinInnerContrast = 2.0;
 constexpr int kRays = EndFaceAnalyzer::kFineRays;
 constexpr int kMaxFine = EndFaceAnalyzer::kMaxFineSamples;
 constexpr int kMaxCoarse = EndFaceAnalyzer::kMaxCoarseSamples;
+// The fine rays' sample spacing (pixels).
+constexpr double kFineStepPx = 1.0;
 // A 3-grey-level step blurred to σ = 2 px gives a coarse derivative of about 1200.
 constexpr int32_t kMinCoarseStrength = 1000;
 // Widest ICA searched, as a fraction of the initial radius.
@@ -522,6 +524,168 @@ double RingSearch::silhouetteFromRays(const double *outerR, double *coverage, do
     return fit.rEqPx;
 }
 
+// The profile across the ring, following the contact edge: sample K lies on it, K samples
+// inside and M outside.
+struct RingSearch::AlignedProfile {
+    static constexpr int kSpan = kMaxCoarse;
+    int K = 0, M = 10;
+    int32_t level[kSpan] = {}; // mean grey level (0 where fewer than half the rays saw the frame)
+    int32_t deriv[kSpan] = {}; // its derivative, in the fine derivative rows' units
+    int count() const { return K + M + 1; }
+};
+
+bool RingSearch::alignedProfile(const double *outerR, AlignedProfile *p) const
+{
+    p->K = int(kMaxU * r0 + 2);
+    if (p->count() > AlignedProfile::kSpan) return false;
+    const int K = p->K, count = p->count();
+    uint32_t sum[AlignedProfile::kSpan] = {}, n[AlignedProfile::kSpan] = {};
+    uint16_t row[AlignedProfile::kSpan];
+    for (int i = 0; i < kRays; i += kAlignStride) {
+        if (!outerPts[i].valid) continue;
+        const double ro = outerR[i];
+        RaySpec ray{Q16_16::fromDouble(cx),     Q16_16::fromDouble(cy), rayCosQ_[i], raySinQ_[i],
+                    Q16_16::fromDouble(ro - K), Q16_16::fromDouble(1.0)};
+        sampleRay(*frame, ray, count, row);
+        for (int k = 0; k < count; ++k)
+            if (row[k] != kOutsideFrame) {
+                sum[k] += row[k];
+                n[k]++;
+            }
+    }
+    uint16_t mean[AlignedProfile::kSpan];
+    for (int k = 0; k < count; ++k) {
+        mean[k] = n[k] * 2 >= uint32_t(kRays / kAlignStride) ? uint16_t(sum[k] / n[k]) : kOutsideFrame;
+        p->level[k] = mean[k] == kOutsideFrame ? 0 : mean[k];
+    }
+    // Same units as the fine derivative rows (the [1 2 1] angular weights sum to 4).
+    profileDerivative(mean, count, p->deriv);
+    for (int k = 0; k < count; ++k) p->deriv[k] = (p->deriv[k] * 4) >> 6;
+    return true;
+}
+
+double RingSearch::contactEdgeWidth(const AlignedProfile &p, int signOuter) const
+{
+    // The second moment of the derivative peak (the kernel adds 0.75 px² and bilinear
+    // sampling about 0.17 px²).
+    double s0 = 0, s1 = 0, s2 = 0;
+    const int w = std::min(p.K, int(6 / kFineStepPx) + 1);
+    for (int k = -w; k <= std::min(w, p.M); ++k) {
+        const double val = std::max(0, signOuter * p.deriv[k + p.K]);
+        s0 += val;
+        s1 += val * k * kFineStepPx;
+        s2 += val * k * k * kFineStepPx * kFineStepPx;
+    }
+    if (!(s0 > 0)) return -1;
+    const double var = s2 / s0 - (s1 / s0) * (s1 / s0) - 0.92;
+    return std::sqrt(std::max(0.0, var));
+}
+
+RingSearch::OriginalFaceName RingSearch::nameOriginalFace(const AlignedProfile &p) const
+{
+    // Noise of the aligned derivative on the inner part of the window (mostly original
+    // face: the ICA's turning marks would inflate it).
+    const int K = p.K;
+    const double noise = robustSigma(p.deriv, 0, K / 2);
+    const double innerMin = std::max(3.0 * noise, 40.0);
+    OriginalFaceName name;
+    for (int k = -K + 2; k <= -2; ++k) {
+        const int idx = k + K;
+        if (!isExtremum(p.deriv, idx) || std::abs(p.deriv[idx]) < innerMin || std::abs(p.deriv[idx]) <= name.strength)
+            continue;
+        // A real edge separates two levels; a turning mark or a scratch line is a ridge with
+        // the same level on both sides. Compare the levels a few pixels either side.
+        const int sign = p.deriv[idx] > 0 ? 1 : -1;
+        const int g = std::max(2, int(2.5 / kFineStepPx + 0.5));
+        const int fa = std::max(0, idx - g - int(8 / kFineStepPx)), fb = std::max(0, idx - g);
+        const int ia = std::min(idx + g, K - 2), ib = std::min(idx + g + int(8 / kFineStepPx), K - 2);
+        double lf = 0, li = 0;
+        int nf = 0, ni = 0;
+        for (int j = fa; j <= fb; ++j) {
+            lf += p.level[j];
+            ++nf;
+        }
+        for (int j = ia; j <= ib; ++j) {
+            li += p.level[j];
+            ++ni;
+        }
+        if (nf && ni && sign * (li / ni - lf / nf) < 0.5 * 256) continue;
+        name.k = k;
+        name.strength = std::abs(p.deriv[idx]);
+        name.sign = sign;
+    }
+    return name;
+}
+
+bool RingSearch::originalFaceOnRays(OriginalFaceName name, const AlignedProfile &p, const double *outerR,
+                                    Measurement *m, BoundaryFit *inner, double *innerR, double *contrast)
+{
+    if (!name.sign) return false;
+    const int K = p.K;
+    // The derivative names the edge; its position is taken from a box step detector half
+    // as wide as the ring (up to 12 px), which turning marks next to the edge cannot pull.
+    // On a ring narrower than 12 px a box would reach across the contact edge's blur: there
+    // the derivative itself locates the edge (W = 0).
+    const int W = -name.k >= 12 ? std::min(-name.k / 2, 12) : 0;
+    int32_t boxV = W ? 0 : name.strength;
+    if (W) {
+        int64_t prefix[AlignedProfile::kSpan + 1];
+        prefix[0] = 0;
+        for (int k = 0; k < p.count(); ++k) prefix[k + 1] = prefix[k] + p.level[k];
+        const int idx0 = name.k + K;
+        for (int j = std::max(W, idx0 - W); j <= std::min(K - 2 - W, idx0 + W); ++j) {
+            const int64_t diff = (prefix[j + W + 1] - prefix[j + 1]) - (prefix[j] - prefix[j - W]);
+            const int32_t v = int32_t(name.sign * diff / (int64_t(W) * 8)); // 1/32 grey
+            if (v > boxV) {
+                boxV = v;
+                name.k = j - K;
+            }
+        }
+    }
+    if (boxV <= 0) return false;
+    const double uGuess = -name.k * kFineStepPx;
+    const double half = std::max(3.0, std::min(0.025 * r0, 0.5 * uGuess));
+    const int32_t innerStrength = std::max<int32_t>(W ? 4 : 6, int32_t(0.3 * boxV));
+    const double reach = std::max(1.0, std::min(3.0, 0.5 * uGuess));
+    // A window following the contact edge at the named offset. The search spans ±half about
+    // the guess (pass 2: ±2.5 about the fit); the detector needs W (or 2 for the derivative)
+    // more on each side.
+    const int pad = std::max(W, 2) + 3;
+    const int innerCount = std::min(kMaxFine, int(2 * half) + 2 * pad + 1);
+    double start[kRays], lo[kRays], hi[kRays];
+    for (int i = 0; i < kRays; ++i) start[i] = outerR[i] - uGuess - half - pad;
+    sampleWindow(start, kFineStepPx, innerCount, W, m);
+    for (int pass = 0; pass < 2; ++pass) {
+        for (int i = 0; i < kRays; ++i) {
+            const double ro = outerR[i];
+            const double c = pass == 0 ? ro - uGuess : innerR[i];
+            const double h = pass == 0 ? half : 2.5;
+            lo[i] = c - h;
+            hi[i] = std::min(c + h, ro - (W ? 1.0 + W : 2.0));
+        }
+        if (!locateOnRays(name.sign, 0, lo, hi, innerStrength, pass == 0 ? nullptr : innerPts, true, reach, inner,
+                          innerR, contrast) ||
+            inner->coverage < 0.25)
+            return false;
+    }
+    return true;
+}
+
+bool RingSearch::narrowRingFromProfile(const AlignedProfile &p, int signOuter, double startWidthPx, BoundaryFit *outer,
+                                       BoundaryFit *inner, double *contrastInner)
+{
+    const NarrowRingFit nf = fitNarrowRing(p.level, p.count(), p.K, signOuter, startWidthPx);
+    if (!nf.found) return false;
+    *inner = *outer;
+    outer->a0 += nf.outerPx, outer->rEqPx += nf.outerPx;
+    inner->a0 += nf.innerPx, inner->rEqPx += nf.innerPx;
+    inner->rEqSigmaPx = nf.sigmaWidthPx;
+    inner->used = 0; // no per-ray point: the edge is the profile's
+    *contrastInner = nf.innerStep / 256.0;
+    for (int i = 0; i < kRays; ++i) innerPts[i].valid = false;
+    return true;
+}
+
 ErrorCode RingSearch::run(Measurement *m)
 {
     static_assert(kRays == AngleTable::kSize, "fine ray i is table angle i");
@@ -540,11 +704,10 @@ ErrorCode RingSearch::run(Measurement *m)
     // wide enough for its departure from a circle, short of the silhouette.
     const double margin = std::max(8.0, 0.035 * r0);
     const double outerHi = me.rMax > 0 ? std::min(margin, 0.5 * (me.rMax - me.rOuter)) : margin;
-    const double step = 1.0;
     double start[kRays];
     const int outerCount = std::min(kMaxFine, int(margin + outerHi) + 6);
     for (int i = 0; i < kRays; ++i) start[i] = rOuter - margin - 3;
-    sampleWindow(start, step, outerCount, 0, m);
+    sampleWindow(start, kFineStepPx, outerCount, 0, m);
     if (m->saturatedFraction > 0.5) return ErrorCode::Saturated;
 
     double lo[kRays], hi[kRays];
@@ -569,165 +732,30 @@ ErrorCode RingSearch::run(Measurement *m)
         outer.coverage < 0.3)
         return ErrorCode::OuterEdgeNotFound;
 
-    // Stage 2, naming the original face edge: a mean profile of every fourth ray sampled at
+    // Stage 2, naming the original face edge on a mean profile of every eighth ray sampled at
     // fixed offsets from the fitted contact edge. Following the edge keeps a narrow ring
     // sharp where the contact edge is not a circle.
-    const int K = int(kMaxU * r0 + 2);
-    const int M = 10;
-    constexpr int kSpan = kMaxCoarse;
-    if (K + M + 1 > kSpan) return ErrorCode::BadSpecimen;
-    int32_t aD[kSpan] = {}, aP[kSpan] = {};
-    {
-        uint32_t sum[kSpan] = {}, n[kSpan] = {};
-        uint16_t row[kSpan];
-        for (int i = 0; i < kRays; i += kAlignStride) {
-            if (!outerPts[i].valid) continue;
-            const double ro = outerR[i];
-            RaySpec ray{Q16_16::fromDouble(cx),     Q16_16::fromDouble(cy), rayCosQ_[i], raySinQ_[i],
-                        Q16_16::fromDouble(ro - K), Q16_16::fromDouble(1.0)};
-            sampleRay(*frame, ray, K + M + 1, row);
-            for (int k = 0; k < K + M + 1; ++k)
-                if (row[k] != kOutsideFrame) {
-                    sum[k] += row[k];
-                    n[k]++;
-                }
-        }
-        uint16_t mean[kSpan];
-        for (int k = 0; k < K + M + 1; ++k) {
-            mean[k] = n[k] * 2 >= uint32_t(kRays / kAlignStride) ? uint16_t(sum[k] / n[k]) : kOutsideFrame;
-            aP[k] = mean[k] == kOutsideFrame ? 0 : mean[k];
-        }
-        // Same units as the fine derivative rows (the [1 2 1] angular weights sum to 4).
-        profileDerivative(mean, K + M + 1, aD);
-        for (int k = 0; k < K + M + 1; ++k) aD[k] = (aD[k] * 4) >> 6;
-    }
-    // Blur of the contact edge: second moment of its derivative peak (the kernel adds 0.75
-    // px² and bilinear sampling about 0.17 px²).
-    {
-        double s0 = 0, s1 = 0, s2 = 0;
-        const int w = std::min(K, int(6 / step) + 1);
-        for (int k = -w; k <= std::min(w, M); ++k) {
-            const double val = std::max(0, me.signOuter * aD[k + K]);
-            s0 += val;
-            s1 += val * k * step;
-            s2 += val * k * k * step * step;
-        }
-        if (s0 > 0) {
-            const double var = s2 / s0 - (s1 / s0) * (s1 / s0) - 0.92;
-            m->edgeWidthPx = std::sqrt(std::max(0.0, var));
-        }
-    }
-    // Noise of the aligned derivative on the inner part of the window (mostly original
-    // face: the ICA's turning marks would inflate it).
-    const double noise = robustSigma(aD, 0, K / 2);
-    const double innerMin = std::max(3.0 * noise, 40.0);
-    int bestK = 0, innerSign = 0;
-    int32_t bestV = 0;
-    for (int k = -K + 2; k <= -2; ++k) {
-        const int idx = k + K;
-        if (!isExtremum(aD, idx) || std::abs(aD[idx]) < innerMin || std::abs(aD[idx]) <= bestV) continue;
-        // A real edge separates two levels; a turning mark or a scratch line is a ridge with
-        // the same level on both sides. Compare the levels a few pixels either side.
-        const int sign = aD[idx] > 0 ? 1 : -1;
-        const int g = std::max(2, int(2.5 / step + 0.5));
-        const int fa = std::max(0, idx - g - int(8 / step)), fb = std::max(0, idx - g);
-        const int ia = std::min(idx + g, K - 2), ib = std::min(idx + g + int(8 / step), K - 2);
-        double lf = 0, li = 0;
-        int nf = 0, ni = 0;
-        for (int j = fa; j <= fb; ++j) {
-            lf += aP[j];
-            ++nf;
-        }
-        for (int j = ia; j <= ib; ++j) {
-            li += aP[j];
-            ++ni;
-        }
-        if (nf && ni && sign * (li / ni - lf / nf) < 0.5 * 256) continue;
-        bestK = k;
-        bestV = std::abs(aD[idx]);
-        innerSign = sign;
-    }
-    // A ring too narrow for the per-ray search: both edges from the aligned profile's
-    // two-step fit (narrow_ring.h), the original face's edge following the contact edge's
-    // shape at the fitted width.
-    auto narrowRing = [&](double startWidthPx) {
-        const NarrowRingFit nf = fitNarrowRing(aP, K + M + 1, K, me.signOuter, startWidthPx);
-        if (!nf.found) return false;
-        inner = outer;
-        outer.a0 += nf.outerPx, outer.rEqPx += nf.outerPx;
-        inner.a0 += nf.innerPx, inner.rEqPx += nf.innerPx;
-        inner.rEqSigmaPx = nf.sigmaWidthPx;
-        inner.used = 0; // no per-ray point: the edge is the profile's
-        contrastInner = nf.innerStep / 256.0;
-        for (int i = 0; i < kRays; ++i) innerPts[i].valid = false;
-        return true;
-    };
-    // The original face's edge on every fine ray, named by the aligned profile's strongest
-    // step inside the contact edge; false where none is found.
-    auto perRayInner = [&]() {
-        if (!innerSign) return false;
+    AlignedProfile profile;
+    if (!alignedProfile(outerR, &profile)) return ErrorCode::BadSpecimen;
+    const double edgeWidth = contactEdgeWidth(profile, me.signOuter);
+    if (edgeWidth >= 0) m->edgeWidthPx = edgeWidth;
+    const OriginalFaceName name = nameOriginalFace(profile);
 
-        // The derivative names the edge; its position is taken from a box step detector half
-        // as wide as the ring (up to 12 px), which turning marks next to the edge cannot pull.
-        // On a ring narrower than 12 px a box would reach across the contact edge's blur: there
-        // the derivative itself locates the edge (W = 0).
-        const int W = -bestK >= 12 ? std::min(-bestK / 2, 12) : 0;
-        int32_t boxV = W ? 0 : bestV;
-        if (W) {
-            int64_t prefix[kSpan + 1];
-            prefix[0] = 0;
-            for (int k = 0; k < K + M + 1; ++k) prefix[k + 1] = prefix[k] + aP[k];
-            const int idx0 = bestK + K;
-            for (int j = std::max(W, idx0 - W); j <= std::min(K - 2 - W, idx0 + W); ++j) {
-                const int64_t diff = (prefix[j + W + 1] - prefix[j + 1]) - (prefix[j] - prefix[j - W]);
-                const int32_t v = int32_t(innerSign * diff / (int64_t(W) * 8)); // 1/32 grey
-                if (v > boxV) {
-                    boxV = v;
-                    bestK = j - K;
-                }
-            }
-        }
-        if (boxV <= 0) return false;
-        const double uGuess = -bestK * step;
-        const double half = std::max(3.0, std::min(0.025 * r0, 0.5 * uGuess));
-        const int32_t innerStrength = std::max<int32_t>(W ? 4 : 6, int32_t(0.3 * boxV));
-        const double reach = std::max(1.0, std::min(3.0, 0.5 * uGuess));
-        // Stage 3, the original face edge on every fine ray: a window following the contact
-        // edge at the named offset.
-        // The search spans ±half about the guess (pass 2: ±2.5 about the fit); the detector
-        // needs W (or 2 for the derivative) more on each side.
-        const int pad = std::max(W, 2) + 3;
-        const int innerCount = std::min(kMaxFine, int(2 * half) + 2 * pad + 1);
-        for (int i = 0; i < kRays; ++i) start[i] = outerR[i] - uGuess - half - pad;
-        sampleWindow(start, step, innerCount, W, m);
-        for (int pass = 0; pass < 2; ++pass) {
-            for (int i = 0; i < kRays; ++i) {
-                const double ro = outerR[i];
-                const double c = pass == 0 ? ro - uGuess : innerR[i];
-                const double h = pass == 0 ? half : 2.5;
-                lo[i] = c - h;
-                hi[i] = std::min(c + h, ro - (W ? 1.0 + W : 2.0));
-            }
-            if (!locateOnRays(innerSign, 0, lo, hi, innerStrength, pass == 0 ? nullptr : innerPts, true, reach, &inner,
-                              innerR, &contrastInner) ||
-                inner.coverage < 0.25)
-                return false;
-        }
-        return true;
-    };
-    // Below kNarrowRingPx the two edges' blurs overlap and pull each other's derivative
-    // peaks apart on every ray: there the profile's two-step fit, which models both, is taken
-    // wherever it holds.
+    // Stage 3, the original face's edge on every fine ray. Below kNarrowRingPx the two edges'
+    // blurs overlap and pull each other's derivative peaks apart on every ray: there the
+    // profile's two-step fit, which models both, is taken wherever it holds.
     // An "edge" the rays place with under kMinInnerContrast between its two sides is noise
     // that the derivative happened to peak on, not the original face.
-    if (perRayInner() && std::fabs(contrastInner) >= kMinInnerContrast) {
-        if (outer.rEqPx - inner.rEqPx < kNarrowRingPx) narrowRing(outer.rEqPx - inner.rEqPx);
-    } else if (narrowRing(0.0)) {
+    if (originalFaceOnRays(name, profile, outerR, m, &inner, innerR, &contrastInner) &&
+        std::fabs(contrastInner) >= kMinInnerContrast) {
+        if (outer.rEqPx - inner.rEqPx < kNarrowRingPx)
+            narrowRingFromProfile(profile, me.signOuter, outer.rEqPx - inner.rEqPx, &outer, &inner, &contrastInner);
+    } else if (narrowRingFromProfile(profile, me.signOuter, 0.0, &outer, &inner, &contrastInner)) {
         // No ray saw the original face's edge: the profile alone says the ring is narrow,
         // and the reading says so (warn).
         m->flags |= kFlagNarrowRing;
     } else {
-        return !innerSign && m->saturatedFraction > 0.1 ? ErrorCode::Saturated : ErrorCode::InnerEdgeNotFound;
+        return !name.sign && m->saturatedFraction > 0.1 ? ErrorCode::Saturated : ErrorCode::InnerEdgeNotFound;
     }
     if (!(inner.rEqPx < outer.rEqPx) || (me.rMax > 0 && !(outer.rEqPx < me.rMax + 2)))
         return ErrorCode::InconsistentRing;

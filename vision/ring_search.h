@@ -46,6 +46,30 @@ struct RingSearch {
     bool locateOnRays(int sign, int fallbackSign, const double *loPx, const double *hiPx, int32_t minStrength,
                       EdgeSample *pts, bool interior, double reachPx, BoundaryFit *fit, double *curveOut,
                       double *contrastOut);
+    // The profile across the ring following the contact edge: the mean of every
+    // kAlignStride-th fine ray (those with a contact-edge point) sampled at fixed offsets from
+    // the fitted curve outerR; false when the widest ring searched does not fit the buffer.
+    struct AlignedProfile;
+    bool alignedProfile(const double *outerR, AlignedProfile *p) const;
+    // The contact edge's blur (Gaussian σ, pixels) from the aligned profile; −1 if none shows.
+    double contactEdgeWidth(const AlignedProfile &p, int signOuter) const;
+    // The original face's edge as the aligned profile names it: the strongest derivative
+    // extremum inside the contact edge that separates two levels (sign 0: none).
+    struct OriginalFaceName {
+        int k = 0;            // its sample offset from the contact edge (negative: inside)
+        int sign = 0;         // rising (+1) or falling (−1) going outwards
+        int32_t strength = 0; // its derivative, in the fine derivative rows' units
+    };
+    OriginalFaceName nameOriginalFace(const AlignedProfile &p) const;
+    // The named edge on every fine ray, in a window following the contact edge, and its fit
+    // (inner, its curve innerR at every fine ray, its contrast); false where it is not found.
+    bool originalFaceOnRays(OriginalFaceName name, const AlignedProfile &p, const double *outerR, Measurement *m,
+                            BoundaryFit *inner, double *innerR, double *contrast);
+    // A ring too narrow for the per-ray search: both edges from the aligned profile's
+    // two-step fit (narrow_ring.h), the original face's edge following the contact edge's
+    // shape at the fitted width. startWidthPx: the rays' width to start from (0: none).
+    bool narrowRingFromProfile(const AlignedProfile &p, int signOuter, double startWidthPx, BoundaryFit *outer,
+                               BoundaryFit *inner, double *contrastInner);
     // Samples every fine ray from start[i] (pixels) and fills the smoothed derivative rows.
     // boxHalf > 0: the rows hold a box step detector of that half-width instead.
     void sampleWindow(const double *start, double step, int count, int boxHalf, Measurement *m);
