@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "vision/model/aspect_corrected_model.h"
 #include "vision/model/radii_consistency.h"
@@ -37,6 +38,16 @@ constexpr double kGrossScaleSigma = 0.08;
 // scale and a silhouette read 5 % ± 4 % small (3.75 mm farther at 70–150 mm is 2.5–5 %,
 // distortion at the barrel's radius up to a few per cent more). It leaves u's scale alone.
 constexpr double kForeshortenMean = -0.05, kForeshortenSigma = 0.04;
+// Where the barrel is about as bright as the background, its outline is faint and a ridge or
+// reflection on the barrel, inside it, can be the clearest step on every ray: the silhouette
+// is then taken on a wrong edge, with little scatter, anywhere from just outside the contact
+// edge to a few per cent inside the outline (rendered straight views: 5 in about 800 readings,
+// 7–17 % short). Such a silhouette says nothing about scale or reduction; read as a scale
+// error it would rescale u by as much. A last explanation therefore keeps the priors, with a
+// likelihood uniform over those discrepancies and a prior probability of 2 %. Nearer the
+// outline than kMisreadMinInside the rays' scatter measures what a highlight does.
+constexpr double kMisreadPrior = 0.02;
+constexpr double kMisreadMinInside = 0.03;
 // The edge model's own error, beyond the fits' scatter: against the drawn boundaries of the
 // development set's photographs the pipeline's R_i lies 0.005 mm (1 σ) off the truth's
 // equivalent radius and R_o 0.001 mm (a ragged texture boundary, not a step, on the inside).
@@ -188,6 +199,7 @@ void interpretEndFace(const SpecimenSpec &spec, const FrictionModel &model, Meas
     sr.pk = sigmaK0 * sigmaK0;
     sr.pr = sigmaR0 * sigmaR0;
     double d = 0, beta = 0;
+    double dContact = 0; // d for a silhouette at the smallest accepted radius (just outside R_o)
     bool usable = false;
     if (spec.calibration) {
         // Calibrated: R_max is reported, not held against the model.
@@ -205,6 +217,7 @@ void interpretEndFace(const SpecimenSpec &spec, const FrictionModel &model, Meas
                  overContact > kSilhouetteOverContactMin && overContact < kSilhouetteOverContactMax;
         if (usable) {
             d = std::log(m->rMaxMm / rc.rMaxFeMm);
+            dContact = std::log(kSilhouetteOverContactMin * m->rOuterMm / rc.rMaxFeMm);
             beta = std::log(up.rMaxFeMm / down.rMaxFeMm) / 0.02;
             usable = beta > 0.1;
         }
@@ -225,28 +238,38 @@ void interpretEndFace(const SpecimenSpec &spec, const FrictionModel &model, Meas
         }
     } else if (usable) {
         // Three explanations of the silhouette's discrepancy, four in an oblique view (see
-        // kNominalReductionSigma and kForeshortenMean): each one's posterior, weighted by how
-        // well it predicts d, and their mixture's moments.
-        constexpr int kExplanations = 4;
+        // kNominalReductionSigma and kForeshortenMean), and a wrong edge (kMisreadPrior): each
+        // one's posterior, weighted by its prior and how well it predicts d, and their
+        // mixture's moments.
+        constexpr int kExplanations = 5;
+        constexpr int kMisread = 4;
         ScaleAndReduction prior[kExplanations];
         prior[0] = sr;                                     // pressed to another height
         prior[1].pk = kGrossScaleSigma * kGrossScaleSigma; // half height, a scale off
         prior[1].pr = kNominalReductionSigma * kNominalReductionSigma;
         prior[2].pk = sr.pk; // half height, scale as declared
         prior[2].pr = kNominalReductionSigma * kNominalReductionSigma;
-        prior[3] = prior[2]; // half height, scale as declared, the silhouette foreshortened
-        const double offset[kExplanations] = {0, 0, 0, kForeshortenMean};
-        const double offsetVar[kExplanations] = {0, 0, 0, kForeshortenSigma * kForeshortenSigma};
+        prior[3] = prior[2];  // half height, scale as declared, the silhouette foreshortened
+        prior[kMisread] = sr; // a wrong edge: the silhouette tells nothing
+        const double offset[kExplanations] = {0, 0, 0, kForeshortenMean, 0};
+        const double offsetVar[kExplanations] = {0, 0, 0, kForeshortenSigma * kForeshortenSigma, 0};
         const bool oblique = (f & (kFlagElliptical | kFlagCentreOffset)) != 0;
+        const double gaussianPrior = (1.0 - kMisreadPrior) / (oblique ? 4 : 3);
         ScaleAndReduction post[kExplanations];
         double w[kExplanations], wSum = 0;
-        for (int h = 0; h < kExplanations; ++h) {
+        for (int h = 0; h < kMisread; ++h) {
             const double S = prior[h].pk + beta * beta * prior[h].pr + se2 + offsetVar[h];
             const double v = d - offset[h];
-            w[h] = h != 3 || oblique ? std::exp(-0.5 * v * v / S) / std::sqrt(S) : 0.0;
+            // Densities up to the common 1/√(2π).
+            w[h] = h != 3 || oblique ? gaussianPrior * std::exp(-0.5 * v * v / S) / std::sqrt(S) : 0.0;
             wSum += w[h];
             post[h] = update(prior[h], d, beta, se2, offset[h], offsetVar[h]);
         }
+        const double misreadSpan = -kMisreadMinInside - dContact;
+        const bool misreadPossible = misreadSpan > 0 && d >= dContact && d <= -kMisreadMinInside;
+        w[kMisread] = misreadPossible ? kMisreadPrior * std::sqrt(2 * std::numbers::pi) / misreadSpan : 0.0;
+        wSum += w[kMisread];
+        post[kMisread] = prior[kMisread];
         sr = ScaleAndReduction{};
         for (int h = 0; h < kExplanations; ++h) {
             w[h] = wSum > 0 ? w[h] / wSum : 1.0 / kExplanations;
@@ -256,6 +279,8 @@ void interpretEndFace(const SpecimenSpec &spec, const FrictionModel &model, Meas
         // A discrepancy the view's foreshortening explains best is not the scale's: the
         // elliptical or centre_offset flag names its cause.
         if (oblique && w[3] >= std::max({w[0], w[1], w[2]})) f &= ~uint32_t(kFlagScaleSuspect);
+        // A silhouette more likely a wrong edge than the barrel's outline is not relied on.
+        if (w[kMisread] >= std::max({w[0], w[1], w[2], w[3]})) f |= kFlagSilhouetteUnreliable;
         for (int h = 0; h < kExplanations; ++h) {
             const double gk = post[h].dk - sr.dk, gr = post[h].dr - sr.dr;
             sr.pk += w[h] * (post[h].pk + gk * gk);

@@ -29,7 +29,9 @@
 // discrepancy, and its covariance includes their spread, so that whichever is true lies
 // within the budget. In a view the image shows to be oblique, a silhouette foreshortened by
 // the camera's closeness and distortion (the nominal height, u's scale as declared) is a
-// further explanation. A calibrated scale is not checked by the silhouette (a camera
+// further explanation; and in every view, a silhouette taken on a wrong edge inside the
+// outline, which tells nothing (the priors kept). The silhouette's own error is the FE's and
+// the per-ray points' scatter about their fit. A calibrated scale is not checked by the silhouette (a camera
 // close enough to need a calibration sees the barrel's widest section partly hidden behind
 // the end face's rim).
 //

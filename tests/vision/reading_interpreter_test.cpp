@@ -15,12 +15,12 @@ constexpr double kN = 0.25, kMu = 0.15, kMmPerPx = 0.02;
 
 // A face at 50 % reduction as the pipeline would hand it over, the silhouette scaled by
 // rMaxFactor; an oblique view gives both boundaries the same ellipse.
-Measurement face(double rMaxFactor, bool oblique)
+Measurement face(double rMaxFactor, bool oblique, double n = kN, double mu = kMu)
 {
     double ri = 0, ro = 0, rm = 0;
-    EXPECT_TRUE(feRadiusAt(FeRadius::Inner, kN, kMu, 0.5, &ri));
-    EXPECT_TRUE(feRadiusAt(FeRadius::Outer, kN, kMu, 0.5, &ro));
-    EXPECT_TRUE(feRadiusAt(FeRadius::Max, kN, kMu, 0.5, &rm));
+    EXPECT_TRUE(feRadiusAt(FeRadius::Inner, n, mu, 0.5, &ri));
+    EXPECT_TRUE(feRadiusAt(FeRadius::Outer, n, mu, 0.5, &ro));
+    EXPECT_TRUE(feRadiusAt(FeRadius::Max, n, mu, 0.5, &rm));
     Measurement m;
     m.status = Status::Error; // as measureFace leaves a found face
     m.error = ErrorCode::None;
@@ -40,10 +40,10 @@ Measurement face(double rMaxFactor, bool oblique)
     return m;
 }
 
-Measurement interpret(Measurement m)
+Measurement interpret(Measurement m, double n = kN)
 {
     SpecimenSpec spec;
-    spec.n = kN;
+    spec.n = n;
     spec.mmPerPx = kMmPerPx;
     interpretEndFace(spec, *frictionModel(kDefaultModel), &m);
     return m;
@@ -92,6 +92,25 @@ TEST(ReadingInterpreter, ASilhouetteIsTrustedAsFarAsItsRaysAgree)
     EXPECT_TRUE(t.flags & kFlagScaleSuspect);
     EXPECT_FALSE(s.flags & kFlagScaleSuspect);
     EXPECT_GT(std::fabs(t.rMaxZ), 2 * std::fabs(s.rMaxZ)) << "z is measured against each one's own σ";
+}
+
+// A silhouette taken on a wrong edge, a ridge on the barrel just outside the contact edge,
+// agrees along the rays like the outline itself. On a wide barrel band (n 0.1, μ 0.25: R_max
+// 19 % beyond R_o) it reads 15 % short; taken for a scale error alone it would rescale u by
+// as much, with a σ from the scale's prior that does not reach the truth. The wrong-edge
+// explanation keeps the reading's σ over what the right silhouette reads.
+TEST(ReadingInterpreter, ASilhouetteOnAWrongEdgeDoesNotRescaleTheRingUnseen)
+{
+    constexpr double n = 0.1, mu = 0.25;
+    Measurement right = face(1.0, false, n, mu), wrong = face(1.0, false, n, mu);
+    wrong.rMaxPx = 1.03 * wrong.outer.rEqPx;
+    for (Measurement *m : {&right, &wrong}) m->silhouetteScatterPx = 0.002 * m->rMaxPx;
+    const Measurement r = interpret(right, n), w = interpret(wrong, n);
+    ASSERT_NE(w.status, Status::Error);
+    ASSERT_FALSE(r.flags & kFlagScaleSuspect);
+    EXPECT_EQ(w.status, Status::Warn);
+    EXPECT_TRUE(w.flags & kFlagScaleSuspect);
+    EXPECT_LT(std::fabs(w.mu - r.mu), 2 * w.muSigma) << "μ " << w.mu << " ± " << w.muSigma << " against " << r.mu;
 }
 
 } // namespace
