@@ -529,8 +529,9 @@ double RingSearch::silhouetteFromRays(const double *outerR, double *coverage, do
 struct RingSearch::AlignedProfile {
     static constexpr int kSpan = kMaxCoarse;
     int K = 0, M = 10;
-    int32_t level[kSpan] = {}; // mean grey level (0 where fewer than half the rays saw the frame)
-    int32_t deriv[kSpan] = {}; // its derivative, in the fine derivative rows' units
+    // Only the first count() samples are written and read: nothing clears the rest.
+    int32_t level[kSpan]; // mean grey level (0 where fewer than half the rays saw the frame)
+    int32_t deriv[kSpan]; // its derivative, in the fine derivative rows' units
     int count() const { return K + M + 1; }
 };
 
@@ -539,7 +540,9 @@ bool RingSearch::alignedProfile(const double *outerR, AlignedProfile *p) const
     p->K = int(kMaxU * r0 + 2);
     if (p->count() > AlignedProfile::kSpan) return false;
     const int K = p->K, count = p->count();
-    uint32_t sum[AlignedProfile::kSpan] = {}, n[AlignedProfile::kSpan] = {};
+    uint32_t sum[AlignedProfile::kSpan], n[AlignedProfile::kSpan];
+    std::fill_n(sum, count, 0u);
+    std::fill_n(n, count, 0u);
     uint16_t row[AlignedProfile::kSpan];
     for (int i = 0; i < kRays; i += kAlignStride) {
         if (!outerPts[i].valid) continue;
