@@ -98,12 +98,17 @@ ScaleAndReduction update(const ScaleAndReduction &prior, double d, double beta, 
     return p;
 }
 
+// The silhouette measurement's own relative error, from its per-ray fit's scatter.
+double silhouetteMeasuredRelSigma(const Measurement &m)
+{
+    return measuredRMaxRelSigma(m.silhouetteCoverage > 0 && m.rMaxPx > 0 ? m.silhouetteScatterPx / m.rMaxPx : 0);
+}
+
 } // namespace
 
 double silhouetteRelSigma(const Measurement &m)
 {
-    const double scatterRel = m.silhouetteCoverage > 0 && m.rMaxPx > 0 ? m.silhouetteScatterPx / m.rMaxPx : 0;
-    return std::hypot(kFeRMaxRelSigma, measuredRMaxRelSigma(scatterRel));
+    return std::hypot(kFeRMaxRelSigma, silhouetteMeasuredRelSigma(m));
 }
 
 void interpretEndFace(const SpecimenSpec &spec, const FrictionModel &model, Measurement *m)
@@ -204,9 +209,8 @@ void interpretEndFace(const SpecimenSpec &spec, const FrictionModel &model, Meas
     if (spec.calibration) {
         // Calibrated: R_max is reported, not held against the model.
     } else if (m->rMaxPx > 0) {
-        const double scatterRel = m->silhouetteCoverage > 0 ? m->silhouetteScatterPx / m->rMaxPx : 0;
         const RadiiCheck rc =
-            checkRadii(m->rMaxMm, n, mu0, spec.d0Mm, r0, spec.h0Mm, true, measuredRMaxRelSigma(scatterRel));
+            checkRadii(m->rMaxMm, n, mu0, spec.d0Mm, r0, spec.h0Mm, true, silhouetteMeasuredRelSigma(*m));
         m->rMaxZ = rc.z;
         m->reductionEst = rc.reductionEst;
         if (rc.inconsistent()) f |= declared ? kFlagRadiiInconsistent : kFlagScaleSuspect;
@@ -225,7 +229,7 @@ void interpretEndFace(const SpecimenSpec &spec, const FrictionModel &model, Meas
     } else {
         f |= kFlagNoSilhouette;
     }
-    const double se2 = silhouetteRelSigma(*m) * silhouetteRelSigma(*m);
+    const double se = silhouetteRelSigma(*m), se2 = se * se;
     if (usable && declared) {
         const double S = sr.pk + beta * beta * sr.pr + se2;
         if (d * d / S > kContradictionChi2) {
