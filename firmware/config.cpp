@@ -22,10 +22,10 @@ struct KeyDef {
     const char *help;
 };
 
-// reading.model's choices: the factory's names (vision/model/friction_models.h), '|' separated.
+// reading.model's choices: the factory's names (friction/friction_models.h), '|' separated.
 const std::string kModelChoices = [] {
     std::string c;
-    for (std::string_view name : vision::kModelNames) (c += c.empty() ? "" : "|") += name;
+    for (std::string_view name : friction::kModelNames) (c += c.empty() ? "" : "|") += name;
     return c;
 }();
 

@@ -8,8 +8,8 @@
 #include <string_view>
 #include <vector>
 
+#include "friction/friction_models.h"
 #include "hal/camera.h"
-#include "vision/model/friction_models.h"
 
 namespace icacam::fw {
 
@@ -20,8 +20,8 @@ struct Config {
     double d0Mm = 10, h0Mm = 15;
     double hFinalMm = 0; // final height after upsetting; 0 = not given (50 % assumed)
     std::string material;
-    // [reading] the friction model (vision/model/friction_models.h), as `icacam measure --model`
-    std::string model = vision::kDefaultModel;
+    // [reading] the friction model (friction/friction_models.h), as `icacam measure --model`
+    std::string model = friction::kDefaultModel;
     // [tolerance] the lab's tolerance on μ and the declared inputs' (1 σ); changeable over serial
     double toleranceMu = 0.01, toleranceRel = 0.05; // ok: 2 σ_μ within max(abs, rel · μ)
     double nTol = 0.01, hFinalTolMm = 0.05, mmPerPxTolRel = 0.005;

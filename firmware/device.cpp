@@ -7,7 +7,7 @@
 #include "firmware/capture_fields.h"
 #include "firmware/scale_check.h"
 #include "firmware/screen.h"
-#include "vision/model/paper_model.h"
+#include "friction/paper_model.h"
 #include "vision/reading_record.h"
 #include "vision/reference_disc.h"
 
@@ -64,7 +64,7 @@ const char *Device::stateName(State s)
     return "unknown";
 }
 
-Device::Device(DeviceHal hal, Config cfg, const vision::FrictionModel &model)
+Device::Device(DeviceHal hal, Config cfg, const friction::FrictionModel &model)
         : hal_(hal), cfg_(std::move(cfg)), model_(model),
           cameraHealth_(hal.camera, hal.clock,
                         {cfg_.cameraFormat == "rgb24" ? vision::PixelFormat::RGB24 : vision::PixelFormat::Grey8,

@@ -45,7 +45,7 @@ public:
     enum class State { Idle, LedOn, Capture, LedOff, Measure, Report };
     static const char *stateName(State s);
 
-    Device(DeviceHal hal, Config cfg, const vision::FrictionModel &model);
+    Device(DeviceHal hal, Config cfg, const friction::FrictionModel &model);
     // Sizes all buffers, recovers the journal, loads saved settings, greets on serial.
     hal::Error start();
     // One pass of the main loop: button edges, serial input, measurements they ask for.
@@ -93,7 +93,7 @@ private:
 
     DeviceHal hal_;
     Config cfg_;
-    const vision::FrictionModel &model_;
+    const friction::FrictionModel &model_;
     vision::EndFaceAnalyzer analyzer_;
     CameraHealth cameraHealth_;
     int64_t triggerMs_ = 0;   // when the frame being measured was asked for

@@ -16,6 +16,7 @@
 #include "firmware/config.h"
 #include "firmware/device.h"
 #include "firmware/device_calibration.h"
+#include "friction/friction_models.h"
 #include "hal/file/clocks.h"
 #include "hal/file/file_camera.h"
 #include "hal/file/file_led.h"
@@ -23,7 +24,6 @@
 #include "hal/file/folder_storage.h"
 #include "hal/file/png_display.h"
 #include "hal/file/pty_serial.h"
-#include "vision/model/friction_models.h"
 #ifdef ICACAM_HAVE_GPIOD
 #include "hal/gpiod/gpiod_lines.h"
 #endif
@@ -53,7 +53,7 @@ constexpr int kExitUsage = 64, kExitUnavailable = 69, kExitConfig = 78;
 std::string usage()
 {
     std::string models;
-    for (std::string_view name : icacam::vision::kModelNames) (models += models.empty() ? "" : ", ") += name;
+    for (std::string_view name : icacam::friction::kModelNames) (models += models.empty() ? "" : ", ") += name;
     return std::string("usage: icacam-fw --config FILE [--check]\n"
                        "       icacam-fw --help-config\n"
                        "Runs the icacam device program on the backends the config names.\n"
@@ -61,7 +61,7 @@ std::string usage()
                        "  --check        validate the config (and the calibration file it names) and exit\n"
                        "  --help-config  every config key with its default\n"
                        "The friction model is the config's reading.model (default ") +
-           icacam::vision::kDefaultModel + "; known: " + models +
+           icacam::friction::kDefaultModel + "; known: " + models +
            ").\n"
            "Exit codes: 0 stopped by a signal, 64 bad command line, 78 bad configuration, 69 a device\n"
            "could not be opened. See docs/firmware.md for the keys, the serial protocol and the journal.\n";
@@ -294,7 +294,7 @@ int main(int argc, char **argv)
     } noDisplay;
     // The friction model by name, the same set and default as `icacam measure --model`
     // (reading.model: the config check refused any other name).
-    const vision::FrictionModel *model = vision::frictionModel(cfg.model);
+    const friction::FrictionModel *model = friction::frictionModel(cfg.model);
     if (!model) return unavailable("model", hal::Error::make(hal::Errc::Invalid, "unknown reading.model " + cfg.model));
     fw::Device device({*cameraUsed, *triggerUsed, *ledUsed,
                        cfg.displayBackend == "none" ? static_cast<hal::Display &>(noDisplay) : *displayUsed,

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "friction/friction_models.h"
 #include "host_tools/number_text.h"
-#include "vision/model/friction_models.h"
 
 namespace icacam::host::cli {
 
@@ -110,7 +110,7 @@ bool parseFinite(const std::string &text, double *out)
 std::string modelNames()
 {
     std::string s;
-    for (std::string_view n : vision::kModelNames) (s += s.empty() ? "" : ", ") += n;
+    for (std::string_view n : friction::kModelNames) (s += s.empty() ? "" : ", ") += n;
     return s;
 }
 

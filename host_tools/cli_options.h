@@ -63,7 +63,7 @@ private:
 // A whole string as a finite number ("1e5", "-0.25"); false for anything else.
 bool parseFinite(const std::string &text, double *out);
 
-// The friction models the factory knows, comma-separated (vision/model/friction_models.h).
+// The friction models the factory knows, comma-separated (friction/friction_models.h).
 std::string modelNames();
 
 } // namespace icacam::host::cli

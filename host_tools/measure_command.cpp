@@ -10,16 +10,17 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "friction/friction_models.h"
 #include "host_tools/cli_options.h"
 #include "host_tools/manifest.h"
 #include "host_tools/number_text.h"
 #include "host_tools/record_measurer.h"
 #include "host_tools/result_writer.h"
-#include "vision/model/friction_models.h"
 
 namespace icacam::host {
 
 namespace fs = std::filesystem;
+using namespace icacam::friction;
 using namespace icacam::vision;
 
 namespace {
@@ -37,7 +38,7 @@ std::string usage()
                        "  --overlay DIR    also draw each measured image's boundaries into DIR/<id>.png\n"
                        "  --repeat N       measure each image N times (default 1: timing and profiling)\n"
                        "  --model NAME     the friction model (default ") +
-           vision::kDefaultModel + "; known: " + cli::modelNames() +
+           friction::kDefaultModel + "; known: " + cli::modelNames() +
            ")\n"
            "  --tolerance ABS[,REL]  status ok only when 2 mu_sigma is within max(ABS, REL * mu)\n"
            "                   (default " +

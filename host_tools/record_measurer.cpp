@@ -5,6 +5,7 @@
 namespace icacam::host {
 
 namespace fs = std::filesystem;
+using namespace icacam::friction;
 using namespace icacam::vision;
 
 RecordMeasurer::RecordMeasurer(const FrictionModel &model, const SpecimenSpec &defaults)

@@ -9,10 +9,10 @@
 #include <utility>
 
 #include "calibration/calibration_file.h"
+#include "friction/friction_model.h"
 #include "host_tools/image_file.h"
 #include "host_tools/manifest.h"
 #include "vision/end_face_analyzer.h"
-#include "vision/model/friction_model.h"
 
 namespace icacam::host {
 
@@ -30,13 +30,13 @@ struct RecordReading {
 class RecordMeasurer {
 public:
     // defaults: the tolerances applied where a row sets none.
-    RecordMeasurer(const vision::FrictionModel &model, const vision::SpecimenSpec &defaults);
+    RecordMeasurer(const friction::FrictionModel &model, const vision::SpecimenSpec &defaults);
     void measure(const ManifestRow &row, const Manifest &manifest, RecordReading *out, long repeat = 1);
-    const vision::FrictionModel &model() const { return model_; }
+    const friction::FrictionModel &model() const { return model_; }
 
 private:
     bool readSpec(const ManifestRow &row, vision::SpecimenSpec *spec, std::string *why) const;
-    const vision::FrictionModel &model_;
+    const friction::FrictionModel &model_;
     vision::SpecimenSpec defaults_;
     vision::EndFaceAnalyzer analyzer_;
     std::map<std::string, std::pair<calibration::CalibrationFile, std::string>> calibrations_; // by path

@@ -8,13 +8,13 @@
 #include <iostream>
 #include <stdexcept>
 
+#include "friction/paper_model.h"
 #include "host_tools/cli_options.h"
 #include "host_tools/end_face_renderer.h"
 #include "host_tools/manifest.h"
 #include "host_tools/number_text.h"
 #include "host_tools/synth_conditions.h"
 #include "host_tools/synth_loop_set.h"
-#include "vision/model/paper_model.h"
 
 namespace icacam::host {
 
@@ -22,7 +22,7 @@ namespace fs = std::filesystem;
 
 double uForMu(double mu, double n)
 {
-    vision::PaperModel model;
+    friction::PaperModel model;
     double lo = 0.0, hi = 1.25;
     for (int i = 0; i < 60; ++i) {
         const double mid = 0.5 * (lo + hi);
@@ -120,7 +120,7 @@ int synthCommand(const std::vector<std::string> &args)
     truth << "id,mu,u_mm,r_inner_mm,r_outer_mm,r_bulge_mm,u_px,blur_px,noise,contrast\n";
     std::mt19937 rng{uint32_t(seed)};
     auto U = [&](double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); };
-    vision::PaperModel model;
+    friction::PaperModel model;
     for (int i = 0; i < int(count); ++i) {
         const double n = U(0.05, 0.5), mu = U(0.06, 0.29);
         const double u = uForMu(mu, n);

@@ -13,14 +13,14 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "calibration/calibration_file.h"
+#include "friction/paper_model.h"
+#include "friction/radii_consistency.h"
+#include "friction/reduction_corrected_model.h"
 #include "host_tools/calibrate_command.h"
 #include "host_tools/calibration_renderer.h"
 #include "host_tools/end_face_renderer.h"
 #include "host_tools/specimen_body_renderer.h"
 #include "host_tools/synth_command.h"
-#include "vision/model/paper_model.h"
-#include "vision/model/radii_consistency.h"
-#include "vision/model/reduction_corrected_model.h"
 #include "vision/plane_calibration.h"
 
 namespace icacam::host {
@@ -66,12 +66,12 @@ Specimen drawSpecimen(Rng &rng, double reductionLo, double reductionHi)
             return s;
         }
         double ro50, ro, rm50, rm;
-        using vision::FeRadius;
-        if (!vision::feRadiusAt(FeRadius::Outer, s.n, s.mu, 0.5, &ro50) ||
-            !vision::feRadiusAt(FeRadius::Outer, s.n, s.mu, s.reduction, &ro) ||
-            !vision::feRMaxAt(s.n, s.mu, 0.5, &rm50) || !vision::feRMaxAt(s.n, s.mu, s.reduction, &rm))
+        using friction::FeRadius;
+        if (!friction::feRadiusAt(FeRadius::Outer, s.n, s.mu, 0.5, &ro50) ||
+            !friction::feRadiusAt(FeRadius::Outer, s.n, s.mu, s.reduction, &ro) ||
+            !friction::feRMaxAt(s.n, s.mu, 0.5, &rm50) || !friction::feRMaxAt(s.n, s.mu, s.reduction, &rm))
             continue; // no FE snapshot data there: draw again
-        s.uMm = u50 + vision::ReductionCorrectedModel::slopeAt(s.n, s.mu) * (s.reduction - 0.5);
+        s.uMm = u50 + friction::ReductionCorrectedModel::slopeAt(s.n, s.mu) * (s.reduction - 0.5);
         s.rOuterMm = rOuter50 + (ro - ro50);
         s.rMaxMm = rMax50 * rm / rm50;
         if (s.uMm > 0.02) return s;
@@ -82,8 +82,8 @@ Specimen drawSpecimen(Rng &rng, double reductionLo, double reductionHi)
 // model at the width carried back to 50 %.
 double trueMu(double uEqMm, double n, double reduction)
 {
-    static const vision::PaperModel paper;
-    static const vision::ReductionCorrectedModel carry(paper, "paper_reduction");
+    static const friction::PaperModel paper;
+    static const friction::ReductionCorrectedModel carry(paper, "paper_reduction");
     const double u50 = reduction == 0.5 ? uEqMm : carry.uAtBaseReduction({uEqMm, n, 0, kD0Mm, kH0Mm, 0}, reduction);
     return paper.estimate({u50, n, 0, kD0Mm, kH0Mm, 0}).mu;
 }

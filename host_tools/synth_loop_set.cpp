@@ -7,10 +7,10 @@
 #include <random>
 #include <stdexcept>
 
+#include "friction/radii_consistency.h"
+#include "friction/reduction_corrected_model.h"
 #include "host_tools/end_face_renderer.h"
 #include "host_tools/synth_command.h"
-#include "vision/model/radii_consistency.h"
-#include "vision/model/reduction_corrected_model.h"
 
 namespace icacam::host {
 
@@ -87,10 +87,10 @@ std::string writeLoopSet(const std::string &dir, const LoopSetOptions &opt)
         // FE snapshots at (n, μ, r). A rate-sensitive material's ring widens with the speed.
         const double speedFactor =
             opt.effect == LoopEffect::Speed ? 1 + kSpeedLogSlope * std::log(speed / kSpeedReferenceMmS) : 1.0;
-        const double u = (uForMu(mu, n) + vision::ReductionCorrectedModel::slopeAt(n, mu) * (r - 0.5)) * speedFactor;
+        const double u = (uForMu(mu, n) + friction::ReductionCorrectedModel::slopeAt(n, mu) * (r - 0.5)) * speedFactor;
         double ro = 0, rMax = 0;
-        if (!vision::feRadiusAt(vision::FeRadius::Outer, n, mu, r, &ro) ||
-            !vision::feRadiusAt(vision::FeRadius::Max, n, mu, r, &rMax))
+        if (!friction::feRadiusAt(friction::FeRadius::Outer, n, mu, r, &ro) ||
+            !friction::feRadiusAt(friction::FeRadius::Max, n, mu, r, &rMax))
             throw std::runtime_error("no FE snapshot data at the drawn (n, mu, r)");
         // A stale calibration: the lab's mm_per_px is too large, so every length comes out
         // large by the same factor (L25 was fitted later and kept L16's scale; one camera

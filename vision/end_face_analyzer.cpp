@@ -102,7 +102,7 @@ bool EndFaceAnalyzer::refineCentre(const LumaView &v, double r0Px, double *cx, d
     return true;
 }
 
-Measurement EndFaceAnalyzer::measure(const LumaView &v, const SpecimenSpec &spec, const FrictionModel &model)
+Measurement EndFaceAnalyzer::measure(const LumaView &v, const SpecimenSpec &spec, const friction::FrictionModel &model)
 {
     Measurement m = measureFace(v, spec);
     if (m.error != ErrorCode::None) return m;

@@ -7,10 +7,10 @@
 #include <cstdint>
 #include <memory>
 
+#include "friction/friction_model.h"
 #include "vision/edge_profile.h"
 #include "vision/luma_view.h"
 #include "vision/measurement.h"
-#include "vision/model/friction_model.h"
 #include "vision/plane_calibration.h"
 #include "vision/specimen_locator.h"
 #include "vision/specimen_spec.h"
@@ -45,7 +45,7 @@ public:
 
     // Measures one frame and interprets it (measureFace, then interpretEndFace of
     // reading_interpreter.h). The result's point arrays stay valid until the next call.
-    Measurement measure(const LumaView &frame, const SpecimenSpec &spec, const FrictionModel &model);
+    Measurement measure(const LumaView &frame, const SpecimenSpec &spec, const friction::FrictionModel &model);
     // The image half alone: boundaries, silhouette and image-quality flags in pixels, sized
     // by spec's scale (or, with a calibration and no scale, the calibration's at the image
     // centre). Status stays Error with error None when the face was found: interpretEndFace

@@ -4,12 +4,14 @@
 #include <cmath>
 #include <numbers>
 
-#include "vision/model/aspect_corrected_model.h"
-#include "vision/model/radii_consistency.h"
-#include "vision/model/reduction_corrected_model.h"
+#include "friction/aspect_corrected_model.h"
+#include "friction/radii_consistency.h"
+#include "friction/reduction_corrected_model.h"
 #include "vision/plane_calibration.h"
 
 namespace icacam::vision {
+
+using namespace icacam::friction;
 
 namespace {
 

@@ -39,15 +39,15 @@
 // (SpecimenSpec::tolerance); else warn, with the budget's leading component named by a flag
 // (edges_uncertain, scale_uncertain, reduction_uncertain, n_uncertain, model_uncertain).
 // Pure C++20: no heap, no OS calls, no exceptions.
+#include "friction/friction_model.h"
 #include "vision/measurement.h"
-#include "vision/model/friction_model.h"
 #include "vision/specimen_spec.h"
 
 namespace icacam::vision {
 
 // Fills m's radii, u, μ, budget, status and flags from its geometry. m comes from
 // EndFaceAnalyzer::measureFace; one whose error is set stays an error.
-void interpretEndFace(const SpecimenSpec &spec, const FrictionModel &model, Measurement *m);
+void interpretEndFace(const SpecimenSpec &spec, const friction::FrictionModel &model, Measurement *m);
 
 // The silhouette's relative 1-σ error against the FE: the FE's and the measurement's, from
 // the per-ray fit's scatter (radii_consistency.h).

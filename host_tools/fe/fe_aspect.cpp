@@ -150,10 +150,10 @@ std::string aspectTableText(const TableSources &src, const std::string &sourceDi
       << "// " << joined(src.aspect) << ",\n"
       << "// mesh " << ar.mesh << ", u from the " << (ar.tracked ? "tracked" : "interpolated")
       << " contact edge; host_tools/fe/fe_aspect.cpp, docs/fe.md): a ratio of runs of one family, carried onto\n"
-      << "// the base's model (vision/model/aspect_corrected_model.h).\n"
+      << "// the base's model (friction/aspect_corrected_model.h).\n"
       << "// Only where u(1.5) > 0.1 mm; points not simulated (kSimulated 0) copy the nearest simulated\n"
       << "// point of the same slenderness (distance in n, reduction and μ over 0.45, 0.3 and 0.25).\n"
-      << "namespace icacam::vision::aspect_table {\n"
+      << "namespace icacam::friction::aspect_table {\n"
       << "inline constexpr const char *kProvenance = \"" << src.command << "\";\n"
       << "inline constexpr const char *kInputs = \"" << joined(src.aspect) << "\";\n"
       << "inline constexpr double kBaseAspect = " << kBaseAspect << ";\n"
@@ -172,7 +172,7 @@ std::string aspectTableText(const TableSources &src, const std::string &sourceDi
       << "// nearest simulated one where there is none).\n"
       << "inline constexpr double kRMaxRatio[kACount][kNCount][kRCount][kMuCount] = {\n"
       << rMaxValues << "};\n"
-      << "} // namespace icacam::vision::aspect_table\n";
+      << "} // namespace icacam::friction::aspect_table\n";
     if (summary)
         *summary =
             std::to_string(count) + " simulated ratios, H0/D0 " + list(av) + ", n " + list(nv) + ", mu " + list(mv);

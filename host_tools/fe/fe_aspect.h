@@ -2,7 +2,7 @@
 // The slenderness carry ("beyond the paper": H0/D0 1.0–2.0): how much wider the ICA
 // of a specimen of another H0/D0 is than that of the paper's 10 x 15 mm one at the same n, μ
 // and height reduction, from FE runs at other H0 (docs/fe.md). `icacam fe tables` writes it as
-// vision/model/aspect_table.h for vision/model/aspect_corrected_model.h.
+// friction/aspect_table.h for friction/aspect_corrected_model.h.
 #include <map>
 #include <string>
 #include <tuple>

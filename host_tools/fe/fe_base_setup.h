@@ -2,7 +2,7 @@
 // The two setups `icacam fe` starts a case from. FeCase{} and RunOptions{} are the coarse
 // setup of the first sweeps (CAX4R, uniform 0.2 mm, to 50 %: seconds a case), the defaults
 // every committed sweep command in data/fe/ was written against. `--preset base` starts from
-// the setup of the models' FE base instead (data/fe/README.md; vision/model/fe_model_table.h
+// the setup of the models' FE base instead (data/fe/README.md; friction/fe_model_table.h
 // names the file), so a sweep with it adds cases of the base's kind under the base's labels.
 #include "host_tools/fe/fe_case.h"
 #include "host_tools/fe/fe_runner.h"

@@ -63,7 +63,7 @@ std::string usage()
            "          [--icacam PATH] [--array-limit N] [--poll " +
            g(slurm.pollS) +
            "] [--cancel 1]\n"
-           "  tables  --base CSV [--k-family CSV]... [--aspect CSV]... [--out vision/model]\n"
+           "  tables  --base CSV [--k-family CSV]... [--aspect CSV]... [--out friction]\n"
            "          every generated table of the friction models from one FE base (icacam fe tables --help)\n"
            "  report  --in CSV --out DIR [--snapshot-reduction 0.5]    Table 1 / Fig. 3 comparison\n"
            "  compare --in REF.csv --in OTHER.csv [--out MD] [--min-u 0.1] [--bar 0.05] [--edge interp|track]\n"

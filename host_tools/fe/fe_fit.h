@@ -1,5 +1,5 @@
 #pragma once
-// The FE model's generated table (vision/model/fe_model_table.h), part of `icacam fe tables`.
+// The FE model's generated table (friction/fe_model_table.h), part of `icacam fe tables`.
 #include <string>
 #include <vector>
 

@@ -9,12 +9,12 @@
 #include <string>
 #include <vector>
 
-#include "vision/model/fe_model.h"
+#include "friction/fe_model.h"
 
 namespace icacam::host::fe {
 
 // The generated model between its grid points: each interior grid point left out in turn and
-// predicted by the model's own interpolation (vision::feMuAlongU) from the rest — along u at
+// predicted by the model's own interpolation (friction::feMuAlongU) from the rest — along u at
 // its n (leave one μ out), and linearly in n between the neighbouring n (leave one n out, a
 // gap twice the model's). Only resolved points (u > 0.02 mm) inside the rest's range count.
 // This bounds the error between grid points, where the model is not exact.
@@ -48,15 +48,15 @@ void writeLeaveOneOut(std::ostream &md, const std::vector<FeRow> &rows)
         std::map<double, std::vector<const Point *>> byN; // μ order within each n (map order)
         for (const auto &[key, p] : pts) byN[p.n].push_back(&p);
         auto muAt = [](const std::vector<const Point *> &line, size_t skip, double u, bool *outside) {
-            double us[vision::kMaxRowPoints], mus[vision::kMaxRowPoints];
+            double us[friction::kMaxRowPoints], mus[friction::kMaxRowPoints];
             int c = 0;
-            for (size_t j = 0; j < line.size() && c < vision::kMaxRowPoints; ++j)
+            for (size_t j = 0; j < line.size() && c < friction::kMaxRowPoints; ++j)
                 if (j != skip) {
                     us[c] = line[j]->u;
                     mus[c] = line[j]->mu;
                     ++c;
                 }
-            return vision::feMuAlongU(us, mus, c, u, outside);
+            return friction::feMuAlongU(us, mus, c, u, outside);
         };
         Stat sMu, sN;
         char what[80];
@@ -146,7 +146,7 @@ void writeRunResiduals(std::ostream &md, const std::vector<FeRow> &rows)
                 continue;
             const auto &[us, mus] = line[r.n];
             bool out = false;
-            const double mu = vision::feMuAlongU(us.data(), mus.data(), int(us.size()), r.uBest(), &out);
+            const double mu = friction::feMuAlongU(us.data(), mus.data(), int(us.size()), r.uBest(), &out);
             if (out) continue;
             const double rel = std::fabs(mu - r.mu) / r.mu;
             ++count;

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "vision/model/paper_model.h"
+#include "friction/paper_model.h"
 
 namespace icacam::host::fe {
 
@@ -77,7 +77,7 @@ void writeTable1Form(std::ostream &md, const fs::path &svgPath, const PointGrid 
     int devCount = 0;
     for (const auto &[n, uv] : byN) {
         const auto c = polyFit(uv.first, uv.second, 3);
-        const auto pc = vision::PaperModel::coefficients(n);
+        const auto pc = friction::PaperModel::coefficients(n);
         char b[400];
         if (c.empty()) {
             std::snprintf(b, sizeof b, "| %g | %zu | (too few) | | | | %.4f | %.4f | %.4f | %.4f | | |\n", n,
@@ -148,7 +148,7 @@ void writeTable1Form(std::ostream &md, const fs::path &svgPath, const PointGrid 
         const double ox = 50 + (i % 2) * (pw + 50), oy = 30 + (i / 2) * (ph + 50);
         double lo = 1e9, hi = -1e9;
         for (int k = 0; k <= 40; ++k) {
-            const auto pc = vision::PaperModel::coefficients(0.05 + 0.45 * k / 40);
+            const auto pc = friction::PaperModel::coefficients(0.05 + 0.45 * k / 40);
             const double v[4] = {pc.a, pc.b, pc.c, pc.d};
             lo = std::min(lo, v[i]);
             hi = std::max(hi, v[i]);
@@ -176,7 +176,7 @@ void writeTable1Form(std::ostream &md, const fs::path &svgPath, const PointGrid 
         std::string path;
         for (int k = 0; k <= 40; ++k) {
             const double n = 0.05 + 0.45 * k / 40;
-            const auto pc = vision::PaperModel::coefficients(n);
+            const auto pc = friction::PaperModel::coefficients(n);
             const double v[4] = {pc.a, pc.b, pc.c, pc.d};
             char b[64];
             std::snprintf(b, sizeof b, "%s%.1f,%.1f ", k ? "L" : "M", X(n), Y(v[i]));

@@ -1,5 +1,5 @@
 #pragma once
-// What the generated model tables (vision/model/*_table.h) are made from, as `icacam fe tables`
+// What the generated model tables (friction/*_table.h) are made from, as `icacam fe tables`
 // names it: one FE base and the runs of the carries, as the repository names the files.
 #include <string>
 #include <vector>

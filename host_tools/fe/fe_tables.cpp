@@ -18,7 +18,7 @@ namespace fs = std::filesystem;
 namespace {
 
 const char *kUsage =
-    "usage: icacam fe tables --base CSV [--k-family CSV]... [--aspect CSV]... [--out vision/model] [--reduction 0.5]\n"
+    "usage: icacam fe tables --base CSV [--k-family CSV]... [--aspect CSV]... [--out friction] [--reduction 0.5]\n"
     "Writes every generated table the friction models read, from one FE base (run from the repository's top):\n"
     "  fe_model_table.h   u, R_i, R_o, R_max of the base at 30-60 % reduction, and the K carry: the\n"
     "                     differences in K within the --k-family runs (one family at several K, the\n"
@@ -26,7 +26,7 @@ const char *kUsage =
     "  reduction_table.h  du/dr at 50 % from the base's snapshots (the reduction carry; `icacam loop`'s FE data)\n"
     "  aspect_table.h     u(H0/D0)/u(1.5) and R_max(H0/D0)/R_max(1.5) within the --aspect runs (other H0\n"
     "                     and their 1.5 reference of the same family)\n"
-    "Each header names this command and its input files; tests/vision/model check them against the CSVs.\n";
+    "Each header names this command and its input files; tests/friction check them against the CSVs.\n";
 
 // A file as the repository names it: relative to the working directory where it lies under it.
 std::string repositoryName(const std::string &path)

@@ -1,5 +1,5 @@
 #pragma once
-// `icacam fe tables`: every generated table the models read (vision/model/fe_model_table.h,
+// `icacam fe tables`: every generated table the models read (friction/fe_model_table.h,
 // reduction_table.h, aspect_table.h) by one command from one named FE base, each header saying
 // the command and its input files (docs/fe.md, data/fe/README.md).
 #include <string>
@@ -11,7 +11,7 @@ namespace icacam::host::fe {
 
 struct TablesRequest {
     TableSources src; // src.command: the canonical command (no --out)
-    std::string outDir = "vision/model";
+    std::string outDir = "friction";
     double reduction = 0.5; // the FE model's own reduction when none is declared
 };
 

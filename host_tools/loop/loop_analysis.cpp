@@ -648,12 +648,12 @@ double ReductionSlope::slope(double n, double mu) const
     return coef_[0] + coef_[1] * n + coef_[2] * mu + coef_[3] * n * n + coef_[4] * n * mu + coef_[5] * mu * mu;
 }
 
-double uAtModelReduction(const vision::FrictionModel &model, const ReductionSlope &slope, const vision::ModelInputs &in,
-                         double reduction, double scaleFactor)
+double uAtModelReduction(const friction::FrictionModel &model, const ReductionSlope &slope,
+                         const friction::ModelInputs &in, double reduction, double scaleFactor)
 {
     if (reduction < 0) return in.uMm;
     const double geo = in.d0Mm > 0 ? in.d0Mm / 10.0 : 1.0;
-    vision::ModelInputs m = in;
+    friction::ModelInputs m = in;
     double u50 = in.uMm;
     for (int it = 0; it < 20; ++it) {
         m.uMm = u50;
@@ -668,9 +668,9 @@ double uAtModelReduction(const vision::FrictionModel &model, const ReductionSlop
     return u50;
 }
 
-double uForMu(const vision::FrictionModel &model, double mu, double n, double d0Mm)
+double uForMu(const friction::FrictionModel &model, double mu, double n, double d0Mm)
 {
-    vision::ModelInputs in;
+    friction::ModelInputs in;
     in.n = n;
     in.d0Mm = d0Mm;
     double lo = 0, hi = 1.25 * d0Mm / 10.0;

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "vision/model/friction_model.h"
+#include "friction/friction_model.h"
 
 namespace icacam::host::loop {
 
@@ -161,12 +161,12 @@ constexpr double kFeUFloorMm = 0.02;
 
 // u at the model's 50 % reduction: u50 = u − (du/dr)(r − 0.5), du/dr at (n, μ(u50)) found by
 // fixed-point iteration, scaled with D0 by geometric similarity.
-double uAtModelReduction(const vision::FrictionModel &model, const ReductionSlope &slope, const vision::ModelInputs &in,
-                         double reduction, double scaleFactor = 1.0);
+double uAtModelReduction(const friction::FrictionModel &model, const ReductionSlope &slope,
+                         const friction::ModelInputs &in, double reduction, double scaleFactor = 1.0);
 
 // Inverse of the model in u at fixed n (bisection on [0, 1.25] mm at D0 = 10): for tests and
 // synthetic record sets.
-double uForMu(const vision::FrictionModel &model, double mu, double n, double d0Mm = 10);
+double uForMu(const friction::FrictionModel &model, double mu, double n, double d0Mm = 10);
 
 double rms(const std::vector<double> &v);
 

@@ -8,6 +8,7 @@
 #include <iostream>
 #include <stdexcept>
 
+#include "friction/friction_models.h"
 #include "host_tools/cli_options.h"
 #include "host_tools/image_file.h"
 #include "host_tools/loop/journal_records.h"
@@ -18,9 +19,8 @@
 #include "host_tools/number_text.h"
 #include "host_tools/record_measurer.h"
 #include "vision/end_face_analyzer.h"
-#include "vision/model/friction_models.h"
 
-#include "vision/model/reduction_table.h"
+#include "friction/reduction_table.h"
 
 #ifndef ICACAM_LOOP_SOURCE_DIR
 #define ICACAM_LOOP_SOURCE_DIR "."
@@ -29,6 +29,7 @@
 namespace icacam::host {
 
 namespace fs = std::filesystem;
+using namespace icacam::friction;
 using namespace icacam::vision;
 
 namespace {
@@ -40,7 +41,7 @@ std::string usage()
                        "                   [--fe-sweep CSV]... [--alpha A]\n"
                        "       icacam loop --journal DIR --reference CSV --report DIR [options as above]\n"
                        "  --model NAME   the friction model (default ") +
-           vision::kDefaultModel + "; known: " + cli::modelNames() +
+           friction::kDefaultModel + "; known: " + cli::modelNames() +
            ")\n"
            "  --folds N      k of the k-fold cross-validation (default " +
            std::to_string(d.folds) +
@@ -53,7 +54,7 @@ std::string usage()
            ")\n"
            "  --fe-sweep CSV the FE runs of the physical reduction correction (default the base the\n"
            "                 models' tables came from: " +
-           vision::reduction_table::kFeSources +
+           friction::reduction_table::kFeSources +
            ")\n"
            "Measures every record (image + mm_per_px, or r_inner_mm + r_outer_mm; with --journal an\n"
            "icacam-fw journal folder's saved frames, joined by record id with the CSV's mu_ref and\n"
@@ -558,7 +559,7 @@ LoopSummary runLoopOn(const Manifest &manifest, const std::string &source,
         } else if (isReduction && model->correctsReduction()) {
             f << "`" << s.chosen << "`: the model `" << model->name()
               << "` already carries u to 50 % with the FE "
-                 "du/dr (vision/model/reduction_table.h). A reduction effect left in its residual means the FE slope "
+                 "du/dr (friction/reduction_table.h). A reduction effect left in its residual means the FE slope "
                  "is off: the residual grows with the reduction when the FE du/dr is too small (run with "
                  "`--model paper` for the least-squares scale of the FE slope). Reported here as its "
                  "one-candidate k-fold model, not built into the product: better FE runs are the fix.\n";
@@ -602,9 +603,9 @@ int loopCommand(const std::vector<std::string> &args)
     if (!args.empty() && args[0] == "table")
         throw cli::UsageError(std::string("the generated tables (the reduction carry's du/dr among them) are made "
                                           "by `icacam fe tables`, as: ") +
-                                  vision::reduction_table::kProvenance,
+                                  friction::reduction_table::kProvenance,
                               usage());
-    std::string manifestPath, journalDir, referenceCsv, reportDir, modelName = vision::kDefaultModel;
+    std::string manifestPath, journalDir, referenceCsv, reportDir, modelName = friction::kDefaultModel;
     std::vector<std::string> feSweeps;
     loop::RankingOptions opt;
     cli::OptionReader opts(args, usage());
@@ -642,7 +643,7 @@ int loopCommand(const std::vector<std::string> &args)
         throw cli::UsageError("--journal and --reference go together", usage());
     // By default the FE data the product's table was generated from (its kFeSources).
     if (feSweeps.empty())
-        for (const std::string &name : loop::splitSources(vision::reduction_table::kFeSources))
+        for (const std::string &name : loop::splitSources(friction::reduction_table::kFeSources))
             feSweeps.push_back(repoFile(name));
     const loop::LoopSummary s =
         journalDir.empty() ? loop::runLoop(manifestPath, reportDir, modelName, opt, feSweeps)

@@ -6,7 +6,7 @@
 #include <map>
 #include <set>
 
-#include "vision/model/radii_consistency.h"
+#include "friction/radii_consistency.h"
 
 namespace icacam::host::loop {
 
@@ -20,9 +20,9 @@ constexpr double kNMin = 0.02, kNMax = 0.6;
 constexpr double kShiftMax = 0.3;
 
 // μ of a record with the group's parameter applied (a factor s, or a shift Δn).
-double muWith(const vision::FrictionModel &model, const LoopRecord &r, GroupReading reading, double p)
+double muWith(const friction::FrictionModel &model, const LoopRecord &r, GroupReading reading, double p)
 {
-    vision::ModelInputs in = inputsOf(r);
+    friction::ModelInputs in = inputsOf(r);
     if (reading == GroupReading::Scale)
         in.uMm = r.uMm / p;
     else
@@ -44,7 +44,7 @@ double declaredN(const std::vector<LoopRecord> &usable, const std::vector<size_t
 
 // Least squares of μ(p) − μ_ref over the members (Gauss–Newton, numerical derivative).
 // Returns p, and Σ J² and the sum of squares at p for the uncertainty.
-double fitParameter(const vision::FrictionModel &model, const std::vector<LoopRecord> &usable,
+double fitParameter(const friction::FrictionModel &model, const std::vector<LoopRecord> &usable,
                     const std::vector<size_t> &members, GroupReading reading, double start, double *sumJ2, double *sse)
 {
     const double lo = reading == GroupReading::Scale ? kScaleMin : -kShiftMax;
@@ -79,7 +79,7 @@ double fitParameter(const vision::FrictionModel &model, const std::vector<LoopRe
 }
 
 // Fits every level on the records where `train` holds.
-std::map<std::string, GroupFit> fitLevels(const vision::FrictionModel &model, const std::vector<LoopRecord> &usable,
+std::map<std::string, GroupFit> fitLevels(const friction::FrictionModel &model, const std::vector<LoopRecord> &usable,
                                           const Candidate &g, GroupReading reading, const std::vector<bool> &train,
                                           double *scatter, bool jackknife = false)
 {
@@ -153,7 +153,7 @@ void silhouetteCheck(const std::vector<LoopRecord> &usable, const Candidate &g, 
         const auto it = r.diagnostics.find("diag_rmax_over_r0");
         double fe = 0;
         if (it == r.diagnostics.end() ||
-            !vision::feRadiusAt(vision::FeRadius::Max, r.n, r.muRef, r.reduction >= 0 ? r.reduction : 0.5, &fe) ||
+            !friction::feRadiusAt(friction::FeRadius::Max, r.n, r.muRef, r.reduction >= 0 ? r.reduction : 0.5, &fe) ||
             !(fe > 0))
             continue;
         ratios[g.levels[i]].push_back(it->second * 5.0 / fe); // R_max/R0 · 5 mm against the D0 = 10 FE
@@ -190,7 +190,7 @@ const char *formName(GroupReading reading)
     return reading == GroupReading::Scale ? "factor" : "n";
 }
 
-FittedForm groupingForm(const vision::FrictionModel &model, const std::vector<LoopRecord> &usable,
+FittedForm groupingForm(const friction::FrictionModel &model, const std::vector<LoopRecord> &usable,
                         const Candidate &grouping, const std::vector<int> &fold, int folds)
 {
     const GroupReading reading = readingOf(usable, grouping);
@@ -212,9 +212,9 @@ FittedForm groupingForm(const vision::FrictionModel &model, const std::vector<Lo
     return f;
 }
 
-vision::ModelInputs inputsOf(const LoopRecord &r)
+friction::ModelInputs inputsOf(const LoopRecord &r)
 {
-    vision::ModelInputs in;
+    friction::ModelInputs in;
     in.uMm = r.uMm;
     in.n = r.n;
     in.kMpa = r.kMpa;
@@ -244,7 +244,7 @@ GroupReading readingOf(const std::vector<LoopRecord> &usable, const Candidate &g
     return all.size() >= 2 ? GroupReading::N : GroupReading::Scale;
 }
 
-PhysicalFit fitGrouping(const vision::FrictionModel &model, const std::vector<LoopRecord> &usable, const Candidate &g,
+PhysicalFit fitGrouping(const friction::FrictionModel &model, const std::vector<LoopRecord> &usable, const Candidate &g,
                         GroupReading reading, const std::vector<int> &fold, int folds)
 {
     PhysicalFit out;

@@ -46,13 +46,13 @@ struct PhysicalFit {
 
 // Fits one parameter per level by least squares of model(...) − μ_ref (Gauss–Newton), and the
 // same per fold for the held-out error.
-PhysicalFit fitGrouping(const vision::FrictionModel &model, const std::vector<LoopRecord> &usable,
+PhysicalFit fitGrouping(const friction::FrictionModel &model, const std::vector<LoopRecord> &usable,
                         const Candidate &grouping, GroupReading reading, const std::vector<int> &fold, int folds);
 
 // The grouping's physical form for the ranking: its held-out errors, and those of its baseline,
 // the same form with one parameter for every record (a global scale, a global Δn), so that a
 // grouping is credited only for what telling its groups apart adds.
-FittedForm groupingForm(const vision::FrictionModel &model, const std::vector<LoopRecord> &usable,
+FittedForm groupingForm(const friction::FrictionModel &model, const std::vector<LoopRecord> &usable,
                         const Candidate &grouping, const std::vector<int> &fold, int folds);
 
 // A numeric recorded condition in its best linear form: residual = sens·(a + b·x), b with its
@@ -68,6 +68,6 @@ LinearEffect fitLinearEffect(const Candidate &c, const std::vector<double> &resi
                              const std::vector<double> &scaleSens, const std::vector<double> &uSens);
 
 // The model inputs of a record as it was measured.
-vision::ModelInputs inputsOf(const LoopRecord &r);
+friction::ModelInputs inputsOf(const LoopRecord &r);
 
 } // namespace icacam::host::loop

@@ -1,5 +1,5 @@
 #pragma once
-// The reduction carry's generated table (vision/model/reduction_table.h), part of `icacam fe
+// The reduction carry's generated table (friction/reduction_table.h), part of `icacam fe
 // tables`: the FE du/dr at 50 % from the base's snapshots, so that the device can carry u to
 // the model's 50 % reduction without reading a CSV at run time. Columns are read by name;
 // added columns are ignored.

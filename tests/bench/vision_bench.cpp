@@ -4,10 +4,10 @@
 
 #include <opencv2/core.hpp>
 
+#include "friction/paper_model.h"
 #include "host_tools/end_face_renderer.h"
 #include "tests/bench/opencv_baseline.h"
 #include "vision/end_face_analyzer.h"
-#include "vision/model/paper_model.h"
 
 namespace {
 const cv::Mat &frame()
@@ -26,7 +26,7 @@ void BM_VisionPipeline(benchmark::State &state)
     const cv::Mat &img = frame();
     icacam::vision::EndFaceAnalyzer a;
     a.configure(img.cols, img.rows);
-    icacam::vision::PaperModel model;
+    icacam::friction::PaperModel model;
     const icacam::vision::LumaView v{img.data, img.cols, img.rows, int(img.step[0]), 1};
     const icacam::vision::SpecimenSpec spec{0.25, 500, 10, 15, 0.0135};
     for (auto _ : state) benchmark::DoNotOptimize(a.measure(v, spec, model).mu);

@@ -20,13 +20,13 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "calibration/calibration_file.h"
+#include "friction/paper_model.h"
 #include "host_tools/calibrate_command.h"
 #include "host_tools/calibration_renderer.h"
 #include "host_tools/manifest.h"
 #include "host_tools/measure_command.h"
 #include "host_tools/synth_command.h"
 #include "vision/end_face_analyzer.h"
-#include "vision/model/paper_model.h"
 
 using namespace icacam;
 namespace fs = std::filesystem;
@@ -67,7 +67,7 @@ TEST(CalibratedMeasure, MuThroughATiltedDistortingCamera)
     ASSERT_GT(cal.views, 5);
     vision::EndFaceAnalyzer analyzer;
     ASSERT_EQ(analyzer.configure(cam.width, cam.height), vision::ErrorCode::None);
-    vision::PaperModel model;
+    friction::PaperModel model;
     const double cxPx = 0.5 * (cam.width - 1), cyPx = 0.5 * (cam.height - 1);
 
     std::mt19937 rng(7001);
@@ -201,7 +201,7 @@ TEST(CalibratedMeasure, ManifestCalibrationColumn)
     auto col = [&](const std::string &name) {
         return size_t(std::find(cols.begin(), cols.end(), name) - cols.begin());
     };
-    vision::PaperModel model;
+    friction::PaperModel model;
     const double muTrue = model.estimate({s.rOuterEqMm() - s.rInnerEqMm(), n}).mu;
     std::map<std::string, std::vector<std::string>> rows;
     while (std::getline(in, line)) {

@@ -13,6 +13,7 @@
 #include "firmware/aim_view.h"
 #include "firmware/device.h"
 #include "firmware/font5x7.h"
+#include "friction/paper_model.h"
 #include "hal/file/clocks.h"
 #include "hal/file/file_camera.h"
 #include "hal/file/file_led.h"
@@ -21,7 +22,6 @@
 #include "hal/file/image_decoder.h"
 #include "tests/support/recording_serial.h"
 #include "vision/end_face_analyzer.h"
-#include "vision/model/paper_model.h"
 
 using namespace icacam;
 namespace fs = std::filesystem;
@@ -64,7 +64,7 @@ struct AimRig {
     RecordingDisplay display;
     test::RecordingSerial serial;
     hal::FolderStorage storage;
-    vision::PaperModel model;
+    friction::PaperModel model;
     std::unique_ptr<fw::Device> device;
 
     AimRig()
@@ -215,7 +215,7 @@ TEST(Snapshot, FullFramePngWithTheFittedBoundariesInTheJournal)
     ASSERT_TRUE(hal::decodeImage(kSample, grey.data(), grey.size(), 1456, 1088, 0, &g).ok());
     vision::EndFaceAnalyzer analyzer;
     ASSERT_EQ(analyzer.configure(1456, 1088), vision::ErrorCode::None);
-    vision::PaperModel model;
+    friction::PaperModel model;
     const vision::Measurement m =
         analyzer.measure({grey.data(), 1456, 1088, g.stride, 1}, {0.1742, 647, 10, 15, 0.0153924, 0}, model);
     ASSERT_TRUE(m.hasValue());
@@ -255,7 +255,7 @@ TEST(AimView, FocusScoreFallsWithBlurAndHintPointsToTheCentre)
         }
     vision::EndFaceAnalyzer analyzer;
     ASSERT_EQ(analyzer.configure(1456, 1088), vision::ErrorCode::None);
-    vision::PaperModel model;
+    friction::PaperModel model;
     const vision::LumaView sharp{grey.data(), 1456, 1088, 1456, 1}, soft{blurred.data(), 1456, 1088, 1456, 1};
     const vision::Measurement m = analyzer.measure(sharp, {0.1742, 647, 10, 15, 0.0153924, 0}, model);
     const double fs1 = fw::focusScore(sharp, m), fs2 = fw::focusScore(soft, m);

@@ -13,6 +13,7 @@
 #include "firmware/device.h"
 #include "firmware/device_calibration.h"
 #include "firmware/json_line.h"
+#include "friction/paper_model.h"
 #include "hal/file/clocks.h"
 #include "hal/file/file_camera.h"
 #include "hal/file/file_led.h"
@@ -21,7 +22,6 @@
 #include "host_tools/calibration_renderer.h"
 #include "host_tools/synth_command.h"
 #include "tests/support/recording_serial.h"
-#include "vision/model/paper_model.h"
 
 using namespace icacam;
 namespace fs = std::filesystem;
@@ -54,7 +54,7 @@ struct Rig {
     NullDisplay display;
     RecordingSerial serial;
     hal::FolderStorage storage;
-    vision::PaperModel model;
+    friction::PaperModel model;
     std::unique_ptr<fw::Device> device;
     fw::Config cfg;
 
@@ -150,9 +150,9 @@ TEST(DeviceCalibration, MeasuresInTheEndFacePlaneAndJournalsWhichCalibration)
         if (vision::kBudgetFlags & (1u << bit)) continue;
         EXPECT_EQ(text(a, "flags").find(vision::flagName(bit)), std::string::npos) << rig.serial.out;
     }
-    EXPECT_LE(std::fabs(number(a, "mu") - vision::PaperModel().estimate({s.rOuterEqMm() - s.rInnerEqMm(), n}).mu),
+    EXPECT_LE(std::fabs(number(a, "mu") - friction::PaperModel().estimate({s.rOuterEqMm() - s.rInnerEqMm(), n}).mu),
               2 * number(a, "mu_sigma"));
-    const double muTrue = vision::PaperModel().estimate({s.rOuterEqMm() - s.rInnerEqMm(), n}).mu;
+    const double muTrue = friction::PaperModel().estimate({s.rOuterEqMm() - s.rInnerEqMm(), n}).mu;
     EXPECT_NEAR(number(a, "mu"), muTrue, 0.004);
     EXPECT_EQ(text(a, "calibration"), "cam.cal");
     EXPECT_DOUBLE_EQ(number(a, "plane_height_mm"), 7.5);

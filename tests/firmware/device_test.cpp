@@ -7,13 +7,13 @@
 
 #include "firmware/device.h"
 #include "firmware/font5x7.h"
+#include "friction/paper_model.h"
 #include "hal/file/clocks.h"
 #include "hal/file/file_camera.h"
 #include "hal/file/file_led.h"
 #include "hal/file/file_trigger.h"
 #include "hal/file/folder_storage.h"
 #include "tests/support/recording_serial.h"
-#include "vision/model/paper_model.h"
 
 using namespace icacam;
 namespace fs = std::filesystem;
@@ -41,7 +41,7 @@ struct Rig {
     RecordingDisplay display;
     RecordingSerial serial;
     hal::FolderStorage storage;
-    vision::PaperModel model;
+    friction::PaperModel model;
     std::unique_ptr<fw::Device> device;
 
     explicit Rig(const std::string &frames, uint64_t quota = 0, bool loop = false)

@@ -14,12 +14,12 @@
 #include <vector>
 
 #include "firmware/device.h"
+#include "friction/paper_model.h"
 #include "hal/file/clocks.h"
 #include "hal/file/file_trigger.h"
 #include "hal/file/folder_storage.h"
 #include "hal/fresh_frame.h"
 #include "tests/support/recording_serial.h"
-#include "vision/model/paper_model.h"
 
 using namespace icacam;
 namespace fs = std::filesystem;
@@ -186,7 +186,7 @@ Outcome runModel(const DriverModel &m, int shots, uint32_t seed)
     cfg.journalImages = "none";
     cfg.ledSettleMs = 20;
     cfg.captureTimeoutMs = 1000;
-    vision::PaperModel model;
+    friction::PaperModel model;
     fw::Device device({cam, trigger, led, display, serial, storage, clock}, cfg, model);
     EXPECT_TRUE(device.start().ok());
     for (int i = 0; i < shots; ++i) {

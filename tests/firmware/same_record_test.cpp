@@ -9,6 +9,7 @@
 
 #include "firmware/device.h"
 #include "firmware/json_line.h"
+#include "friction/friction_models.h"
 #include "hal/file/clocks.h"
 #include "hal/file/file_camera.h"
 #include "hal/file/file_led.h"
@@ -18,7 +19,6 @@
 #include "host_tools/record_measurer.h"
 #include "host_tools/result_writer.h"
 #include "tests/support/recording_serial.h"
-#include "vision/model/friction_models.h"
 #include "vision/reading_record.h"
 
 using namespace icacam;
@@ -33,7 +33,7 @@ struct NullDisplay final : hal::Display {
 const std::string kSample = std::string(ICACAM_SOURCE_DIR) + "/tests/data/sample";
 
 // The device's result line for one frame of the sample set.
-fw::FlatObject deviceResult(const std::string &image, const fw::Config &base, const vision::FrictionModel &model)
+fw::FlatObject deviceResult(const std::string &image, const fw::Config &base, const friction::FrictionModel &model)
 {
     char t[] = "/tmp/icacam-same-XXXXXX";
     const fs::path dir = ::mkdtemp(t);
@@ -58,7 +58,7 @@ fw::FlatObject deviceResult(const std::string &image, const fw::Config &base, co
     return r;
 }
 
-fw::FlatObject hostResult(const std::string &manifestText, const vision::FrictionModel &model)
+fw::FlatObject hostResult(const std::string &manifestText, const friction::FrictionModel &model)
 {
     host::Manifest manifest;
     std::string err;
@@ -100,7 +100,7 @@ void expectSameReading(const fw::FlatObject &device, const fw::FlatObject &host)
 
 TEST(OneInstrument, DeviceAndMeasureGiveTheSameReading)
 {
-    const vision::FrictionModel *model = vision::frictionModel(vision::kDefaultModel);
+    const friction::FrictionModel *model = friction::frictionModel(friction::kDefaultModel);
     ASSERT_NE(model, nullptr);
     fw::Config cfg;
     cfg.n = 0.1742, cfg.kMpa = 647, cfg.mmPerPx = 0.0153924;
@@ -134,7 +134,7 @@ TEST(OneInstrument, TheDeviceRunsAnyModelByName)
         // The config names the model as `icacam measure --model` does.
         fw::Config c = cfg;
         ASSERT_EQ(fw::setConfigKey(&c, "reading.model", name, false), "") << name;
-        const vision::FrictionModel *model = vision::frictionModel(c.model);
+        const friction::FrictionModel *model = friction::frictionModel(c.model);
         ASSERT_NE(model, nullptr) << name;
         const fw::FlatObject d = deviceResult("synth-0002.jpg", c, *model);
         const fw::FlatObject h = hostResult("id,image,n,k_mpa,mm_per_px,h_final_mm\n"

@@ -4,14 +4,14 @@
 #include <cstdint>
 #include <cstring>
 
+#include "friction/paper_model.h"
 #include "vision/end_face_analyzer.h"
-#include "vision/model/paper_model.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     static icacam::vision::EndFaceAnalyzer analyzer;
     static bool configured = analyzer.configure(4096, 4096) == icacam::vision::ErrorCode::None;
-    static icacam::vision::PaperModel model;
+    static icacam::friction::PaperModel model;
     if (!configured || size < 8) return 0;
     // Header: width, height (1…1024), scale byte, n byte; the rest are pixels (repeated).
     const int w = 1 + ((data[0] | data[1] << 8) % 1024);

@@ -26,12 +26,12 @@
 
 #include "firmware/device.h"
 #include "firmware/font5x7.h"
+#include "friction/paper_model.h"
 #include "hal/file/clocks.h"
 #include "hal/file/folder_storage.h"
 #include "hal/v4l2/v4l2_camera.h"
 #include "tests/support/recording_serial.h"
 #include "tests/support/umockdev_mock.h"
-#include "vision/model/paper_model.h"
 
 namespace {
 
@@ -576,7 +576,7 @@ TEST_F(V4l2Mock, FirmwareReportsUnplugAndMeasuresAgainAfterReplug)
     cfg.cameraMaxHeight = 480;
     cfg.captureTimeoutMs = 300;
     cfg.journalImages = "none";
-    vision::PaperModel model;
+    friction::PaperModel model;
     fw::Device device({cam, trigger, led, display, serial, storage, clock_}, cfg, model);
     ASSERT_TRUE(device.start().ok());
 
@@ -630,7 +630,7 @@ TEST_F(V4l2Mock, FirmwareStartsWithoutItsCameraAndMeasuresOnceTheNodeAppears)
     cfg.captureTimeoutMs = 300;
     cfg.cameraRetryMs = 100;
     cfg.journalImages = "none";
-    vision::PaperModel model;
+    friction::PaperModel model;
     fw::Device device({cam, trigger, led, display, serial, storage, clock_}, cfg, model);
     ASSERT_TRUE(device.start().ok());
     const fw::FlatObject hello = serial.last("hello");

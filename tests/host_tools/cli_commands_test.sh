@@ -41,7 +41,7 @@ expect 64 "--config needs a value" "$fw" --config
 cmp -s "$work/a/truth.csv" "$work/b/truth.csv" || fail "--name=value and --name value made different sets"
 
 # The FE defaults against the base the models' tables were made from.
-base=$(grep -o 'kBase = "[^"]*"' "$src/vision/model/fe_model_table.h" | cut -d'"' -f2)
+base=$(grep -o 'kBase = "[^"]*"' "$src/friction/fe_model_table.h" | cut -d'"' -f2)
 [ -f "$src/$base" ] || fail "no base file $base"
 column() { # the distinct values of a column of the base, comma-separated
     local col

@@ -5,11 +5,11 @@
 #include <iostream>
 #include <sstream>
 
+#include "friction/friction_models.h"
 #include "host_tools/cli_options.h"
 #include "host_tools/fe/fe_command.h"
 #include "host_tools/loop/loop_command.h"
 #include "host_tools/measure_command.h"
-#include "vision/model/friction_models.h"
 
 using icacam::host::cli::OptionReader;
 using icacam::host::cli::UsageError;
@@ -104,12 +104,12 @@ TEST(Help, ListsTheFactorysModelsAndDefault)
 {
     const std::string names = icacam::host::cli::modelNames();
     std::string joined;
-    for (std::string_view n : icacam::vision::kModelNames) {
-        EXPECT_NE(icacam::vision::frictionModel(n), nullptr) << n;
+    for (std::string_view n : icacam::friction::kModelNames) {
+        EXPECT_NE(icacam::friction::frictionModel(n), nullptr) << n;
         joined += (joined.empty() ? "" : ", ") + std::string(n);
     }
     EXPECT_EQ(names, joined);
-    const std::string def = std::string("default ") + icacam::vision::kDefaultModel + "; known: " + names;
+    const std::string def = std::string("default ") + icacam::friction::kDefaultModel + "; known: " + names;
     EXPECT_NE(printed([] { return icacam::host::measureCommand({"--help"}); }).find(def), std::string::npos);
     EXPECT_NE(printed([] { return icacam::host::loopCommand({"--help"}); }).find(def), std::string::npos);
 }

@@ -1,10 +1,10 @@
 // Zero heap allocations per measurement after configure(): operator new is counted.
 #include <gtest/gtest.h>
 
+#include "friction/paper_model.h"
 #include "host_tools/end_face_renderer.h"
 #include "tests/support/allocation_counter.h"
 #include "vision/end_face_analyzer.h"
-#include "vision/model/paper_model.h"
 
 using namespace icacam;
 
@@ -16,7 +16,7 @@ TEST(Allocation, NoneDuringMeasurement)
     vision::EndFaceAnalyzer analyzer;
     ASSERT_EQ(analyzer.configure(img.cols, img.rows), vision::ErrorCode::None);
     EXPECT_LE(analyzer.workingBytes(), size_t(1) << 20) << "working memory over 1 MiB";
-    vision::PaperModel model;
+    friction::PaperModel model;
     const vision::LumaView v{img.data, img.cols, img.rows, int(img.step[0]), 1};
     const vision::SpecimenSpec spec{0.25, 500, 10, 15, s.mmPerPx};
     const long before = icacam::test::allocationCount();

@@ -4,11 +4,12 @@
 
 #include <cmath>
 
-#include "vision/model/friction_models.h"
-#include "vision/model/radii_consistency.h"
+#include "friction/friction_models.h"
+#include "friction/radii_consistency.h"
 #include "vision/reading_interpreter.h"
 
 namespace icacam::vision {
+using namespace icacam::friction;
 namespace {
 
 constexpr double kN = 0.25, kMu = 0.15, kMmPerPx = 0.02;

@@ -16,9 +16,9 @@
 #include <string>
 #include <vector>
 
+#include "friction/paper_model.h"
 #include "hal/file/image_decoder.h"
 #include "vision/end_face_analyzer.h"
-#include "vision/model/paper_model.h"
 
 namespace {
 
@@ -105,7 +105,7 @@ std::string measureAll(std::string *failure)
     }
     const size_t cap = size_t(kMaxW) * kMaxH * 3;
     std::unique_ptr<uint8_t[]> buf(new uint8_t[cap]);
-    vision::PaperModel model;
+    friction::PaperModel model;
     std::string out = "# Measurements of tests/data/sample, generated on x86-64 by tests/vision/reference_images_test\n"
                       "# with ICACAM_WRITE_REFERENCE set; aarch64 (qemu) must print the same, bit for bit.\n";
     for (const auto &row : readManifest()) {

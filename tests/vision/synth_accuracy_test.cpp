@@ -5,10 +5,10 @@
 #include <cmath>
 #include <random>
 
+#include "friction/paper_model.h"
 #include "host_tools/end_face_renderer.h"
 #include "host_tools/synth_command.h"
 #include "vision/end_face_analyzer.h"
-#include "vision/model/paper_model.h"
 
 using namespace icacam;
 
@@ -40,7 +40,7 @@ TEST(SynthAccuracy, RandomScenesWithNuisances)
     std::uniform_real_distribution<double> U(0, 1);
     vision::EndFaceAnalyzer analyzer;
     ASSERT_EQ(analyzer.configure(2028, 1520), vision::ErrorCode::None);
-    vision::PaperModel model;
+    friction::PaperModel model;
     std::vector<double> errs;
     int silentWrong = 0;
     const int cases = 30;
@@ -78,7 +78,7 @@ TEST(SynthAccuracy, RecordedReductionOutsideTheModelIsFlagged)
     const cv::Mat img = host::renderEndFace(s);
     vision::EndFaceAnalyzer analyzer;
     ASSERT_EQ(analyzer.configure(img.cols, img.rows), vision::ErrorCode::None);
-    vision::PaperModel model;
+    friction::PaperModel model;
     const vision::LumaView v{img.data, img.cols, img.rows, int(img.step[0]), 1};
     vision::SpecimenSpec spec{0.25, 500, 10, 15, s.mmPerPx};
     spec.hFinalMm = 7.5; // exactly 50 %
@@ -100,7 +100,7 @@ TEST(SynthAccuracy, NarrowRingsOfWellLubricatedSpecimens)
     std::uniform_real_distribution<double> U(0, 1);
     vision::EndFaceAnalyzer analyzer;
     ASSERT_EQ(analyzer.configure(2028, 1520), vision::ErrorCode::None);
-    vision::PaperModel model;
+    friction::PaperModel model;
     int measured = 0, narrow = 0, covered = 0;
     const int cases = 16;
     for (int i = 0; i < cases; ++i) {

@@ -13,8 +13,8 @@
 #include <map>
 #include <tuple>
 
+#include "friction/fe_model.h"
 #include "host_tools/fe/fe_rows.h"
-#include "vision/model/fe_model.h"
 
 using namespace icacam;
 
@@ -34,7 +34,7 @@ TEST(FeSimilarity, TwiceTheSpecimenGivesTwiceTheLengths)
     std::map<Key, host::fe::FeRow> ref;
     for (const auto &r : base)
         if (host::fe::isPaperSpecimen(r) && r.uTrack >= 0) ref[key(r)] = r;
-    vision::FeModel model;
+    friction::FeModel model;
     int checked = 0;
     for (const auto &o : other) {
         if (o.d0 == 10 || o.reduction < 0.3 - 1e-9 || o.uTrack < 0) continue;
@@ -53,11 +53,11 @@ TEST(FeSimilarity, TwiceTheSpecimenGivesTwiceTheLengths)
         EXPECT_NEAR(o.force / (s * s), r.force, 0.01 * r.force) << o.caseId << " at " << o.reduction;
         // The model scales u by D0/10 and reads the reduction from the final height: it reads
         // the large specimen as it reads the base one.
-        const vision::ModelInputs in{o.uTrack, o.n, o.kMpa, o.d0, o.h0, o.h0 * (1 - o.reduction)};
-        const vision::ModelInputs in10{r.uTrack, r.n, r.kMpa, r.d0, r.h0, r.h0 * (1 - r.reduction)};
+        const friction::ModelInputs in{o.uTrack, o.n, o.kMpa, o.d0, o.h0, o.h0 * (1 - o.reduction)};
+        const friction::ModelInputs in10{r.uTrack, r.n, r.kMpa, r.d0, r.h0, r.h0 * (1 - r.reduction)};
         const auto e = model.estimate(in), e10 = model.estimate(in10);
         EXPECT_NEAR(e.mu, e10.mu, 0.02 * o.mu) << o.caseId << " at " << o.reduction;
-        EXPECT_EQ(e.range, uint32_t(vision::kModelInRange)) << o.caseId << " at " << o.reduction;
+        EXPECT_EQ(e.range, uint32_t(friction::kModelInRange)) << o.caseId << " at " << o.reduction;
         ++checked;
     }
     EXPECT_GE(checked, 7) << "the similar case (slopes scaled) should reach 30-60 %";

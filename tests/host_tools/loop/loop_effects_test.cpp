@@ -15,11 +15,11 @@
 
 #include <unistd.h>
 
+#include "friction/reduction_table.h"
 #include "host_tools/loop/loop_command.h"
 #include "host_tools/manifest.h"
 #include "host_tools/synth_loop_set.h"
 #include "tests/support/table_inputs.h"
-#include "vision/model/reduction_table.h"
 
 namespace fs = std::filesystem;
 using namespace icacam::host;
@@ -27,7 +27,7 @@ using namespace icacam::host::loop;
 
 namespace {
 
-const std::vector<std::string> kSweep = icacam::test::repositoryPaths(icacam::vision::reduction_table::kFeSources);
+const std::vector<std::string> kSweep = icacam::test::repositoryPaths(icacam::friction::reduction_table::kFeSources);
 
 struct SetRun {
     LoopSummary summary;

@@ -12,12 +12,12 @@
 
 #include <unistd.h>
 
+#include "friction/reduction_table.h"
 #include "host_tools/loop/loop_command.h"
 #include "host_tools/manifest.h"
 #include "host_tools/measure_command.h"
 #include "host_tools/synth_loop_set.h"
 #include "tests/support/table_inputs.h"
-#include "vision/model/reduction_table.h"
 
 namespace fs = std::filesystem;
 using namespace icacam::host;
@@ -26,7 +26,7 @@ using namespace icacam::host::loop;
 namespace {
 
 // The FE sweep(s) the product's table was generated from (its kFeSources).
-const std::vector<std::string> kSweep = icacam::test::repositoryPaths(icacam::vision::reduction_table::kFeSources);
+const std::vector<std::string> kSweep = icacam::test::repositoryPaths(icacam::friction::reduction_table::kFeSources);
 
 LoopSummary runSet(const std::string &name, LoopEffect effect, uint32_t seed)
 {

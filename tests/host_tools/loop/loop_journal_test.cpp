@@ -14,6 +14,8 @@
 #include <unistd.h>
 
 #include "firmware/device.h"
+#include "friction/paper_model.h"
+#include "friction/reduction_table.h"
 #include "hal/file/clocks.h"
 #include "hal/file/file_camera.h"
 #include "hal/file/file_led.h"
@@ -25,8 +27,6 @@
 #include "host_tools/synth_loop_set.h"
 #include "tests/support/recording_serial.h"
 #include "tests/support/table_inputs.h"
-#include "vision/model/paper_model.h"
-#include "vision/model/reduction_table.h"
 
 namespace fs = std::filesystem;
 using namespace icacam;
@@ -56,7 +56,7 @@ void joinJournal(const fs::path &dir, Manifest *joined, JournalJoin *info)
         << err;
 }
 
-const std::vector<std::string> kSweep = icacam::test::repositoryPaths(icacam::vision::reduction_table::kFeSources);
+const std::vector<std::string> kSweep = icacam::test::repositoryPaths(icacam::friction::reduction_table::kFeSources);
 
 struct NullDisplay final : hal::Display {
     hal::Error show(const hal::MonoBitmap &) override { return {}; }
@@ -84,7 +84,7 @@ int labSession(const fs::path &dir, LoopEffect effect, uint32_t seed, int count)
     NullDisplay display;
     test::RecordingSerial serial;
     hal::FolderStorage storage;
-    vision::PaperModel model;
+    friction::PaperModel model;
     EXPECT_TRUE(storage.open((dir / "journal").string()).ok());
     fw::Config cfg;
     cfg.n = 0.2;

@@ -13,11 +13,11 @@
 
 #include <unistd.h>
 
+#include "friction/paper_model.h"
+#include "friction/reduction_table.h"
 #include "host_tools/loop/loop_analysis.h"
 #include "host_tools/loop/loop_command.h"
 #include "tests/support/table_inputs.h"
-#include "vision/model/paper_model.h"
-#include "vision/model/reduction_table.h"
 
 namespace fs = std::filesystem;
 using namespace icacam::host::loop;
@@ -27,7 +27,7 @@ namespace {
 enum class Effect { Process, Optical, Null };
 
 // The FE sweep(s) the product's table was generated from (its kFeSources).
-const std::vector<std::string> kSweep = icacam::test::repositoryPaths(icacam::vision::reduction_table::kFeSources);
+const std::vector<std::string> kSweep = icacam::test::repositoryPaths(icacam::friction::reduction_table::kFeSources);
 
 // Writes a manifest of `count` radii-only records and returns its path.
 std::string makeSet(const std::string &name, Effect effect, int count, uint32_t seed)
@@ -43,7 +43,7 @@ std::string makeSet(const std::string &name, Effect effect, int count, uint32_t 
     std::uniform_real_distribution<double> un(0.1, 0.45), umu(0.08, 0.22), ured(0.46, 0.54), uspeed(1, 5),
         utemp(18, 28), uro(6.95, 7.55);
     std::normal_distribution<double> noise(0, 0.003);
-    icacam::vision::PaperModel paper;
+    icacam::friction::PaperModel paper;
     ReductionSlope slope;
     std::string err;
     if (!slope.load(kSweep, &err)) ADD_FAILURE() << err;
@@ -114,8 +114,8 @@ TEST(LoopSlope, CorrectionInvertsTheForwardEffect)
     ReductionSlope s;
     std::string err;
     ASSERT_TRUE(s.load(kSweep, &err)) << err;
-    icacam::vision::PaperModel paper;
-    icacam::vision::ModelInputs in;
+    icacam::friction::PaperModel paper;
+    icacam::friction::ModelInputs in;
     in.n = 0.2;
     const double u50 = uForMu(paper, 0.15, 0.2);
     in.uMm = u50 + s.slope(0.2, 0.15) * (0.53 - 0.5);

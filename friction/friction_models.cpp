@@ -1,11 +1,11 @@
-#include "vision/model/friction_models.h"
+#include "friction/friction_models.h"
 
-#include "vision/model/aspect_corrected_model.h"
-#include "vision/model/fe_model.h"
-#include "vision/model/paper_model.h"
-#include "vision/model/reduction_corrected_model.h"
+#include "friction/aspect_corrected_model.h"
+#include "friction/fe_model.h"
+#include "friction/paper_model.h"
+#include "friction/reduction_corrected_model.h"
 
-namespace icacam::vision {
+namespace icacam::friction {
 
 namespace {
 // The models hold no state: constant-initialised, so no start-up order and no guard.
@@ -26,4 +26,4 @@ const FrictionModel *frictionModel(std::string_view name)
     return nullptr;
 }
 
-} // namespace icacam::vision
+} // namespace icacam::friction

@@ -3,7 +3,7 @@
 //
 // The barrel silhouette R_max of an upset specimen is fixed by the height reduction r (volume
 // constancy) and, less, by the friction μ and the hardening n (barrelling). The FE snapshots
-// (vision/model/fe_model_table.h, every 5 % of reduction from 30 %) give R_max over (n, μ, r); R_max is the
+// (friction/fe_model_table.h, every 5 % of reduction from 30 %) give R_max over (n, μ, r); R_max is the
 // FE's best-resolved radius (it moves by < 0.015 mm between meshes, docs/fe.md). With μ from
 // the measured u, R_max checks the declared scale and reduction: a scale error of a few percent
 // moves R_max by as much, a reduction off by 0.01 moves it by ≈ 1 %. Without a declared final
@@ -17,7 +17,7 @@
 // Pure C++20: no heap, no OS calls, no exceptions.
 #include <cmath>
 
-namespace icacam::vision {
+namespace icacam::friction {
 
 // FE R_max at (n, μ, r) for D0 = 10 mm, read with the grid (grid.h): linear in r
 // (extrapolated up to one snapshot step past the last, nothing before the first), linear in
@@ -64,7 +64,7 @@ struct RadiiCheck {
 
 // reduction: the declared one, or 0.5 when none was declared (the model's assumption).
 // h0Mm: the specimen's initial height; at another slenderness than 1.5 the FE R_max is carried
-// by the FE ratio R_max(H0/D0)/R_max(1.5) (vision/model/aspect_table.h: up to 1.8 % smaller at
+// by the FE ratio R_max(H0/D0)/R_max(1.5) (friction/aspect_table.h: up to 1.8 % smaller at
 // H0/D0 1.0, within ±1 % at 2.0); 0: the paper's 1.5.
 // estimateReduction: also solve for reductionEst (a bisection: most of the cost); false where
 // only the FE R_max at the given reduction is wanted. measuredRelSigma: the silhouette's own
@@ -72,4 +72,4 @@ struct RadiiCheck {
 RadiiCheck checkRadii(double rMaxMm, double n, double mu, double d0Mm, double reduction, double h0Mm = 0,
                       bool estimateReduction = true, double measuredRelSigma = kMeasuredRMaxRelSigma);
 
-} // namespace icacam::vision
+} // namespace icacam::friction

@@ -1,4 +1,4 @@
-// The silhouette check against the FE (vision/model/radii_consistency.h, docs/loop.md): consistent
+// The silhouette check against the FE (friction/radii_consistency.h, docs/loop.md): consistent
 // records stay quiet, a scale error of 4 % fires, with and without a declared final
 // height, and the reduction R_max implies is recovered. On rendered images through the whole
 // pipeline as well as on the relation itself.
@@ -6,17 +6,17 @@
 
 #include <cmath>
 
+#include "friction/aspect_corrected_model.h"
+#include "friction/paper_model.h"
+#include "friction/radii_consistency.h"
+#include "friction/reduction_corrected_model.h"
 #include "host_tools/end_face_renderer.h"
 #include "host_tools/loop/loop_analysis.h"
 #include "vision/end_face_analyzer.h"
-#include "vision/model/aspect_corrected_model.h"
-#include "vision/model/paper_model.h"
-#include "vision/model/radii_consistency.h"
-#include "vision/model/reduction_corrected_model.h"
 
 using namespace icacam;
-using vision::checkRadii;
-using vision::feRMaxAt;
+using friction::checkRadii;
+using friction::feRMaxAt;
 
 TEST(RadiiConsistency, FeSilhouetteGrowsWithReductionAndFriction)
 {
@@ -30,7 +30,7 @@ TEST(RadiiConsistency, FeSilhouetteGrowsWithReductionAndFriction)
     EXPECT_GT(b, 7.07);
     EXPECT_LT(b, 7.07 * 1.05);
     // Past one snapshot step beyond the data: no answer rather than a guess.
-    EXPECT_FALSE(feRMaxAt(0.25, 0.15, vision::radiiReductionMax() + 0.01, &a));
+    EXPECT_FALSE(feRMaxAt(0.25, 0.15, friction::radiiReductionMax() + 0.01, &a));
 }
 
 TEST(RadiiConsistency, ConsistentQuietScaleErrorFiresReductionRecovered)
@@ -64,7 +64,7 @@ TEST(RadiiConsistency, OtherSlendernessCarriesTheSilhouette)
             for (double r : {0.45, 0.5, 0.55}) {
                 double fe;
                 ASSERT_TRUE(feRMaxAt(n, mu, r, &fe));
-                const double squat = fe * vision::AspectCorrectedModel::rMaxRatio(1.0, n, r, mu);
+                const double squat = fe * friction::AspectCorrectedModel::rMaxRatio(1.0, n, r, mu);
                 EXPECT_LT(squat, fe);
                 const auto own = checkRadii(squat, n, mu, 10, r, 10);
                 EXPECT_TRUE(own.valid);
@@ -90,8 +90,8 @@ struct Rendered {
 // ring's width from the paper's model carried by the FE slope, the silhouette from the FE.
 Rendered render(double n, double mu, double r)
 {
-    vision::PaperModel paper;
-    const double u = host::loop::uForMu(paper, mu, n) + vision::ReductionCorrectedModel::slopeAt(n, mu) * (r - 0.5);
+    friction::PaperModel paper;
+    const double u = host::loop::uForMu(paper, mu, n) + friction::ReductionCorrectedModel::slopeAt(n, mu) * (r - 0.5);
     Rendered out;
     out.scene = host::nominalScene(u);
     double fe = 0;
@@ -102,7 +102,7 @@ Rendered render(double n, double mu, double r)
 }
 
 vision::Measurement measure(const Rendered &x, double n, double mmPerPx, double hFinal,
-                            const vision::FrictionModel &model)
+                            const friction::FrictionModel &model)
 {
     static vision::EndFaceAnalyzer analyzer;
     analyzer.configure(x.img.cols, x.img.rows);
@@ -116,8 +116,8 @@ vision::Measurement measure(const Rendered &x, double n, double mmPerPx, double 
 
 TEST(RadiiConsistency, ThroughThePipelineOnRenderedImages)
 {
-    vision::PaperModel paper;
-    vision::ReductionCorrectedModel model(paper, "paper_reduction");
+    friction::PaperModel paper;
+    friction::ReductionCorrectedModel model(paper, "paper_reduction");
     const uint32_t kCheck = vision::kFlagScaleSuspect | vision::kFlagRadiiInconsistent;
     for (double r : {0.5, 0.515}) {
         const Rendered x = render(0.25, 0.15, r);
@@ -153,7 +153,8 @@ TEST(RadiiConsistency, ThroughThePipelineOnRenderedImages)
     // reaches the measurement (never a silent value).
     m = measure(far, 0.25, far.scene.mmPerPx, 15 * (1 - 0.545), model);
     ASSERT_TRUE(m.hasValue());
-    EXPECT_EQ((m.flags & vision::kFlagReductionOutside) != 0, 0.545 > vision::ReductionCorrectedModel::reductionMax());
+    EXPECT_EQ((m.flags & vision::kFlagReductionOutside) != 0,
+              0.545 > friction::ReductionCorrectedModel::reductionMax());
     EXPECT_FALSE(m.flags & vision::kFlagRadiiInconsistent) << "z " << m.rMaxZ;
     if (m.flags & vision::kFlagReductionOutside) { EXPECT_EQ(m.status, vision::Status::Warn); }
     const Rendered mid = render(0.25, 0.15, 0.515);

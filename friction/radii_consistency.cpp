@@ -1,14 +1,14 @@
-#include "vision/model/radii_consistency.h"
+#include "friction/radii_consistency.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 
-#include "vision/model/aspect_corrected_model.h"
-#include "vision/model/fe_model_table.h"
-#include "vision/model/grid.h"
+#include "friction/aspect_corrected_model.h"
+#include "friction/fe_model_table.h"
+#include "friction/grid.h"
 
-namespace icacam::vision {
+namespace icacam::friction {
 
 namespace t = fe_table; // the base's radii at every snapshot (K: the base's)
 
@@ -84,4 +84,4 @@ RadiiCheck checkRadii(double rMaxMm, double n, double mu, double d0Mm, double re
     return c;
 }
 
-} // namespace icacam::vision
+} // namespace icacam::friction

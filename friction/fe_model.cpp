@@ -1,12 +1,12 @@
-#include "vision/model/fe_model.h"
+#include "friction/fe_model.h"
 
 #include <array>
 #include <cmath>
 
-#include "vision/model/fe_model_table.h"
-#include "vision/model/grid.h"
+#include "friction/fe_model_table.h"
+#include "friction/grid.h"
 
-namespace icacam::vision {
+namespace icacam::friction {
 
 namespace t = fe_table;
 static_assert(t::kMuCount <= kMaxRowPoints, "a row of the table must fit the interpolation's buffer");
@@ -215,4 +215,4 @@ FeRadii FeModel::radii(double n, double mu, double d0Mm, double reduction, doubl
     return r;
 }
 
-} // namespace icacam::vision
+} // namespace icacam::friction

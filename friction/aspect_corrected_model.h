@@ -5,14 +5,14 @@
 // The ICA of a squat specimen is narrower, that of a slender one wider, at the same n, μ and
 // height reduction (FE: at μ 0.1, 50 %, H0/D0 1.0 gives 0.69 of the 10 x 15 mm specimen's
 // u). This decorator divides the measured u by the FE ratio u(H0/D0)/u(1.5) at (n, reduction,
-// μ) from the generated table (vision/model/aspect_table.h, `icacam fe tables`) and evaluates the
+// μ) from the generated table (friction/aspect_table.h, `icacam fe tables`) and evaluates the
 // base model as if the specimen were 1.5 slender at the same reduction; μ enters the ratio,
 // so it iterates. At H0/D0 = 1.5 it is the base model unchanged. Outside the simulated
 // slenderness it sets kModelAspectOutside (μ still computed with the nearest ratio).
 // Pure C++20: no heap, no OS calls, no exceptions.
-#include "vision/model/friction_model.h"
+#include "friction/friction_model.h"
 
-namespace icacam::vision {
+namespace icacam::friction {
 
 class AspectCorrectedModel final : public FrictionModel {
 public:
@@ -34,4 +34,4 @@ private:
     const FrictionModel &base_;
 };
 
-} // namespace icacam::vision
+} // namespace icacam::friction

@@ -1,8 +1,8 @@
-#include "vision/model/paper_model.h"
+#include "friction/paper_model.h"
 
 #include <cmath>
 
-namespace icacam::vision {
+namespace icacam::friction {
 
 namespace {
 double cubic(double x, double c3, double c2, double c1, double c0)
@@ -45,4 +45,4 @@ ModelEstimate PaperModel::estimate(const ModelInputs &in) const
     return e;
 }
 
-} // namespace icacam::vision
+} // namespace icacam::friction

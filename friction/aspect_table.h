@@ -4,10 +4,10 @@
 // 10 x 15 mm specimen's at the same n, μ and height reduction (D0 10 mm; CalculiX runs
 // data/fe/aspect_cax8r.csv data/fe/sweep_cax8r_tracked.csv,
 // mesh CAX8R h0.5 c0.1, u from the tracked contact edge; host_tools/fe/fe_aspect.cpp, docs/fe.md): a ratio of runs of one family, carried onto
-// the base's model (vision/model/aspect_corrected_model.h).
+// the base's model (friction/aspect_corrected_model.h).
 // Only where u(1.5) > 0.1 mm; points not simulated (kSimulated 0) copy the nearest simulated
 // point of the same slenderness (distance in n, reduction and μ over 0.45, 0.3 and 0.25).
-namespace icacam::vision::aspect_table {
+namespace icacam::friction::aspect_table {
 inline constexpr const char *kProvenance = "icacam fe tables --base data/fe/sweep_cax8r_c005_st1e5_tracked.csv --k-family data/fe/factorial_k_cax8r_tracked.csv --k-family data/fe/sweep_cax8r_tracked.csv --aspect data/fe/aspect_cax8r.csv --aspect data/fe/sweep_cax8r_tracked.csv";
 inline constexpr const char *kInputs = "data/fe/aspect_cax8r.csv data/fe/sweep_cax8r_tracked.csv";
 inline constexpr double kBaseAspect = 1.5;
@@ -448,4 +448,4 @@ inline constexpr double kRMaxRatio[kACount][kNCount][kRCount][kMuCount] = {
         },
     },
 };
-} // namespace icacam::vision::aspect_table
+} // namespace icacam::friction::aspect_table

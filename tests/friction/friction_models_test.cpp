@@ -1,12 +1,13 @@
-// The models by name (vision/model/friction_models.h): every listed name gives its model, the
+// The models by name (friction/friction_models.h): every listed name gives its model, the
 // same instance every time, and the default is the reduction-aware one.
 #include <gtest/gtest.h>
 
 #include <string>
 
-#include "vision/model/friction_models.h"
+#include "friction/friction_models.h"
 
-using namespace icacam::vision;
+using namespace icacam::friction;
+using namespace icacam::friction;
 
 TEST(FrictionModels, KnowsEveryListedNameAndReportsIt)
 {

@@ -1,7 +1,7 @@
 #pragma once
-#include "vision/model/friction_model.h"
+#include "friction/friction_model.h"
 
-namespace icacam::vision {
+namespace icacam::friction {
 
 // Duran & Karadogan (2016): μ = a_n u³ + b_n u² + c_n u + d_n (Eq. 2), each coefficient a
 // cubic in n (Eq. 3), with d_n's constant corrected to −0.00788 (PRODUCT.md §1: Table 1,
@@ -18,4 +18,4 @@ public:
     ModelEstimate estimate(const ModelInputs &in) const override;
 };
 
-} // namespace icacam::vision
+} // namespace icacam::friction

@@ -1,4 +1,4 @@
-// The reduction-aware model in the product (vision/model/reduction_corrected_model.h, docs/loop.md):
+// The reduction-aware model in the product (friction/reduction_corrected_model.h, docs/loop.md):
 // its generator reads the FE sweep by column name, its slope is the loop tool's, it carries a
 // forward reduction effect back, it is the base model at 50 %, and it flags reductions the FE
 // snapshots do not cover.
@@ -13,23 +13,23 @@
 
 #include <unistd.h>
 
+#include "friction/paper_model.h"
+#include "friction/reduction_corrected_model.h"
+#include "friction/reduction_table.h"
 #include "host_tools/loop/loop_analysis.h"
 #include "host_tools/loop/loop_command.h"
 #include "host_tools/loop/reduction_table.h"
-#include "vision/model/paper_model.h"
-#include "vision/model/reduction_corrected_model.h"
-#include "vision/model/reduction_table.h"
 
 using namespace icacam::host::loop;
-using icacam::vision::ModelInputs;
-using icacam::vision::PaperModel;
-using icacam::vision::ReductionCorrectedModel;
+using icacam::friction::ModelInputs;
+using icacam::friction::PaperModel;
+using icacam::friction::ReductionCorrectedModel;
 
 namespace {
 
 // The FE sweep(s) the committed table names as its sources, as the repository names them and
 // as files under the source tree.
-const std::vector<std::string> kNames = splitSources(icacam::vision::reduction_table::kFeSources);
+const std::vector<std::string> kNames = splitSources(icacam::friction::reduction_table::kFeSources);
 std::vector<std::string> files()
 {
     std::vector<std::string> v;
@@ -138,7 +138,7 @@ TEST(ReductionCorrectedModel, CarriesAForwardReductionEffectBack)
                 EXPECT_NEAR(e.mu, mu, 2e-4) << "n " << n << " mu " << mu << " r " << r;
                 const double naive = paper.estimate(inputs(u, n, 0)).mu;
                 EXPECT_EQ(naive > mu, r > 0.5);
-                EXPECT_EQ(e.range & icacam::vision::kModelReductionOutside, 0u);
+                EXPECT_EQ(e.range & icacam::friction::kModelReductionOutside, 0u);
                 // The carry's own uncertainty adds to the model's.
                 EXPECT_GT(e.modelSigma, paper.estimate(inputs(u50, n, 0)).modelSigma);
             }
@@ -161,7 +161,7 @@ TEST(ReductionCorrectedModel, FlagsReductionsTheFeSnapshotsDoNotCover)
     ASSERT_LT(lo, 0.5);
     ASSERT_GT(hi, 0.5);
     auto flagged = [&](double r) {
-        return (model.estimate(inputs(0.5, 0.25, 15 * (1 - r))).range & icacam::vision::kModelReductionOutside) != 0;
+        return (model.estimate(inputs(0.5, 0.25, 15 * (1 - r))).range & icacam::friction::kModelReductionOutside) != 0;
     };
     EXPECT_FALSE(flagged(0.5));
     EXPECT_FALSE(flagged(lo + 0.002));
@@ -170,6 +170,6 @@ TEST(ReductionCorrectedModel, FlagsReductionsTheFeSnapshotsDoNotCover)
     EXPECT_TRUE(flagged(hi + 0.01));
     EXPECT_TRUE(flagged(0.7));
     // Not an upset specimen at all: flagged, never a silent value.
-    EXPECT_TRUE(model.estimate(inputs(0.5, 0.25, 15)).range & icacam::vision::kModelReductionOutside);
-    EXPECT_TRUE(model.estimate(inputs(0.5, 0.25, 20)).range & icacam::vision::kModelReductionOutside);
+    EXPECT_TRUE(model.estimate(inputs(0.5, 0.25, 15)).range & icacam::friction::kModelReductionOutside);
+    EXPECT_TRUE(model.estimate(inputs(0.5, 0.25, 20)).range & icacam::friction::kModelReductionOutside);
 }

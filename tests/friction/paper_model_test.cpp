@@ -2,9 +2,10 @@
 // range flags.
 #include <gtest/gtest.h>
 
-#include "vision/model/paper_model.h"
+#include "friction/paper_model.h"
 
-using namespace icacam::vision;
+using namespace icacam::friction;
+using namespace icacam::friction;
 
 TEST(PaperModel, Eq3ReproducesTable1)
 {

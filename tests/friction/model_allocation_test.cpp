@@ -2,12 +2,13 @@
 // consistency check allocate nothing (operator new is counted).
 #include <gtest/gtest.h>
 
+#include "friction/fe_model.h"
+#include "friction/friction_models.h"
+#include "friction/radii_consistency.h"
 #include "tests/support/allocation_counter.h"
-#include "vision/model/fe_model.h"
-#include "vision/model/friction_models.h"
-#include "vision/model/radii_consistency.h"
 
-using namespace icacam::vision;
+using namespace icacam::friction;
+using namespace icacam::friction;
 
 TEST(ModelAllocation, NoneToChooseOrEvaluateAnyModel)
 {

@@ -1,10 +1,10 @@
 #pragma once
 // μ(u, n) and the radii R_i, R_o, R_max from our own CalculiX runs (docs/fe.md).
-// The table is generated: vision/model/fe_model_table.h, by `icacam fe tables` from one FE base.
+// The table is generated: friction/fe_model_table.h, by `icacam fe tables` from one FE base.
 // Pure C++20: no heap, no OS calls, no exceptions.
-#include "vision/model/friction_model.h"
+#include "friction/friction_model.h"
 
-namespace icacam::vision {
+namespace icacam::friction {
 
 struct FeRadii {
     double riMm = 0, roMm = 0, rMaxMm = 0;
@@ -34,4 +34,4 @@ public:
     FeRadii radii(double n, double mu, double d0Mm = 10, double reduction = 0, double kMpa = 0) const;
 };
 
-} // namespace icacam::vision
+} // namespace icacam::friction

@@ -1,5 +1,5 @@
-// The slenderness carry (vision/model/aspect_corrected_model.h) and its generated table
-// (vision/model/aspect_table.h) against the committed FE runs it names.
+// The slenderness carry (friction/aspect_corrected_model.h) and its generated table
+// (friction/aspect_table.h) against the committed FE runs it names.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,16 +7,16 @@
 #include <fstream>
 #include <sstream>
 
+#include "friction/aspect_corrected_model.h"
+#include "friction/aspect_table.h"
+#include "friction/fe_model.h"
+#include "friction/paper_model.h"
 #include "host_tools/fe/fe_aspect.h"
 #include "host_tools/fe/fe_rows.h"
 #include "tests/support/table_inputs.h"
-#include "vision/model/aspect_corrected_model.h"
-#include "vision/model/aspect_table.h"
-#include "vision/model/fe_model.h"
-#include "vision/model/paper_model.h"
 
 using namespace icacam;
-namespace t = icacam::vision::aspect_table;
+namespace t = icacam::friction::aspect_table;
 
 namespace {
 std::vector<std::string> tableInputs()
@@ -51,7 +51,7 @@ TEST(AspectTable, MatchesCommittedData)
         EXPECT_TRUE(t::kSimulated[ia][in_][ir][im]);
         EXPECT_NEAR(t::kURatio[ia][in_][ir][im], v, 2e-5) << "stale table: rerun icacam fe tables";
         // The lookup returns the simulated ratio at a simulated point.
-        EXPECT_NEAR(vision::AspectCorrectedModel::uRatio(a, n, r, mu), v, 2e-5);
+        EXPECT_NEAR(friction::AspectCorrectedModel::uRatio(a, n, r, mu), v, 2e-5);
     }
     int rMaxChecked = 0;
     for (const auto &[k, v] : ar.rMaxRatio) {
@@ -60,7 +60,7 @@ TEST(AspectTable, MatchesCommittedData)
                   ir = index(t::kR, t::kRCount, r), im = index(t::kMu, t::kMuCount, mu);
         if (ia < 0 || in_ < 0 || ir < 0 || im < 0) continue; // a reduction outside the u table's axis
         EXPECT_NEAR(t::kRMaxRatio[ia][in_][ir][im], v, 2e-5) << "stale table: rerun icacam fe tables";
-        EXPECT_NEAR(vision::AspectCorrectedModel::rMaxRatio(a, n, r, mu), v, 2e-5);
+        EXPECT_NEAR(friction::AspectCorrectedModel::rMaxRatio(a, n, r, mu), v, 2e-5);
         ++rMaxChecked;
     }
     EXPECT_GE(size_t(rMaxChecked), ar.ratio.size());
@@ -68,12 +68,12 @@ TEST(AspectTable, MatchesCommittedData)
 
 TEST(AspectCorrectedModel, IsTheBaseModelAtThePapersSlenderness)
 {
-    vision::PaperModel paper;
-    vision::AspectCorrectedModel model(paper);
+    friction::PaperModel paper;
+    friction::AspectCorrectedModel model(paper);
     for (double u : {0.2, 0.6, 1.0}) {
-        const vision::ModelInputs in{u, 0.25, 500, 10, 15};
+        const friction::ModelInputs in{u, 0.25, 500, 10, 15};
         EXPECT_EQ(model.estimate(in).mu, paper.estimate(in).mu);
-        const vision::ModelInputs big{2 * u, 0.25, 500, 20, 30};
+        const friction::ModelInputs big{2 * u, 0.25, 500, 20, 30};
         EXPECT_EQ(model.estimate(big).mu, paper.estimate(big).mu);
     }
 }
@@ -83,8 +83,8 @@ TEST(AspectCorrectedModel, CarriesTheSimulatedRunsBackToTheirMu)
     // A run at H0/D0 ≠ 1.5 at 50 %: its u, read through the carry and the FE model at 50 %,
     // gives the run's μ back (the ratio comes from the same runs, so this checks the lookup,
     // the fixed point and the composition, not the FE).
-    vision::FeModel fe;
-    vision::AspectCorrectedModel model(fe);
+    friction::FeModel fe;
+    friction::AspectCorrectedModel model(fe);
     const auto ar = host::fe::aspectRatios(tableInputs());
     int checked = 0;
     for (const auto &[k, ratio] : ar.ratio) {
@@ -92,13 +92,13 @@ TEST(AspectCorrectedModel, CarriesTheSimulatedRunsBackToTheirMu)
         if (std::fabs(r - 0.5) > 1e-9) continue;
         const double u15 = fe.uAt(n, mu);
         if (!(u15 > 0.1)) continue;
-        vision::ModelInputs in{u15 * ratio, n, 500, 10, 10 * a};
+        friction::ModelInputs in{u15 * ratio, n, 500, 10, 10 * a};
         const auto e = model.estimate(in);
         EXPECT_NEAR(e.mu, mu, 0.02 * mu) << "H0/D0 " << a << " n " << n << " mu " << mu;
-        EXPECT_FALSE(e.range & vision::kModelAspectOutside);
+        EXPECT_FALSE(e.range & friction::kModelAspectOutside);
         // Where the slenderness moves u by more than 10 %, the same u read without the carry
         // gives a clearly different μ (so this test can fail).
-        vision::ModelInputs plain = in;
+        friction::ModelInputs plain = in;
         plain.h0Mm = 15;
         if (std::fabs(ratio - 1) > 0.1) {
             EXPECT_GT(std::fabs(fe.estimate(plain).mu - mu), 0.02 * mu) << "H0/D0 " << a;
@@ -110,13 +110,13 @@ TEST(AspectCorrectedModel, CarriesTheSimulatedRunsBackToTheirMu)
 
 TEST(AspectCorrectedModel, FlagsSlendernessOutsideTheRuns)
 {
-    vision::PaperModel paper;
-    vision::AspectCorrectedModel model(paper);
-    const double lo = vision::AspectCorrectedModel::aspectMin(), hi = vision::AspectCorrectedModel::aspectMax();
-    EXPECT_FALSE(model.estimate({0.4, 0.25, 500, 10, 10 * lo}).range & vision::kModelAspectOutside);
-    EXPECT_FALSE(model.estimate({0.4, 0.25, 500, 10, 10 * hi}).range & vision::kModelAspectOutside);
-    EXPECT_TRUE(model.estimate({0.4, 0.25, 500, 10, 10 * lo - 1}).range & vision::kModelAspectOutside);
-    EXPECT_TRUE(model.estimate({0.4, 0.25, 500, 10, 10 * hi + 1}).range & vision::kModelAspectOutside);
+    friction::PaperModel paper;
+    friction::AspectCorrectedModel model(paper);
+    const double lo = friction::AspectCorrectedModel::aspectMin(), hi = friction::AspectCorrectedModel::aspectMax();
+    EXPECT_FALSE(model.estimate({0.4, 0.25, 500, 10, 10 * lo}).range & friction::kModelAspectOutside);
+    EXPECT_FALSE(model.estimate({0.4, 0.25, 500, 10, 10 * hi}).range & friction::kModelAspectOutside);
+    EXPECT_TRUE(model.estimate({0.4, 0.25, 500, 10, 10 * lo - 1}).range & friction::kModelAspectOutside);
+    EXPECT_TRUE(model.estimate({0.4, 0.25, 500, 10, 10 * hi + 1}).range & friction::kModelAspectOutside);
     // A squat specimen's narrower ring means more friction than the paper's model says.
     EXPECT_GT(model.estimate({0.3, 0.25, 500, 10, 10}).mu, paper.estimate({0.3, 0.25, 500, 10, 15}).mu);
 }

@@ -4,9 +4,9 @@
 #include <array>
 #include <string_view>
 
-#include "vision/model/friction_model.h"
+#include "friction/friction_model.h"
 
-namespace icacam::vision {
+namespace icacam::friction {
 
 // "paper" (Duran & Karadogan 2016, corrected: the published reference, valid at 50 %
 // reduction and H0/D0 1.5), "fe" (our CalculiX runs, docs/fe.md), and each of them carried
@@ -20,4 +20,4 @@ inline constexpr const char *kDefaultModel = "paper_reduction";
 // The model of that name, nullptr for an unknown name. The instance lives for the program.
 const FrictionModel *frictionModel(std::string_view name);
 
-} // namespace icacam::vision
+} // namespace icacam::friction

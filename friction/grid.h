@@ -16,7 +16,7 @@
 #include <cstddef>
 #include <limits>
 
-namespace icacam::vision {
+namespace icacam::friction {
 
 inline constexpr double kNoData = std::numeric_limits<double>::quiet_NaN();
 
@@ -123,4 +123,4 @@ constexpr double gridValue(const T *table, const std::array<GridAxis, D> &axes, 
     });
 }
 
-} // namespace icacam::vision
+} // namespace icacam::friction

@@ -1,12 +1,12 @@
-#include "vision/model/aspect_corrected_model.h"
+#include "friction/aspect_corrected_model.h"
 
 #include <array>
 #include <cmath>
 
-#include "vision/model/aspect_table.h"
-#include "vision/model/grid.h"
+#include "friction/aspect_table.h"
+#include "friction/grid.h"
 
-namespace icacam::vision {
+namespace icacam::friction {
 
 namespace t = aspect_table;
 
@@ -77,4 +77,4 @@ ModelEstimate AspectCorrectedModel::estimate(const ModelInputs &in) const
     return e;
 }
 
-} // namespace icacam::vision
+} // namespace icacam::friction

@@ -1,11 +1,11 @@
-#include "vision/model/reduction_corrected_model.h"
+#include "friction/reduction_corrected_model.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "vision/model/reduction_table.h"
+#include "friction/reduction_table.h"
 
-namespace icacam::vision {
+namespace icacam::friction {
 
 namespace t = reduction_table;
 
@@ -68,4 +68,4 @@ ModelEstimate ReductionCorrectedModel::estimate(const ModelInputs &in) const
     return e;
 }
 
-} // namespace icacam::vision
+} // namespace icacam::friction

@@ -3,7 +3,7 @@
 // one implementation; models generated from our own finite-element runs sit beside it.
 #include <cstdint>
 
-namespace icacam::vision {
+namespace icacam::friction {
 
 // Where an evaluation lies relative to what the model was built from.
 enum ModelRangeFlag : uint32_t {
@@ -47,4 +47,4 @@ public:
     virtual bool correctsReduction() const { return false; }
 };
 
-} // namespace icacam::vision
+} // namespace icacam::friction

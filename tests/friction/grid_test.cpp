@@ -1,4 +1,4 @@
-// The grid lookup every generated table is read with (vision/model/grid.h), against a
+// The grid lookup every generated table is read with (friction/grid.h), against a
 // brute-force reference written the other way round: one axis at a time, recursively, in long
 // double, with the axis searched by std::upper_bound. Random tables of 1 to 4 axes; exact at
 // grid points; the rules beyond the ends (hold, extend, nothing); holes.
@@ -10,9 +10,10 @@
 #include <random>
 #include <vector>
 
-#include "vision/model/grid.h"
+#include "friction/grid.h"
 
-using namespace icacam::vision;
+using namespace icacam::friction;
+using namespace icacam::friction;
 
 namespace {
 

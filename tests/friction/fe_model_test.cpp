@@ -1,4 +1,4 @@
-// The generated model (vision/model/fe_model_table.h) against the committed FE data
+// The generated model (friction/fe_model_table.h) against the committed FE data
 // (the base and K family it names): the table is current, and μ is reproduced within 1 % in range.
 #include <gtest/gtest.h>
 
@@ -9,13 +9,13 @@
 #include <sstream>
 #include <vector>
 
+#include "friction/fe_model.h"
+#include "friction/fe_model_table.h"
 #include "host_tools/fe/fe_rows.h"
 #include "tests/support/table_inputs.h"
-#include "vision/model/fe_model.h"
-#include "vision/model/fe_model_table.h"
 
 using namespace icacam;
-namespace t = icacam::vision::fe_table;
+namespace t = icacam::friction::fe_table;
 
 namespace {
 // The files the table names: its base, and the base with the K family (the carry's runs).
@@ -102,7 +102,7 @@ TEST(FeModel, ReadsUAtTheSpecimensK)
 {
     // At each factorial K, u at a simulated (n, μ) is the base's plus the carry, and μ read
     // back at that K is the simulated μ within 1 %; K not given is the base's K.
-    vision::FeModel model;
+    friction::FeModel model;
     int checked = 0, moved = 0;
     for (int q = 0; q < t::kKCount; ++q)
         for (int r = 0; r < t::kRCount; ++r)
@@ -113,13 +113,13 @@ TEST(FeModel, ReadsUAtTheSpecimensK)
                     EXPECT_NEAR(u, std::max(0.0, t::kU[r][i][j] + t::kDU[q][r][i][j]), 1e-12);
                     const auto rad = model.radii(t::kN[i], t::kMu[j], 10, t::kR[r], t::kK[q]);
                     EXPECT_NEAR(rad.roMm - rad.riMm, t::kU[r][i][j] + t::kDU[q][r][i][j], 1e-9);
-                    vision::ModelInputs in;
+                    friction::ModelInputs in;
                     in.n = t::kN[i];
                     in.uMm = u;
                     in.kMpa = t::kK[q];
                     in.hFinalMm = in.h0Mm * (1 - t::kR[r]);
                     const auto e = model.estimate(in);
-                    if (e.range != vision::kModelInRange) continue;
+                    if (e.range != friction::kModelInRange) continue;
                     EXPECT_NEAR(e.mu, t::kMu[j], 0.01 * t::kMu[j])
                         << "K " << t::kK[q] << " n " << t::kN[i] << " r " << t::kR[r] << " u " << u;
                     ++checked;
@@ -135,16 +135,16 @@ TEST(FeModel, ReadsUAtTheSpecimensK)
 TEST(FeModel, ReproducesFeDataWithinOnePercent)
 {
     ASSERT_TRUE(haveInputs()) << "the table's inputs are not in the tree: " << t::kProvenance;
-    vision::FeModel model;
+    friction::FeModel model;
     int checked = 0;
     for (int r = 0; r < t::kRCount; ++r)
         for (const auto &[key, u] : baseU(t::kR[r])) {
-            vision::ModelInputs in;
+            friction::ModelInputs in;
             in.n = key.first;
             in.uMm = u;
             in.hFinalMm = in.h0Mm * (1 - t::kR[r]);
             const auto e = model.estimate(in);
-            if (e.range != vision::kModelInRange) continue; // e.g. u = 0: no fold-over, μ unresolved
+            if (e.range != friction::kModelInRange) continue; // e.g. u = 0: no fold-over, μ unresolved
             EXPECT_NEAR(e.mu, key.second, 0.01 * key.second) << "n=" << key.first << " u=" << u << " r=" << t::kR[r];
             EXPECT_GT(e.dMuDu, 0);
             ++checked;
@@ -154,32 +154,32 @@ TEST(FeModel, ReproducesFeDataWithinOnePercent)
 
 TEST(FeModel, FlagsOutsideTheRange)
 {
-    vision::FeModel model;
-    vision::ModelInputs in;
+    friction::FeModel model;
+    friction::ModelInputs in;
     in.n = t::kN[0] - 0.02;
     in.uMm = 0.5;
-    EXPECT_TRUE(model.estimate(in).range & vision::kModelNBelow);
+    EXPECT_TRUE(model.estimate(in).range & friction::kModelNBelow);
     in.n = t::kN[t::kNCount - 1] + 0.05;
-    EXPECT_TRUE(model.estimate(in).range & vision::kModelNAbove);
+    EXPECT_TRUE(model.estimate(in).range & friction::kModelNAbove);
     in.n = t::kN[0];
     in.uMm = 5.0;
     EXPECT_NE(model.estimate(in).range, 0u);
     in.uMm = 0.5;
     in.kMpa = 5000;
-    EXPECT_TRUE(model.estimate(in).range & vision::kModelKOutside);
+    EXPECT_TRUE(model.estimate(in).range & friction::kModelKOutside);
     in.kMpa = 0;
     // Height reduction: inside the snapshots no flag, outside (or no upset at all) a flag.
     in.hFinalMm = 15 * (1 - 0.5 * (t::kR[0] + t::kR[t::kRCount - 1]));
-    EXPECT_FALSE(model.estimate(in).range & vision::kModelReductionOutside);
+    EXPECT_FALSE(model.estimate(in).range & friction::kModelReductionOutside);
     in.hFinalMm = 15 * (1 - t::kR[t::kRCount - 1] - 0.03);
-    EXPECT_TRUE(model.estimate(in).range & vision::kModelReductionOutside);
+    EXPECT_TRUE(model.estimate(in).range & friction::kModelReductionOutside);
     in.hFinalMm = 15 * (1 - t::kR[0] + 0.03);
-    EXPECT_TRUE(model.estimate(in).range & vision::kModelReductionOutside);
+    EXPECT_TRUE(model.estimate(in).range & friction::kModelReductionOutside);
     in.hFinalMm = 16;
-    EXPECT_TRUE(model.estimate(in).range & vision::kModelReductionOutside);
+    EXPECT_TRUE(model.estimate(in).range & friction::kModelReductionOutside);
     in.hFinalMm = 0;
     // Geometric similarity: u at D0 = 20 mm is twice u at 10 mm for the same μ.
-    vision::ModelInputs a, b;
+    friction::ModelInputs a, b;
     a.n = b.n = t::kN[0];
     a.uMm = 0.4;
     b.uMm = 0.8;

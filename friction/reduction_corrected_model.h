@@ -5,15 +5,15 @@
 // steeply with the reduction (3–6 mm per unit r near 50 %): a specimen pressed to 52 % shows
 // a wider ring that the base model reads as more friction. This decorator carries the
 // measured u back to 50 % with the FE slope du/dr(n, μ) from the generated table
-// (vision/model/reduction_table.h, `icacam fe tables`) and evaluates the base model there:
+// (friction/reduction_table.h, `icacam fe tables`) and evaluates the base model there:
 //   u50 = u − (D0/10)·du/dr(n, μ)·(r − 0.5),  μ = base(u50, n),  r = 1 − h_final/h0,
 // with du/dr taken at μ = base(u50, n) (fixed-point iteration). Without a declared final
 // height it is the base model unchanged. A reduction outside what the FE snapshots cover
 // sets kModelReductionOutside (μ is still computed, never silently).
 // Pure C++20: no heap, no OS calls, no exceptions.
-#include "vision/model/friction_model.h"
+#include "friction/friction_model.h"
 
-namespace icacam::vision {
+namespace icacam::friction {
 
 class ReductionCorrectedModel final : public FrictionModel {
 public:
@@ -38,4 +38,4 @@ private:
     const char *name_;
 };
 
-} // namespace icacam::vision
+} // namespace icacam::friction
