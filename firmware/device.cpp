@@ -8,12 +8,10 @@
 #include "firmware/scale_check.h"
 #include "firmware/screen.h"
 #include "friction/paper_model.h"
-#include "vision/reading_record.h"
+#include "reading/reading_record.h"
 #include "vision/reference_disc.h"
 
 namespace icacam::fw {
-
-using vision::Measurement;
 
 namespace {
 
@@ -28,7 +26,7 @@ void isoTime(int64_t wallMs, char (&b)[96])
 }
 
 // The reading's fields into a device JSON line (the one schema: vision/reading_record.h).
-class JsonRecordSink final : public vision::RecordSink {
+class JsonRecordSink final : public reading::RecordSink {
 public:
     explicit JsonRecordSink(JsonBuilder *j) : j_(j) {}
     void text(const char *name, std::string_view v) override { j_->str(name, v); }
@@ -65,20 +63,23 @@ const char *Device::stateName(State s)
 }
 
 Device::Device(DeviceHal hal, Config cfg, const friction::FrictionModel &model)
-        : hal_(hal), cfg_(std::move(cfg)), model_(model),
+        : hal_(hal), cfg_(std::move(cfg)),
           cameraHealth_(hal.camera, hal.clock,
                         {cfg_.cameraFormat == "rgb24" ? vision::PixelFormat::RGB24 : vision::PixelFormat::Grey8,
                          cfg_.cameraMaxWidth, cfg_.cameraMaxHeight},
                         cfg_.cameraRetryMs),
           journal_(hal.storage, cfg_.journalMemory), debouncer_(cfg_.debounceMs, cfg_.longPressMs), lines_(kMaxLine)
-{}
+{
+    instrument_.setModel(model);
+}
 
 hal::Error Device::start()
 {
     startMs_ = hal_.clock.monotonicMs();
     out_.reserve(8192);
     const auto fmt = cfg_.cameraFormat == "rgb24" ? vision::PixelFormat::RGB24 : vision::PixelFormat::Grey8;
-    if (analyzer_.configure(cfg_.cameraMaxWidth, cfg_.cameraMaxHeight) != vision::ErrorCode::None)
+    if (instrument_.configure(cfg_.cameraMaxWidth, cfg_.cameraMaxHeight, instrument_.model()) !=
+        vision::ErrorCode::None)
         return hal::Error::make(hal::Errc::Invalid, "vision: cannot size working memory");
     lumaScratchBytes_ = vision::lumaScratchBytes(fmt, cfg_.cameraMaxWidth, cfg_.cameraMaxHeight);
     if (lumaScratchBytes_ > 0) lumaScratch_ = std::make_unique<uint8_t[]>(lumaScratchBytes_);
@@ -88,6 +89,7 @@ hal::Error Device::start()
     // icacam-fw --check reports a bad calibration file first; a device started without
     // that check refuses it here.
     if (std::string e = loadDeviceCalibration(cfg_, &cal_); !e.empty()) return hal::Error::make(hal::Errc::Invalid, e);
+    useCalibration(cal_);
     discWork_ = std::make_unique<uint8_t[]>(vision::ReferenceDiscFinder::kWorkBytes);
     if (hal::Error e = hal_.led.set(false); !e.ok()) return e;
 
@@ -121,7 +123,7 @@ hal::Error Device::start()
     JsonBuilder j0(&out_);
     j0.str("type", "hello")
         .str("version", "0.1.0")
-        .str("model", model_.name())
+        .str("model", instrument_.model().name())
         .integer("records", rec.records)
         .integer("last_id", rec.lastId)
         .integer("recovered_cut_bytes", static_cast<long long>(rec.cutBytes))
@@ -257,7 +259,7 @@ void Device::handleCommand(const Command &c)
             .integer("uptime_ms", hal_.clock.monotonicMs() - startMs_)
             .integer("free_bytes", free.ok() ? (long long)free.value : -1)
             .boolean("led", hal_.led.isOn())
-            .str("model", model_.name());
+            .str("model", instrument_.model().name());
         appendCameraStatus(j);
         break;
     }
@@ -348,20 +350,16 @@ void Device::measure(const char *origin, const std::string &tag)
     const long id = lastId_ + 1;
     drawBusy(&screen_, id);
     showOrLog(screen_);
-    Measurement m;
+    reading::Reading m;
     std::string problem;
     hal::CapturedFrame frame;
     vision::LumaView luma;
     const bool captured = captureFrame(&frame, &luma, &problem);
     if (captured && problem.empty()) {
-        vision::SpecimenSpec spec = specimenSpec(cfg_);
-        if (cal_.present) {
-            // The interpreter puts the end face's plane at the reading's final height.
-            problem = frameSizeIssue(cal_, luma.width, luma.height);
-            plane_ = cal_.file.plane;
-            spec.calibration = &plane_;
-        }
-        if (problem.empty()) m = analyzer_.measure(luma, spec, model_);
+        if (std::string issue = instrument_.frameSizeIssue(luma.width, luma.height); !issue.empty())
+            problem = "calibration '" + cal_.name + "': " + issue;
+        else
+            m = instrument_.read(luma, specimenSpec(cfg_));
     }
 
     state_ = State::Report;
@@ -430,6 +428,11 @@ bool Device::captureFrame(hal::CapturedFrame *frame, vision::LumaView *luma, std
     return captured;
 }
 
+void Device::useCalibration(const DeviceCalibration &cal)
+{
+    instrument_.setCalibration(cal.present ? &cal.file.plane : nullptr, cal.file.imageWidth, cal.file.imageHeight);
+}
+
 std::string Device::setCalibrationFile(Config *trial)
 {
     if (trial->calibrationFile == "none") trial->calibrationFile.clear();
@@ -438,6 +441,7 @@ std::string Device::setCalibrationFile(Config *trial)
     DeviceCalibration d;
     if (std::string e = loadDeviceCalibration(*trial, &d); !e.empty()) return e;
     cal_ = d;
+    useCalibration(cal_);
     return "";
 }
 
@@ -497,16 +501,39 @@ void Device::scaleCheck(const Command &c)
     state_ = State::Idle;
 }
 
-vision::SpecimenSpec specimenSpec(const Config &c)
+reading::SpecimenSpec specimenSpec(const Config &c)
 {
-    vision::SpecimenSpec s;
-    s.n = c.n, s.kMpa = c.kMpa, s.d0Mm = c.d0Mm, s.h0Mm = c.h0Mm, s.mmPerPx = c.mmPerPx, s.hFinalMm = c.hFinalMm;
-    s.tolerances.n = c.nTol, s.tolerances.hFinalMm = c.hFinalTolMm, s.tolerances.scaleRel = c.mmPerPxTolRel;
-    s.tolerance.absMu = c.toleranceMu, s.tolerance.relMu = c.toleranceRel;
+    // The config's keys under their manifest names (Config's aliases), each value printed
+    // exactly (17 digits round-trip a double); the config checked their ranges already.
+    const std::pair<const char *, double> values[] = {
+        {"n", c.n},
+        {"mm_per_px", c.mmPerPx},
+        {"k_mpa", c.kMpa},
+        {"d0_mm", c.d0Mm},
+        {"h0_mm", c.h0Mm},
+        {"h_final_mm", c.hFinalMm},
+        {"mm_per_px_tol", c.mmPerPxTolRel},
+        {"h_final_tol_mm", c.hFinalTolMm},
+        {"n_tol", c.nTol},
+        {"tolerance_mu", c.toleranceMu},
+        {"tolerance_rel", c.toleranceRel},
+    };
+    char text[40];
+    auto lookup = [&values, &text](std::string_view key) -> const char * {
+        for (const auto &[name, value] : values)
+            if (key == name) {
+                std::snprintf(text, sizeof text, "%.17g", value);
+                return text;
+            }
+        return nullptr;
+    };
+    reading::SpecimenSpec s;
+    std::string why;
+    reading::specimenFromFields(lookup, false, &s, &why);
     return s;
 }
 
-void Device::buildRecord(long id, const char *origin, const std::string &tag, const Measurement &m,
+void Device::buildRecord(long id, const char *origin, const std::string &tag, const reading::Reading &m,
                          std::string_view problem, const hal::CapturedFrame *frame, std::string_view image, long ms)
 {
     out_.clear();
@@ -516,7 +543,7 @@ void Device::buildRecord(long id, const char *origin, const std::string &tag, co
     j.str("type", "result").integer("id", id);
     JsonRecordSink sink(&j);
     // A frame never measured (capture, LED or calibration problem) is a record without a reading.
-    vision::writeReading(problem.empty() ? &m : nullptr, problem, model_.name(), sink);
+    reading::writeReading(problem.empty() ? &m : nullptr, problem, instrument_.model().name(), sink);
     j.str("time", when);
     j.str("image", image).str("source", frame ? std::string_view(frame->source) : std::string_view());
     j.num("n", cfg_.n)

@@ -14,6 +14,7 @@
 #include "host_tools/loop/journal_records.h"
 #include "host_tools/loop/loop_physics_report.h"
 #include "host_tools/loop/loop_plot.h"
+#include "host_tools/loop/loop_records.h"
 #include "host_tools/loop/reduction_table.h"
 #include "host_tools/manifest.h"
 #include "host_tools/number_text.h"
@@ -30,6 +31,7 @@ namespace icacam::host {
 
 namespace fs = std::filesystem;
 using namespace icacam::friction;
+using namespace icacam::reading;
 using namespace icacam::vision;
 
 namespace {
@@ -100,109 +102,6 @@ std::string f4(double v, const char *fmt = "%.4f")
 namespace loop {
 
 namespace {
-
-// The loop measures an image record (a manifest's, a journal's saved frame) as `icacam
-// measure` does (host_tools/record_measurer.h: the row's declared inputs, tolerances and
-// calibration), and keeps the pipeline's diagnostics.
-bool measureImage(const ManifestRow &row, const Manifest &manifest, host::RecordMeasurer &measurer, LoopRecord *r,
-                  std::string *why)
-{
-    host::RecordReading reading;
-    measurer.measure(row, manifest, &reading);
-    if (!reading.measured) {
-        *why = reading.message;
-        return false;
-    }
-    const Measurement &m = reading.m;
-    if (!m.hasValue()) {
-        *why = errorMessage(m.error);
-        return false;
-    }
-    // u at the declared scale: the loop looks for what was not declared, so the reading's
-    // own silhouette correction (reading_interpreter.h) is taken back out.
-    const double k = m.scaleFactor;
-    r->uMm = m.uMm / k;
-    auto &d = r->diagnostics;
-    d["diag_u_mm"] = r->uMm;
-    d["diag_r_inner_mm"] = m.rInnerMm / k;
-    d["diag_r_outer_mm"] = m.rOuterMm / k;
-    if (m.rMaxMm > 0) d["diag_rmax_over_r0"] = m.rMaxMm / k / (0.5 * r->d0Mm);
-    if (m.reductionEst >= 0) d["diag_reduction_est"] = m.reductionEst; // from R_max and the FE
-    d["diag_inner_contrast"] = m.inner.contrast;
-    d["diag_outer_contrast"] = m.outer.contrast;
-    d["diag_inner_coverage"] = m.inner.coverage;
-    d["diag_outer_coverage"] = m.outer.coverage;
-    d["diag_inner_scatter_px"] = m.inner.scatterPx;
-    d["diag_outer_scatter_px"] = m.outer.scatterPx;
-    d["diag_inner_ellipticity"] = m.inner.ellipticity;
-    d["diag_outer_ellipticity"] = m.outer.ellipticity;
-    d["diag_outer_axis_deg"] = m.outer.axisDeg;
-    d["diag_centre_offset_px"] = m.centreOffsetPx;
-    d["diag_edge_width_px"] = m.edgeWidthPx;
-    d["diag_saturated_fraction"] = m.saturatedFraction;
-    d["diag_u_px"] = m.uPx;
-    d["diag_flag_count"] = double(__builtin_popcount(m.flags));
-    return true;
-}
-
-bool measureRecord(const ManifestRow &row, const Manifest &manifest, const FrictionModel &model,
-                   host::RecordMeasurer &measurer, LoopRecord *r, std::string *why)
-{
-    auto num = [&](const char *key, double fallback, double *out) {
-        if (!row.has(key) || row.get(key).empty()) {
-            *out = fallback;
-            return true;
-        }
-        if (parseNumber(row.get(key), out)) return true;
-        *why = std::string("bad number in ") + key;
-        return false;
-    };
-    double hFinal = 0;
-    if (!row.error.empty()) {
-        *why = row.error;
-        return false;
-    }
-    if (!num("n", -1, &r->n) || !num("k_mpa", 0, &r->kMpa) || !num("d0_mm", 10, &r->d0Mm) ||
-        !num("h0_mm", 15, &r->h0Mm) || !num("h_final_mm", 0, &hFinal) || !num("mu_ref", NAN, &r->muRef))
-        return false;
-    if (!(r->n > 0)) {
-        *why = "missing n";
-        return false;
-    }
-    if (!std::isfinite(r->muRef)) {
-        *why = "no mu_ref";
-        return false;
-    }
-    if (hFinal > 0 && r->h0Mm > 0) r->reduction = 1.0 - hFinal / r->h0Mm;
-    double ri = 0, ro = 0;
-    if (row.has("r_inner_mm") && row.has("r_outer_mm") && parseNumber(row.get("r_inner_mm"), &ri) &&
-        parseNumber(row.get("r_outer_mm"), &ro)) {
-        r->uMm = ro - ri;
-        r->diagnostics["diag_u_mm"] = r->uMm;
-        double rb;
-        if (row.has("r_bulge_mm") && parseNumber(row.get("r_bulge_mm"), &rb))
-            r->diagnostics["diag_rmax_over_r0"] = rb / (0.5 * r->d0Mm);
-    } else if (row.has("image")) {
-        if (!measureImage(row, manifest, measurer, r, why)) return false;
-    } else {
-        *why = "neither image nor r_inner_mm/r_outer_mm";
-        return false;
-    }
-    ModelInputs in;
-    in.uMm = r->uMm;
-    in.n = r->n;
-    in.kMpa = r->kMpa;
-    in.d0Mm = r->d0Mm;
-    in.h0Mm = r->h0Mm;
-    in.hFinalMm = hFinal; // a reduction-aware model (--model paper_reduction) uses it
-    const ModelEstimate est = model.estimate(in);
-    r->muModel = est.mu;
-    r->scaleSens = est.dMuDu * r->uMm;
-    r->uSens = est.dMuDu;
-    for (const std::string &c : manifest.columns) r->columns[c] = row.get(c);
-    r->usable = true;
-    return true;
-}
 
 void plotCandidate(const std::string &path, const Candidate &c, const std::vector<double> &res,
                    const RankedCandidate &rc)
@@ -275,7 +174,7 @@ LoopSummary runLoopOn(const Manifest &manifest, const std::string &source,
         LoopRecord r;
         r.id = row.get("id", "line" + std::to_string(row.line));
         std::string why;
-        if (measureRecord(row, manifest, *model, measurer, &r, &why))
+        if (readLoopRecord(row, manifest, measurer, &r, &why))
             usable.push_back(std::move(r));
         else
             skipped.push_back(r.id + ": " + why);

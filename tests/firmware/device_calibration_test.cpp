@@ -146,9 +146,9 @@ TEST(DeviceCalibration, MeasuresInTheEndFacePlaneAndJournalsWhichCalibration)
     const fw::FlatObject a = rig.serial.last("result");
     // No check flag; the status is the budget's (the paper's own 3 % error alone nears the tolerance).
     ASSERT_NE(text(a, "status"), "error") << rig.serial.out;
-    for (int bit = 0; bit < vision::kFlagCount; ++bit) {
-        if (vision::kBudgetFlags & (1u << bit)) continue;
-        EXPECT_EQ(text(a, "flags").find(vision::flagName(bit)), std::string::npos) << rig.serial.out;
+    for (int bit = 0; bit < reading::kFlagCount; ++bit) {
+        if (reading::kBudgetFlags & (1u << bit)) continue;
+        EXPECT_EQ(text(a, "flags").find(reading::flagName(bit)), std::string::npos) << rig.serial.out;
     }
     EXPECT_LE(std::fabs(number(a, "mu") - friction::PaperModel().estimate({s.rOuterEqMm() - s.rInnerEqMm(), n}).mu),
               2 * number(a, "mu_sigma"));
@@ -159,7 +159,8 @@ TEST(DeviceCalibration, MeasuresInTheEndFacePlaneAndJournalsWhichCalibration)
     rig.say("trigger");
     const fw::FlatObject b = rig.serial.last("result");
     EXPECT_EQ(text(b, "status"), "error");
-    EXPECT_EQ(text(b, "message"), "frame is 800x600 but calibration 'cam.cal' is for 1456x1088 images");
+    EXPECT_EQ(text(b, "message"),
+              "calibration 'cam.cal': frame is 800x600 but the calibration is for 1456x1088 images");
     // Both are in the journal with the calibration's name, and recovery can read them back.
     const std::string journal = rig.storage.read(fw::Journal::kFile).value;
     EXPECT_EQ(fw::Journal::checkLine(journal.substr(0, journal.find('\n'))), 1);

@@ -15,11 +15,12 @@
 #include "hal/file/file_led.h"
 #include "hal/file/file_trigger.h"
 #include "hal/file/folder_storage.h"
+#include "host_tools/loop/loop_records.h"
 #include "host_tools/manifest.h"
 #include "host_tools/record_measurer.h"
 #include "host_tools/result_writer.h"
+#include "reading/reading_record.h"
 #include "tests/support/recording_serial.h"
-#include "vision/reading_record.h"
 
 using namespace icacam;
 namespace fs = std::filesystem;
@@ -64,7 +65,7 @@ fw::FlatObject hostResult(const std::string &manifestText, const friction::Frict
     std::string err;
     EXPECT_TRUE(host::parseManifest(manifestText, &manifest, &err)) << err;
     manifest.baseDir = kSample;
-    host::RecordMeasurer measurer(model, vision::SpecimenSpec{});
+    host::RecordMeasurer measurer(model, reading::SpecimenSpec{});
     host::RecordReading reading;
     measurer.measure(manifest.rows.at(0), manifest, &reading);
     std::ostringstream out;
@@ -73,7 +74,7 @@ fw::FlatObject hostResult(const std::string &manifestText, const friction::Frict
     row.id = "x";
     row.model = model.name();
     if (reading.measured)
-        row.m = &reading.m;
+        row.m = &reading.reading;
     else
         row.message = reading.message;
     writer.write(row);
@@ -86,8 +87,8 @@ fw::FlatObject hostResult(const std::string &manifestText, const friction::Frict
 
 void expectSameReading(const fw::FlatObject &device, const fw::FlatObject &host)
 {
-    for (int i = 0; i < vision::readingFieldCount(); ++i) {
-        const char *name = vision::readingFieldName(i);
+    for (int i = 0; i < reading::readingFieldCount(); ++i) {
+        const char *name = reading::readingFieldName(i);
         const fw::JsonField *d = device.find(name), *h = host.find(name);
         ASSERT_TRUE(d) << "device record lacks " << name;
         ASSERT_TRUE(h) << "icacam measure record lacks " << name;
@@ -146,4 +147,41 @@ TEST(OneInstrument, TheDeviceRunsAnyModelByName)
     }
     fw::Config bad = cfg;
     EXPECT_NE(fw::setConfigKey(&bad, "reading.model", "cubic", false), "");
+}
+
+// `icacam loop` holds the same instrument: an image row becomes the face at the declared
+// scale and the model's estimate there, as `icacam measure` reads it; a radii row with that
+// face's radii gives the same estimate.
+TEST(OneInstrument, TheLoopReadsImageAndRadiiRowsThroughIt)
+{
+    const friction::FrictionModel *model = friction::frictionModel(friction::kDefaultModel);
+    auto manifestOf = [](const std::string &text) {
+        host::Manifest m;
+        std::string err;
+        EXPECT_TRUE(host::parseManifest(text, &m, &err)) << err;
+        m.baseDir = kSample;
+        return m;
+    };
+    const host::Manifest images =
+        manifestOf("id,image,n,k_mpa,mm_per_px,mu_ref\na,images/synth-0002.jpg,0.1742,647,0.0153924,0.16\n");
+    host::RecordMeasurer measurer(*model, reading::SpecimenSpec{});
+    host::loop::LoopRecord fromImage;
+    std::string why;
+    ASSERT_TRUE(host::loop::readLoopRecord(images.rows.at(0), images, measurer, &fromImage, &why)) << why;
+    host::RecordReading measured;
+    measurer.measure(images.rows.at(0), images, &measured);
+    ASSERT_TRUE(measured.reading.hasValue());
+    EXPECT_EQ(fromImage.uMm, measured.reading.face.uMm);
+    EXPECT_EQ(fromImage.muModel, measured.reading.declared.mu);
+    EXPECT_GT(fromImage.diagnostics.count("diag_reduction_est"), 0u) << "the image's diagnostics are kept";
+
+    char row[256];
+    std::snprintf(row, sizeof row, "id,r_inner_mm,r_outer_mm,n,k_mpa,mu_ref\nb,%.17g,%.17g,0.1742,647,0.16\n",
+                  measured.reading.face.rInnerMm, measured.reading.face.rOuterMm);
+    const host::Manifest radii = manifestOf(row);
+    host::loop::LoopRecord fromRadii;
+    ASSERT_TRUE(host::loop::readLoopRecord(radii.rows.at(0), radii, measurer, &fromRadii, &why)) << why;
+    EXPECT_NEAR(fromRadii.uMm, fromImage.uMm, 1e-12);
+    EXPECT_NEAR(fromRadii.muModel, fromImage.muModel, 1e-9);
+    EXPECT_EQ(fromRadii.diagnostics.count("diag_reduction_est"), 0u);
 }

@@ -1,8 +1,8 @@
 #pragma once
 // The second half of a measurement: the end face's geometry (boundaries and silhouette in
-// pixels, image-quality flags) and what the instrument was told (SpecimenSpec) → radii in
-// mm, u, μ, its uncertainty budget, status and flags. The device, `icacam measure` and
-// `icacam loop` all read through this one function (docs/uncertainty.md).
+// pixels, image-quality flags) and what the instrument was told (SpecimenSpec, a camera
+// calibration) → radii in mm, u, μ, its uncertainty budget, status and flags. The device,
+// `icacam measure` and `icacam loop` all read through `Instrument`, which calls this.
 //
 // The budget follows the GUM (JCGM 100): every component is a standard uncertainty of an
 // input carried into μ by the friction model's own sensitivity (central differences of the
@@ -31,26 +31,33 @@
 // the camera's closeness and distortion (the nominal height, u's scale as declared) is a
 // further explanation; and in every view, a silhouette taken on a wrong edge inside the
 // outline, which tells nothing (the priors kept). The silhouette's own error is the FE's and
-// the per-ray points' scatter about their fit. A calibrated scale is not checked by the silhouette (a camera
-// close enough to need a calibration sees the barrel's widest section partly hidden behind
-// the end face's rim).
+// the per-ray points' scatter about their fit. A calibrated scale is not checked by the
+// silhouette (a camera close enough to need a calibration sees the barrel's widest section
+// partly hidden behind the end face's rim).
 //
 // Status: ok when no check flags the reading and coverage·σ_μ ≤ the tolerance
 // (SpecimenSpec::tolerance); else warn, with the budget's leading component named by a flag
 // (edges_uncertain, scale_uncertain, reduction_uncertain, n_uncertain, model_uncertain).
-// Pure C++20: no heap, no OS calls, no exceptions.
+// Pure C++20: no heap, no OS calls, no exceptions. The steps are in interpretation_steps.h.
 #include "friction/friction_model.h"
-#include "vision/measurement.h"
-#include "vision/specimen_spec.h"
+#include "reading/reading.h"
+#include "reading/specimen_spec.h"
+#include "vision/end_face_geometry.h"
+#include "vision/plane_calibration.h"
 
-namespace icacam::vision {
+namespace icacam::reading {
 
-// Fills m's radii, u, μ, budget, status and flags from its geometry. m comes from
-// EndFaceAnalyzer::measureFace; one whose error is set stays an error.
-void interpretEndFace(const SpecimenSpec &spec, const friction::FrictionModel &model, Measurement *m);
+// A reading of a measured end face. calibration: the camera's, or nullptr (the spec's scale).
+// A geometry that carries an error gives a reading with that error.
+Reading interpret(const vision::EndFaceGeometry &geometry, const SpecimenSpec &spec,
+                  const vision::PlaneCalibration *calibration, const friction::FrictionModel &model);
+
+// A reading of radii measured elsewhere (a record set's r_inner_mm, r_outer_mm and, where
+// given, the silhouette): the same interpretation without the image's own checks.
+Reading interpret(const FaceInMm &face, const SpecimenSpec &spec, const friction::FrictionModel &model);
 
 // The silhouette's relative 1-σ error against the FE: the FE's and the measurement's, from
-// the per-ray fit's scatter (radii_consistency.h).
-double silhouetteRelSigma(const Measurement &m);
+// the per-ray fit's scatter (friction/radii_consistency.h).
+double silhouetteRelSigma(const vision::EndFaceGeometry &g);
 
-} // namespace icacam::vision
+} // namespace icacam::reading

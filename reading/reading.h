@@ -1,18 +1,21 @@
 #pragma once
-// What one measurement of an end face returns: boundaries, radii, u, μ ± σ, diagnostics,
-// and a status with named flags (PRODUCT.md §6).
+// A reading: the end face's geometry interpreted with what the instrument was told (the
+// specimen, the scale or calibration, the friction model): radii in mm, u, μ ± σ with its
+// budget, a status and named flags (PRODUCT.md §4 and §6).
 #include <cstdint>
 
+#include "vision/end_face_geometry.h"
 #include "vision/error.h"
-#include "vision/fixed_point.h"
 
-namespace icacam::vision {
+namespace icacam::reading {
+
+using vision::ErrorCode;
 
 enum class Status : uint8_t { Ok, Warn, Error };
 const char *statusName(Status s);
 
 // Conditions a value was produced under that lie outside the model or the checks.
-enum MeasureFlag : uint32_t {
+enum ReadingFlag : uint32_t {
     kFlagNOutOfRange = 1u << 0,
     kFlagKOutOfRange = 1u << 1,
     kFlagMuBelowRange = 1u << 2,
@@ -47,40 +50,9 @@ constexpr uint32_t kBudgetFlags =
     kFlagEdgesUncertain | kFlagScaleUncertain | kFlagReductionUncertain | kFlagNUncertain | kFlagModelUncertain;
 const char *flagName(int bit);
 
-// One located edge point on a ray, in pixel coordinates (Q16.16).
-struct EdgeSample {
-    Q16_16 x, y;
-    Q16_16 radius;    // from the pipeline's centre
-    int32_t strength; // |derivative| in 1/256 grey levels per px (scaled)
-    bool valid;
-};
-
-// A fitted closed boundary: r(θ) about the centre, a truncated Fourier series.
-struct BoundaryFit {
-    static constexpr int kMaxHarmonics = 8;
-    int harmonics = 0;
-    double a0 = 0;
-    double a[kMaxHarmonics + 1] = {};
-    double b[kMaxHarmonics + 1] = {};
-    double rEqPx = 0;      // sqrt(area / π) of the closed curve
-    double rEqSigmaPx = 0; // standard error of rEq from the residual scatter
-    double scatterPx = 0;  // robust RMS of the edge points about the curve
-    double coverage = 0;   // fraction of rays with an accepted edge point
-    double contrast = 0;   // median step height across the edge, grey levels (signed)
-    // 1 - b/a of the curve's second harmonic and the long axis's direction, in the image;
-    // with a calibration the analyzer replaces both by the end-face plane's (PlaneOutline).
-    double ellipticity = 0;
-    double axisDeg = 0;
-    double centreX = 0, centreY = 0; // centre of the curve (first harmonic), pixels
-    int used = 0;                    // edge points kept by the robust fit
-
-    double radiusAt(double theta) const;
-    double radiusAt(double cosTheta, double sinTheta) const; // same, trig precomputed
-};
-
 // Standard uncertainties of μ, one per source (GUM, JCGM 100), each from the model's own
 // sensitivities (finite differences of the friction model). muSigma combines them with the
-// scale–reduction correlation the silhouette leaves (see reading_interpreter.h).
+// scale–reduction correlation the silhouette leaves (see interpretation.h).
 struct UncertaintyBudget {
     double edges = 0;     // boundary scatter and the edge model (u's uncertainty)
     double scale = 0;     // mm_per_px's tolerance, or the calibration and the plane's height
@@ -89,43 +61,60 @@ struct UncertaintyBudget {
     double model = 0;     // the 50 % model's own fit error
 };
 
-struct Measurement {
+// A boundary's shape as the checks judge it: in the image, or with a calibration in the
+// end-face plane (the camera's view taken out).
+struct BoundaryShape {
+    double ellipticity = 0; // 1 - b/a
+    double axisDeg = 0;     // the long axis's direction
+};
+
+// The end face in millimetres at the declared scale (or through the calibration), before
+// the silhouette's correction of the scale: what the instrument was told, applied.
+struct FaceInMm {
+    double rInnerMm = 0, rOuterMm = 0;
+    double rMaxMm = 0; // the silhouette (0: none)
+    double uMm = 0;
+};
+
+// μ from the face as declared: the model at the declared u and final height, before the
+// silhouette's correction (the loop's residual is taken against this).
+struct DeclaredEstimate {
+    double mu = 0;
+    double dMuDu = 0; // per mm
+};
+
+struct Reading {
     Status status = Status::Error;
     ErrorCode error = ErrorCode::NotConfigured;
     uint32_t flags = 0;
 
-    double centreX = 0, centreY = 0; // pipeline centre (pixels)
-    BoundaryFit inner, outer;
-    double rMaxPx = 0;      // barrel silhouette radius (equivalent circle); 0 if not found
-    double edgeWidthPx = 0; // blur of the contact edge (Gaussian σ estimate)
-    double saturatedFraction = 0;
+    bool imaged = true;               // read from an image (false: from radii)
+    vision::EndFaceGeometry geometry; // as the image showed it, in pixels (none for radii)
+    FaceInMm face;                    // at the declared scale
+    double scaleFactor = 1;           // the silhouette's correction of the declared scale
+    BoundaryShape innerShape, outerShape;
 
-    double rInnerMm = 0, rOuterMm = 0, rMaxMm = 0;
-    double uPx = 0, uMm = 0, uSigmaMm = 0;
+    double uPx = 0;
+    double uMm = 0;      // the ring the model read: face.uMm corrected by the scale factor
+    double uSigmaMm = 0; // u's scatter (the fits and the location floor), at the declared scale
     double mu = 0, muSigma = 0;
-    double centreOffsetPx = 0; // between the boundaries' centres (in the plane, with a calibration)
-    // The silhouette against the FE (radii_consistency.h): (R_max − FE R_max)/σ at the
-    // declared final height (or 50 % when none), and the reduction R_max implies (-1: none).
-    double rMaxZ = 0;
-    double reductionEst = -1;
-    // The silhouette's per-ray fit: coverage and the points' robust RMS about it (0 when only
-    // the mean profile named it).
-    double silhouetteCoverage = 0;
-    double silhouetteScatterPx = 0;
-
-    // The interpretation (reading_interpreter.h): what the reading used and its budget.
     UncertaintyBudget budget;
     double reduction = 0.5;    // height reduction u was read at (declared, inferred or nominal)
     double reductionSigma = 0; // its standard uncertainty
-    double scaleFactor = 1;    // correction the silhouette applied to the declared scale
     double toleranceMu = 0;    // the lab's tolerance for this reading (status ok: 2σ within it)
+    DeclaredEstimate declared;
 
-    // Edge points of each boundary (one per ray, valid or not) for overlays and tests.
-    const EdgeSample *innerPoints = nullptr;
-    const EdgeSample *outerPoints = nullptr;
-    int rayCount = 0;
+    double centreOffsetPx = 0; // between the boundaries' centres (in the plane, with a calibration)
+    // The silhouette against the FE (friction/radii_consistency.h): (R_max − FE R_max)/σ at
+    // the declared final height (or 50 % when none), and the reduction R_max implies (-1: none).
+    double rMaxZ = 0;
+    double reductionEst = -1;
 
+    // The radii as read (the silhouette's scale correction applied).
+    double rInnerMm() const { return face.rInnerMm * scaleFactor; }
+    double rOuterMm() const { return face.rOuterMm * scaleFactor; }
+    double rMaxMm() const { return face.rMaxMm * scaleFactor; }
     bool hasValue() const { return status != Status::Error; }
 };
 
-} // namespace icacam::vision
+} // namespace icacam::reading

@@ -2,9 +2,10 @@
 // What the instrument is told about one specimen (manifest row or device config), with the
 // tolerance of each declared value and the lab's tolerance on μ. The defaults are the
 // instrument's stated assumptions: a reading's budget carries them (docs/uncertainty.md).
-#include "vision/plane_calibration.h"
+#include <string>
+#include <string_view>
 
-namespace icacam::vision {
+namespace icacam::reading {
 
 // Standard uncertainties (1 σ) of the declared inputs, where the user gives none.
 struct DeclaredTolerances {
@@ -37,12 +38,41 @@ struct SpecimenSpec {
     double h0Mm = 15;    // initial height
     double mmPerPx = 0;  // scale in the plane of the end face (with a calibration: 0, or a search hint)
     double hFinalMm = 0; // final height when recorded (0: not declared)
-    // Camera calibration (docs/calibration.md): when given, each boundary is mapped into the
-    // end-face plane at the specimen's final height (declared, else the reading's reduction),
-    // and mmPerPx only sizes the search. Its heightMm is ignored: the interpreter sets it.
-    const PlaneCalibration *calibration = nullptr;
     DeclaredTolerances tolerances = {};
     ReadingTolerance tolerance = {};
 };
 
-} // namespace icacam::vision
+// Builds a spec from key/value pairs: a manifest row's columns and the device's config keys
+// alike (n, k_mpa, d0_mm, h0_mm, h_final_mm, mm_per_px and the tolerances mm_per_px_tol,
+// h_final_tol_mm, n_tol, tolerance_mu, tolerance_rel). lookup(key) gives the text of a key, or
+// nullptr where it is absent; an empty text counts as absent. Fields absent keep spec's values.
+// n is required, mm_per_px where needsScale. False with *why set on a missing, malformed or
+// unphysical value.
+template <class Lookup> bool specimenFromFields(Lookup &&lookup, bool needsScale, SpecimenSpec *spec, std::string *why);
+
+// One field: its text parsed into spec (the shared part of specimenFromFields). False with
+// *why set when the text is not a number or is out of the field's range; unknown keys: false,
+// why empty.
+bool setSpecimenField(std::string_view key, std::string_view text, SpecimenSpec *spec, std::string *why);
+// What specimenFromFields checks once every field is read.
+bool checkSpecimen(const SpecimenSpec &spec, bool needsScale, std::string *why);
+// The keys specimenFromFields reads, in its order (nullptr-terminated).
+extern const char *const kSpecimenKeys[];
+
+template <class Lookup> bool specimenFromFields(Lookup &&lookup, bool needsScale, SpecimenSpec *spec, std::string *why)
+{
+    for (const char *const *key = kSpecimenKeys; *key; ++key) {
+        const char *text = lookup(std::string_view(*key));
+        if (!text || !*text) {
+            if (std::string_view(*key) == "n" || (needsScale && std::string_view(*key) == "mm_per_px")) {
+                *why = std::string("missing ") + *key;
+                return false;
+            }
+            continue;
+        }
+        if (!setSpecimenField(*key, text, spec, why)) return false;
+    }
+    return checkSpecimen(*spec, needsScale, why);
+}
+
+} // namespace icacam::reading

@@ -8,9 +8,9 @@
 #include <cstdint>
 #include <string_view>
 
-#include "vision/measurement.h"
+#include "reading/reading.h"
 
-namespace icacam::vision {
+namespace icacam::reading {
 
 class RecordSink {
 public:
@@ -26,7 +26,7 @@ protected:
 // The reading's fields (everything after the record's id). m == nullptr: the record never
 // reached the pipeline (bad row, missing file); message says why. For a measurement
 // message may be empty: the record then says what the status means (readingMessage).
-void writeReading(const Measurement *m, std::string_view message, std::string_view model, RecordSink &sink);
+void writeReading(const Reading *m, std::string_view message, std::string_view model, RecordSink &sink);
 
 // The fields writeReading emits, in order (a CSV header is "id" and these).
 int readingFieldCount();
@@ -36,6 +36,6 @@ const char *readingFieldName(int i);
 void flagList(uint32_t flags, char *buf, size_t size);
 // What a reading's status means in words: the error, or the flags with the leading
 // budget component's remedy ("declare h_final_mm", …); "" for ok.
-void readingMessage(const Measurement &m, char *buf, size_t size);
+void readingMessage(const Reading &m, char *buf, size_t size);
 
-} // namespace icacam::vision
+} // namespace icacam::reading

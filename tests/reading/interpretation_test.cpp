@@ -6,24 +6,25 @@
 
 #include "friction/friction_models.h"
 #include "friction/radii_consistency.h"
-#include "vision/reading_interpreter.h"
+#include "reading/interpretation.h"
 
-namespace icacam::vision {
+namespace icacam::reading {
 using namespace icacam::friction;
+using vision::BoundaryFit;
+using vision::EndFaceGeometry;
 namespace {
 
 constexpr double kN = 0.25, kMu = 0.15, kMmPerPx = 0.02;
 
 // A face at 50 % reduction as the pipeline would hand it over, the silhouette scaled by
 // rMaxFactor; an oblique view gives both boundaries the same ellipse.
-Measurement face(double rMaxFactor, bool oblique, double n = kN, double mu = kMu)
+EndFaceGeometry face(double rMaxFactor, bool oblique, double n = kN, double mu = kMu)
 {
     double ri = 0, ro = 0, rm = 0;
     EXPECT_TRUE(feRadiusAt(FeRadius::Inner, n, mu, 0.5, &ri));
     EXPECT_TRUE(feRadiusAt(FeRadius::Outer, n, mu, 0.5, &ro));
     EXPECT_TRUE(feRadiusAt(FeRadius::Max, n, mu, 0.5, &rm));
-    Measurement m;
-    m.status = Status::Error; // as measureFace leaves a found face
+    EndFaceGeometry m;
     m.error = ErrorCode::None;
     for (BoundaryFit *b : {&m.inner, &m.outer}) {
         b->coverage = 1;
@@ -41,18 +42,17 @@ Measurement face(double rMaxFactor, bool oblique, double n = kN, double mu = kMu
     return m;
 }
 
-Measurement interpret(Measurement m, double n = kN)
+Reading interpret(const EndFaceGeometry &g, double n = kN)
 {
     SpecimenSpec spec;
     spec.n = n;
     spec.mmPerPx = kMmPerPx;
-    interpretEndFace(spec, *frictionModel(kDefaultModel), &m);
-    return m;
+    return reading::interpret(g, spec, nullptr, *frictionModel(kDefaultModel));
 }
 
-TEST(ReadingInterpreter, SilhouetteAtItsSizeKeepsTheNominalHalfHeight)
+TEST(Interpretation, SilhouetteAtItsSizeKeepsTheNominalHalfHeight)
 {
-    const Measurement m = interpret(face(1.0, false));
+    const Reading m = interpret(face(1.0, false));
     ASSERT_NE(m.status, Status::Error);
     EXPECT_NEAR(m.reduction, 0.5, 0.003);
     EXPECT_LT(m.reductionSigma, 0.01);
@@ -62,10 +62,10 @@ TEST(ReadingInterpreter, SilhouetteAtItsSizeKeepsTheNominalHalfHeight)
 // small against the end face's scale: the reading keeps the nominal height rather than
 // carrying u to a reduction the view alone explains. Seen straight on, the same silhouette
 // means another height (or scale) and moves the reduction.
-TEST(ReadingInterpreter, SmallSilhouetteInAnObliqueViewIsForeshortening)
+TEST(Interpretation, SmallSilhouetteInAnObliqueViewIsForeshortening)
 {
-    const Measurement straight = interpret(face(0.95, false));
-    const Measurement oblique = interpret(face(0.95, true));
+    const Reading straight = interpret(face(0.95, false));
+    const Reading oblique = interpret(face(0.95, true));
     ASSERT_TRUE(oblique.flags & kFlagElliptical);
     ASSERT_FALSE(straight.flags & kFlagElliptical);
     EXPECT_GT(std::fabs(straight.reduction - 0.5), 0.01);
@@ -80,12 +80,12 @@ TEST(ReadingInterpreter, SmallSilhouetteInAnObliqueViewIsForeshortening)
 // on some rays, their points scatter about the fit by a few per cent and the radius may read
 // short by as much: such a silhouette tells the reduction less, and contradicts no scale.
 // The same radius from rays that agree to 0.1 % is a contradiction.
-TEST(ReadingInterpreter, ASilhouetteIsTrustedAsFarAsItsRaysAgree)
+TEST(Interpretation, ASilhouetteIsTrustedAsFarAsItsRaysAgree)
 {
-    Measurement tight = face(0.975, false), scattered = face(0.975, false);
+    EndFaceGeometry tight = face(0.975, false), scattered = face(0.975, false);
     tight.silhouetteScatterPx = 0.001 * tight.rMaxPx;
     scattered.silhouetteScatterPx = 0.02 * scattered.rMaxPx;
-    const Measurement t = interpret(tight), s = interpret(scattered);
+    const Reading t = interpret(tight), s = interpret(scattered);
     ASSERT_NE(t.status, Status::Error);
     ASSERT_NE(s.status, Status::Error);
     EXPECT_LT(t.reductionSigma, s.reductionSigma);
@@ -100,13 +100,13 @@ TEST(ReadingInterpreter, ASilhouetteIsTrustedAsFarAsItsRaysAgree)
 // 19 % beyond R_o) it reads 15 % short; taken for a scale error alone it would rescale u by
 // as much, with a σ from the scale's prior that does not reach the truth. The wrong-edge
 // explanation keeps the reading's σ over what the right silhouette reads.
-TEST(ReadingInterpreter, ASilhouetteOnAWrongEdgeDoesNotRescaleTheRingUnseen)
+TEST(Interpretation, ASilhouetteOnAWrongEdgeDoesNotRescaleTheRingUnseen)
 {
     constexpr double n = 0.1, mu = 0.25;
-    Measurement right = face(1.0, false, n, mu), wrong = face(1.0, false, n, mu);
+    EndFaceGeometry right = face(1.0, false, n, mu), wrong = face(1.0, false, n, mu);
     wrong.rMaxPx = 1.03 * wrong.outer.rEqPx;
-    for (Measurement *m : {&right, &wrong}) m->silhouetteScatterPx = 0.002 * m->rMaxPx;
-    const Measurement r = interpret(right, n), w = interpret(wrong, n);
+    for (EndFaceGeometry *m : {&right, &wrong}) m->silhouetteScatterPx = 0.002 * m->rMaxPx;
+    const Reading r = interpret(right, n), w = interpret(wrong, n);
     ASSERT_NE(w.status, Status::Error);
     ASSERT_FALSE(r.flags & kFlagScaleSuspect);
     EXPECT_EQ(w.status, Status::Warn);
@@ -115,4 +115,4 @@ TEST(ReadingInterpreter, ASilhouetteOnAWrongEdgeDoesNotRescaleTheRingUnseen)
 }
 
 } // namespace
-} // namespace icacam::vision
+} // namespace icacam::reading
