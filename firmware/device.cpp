@@ -5,6 +5,7 @@
 #include <ctime>
 
 #include "firmware/capture_fields.h"
+#include "firmware/frame_luma.h"
 #include "firmware/scale_check.h"
 #include "firmware/screen.h"
 #include "friction/paper_model.h"
@@ -67,7 +68,7 @@ const char *Device::stateName(State s)
 Device::Device(DeviceHal hal, Config cfg, const friction::FrictionModel &model)
         : hal_(hal), cfg_(std::move(cfg)), model_(model),
           cameraHealth_(hal.camera, hal.clock,
-                        {cfg_.cameraFormat == "rgb24" ? vision::PixelFormat::RGB24 : vision::PixelFormat::Grey8,
+                        {cfg_.cameraFormat == "rgb24" ? hal::PixelFormat::RGB24 : hal::PixelFormat::Grey8,
                          cfg_.cameraMaxWidth, cfg_.cameraMaxHeight},
                         cfg_.cameraRetryMs),
           journal_(hal.storage, cfg_.journalMemory), debouncer_(cfg_.debounceMs, cfg_.longPressMs), lines_(kMaxLine)
@@ -424,7 +425,7 @@ bool Device::captureFrame(hal::CapturedFrame *frame, vision::LumaView *luma, std
 
     state_ = State::Measure;
     if (captured) {
-        const vision::ErrorCode le = vision::lumaOf(frame->view, lumaScratch_.get(), lumaScratchBytes_, luma);
+        const vision::ErrorCode le = frameLuma(frame->view, lumaScratch_.get(), lumaScratchBytes_, luma);
         if (le != vision::ErrorCode::None) *problem = std::string("frame: ") + vision::errorMessage(le);
     }
     return captured;
