@@ -91,7 +91,7 @@ CommandParse parseCommand(std::string_view line)
         const JsonField *cmd = obj.find("cmd");
         if (!cmd || cmd->type != JsonField::Type::String) return fail("malformed", "missing \"cmd\" string");
         if (const JsonField *id = obj.find("id"))
-            p.cmd.tag = id->type == JsonField::Type::String ? id->text.substr(0, 64) : id->text.substr(0, 64);
+            p.cmd.tag = id->text.substr(0, 64); // a string's text or a number's literal
         if (!kindOf(cmd->text, &p.cmd.kind))
             return fail("unknown_command", "unknown command '" + printable(cmd->text) + "' (try help)");
         if (const JsonField *k = obj.find("key")) {
