@@ -5,6 +5,7 @@
 #include <ctime>
 
 #include "firmware/capture_fields.h"
+#include "firmware/frame_luma.h"
 #include "firmware/scale_check.h"
 #include "firmware/screen.h"
 #include "friction/paper_model.h"
@@ -65,7 +66,7 @@ const char *Device::stateName(State s)
 Device::Device(DeviceHal hal, Config cfg, const friction::FrictionModel &model)
         : hal_(hal), cfg_(std::move(cfg)),
           cameraHealth_(hal.camera, hal.clock,
-                        {cfg_.cameraFormat == "rgb24" ? vision::PixelFormat::RGB24 : vision::PixelFormat::Grey8,
+                        {cfg_.cameraFormat == "rgb24" ? hal::PixelFormat::RGB24 : hal::PixelFormat::Grey8,
                          cfg_.cameraMaxWidth, cfg_.cameraMaxHeight},
                         cfg_.cameraRetryMs),
           journal_(hal.storage, cfg_.journalMemory), debouncer_(cfg_.debounceMs, cfg_.longPressMs), lines_(kMaxLine)
@@ -294,46 +295,10 @@ void Device::handleCommand(const Command &c)
         }
         break;
     }
-    case CommandKind::Set: {
-        Config trial = cfg_;
-        std::string err = setConfigKey(&trial, c.key, c.value, true);
-        if (err.empty()) err = specimenIssue(trial);
-        if (err.empty() && liveKeyName(c.key) == "calibration_file") err = setCalibrationFile(&trial);
-        if (!err.empty()) {
-            sendError("bad_argument", err, c.tag);
-            return;
-        }
-        cfg_ = trial;
-        persistSettings();
-        std::string v;
-        bool num = false;
-        getConfigKey(cfg_, c.key, &v, &num);
-        j.str("type", "settings");
-        num ? j.raw(c.key, v) : j.str(c.key, v);
-        showIdle("");
+    case CommandKind::Set:
+        if (!applySetting(c, j)) return;
         break;
-    }
-    case CommandKind::Results: {
-        const size_t have = journal_.recentCount();
-        const size_t n = std::min(have, size_t(c.count));
-        j.str("type", "results").integer("count", static_cast<long long>(n));
-        if (!c.tag.empty()) j.str("tag", c.tag);
-        j.end();
-        send(out_);
-        for (size_t i = have - n; i < have; ++i) {
-            // Measurements come back as records; scale checks as they were sent.
-            const std::string_view line = journal_.recent(i), result = "{\"type\":\"result\"";
-            if (line.substr(0, result.size()) == result) {
-                out_.assign("{\"type\":\"record\"");
-                out_.append(line.substr(result.size()));
-            } else {
-                out_.assign(line);
-            }
-            out_.push_back('\n');
-            send(out_);
-        }
-        return;
-    }
+    case CommandKind::Results: sendResults(c, j); return;
     case CommandKind::ScaleCheck:
         if (aimUntilMs_ >= 0) stopAim("scalecheck");
         scaleCheck(c);
@@ -342,6 +307,49 @@ void Device::handleCommand(const Command &c)
     if (!c.tag.empty()) j.str("tag", c.tag);
     j.end();
     send(out_);
+}
+
+bool Device::applySetting(const Command &c, JsonBuilder &j)
+{
+    Config trial = cfg_;
+    std::string err = setConfigKey(&trial, c.key, c.value, true);
+    if (err.empty()) err = specimenIssue(trial);
+    if (err.empty() && liveKeyName(c.key) == "calibration_file") err = setCalibrationFile(&trial);
+    if (!err.empty()) {
+        sendError("bad_argument", err, c.tag);
+        return false;
+    }
+    cfg_ = trial;
+    persistSettings();
+    std::string v;
+    bool num = false;
+    getConfigKey(cfg_, c.key, &v, &num);
+    j.str("type", "settings");
+    num ? j.raw(c.key, v) : j.str(c.key, v);
+    showIdle("");
+    return true;
+}
+
+void Device::sendResults(const Command &c, JsonBuilder &j)
+{
+    const size_t have = journal_.recentCount();
+    const size_t n = std::min(have, size_t(c.count));
+    j.str("type", "results").integer("count", static_cast<long long>(n));
+    if (!c.tag.empty()) j.str("tag", c.tag);
+    j.end();
+    send(out_);
+    for (size_t i = have - n; i < have; ++i) {
+        // Measurements come back as records; scale checks as they were sent.
+        const std::string_view line = journal_.recent(i), result = "{\"type\":\"result\"";
+        if (line.substr(0, result.size()) == result) {
+            out_.assign("{\"type\":\"record\"");
+            out_.append(line.substr(result.size()));
+        } else {
+            out_.assign(line);
+        }
+        out_.push_back('\n');
+        send(out_);
+    }
 }
 
 void Device::measure(const char *origin, const std::string &tag)
@@ -422,7 +430,7 @@ bool Device::captureFrame(hal::CapturedFrame *frame, vision::LumaView *luma, std
 
     state_ = State::Measure;
     if (captured) {
-        const vision::ErrorCode le = vision::lumaOf(frame->view, lumaScratch_.get(), lumaScratchBytes_, luma);
+        const vision::ErrorCode le = frameLuma(frame->view, lumaScratch_.get(), lumaScratchBytes_, luma);
         if (le != vision::ErrorCode::None) *problem = std::string("frame: ") + vision::errorMessage(le);
     }
     return captured;

@@ -62,6 +62,11 @@ private:
     void pollSerial();
     void handleLine(std::string_view line);
     void handleCommand(const Command &c);
+    // `set KEY VALUE`: tried on a copy of the config, kept and saved when valid, the new
+    // value into j; false when refused (the error already sent).
+    bool applySetting(const Command &c, JsonBuilder &j);
+    // `results [N]`: the header line (started in j), then the last N journal lines.
+    void sendResults(const Command &c, JsonBuilder &j);
     void measure(const char *origin, const std::string &tag);
     void scaleCheck(const Command &c);
     // LED on, capture, LED off: the frame as luma, or the problem in words.

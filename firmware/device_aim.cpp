@@ -3,6 +3,7 @@
 
 #include "firmware/aim_view.h"
 #include "firmware/device.h"
+#include "firmware/frame_luma.h"
 #include "firmware/screen.h"
 #include "firmware/snapshot_png.h"
 
@@ -80,7 +81,7 @@ void Device::aimTick()
     vision::LumaView luma;
     std::string problem = e.ok() ? "" : std::string("camera ") + hal::errcName(e.code) + ": " + e.message;
     if (problem.empty())
-        if (const vision::ErrorCode le = vision::lumaOf(frame.view, lumaScratch_.get(), lumaScratchBytes_, &luma);
+        if (const vision::ErrorCode le = frameLuma(frame.view, lumaScratch_.get(), lumaScratchBytes_, &luma);
             le != vision::ErrorCode::None)
             problem = std::string("frame: ") + vision::errorMessage(le);
     if (!problem.empty()) {

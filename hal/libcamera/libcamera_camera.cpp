@@ -91,16 +91,16 @@ std::string fmtNum(double v)
     return b;
 }
 
-bool lumaFormat(const lc::PixelFormat &pf, vision::PixelFormat *out)
+bool lumaFormat(const lc::PixelFormat &pf, PixelFormat *out)
 {
     if (pf == lc::formats::R8)
-        *out = vision::PixelFormat::Grey8;
+        *out = PixelFormat::Grey8;
     else if (pf == lc::formats::NV12)
-        *out = vision::PixelFormat::NV12;
+        *out = PixelFormat::NV12;
     else if (pf == lc::formats::YUV420)
-        *out = vision::PixelFormat::YUV420;
+        *out = PixelFormat::YUV420;
     else if (pf == lc::formats::YUYV)
-        *out = vision::PixelFormat::YUYV;
+        *out = PixelFormat::YUYV;
     else
         return false;
     return true;
@@ -132,7 +132,7 @@ struct LibcameraCamera::Session {
     lc::Stream *stream = nullptr;
     std::vector<std::unique_ptr<lc::Request>> requests;
     std::vector<std::unique_ptr<Mapping>> maps; // by request cookie
-    vision::PixelFormat format = vision::PixelFormat::Grey8;
+    PixelFormat format = PixelFormat::Grey8;
     int width = 0, height = 0, stride = 0;
 
     std::mutex m;
@@ -207,7 +207,7 @@ Error LibcameraCamera::configure(const CameraFormat &fmt)
     s->config = s->camera->generateConfiguration({lc::StreamRole::StillCapture});
     if (!s->config || s->config->empty()) return Error::make(Errc::BadFormat, "libcamera: no still configuration");
     lc::StreamConfiguration &sc = s->config->at(0);
-    const lc::PixelFormat prefer[] = {fmt.format == vision::PixelFormat::Grey8 ? lc::formats::R8 : lc::formats::NV12,
+    const lc::PixelFormat prefer[] = {fmt.format == PixelFormat::Grey8 ? lc::formats::R8 : lc::formats::NV12,
                                       lc::formats::R8, lc::formats::NV12, lc::formats::YUV420};
     bool ok = false;
     for (const lc::PixelFormat &pf : prefer) {

@@ -44,22 +44,22 @@ bool unplugged(int err)
     return err == ENODEV || err == ENXIO || err == EIO;
 }
 
-uint32_t fourcc(vision::PixelFormat f)
+uint32_t fourcc(PixelFormat f)
 {
     switch (f) {
-    case vision::PixelFormat::Grey8: return V4L2_PIX_FMT_GREY;
-    case vision::PixelFormat::YUYV: return V4L2_PIX_FMT_YUYV;
-    case vision::PixelFormat::NV12: return V4L2_PIX_FMT_NV12;
+    case PixelFormat::Grey8: return V4L2_PIX_FMT_GREY;
+    case PixelFormat::YUYV: return V4L2_PIX_FMT_YUYV;
+    case PixelFormat::NV12: return V4L2_PIX_FMT_NV12;
     default: return 0;
     }
 }
 
-bool fromFourcc(uint32_t cc, vision::PixelFormat *f)
+bool fromFourcc(uint32_t cc, PixelFormat *f)
 {
     switch (cc) {
-    case V4L2_PIX_FMT_GREY: *f = vision::PixelFormat::Grey8; return true;
-    case V4L2_PIX_FMT_YUYV: *f = vision::PixelFormat::YUYV; return true;
-    case V4L2_PIX_FMT_NV12: *f = vision::PixelFormat::NV12; return true;
+    case V4L2_PIX_FMT_GREY: *f = PixelFormat::Grey8; return true;
+    case V4L2_PIX_FMT_YUYV: *f = PixelFormat::YUYV; return true;
+    case V4L2_PIX_FMT_NV12: *f = PixelFormat::NV12; return true;
     default: return false;
     }
 }
@@ -335,7 +335,7 @@ Error V4l2Camera::negotiate()
         return Error::make(Errc::TooLarge, "camera " + dev + ": driver chose " + std::to_string(width_) + "x" +
                                                std::to_string(height_) + ", above the configured maximum");
     if (mjpeg_) {
-        format_ = vision::PixelFormat::Grey8;
+        format_ = PixelFormat::Grey8;
         stride_ = width_;
         const size_t need = size_t(width_) * size_t(height_);
         if (need > decodedBytes_) {
@@ -343,7 +343,7 @@ Error V4l2Camera::negotiate()
             decodedBytes_ = need;
         }
     } else {
-        const int minStride = format_ == vision::PixelFormat::YUYV ? 2 * width_ : width_;
+        const int minStride = format_ == PixelFormat::YUYV ? 2 * width_ : width_;
         stride_ = f.fmt.pix.bytesperline ? int(f.fmt.pix.bytesperline) : minStride;
         if (stride_ < minStride)
             return Error::make(Errc::BadStride, "camera " + dev + ": stride " + std::to_string(stride_) + " too short");

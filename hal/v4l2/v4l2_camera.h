@@ -54,7 +54,7 @@ public:
     std::string describe() const override { return description_; }
 
     // What the driver agreed to (valid after configure()).
-    vision::PixelFormat format() const { return format_; }
+    PixelFormat format() const { return format_; }
     int width() const { return width_; }
     int height() const { return height_; }
     int stride() const { return stride_; }
@@ -83,7 +83,7 @@ private:
     int bufferCount_ = 0;
     int held_ = -1; // index of the buffer handed out by the last capture()
     bool streaming_ = false;
-    vision::PixelFormat format_ = vision::PixelFormat::Grey8;
+    PixelFormat format_ = PixelFormat::Grey8;
     int width_ = 0, height_ = 0, stride_ = 0;
     size_t imageBytes_ = 0;
     bool mjpeg_ = false;

@@ -6,7 +6,6 @@
 
 namespace icacam::host::loop {
 
-
 using namespace icacam::reading;
 
 namespace {

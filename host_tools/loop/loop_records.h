@@ -14,7 +14,7 @@ namespace icacam::host::loop {
 
 // False with *why set when the row cannot be used (no mu_ref, no n, neither image nor radii,
 // or the image not measured).
-bool readLoopRecord(const ManifestRow &row, const Manifest &manifest, RecordMeasurer &measurer,
-                    LoopRecord *r, std::string *why);
+bool readLoopRecord(const ManifestRow &row, const Manifest &manifest, RecordMeasurer &measurer, LoopRecord *r,
+                    std::string *why);
 
 } // namespace icacam::host::loop

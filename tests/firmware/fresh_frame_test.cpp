@@ -87,7 +87,7 @@ public:
                 }
                 held_ = k;
                 std::fill(pixels_.begin(), pixels_.end(), uint8_t(k % 256));
-                out->view = {vision::PixelFormat::Grey8, pixels_.data(), 64, 48, 64, pixels_.size()};
+                out->view = {hal::PixelFormat::Grey8, pixels_.data(), 64, 48, 64, pixels_.size()};
                 out->timestampMs = hal::exposureStartNs(st) / 1000000;
                 out->latencyUs = (hal::exposureStartNs(st) - notBeforeNs) / 1000;
                 out->exposureUs = m_.exposureUs;

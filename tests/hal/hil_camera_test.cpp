@@ -83,7 +83,7 @@ int main(int argc, char **argv)
         std::fprintf(stderr, "hil_camera_test: no %s camera backend here: skipped\n", which.c_str());
         return 77;
     }
-    if (const hal::Error e = gCamera->configure({vision::PixelFormat::Grey8, 4608, 3040}); !e.ok()) {
+    if (const hal::Error e = gCamera->configure({hal::PixelFormat::Grey8, 4608, 3040}); !e.ok()) {
         if (e.code == hal::Errc::NotFound) {
             std::fprintf(stderr, "hil_camera_test: %s: skipped\n", e.message.c_str());
             return 77;

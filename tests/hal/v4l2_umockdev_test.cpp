@@ -305,10 +305,10 @@ protected:
 TEST_F(V4l2Mock, NegotiatesAFormatTheDriverHasAndStreams)
 {
     hal::V4l2Camera cam(clock_, opts("/dev/video0", 3), &mapper_);
-    hal::Error e = cam.configure({vision::PixelFormat::Grey8, 640, 480});
+    hal::Error e = cam.configure({hal::PixelFormat::Grey8, 640, 480});
     ASSERT_TRUE(e.ok()) << e.message;
     // GREY asked for, the driver only has YUYV: taken, luma viewed with a pixel step of 2.
-    EXPECT_EQ(cam.format(), vision::PixelFormat::YUYV);
+    EXPECT_EQ(cam.format(), hal::PixelFormat::YUYV);
     EXPECT_EQ(cam.width(), 64);
     EXPECT_EQ(cam.stride(), 128);
     EXPECT_EQ(mapper_.mapped, 3);
@@ -341,12 +341,12 @@ TEST_F(V4l2Mock, MjpegOnlyCameraIsDecodedToLumaAtTheLargestListedSizeThatFits)
         video_.jpeg = encodeJpeg(640, 480);
     }
     hal::V4l2Camera cam(clock_, opts("/dev/video0", 2), &mapper_);
-    hal::Error e = cam.configure({vision::PixelFormat::Grey8, 800, 600});
+    hal::Error e = cam.configure({hal::PixelFormat::Grey8, 800, 600});
     ASSERT_TRUE(e.ok()) << e.message;
     EXPECT_TRUE(cam.mjpeg());
     EXPECT_EQ(cam.width(), 640);
     EXPECT_EQ(cam.height(), 480);
-    EXPECT_EQ(cam.format(), vision::PixelFormat::Grey8);
+    EXPECT_EQ(cam.format(), hal::PixelFormat::Grey8);
     expose(nowNs() + 1000000000, 0);
     hal::CapturedFrame frame;
     e = cam.capture(500, &frame);
@@ -370,7 +370,7 @@ TEST_F(V4l2Mock, CorruptMjpegFrameIsSkippedNotMeasured)
         video_.jpeg.resize(video_.jpeg.size() / 3); // torn in transfer
     }
     hal::V4l2Camera cam(clock_, opts("/dev/video0", 2), &mapper_);
-    ASSERT_TRUE(cam.configure({vision::PixelFormat::Grey8, 640, 480}).ok());
+    ASSERT_TRUE(cam.configure({hal::PixelFormat::Grey8, 640, 480}).ok());
     expose(nowNs() + 1000000000, 0);
     hal::CapturedFrame frame;
     const hal::Error e = cam.capture(150, &frame);
@@ -397,7 +397,7 @@ TEST_F(V4l2Mock, ImagingControlsAreSetAndReadBack)
     o.controls.blueGain = 1.5;
     o.controls.lensPosition = 250;
     hal::V4l2Camera cam(clock_, o, &mapper_);
-    ASSERT_TRUE(cam.configure({vision::PixelFormat::YUYV, 640, 480}).ok());
+    ASSERT_TRUE(cam.configure({hal::PixelFormat::YUYV, 640, 480}).ok());
     {
         std::lock_guard<std::mutex> lock(video_.m);
         EXPECT_EQ(video_.controls[V4L2_CID_EXPOSURE_AUTO], V4L2_EXPOSURE_MANUAL);
@@ -421,14 +421,14 @@ TEST_F(V4l2Mock, ImagingControlsAreSetAndReadBack)
 TEST_F(V4l2Mock, SkipsFramesExposedBeforeTheTriggerAndRecyclesBuffers)
 {
     hal::V4l2Camera cam(clock_, opts("/dev/video0", 2), &mapper_);
-    ASSERT_TRUE(cam.configure({vision::PixelFormat::YUYV, 640, 480}).ok());
+    ASSERT_TRUE(cam.configure({hal::PixelFormat::YUYV, 640, 480}).ok());
     const int64_t t = nowNs();
     expose(t - 50000000, 11);   // stale: exposed 50 ms before capture() was called
     expose(t + 1000000000, 22); // after the trigger
     hal::CapturedFrame frame;
     hal::Error e = cam.capture(500, &frame);
     ASSERT_TRUE(e.ok()) << e.message;
-    EXPECT_EQ(frame.view.format, vision::PixelFormat::YUYV);
+    EXPECT_EQ(frame.view.format, hal::PixelFormat::YUYV);
     ASSERT_NE(frame.view.data, nullptr);
     EXPECT_EQ(frame.view.data[0], 22);
     EXPECT_EQ(frame.view.stride, 128);
@@ -455,7 +455,7 @@ TEST_F(V4l2Mock, OnlyAFrameExposedAfterTheLedSettledIsHandedOut)
     o.controls.exposureUs = 10000;
     o.stampDelayUs = 2000; // this camera's first packet: within 2 ms of the exposure's end
     hal::V4l2Camera cam(clock_, o, &mapper_);
-    ASSERT_TRUE(cam.configure({vision::PixelFormat::YUYV, 640, 480}).ok());
+    ASSERT_TRUE(cam.configure({hal::PixelFormat::YUYV, 640, 480}).ok());
     EXPECT_EQ(cam.frameIntervalUs(), 33333);
     const int64_t settleInMs = 40;
     const int64_t litMs = clock_.monotonicMs() + settleInMs;
@@ -479,7 +479,7 @@ TEST_F(V4l2Mock, OnlyAFrameExposedAfterTheLedSettledIsHandedOut)
 TEST_F(V4l2Mock, CaptureTimesOutWithoutBlocking)
 {
     hal::V4l2Camera cam(clock_, opts("/dev/video0", 2), &mapper_);
-    ASSERT_TRUE(cam.configure({vision::PixelFormat::YUYV, 640, 480}).ok());
+    ASSERT_TRUE(cam.configure({hal::PixelFormat::YUYV, 640, 480}).ok());
     hal::CapturedFrame frame;
     const int64_t t0 = clock_.monotonicMs();
     hal::Error e = cam.capture(150, &frame);
@@ -493,7 +493,7 @@ TEST_F(V4l2Mock, CaptureTimesOutEvenWithAManualClock)
 {
     hal::ManualClock manual(5000); // does not move while the camera waits
     hal::V4l2Camera cam(manual, opts("/dev/video0", 2), &mapper_);
-    ASSERT_TRUE(cam.configure({vision::PixelFormat::YUYV, 640, 480}).ok());
+    ASSERT_TRUE(cam.configure({hal::PixelFormat::YUYV, 640, 480}).ok());
     hal::CapturedFrame frame;
     EXPECT_EQ(cam.capture(100, &frame).code, hal::Errc::Timeout);
 }
@@ -501,7 +501,7 @@ TEST_F(V4l2Mock, CaptureTimesOutEvenWithAManualClock)
 TEST_F(V4l2Mock, UnplugIsAnErrorAndCaptureResumesAfterReplug)
 {
     hal::V4l2Camera cam(clock_, opts("/dev/video0", 2), &mapper_);
-    ASSERT_TRUE(cam.configure({vision::PixelFormat::YUYV, 640, 480}).ok());
+    ASSERT_TRUE(cam.configure({hal::PixelFormat::YUYV, 640, 480}).ok());
     hal::CapturedFrame frame;
     {
         std::lock_guard<std::mutex> lock(video_.m);
@@ -528,7 +528,7 @@ TEST_F(V4l2Mock, UnplugIsAnErrorAndCaptureResumesAfterReplug)
 TEST_F(V4l2Mock, NoCameraIsNotFound)
 {
     hal::V4l2Camera cam(clock_, opts("/dev/video5", 2), &mapper_);
-    hal::Error e = cam.configure({vision::PixelFormat::YUYV, 640, 480});
+    hal::Error e = cam.configure({hal::PixelFormat::YUYV, 640, 480});
     EXPECT_EQ(e.code, hal::Errc::NotFound) << e.message;
     hal::CapturedFrame frame;
     EXPECT_EQ(cam.capture(10, &frame).code, hal::Errc::NotFound);

@@ -51,7 +51,8 @@ TEST(Instrument, ACalibrationHoldsOnlyForFramesOfItsSize)
     vision::PlaneCalibration cal;
     cal.fx = cal.fy = 4000, cal.cx = 450, cal.cy = 440, cal.t[2] = 87.5;
     instrument.setCalibration(&cal, 1280, 960);
-    EXPECT_EQ(instrument.frameSizeIssue(face.width, face.height), "frame is 900x880 but the calibration is for 1280x960 images");
+    EXPECT_EQ(instrument.frameSizeIssue(face.width, face.height),
+              "frame is 900x880 but the calibration is for 1280x960 images");
     EXPECT_EQ(instrument.read(face.view(px), spec()).error, ErrorCode::CalibrationSize);
     instrument.setCalibration(&cal, face.width, face.height);
     EXPECT_EQ(instrument.frameSizeIssue(face.width, face.height), "");

@@ -192,10 +192,10 @@ TEST(Budget, ComponentsFollowTheirInputsAndCombineInQuadrature)
     EXPECT_GT(b.edges, 0);
     EXPECT_GT(b.scale, 0);
     EXPECT_GT(b.n, 0);
-    EXPECT_NEAR(combinedSigma(b),
-                std::sqrt(b.edges * b.edges + b.scale * b.scale + b.reduction * b.reduction + b.n * b.n +
-                          b.model * b.model),
-                1e-15);
+    EXPECT_NEAR(
+        combinedSigma(b),
+        std::sqrt(b.edges * b.edges + b.scale * b.scale + b.reduction * b.reduction + b.n * b.n + b.model * b.model),
+        1e-15);
     s.tolerances.n = 0.02;
     const MuFunction F2(s, model);
     EXPECT_NEAR(budgetOf(F2, model, s, 0.5, 0.5, sr, 0.003, 0).n / b.n, 2.0, 0.2) << "n's part scales with its σ";
