@@ -1,16 +1,19 @@
 // Hardware in the loop: the real camera on the board (docs/hil-checklist.md). Every frame
 // must have started its exposure at or after the instant it was asked for, with the
-// controls the camera reports; exits 77 (skipped) where there is no camera, as on the
-// build machines.
+// controls the camera reports; a CSI camera must deliver the luma at the sensor mode the
+// backend's choice names (its full resolution for the sensors the product names) with the
+// fixed tone curve; exits 77 (skipped) where there is no camera, as on the build machines.
 //   ICACAM_HIL_CAMERA=libcamera            a CSI camera (the default when libcamera has one)
 //   ICACAM_HIL_CAMERA=/dev/icacam-camera   a V4L2 node
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <memory>
 #include <string>
-#include <sys/stat.h>
 
 #include "hal/file/clocks.h"
 #ifdef ICACAM_HAVE_LIBCAMERA
@@ -24,9 +27,55 @@ namespace {
 
 using namespace icacam;
 
+// The largest frame the test accepts: the shipped maximum (deploy/device.conf).
+constexpr int kMaxWidth = 4608, kMaxHeight = 3040;
+
 std::unique_ptr<hal::Camera> gCamera;
 bool gLibcamera = false;
 hal::SystemClock gClock;
+#ifdef ICACAM_HAVE_LIBCAMERA
+hal::LibcameraCamera *gCsi = nullptr;
+
+// The full-resolution mode of each sensor the product names (their drivers' mode tables,
+// tests/hal/sensor_mode_test.cpp).
+struct KnownSensor {
+    const char *model;
+    int width, height;
+};
+constexpr KnownSensor kKnown[] = {
+    {"imx708", 4608, 2592}, {"imx477", 4056, 3040}, {"imx219", 3280, 2464}, {"ov5647", 2592, 1944}};
+
+TEST(HilCamera, TheLumaIsTheSensorModeTheChoiceNamesWithTheToneCurveFixed)
+{
+    if (!gCsi) GTEST_SKIP() << "not a libcamera camera";
+    const hal::LibcameraMode &m = gCsi->mode();
+    std::printf("sensor %s, %zu raw modes:", m.model.c_str(), m.sensorModes.size());
+    for (const hal::SensorMode &s : m.sensorModes) std::printf(" %dx%d/%d", s.width, s.height, s.bitDepth);
+    std::printf("\nnamed by %s; stream %dx%d %s; %s\n", m.namedBy.c_str(), m.width, m.height, m.pixelFormat.c_str(),
+                m.tuning.c_str());
+    ASSERT_FALSE(m.sensorModes.empty()) << "the camera lists no raw modes: not a Raspberry Pi pipeline?";
+    const hal::SensorModeChoice want = hal::chooseSensorMode(m.sensorModes, kMaxWidth, kMaxHeight);
+    ASSERT_TRUE(want.found);
+    EXPECT_EQ(m.choice.mode.width, want.mode.width);
+    EXPECT_EQ(m.choice.mode.height, want.mode.height);
+    EXPECT_EQ(m.width, want.outWidth);
+    EXPECT_EQ(m.height, want.outHeight);
+    for (const KnownSensor &k : kKnown)
+        if (m.model.rfind(k.model, 0) == 0) {
+            EXPECT_EQ(want.outWidth, k.width) << k.model << ": not its full resolution";
+            EXPECT_EQ(want.outHeight, k.height) << k.model << ": not its full resolution";
+            EXPECT_NE(m.tuning.find("adaptive contrast off"), std::string::npos) << m.tuning;
+        }
+    hal::CapturedFrame f;
+    const hal::Error e = gCamera->capture(3000, &f);
+    ASSERT_TRUE(e.ok()) << e.message;
+    EXPECT_EQ(f.view.width, want.outWidth);
+    EXPECT_EQ(f.view.height, want.outHeight);
+    EXPECT_NE(f.source.find(std::to_string(want.mode.width) + "x" + std::to_string(want.mode.height)),
+              std::string::npos)
+        << f.source;
+}
+#endif
 
 TEST(HilCamera, EveryFrameIsExposedAfterItWasAskedForWithItsControls)
 {
@@ -65,7 +114,9 @@ int main(int argc, char **argv)
         hal::LibcameraOptions o;
         o.controls.exposureUs = 8000;
         o.controls.analogueGain = 1.0;
-        gCamera = std::make_unique<hal::LibcameraCamera>(gClock, o);
+        auto csi = std::make_unique<hal::LibcameraCamera>(gClock, o);
+        gCsi = csi.get();
+        gCamera = std::move(csi);
         gLibcamera = true;
 #endif
     } else {
@@ -83,7 +134,7 @@ int main(int argc, char **argv)
         std::fprintf(stderr, "hil_camera_test: no %s camera backend here: skipped\n", which.c_str());
         return 77;
     }
-    if (const hal::Error e = gCamera->configure({vision::PixelFormat::Grey8, 4608, 3040}); !e.ok()) {
+    if (const hal::Error e = gCamera->configure({vision::PixelFormat::Grey8, kMaxWidth, kMaxHeight}); !e.ok()) {
         if (e.code == hal::Errc::NotFound) {
             std::fprintf(stderr, "hil_camera_test: %s: skipped\n", e.message.c_str());
             return 77;
