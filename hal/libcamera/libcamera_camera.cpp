@@ -1,4 +1,5 @@
 // libcamera backend. Version points (PLATFORM.md "Library versions to support"):
+//  * 0.2+: CameraConfiguration::sensorConfig names the sensor mode; before, a raw stream.
 //  * 0.5+: manual exposure and gain are ignored unless ExposureTimeMode / AnalogueGainMode
 //    are set to Manual.
 //  * 0.6: FrameBuffer::planes() is a Span (only iterated and indexed here: no #if needed);
@@ -352,17 +353,23 @@ Error LibcameraCamera::prepareTuning(const std::string &model, bool *restart)
             base = runtime && *runtime ? std::string(runtime).substr(0, std::string(runtime).find(':')) : "/tmp";
         }
         std::string tmpl = base + "/icacam-tuning-XXXXXX";
-        if (!::mkdtemp(tmpl.data()))
-            return Error::make(Errc::Io, "libcamera: tuning override folder in " + base + ": " + std::strerror(errno));
+        if (!::mkdtemp(tmpl.data())) {
+            tuningModel_ = model;
+            tuningNote_ = "tuning: no folder for the override in " + base + " (" + std::strerror(errno) +
+                          "), adaptive contrast as libcamera's file sets";
+            return {};
+        }
         tuningDir_ = tmpl;
     }
-    TuningOverride written;
-    if (Error e = writeFixedToneTuning(kIpaDataDirs, model, tuningDir_, &written); !e.ok())
-        return Error::make(e.code, "libcamera: " + e.message);
-    TuningOverride mono; // a mono sensor's file is <model>_mono.json (loadIPA)
-    if (Error e = writeFixedToneTuning(kIpaDataDirs, model + "_mono", tuningDir_, &mono); !e.ok())
-        return Error::make(e.code, "libcamera: " + e.message);
+    TuningOverride written, mono; // a mono sensor's file is <model>_mono.json (loadIPA)
+    Error e = writeFixedToneTuning(kIpaDataDirs, model, tuningDir_, &written);
+    if (e.ok()) e = writeFixedToneTuning(kIpaDataDirs, model + "_mono", tuningDir_, &mono);
     tuningModel_ = model;
+    if (!e.ok()) {
+        // The camera still works with libcamera's own file: measure, and say so everywhere.
+        tuningNote_ = "tuning: override failed (" + e.message + "), adaptive contrast as libcamera's file sets";
+        return {};
+    }
     if (written.files + mono.files == 0) {
         tuningNote_ = "tuning: no Raspberry Pi tuning file for " + model + " (tone curve as the pipeline sets it)";
         return {};
