@@ -22,6 +22,7 @@
 #include "firmware/config.h"
 #include "firmware/device.h"
 #include "firmware/device_calibration.h"
+#include "firmware/sd_notify.h"
 #include "friction/friction_models.h"
 #include "hal/file/clocks.h"
 #include "hal/file/folder_storage.h"
@@ -165,10 +166,17 @@ int runDevice(const fw::Config &cfg)
     std::signal(SIGPIPE, SIG_IGN);
     if (hal::Error e = device.start(); !e.ok()) return unavailable("start", e);
     std::fprintf(stderr, "icacam-fw: running; serial on %s\n", serial.value.name.c_str());
+    // systemd (Type=notify, WatchdogSec=): ready once started, alive on every pass of the
+    // loop (firmware/sd_notify.h); nothing when not run by systemd.
+    fw::SystemdNotifier systemd = fw::SystemdNotifier::fromEnvironment();
+    if (hal::Error e = systemd.ready("idle"); !e.ok())
+        std::fprintf(stderr, "icacam-fw: systemd: %s\n", e.message.c_str());
     while (!gStop) {
         device.tick();
+        systemd.keepAlive(clock.monotonicMs());
         clock.sleepMs(5);
     }
+    systemd.stopping();
     std::fprintf(stderr, "icacam-fw: stopped\n");
     return 0;
 }
