@@ -26,18 +26,6 @@ void isoTime(int64_t wallMs, char (&b)[96])
                   t.tm_hour, t.tm_min, t.tm_sec, int(wallMs % 1000));
 }
 
-// The reading's fields into a device JSON line (the one schema: vision/reading_record.h).
-class JsonRecordSink final : public reading::RecordSink {
-public:
-    explicit JsonRecordSink(JsonBuilder *j) : j_(j) {}
-    void text(const char *name, std::string_view v) override { j_->str(name, v); }
-    void number(const char *name, double v, int decimals) override { j_->fixed(name, v, decimals); }
-    void absent(const char *name) override { j_->raw(name, "null"); }
-
-private:
-    JsonBuilder *j_;
-};
-
 constexpr const char *kSettingsFile = "settings.conf";
 
 // The keys settable over serial, for help and refusals.
@@ -121,7 +109,7 @@ hal::Error Device::start()
     if (!cal_.present && !(cfg_.mmPerPx > 0))
         return hal::Error::make(hal::Errc::Invalid, "no scale: calibration.mm_per_px or calibration.file is required");
     out_.clear();
-    JsonBuilder j0(&out_);
+    reading::JsonBuilder j0(&out_);
     j0.str("type", "hello")
         .str("version", "0.1.0")
         .str("model", instrument_.model().name())
@@ -149,7 +137,7 @@ void Device::pollCamera()
 {
     if (!cameraHealth_.poll()) return;
     out_.clear();
-    JsonBuilder j(&out_);
+    reading::JsonBuilder j(&out_);
     j.str("type", "camera");
     appendCameraStatus(j);
     j.end();
@@ -157,7 +145,7 @@ void Device::pollCamera()
     showIdle("camera found");
 }
 
-void Device::appendCameraStatus(JsonBuilder &j) const
+void Device::appendCameraStatus(reading::JsonBuilder &j) const
 {
     j.str("camera", CameraHealth::stateName(cameraHealth_.state()));
     if (!cameraHealth_.ok()) j.str("camera_problem", cameraHealth_.problem());
@@ -241,7 +229,7 @@ void Device::handleLine(std::string_view line)
 void Device::handleCommand(const Command &c)
 {
     out_.clear();
-    JsonBuilder j(&out_);
+    reading::JsonBuilder j(&out_);
     switch (c.kind) {
     case CommandKind::Help:
         j.str("type", "help")
@@ -309,7 +297,7 @@ void Device::handleCommand(const Command &c)
     send(out_);
 }
 
-bool Device::applySetting(const Command &c, JsonBuilder &j)
+bool Device::applySetting(const Command &c, reading::JsonBuilder &j)
 {
     Config trial = cfg_;
     std::string err = setConfigKey(&trial, c.key, c.value, true);
@@ -330,7 +318,7 @@ bool Device::applySetting(const Command &c, JsonBuilder &j)
     return true;
 }
 
-void Device::sendResults(const Command &c, JsonBuilder &j)
+void Device::sendResults(const Command &c, reading::JsonBuilder &j)
 {
     const size_t have = journal_.recentCount();
     const size_t n = std::min(have, size_t(c.count));
@@ -480,7 +468,7 @@ void Device::scaleCheck(const Command &c)
                 e.code == hal::Errc::Full ? "storage full: image not saved" : "image not saved: " + e.message;
     }
     out_.clear();
-    JsonBuilder j(&out_);
+    reading::JsonBuilder j(&out_);
     char when[96];
     isoTime(hal_.clock.wallMs(), when);
     const char *status = !problem.empty() || !r.measured ? "error" : r.pass ? "pass" : "fail";
@@ -545,11 +533,11 @@ void Device::buildRecord(long id, const char *origin, const std::string &tag, co
                          std::string_view problem, const hal::CapturedFrame *frame, std::string_view image, long ms)
 {
     out_.clear();
-    JsonBuilder j(&out_);
+    reading::JsonBuilder j(&out_);
     char when[96];
     isoTime(hal_.clock.wallMs(), when);
     j.str("type", "result").integer("id", id);
-    JsonRecordSink sink(&j);
+    reading::JsonRecordSink sink(&j);
     // A frame never measured (capture, LED or calibration problem) is a record without a reading.
     reading::writeReading(problem.empty() ? &m : nullptr, problem, instrument_.model().name(), sink);
     j.str("time", when);
@@ -622,7 +610,7 @@ void Device::showOrLog(const hal::MonoBitmap &bmp)
 void Device::sendError(const char *code, std::string_view message, std::string_view tag)
 {
     std::string line;
-    JsonBuilder j(&line);
+    reading::JsonBuilder j(&line);
     j.str("type", "error").str("code", code).str("message", message);
     if (!tag.empty()) j.str("tag", tag);
     j.end();

@@ -64,9 +64,9 @@ private:
     void handleCommand(const Command &c);
     // `set KEY VALUE`: tried on a copy of the config, kept and saved when valid, the new
     // value into j; false when refused (the error already sent).
-    bool applySetting(const Command &c, JsonBuilder &j);
+    bool applySetting(const Command &c, reading::JsonBuilder &j);
     // `results [N]`: the header line (started in j), then the last N journal lines.
-    void sendResults(const Command &c, JsonBuilder &j);
+    void sendResults(const Command &c, reading::JsonBuilder &j);
     void measure(const char *origin, const std::string &tag);
     void scaleCheck(const Command &c);
     // LED on, capture, LED off: the frame as luma, or the problem in words.
@@ -91,7 +91,7 @@ private:
     // measurement).
     reading::Reading measureForSetup(const vision::LumaView &luma);
     // The camera's state for `hello`, `status` and the camera line sent when it comes back.
-    void appendCameraStatus(JsonBuilder &j) const;
+    void appendCameraStatus(reading::JsonBuilder &j) const;
     void pollCamera();
     void buildRecord(long id, const char *origin, const std::string &tag, const reading::Reading &m,
                      std::string_view problem, const hal::CapturedFrame *frame, std::string_view image, long ms);

@@ -44,7 +44,7 @@ void Device::startAim(int seconds, const std::string &tag)
     }
     aimUntilMs_ = now + int64_t(seconds) * 1000;
     out_.clear();
-    JsonBuilder j(&out_);
+    reading::JsonBuilder j(&out_);
     j.str("type", "aim").str("state", "on").integer("seconds", seconds);
     if (!tag.empty()) j.str("tag", tag);
     j.end();
@@ -58,7 +58,7 @@ void Device::stopAim(const char *why)
     aimUntilMs_ = -1;
     (void)hal_.led.set(false);
     out_.clear();
-    JsonBuilder j(&out_);
+    reading::JsonBuilder j(&out_);
     j.str("type", "aim").str("state", "off").str("by", why).integer("pictures", aimFrames_);
     if (!aimTag_.empty()) j.str("tag", aimTag_);
     j.end();
@@ -97,7 +97,7 @@ void Device::aimTick()
     drawAim(&screen_, luma, r);
     showOrLog(screen_);
     out_.clear();
-    JsonBuilder j(&out_);
+    reading::JsonBuilder j(&out_);
     j.str("type", "aim").integer("picture", aimFrames_).num("focus", r.focus, 4).boolean("found", r.found);
     if (r.found) {
         j.num("x", r.centreX, 5)
@@ -144,7 +144,7 @@ void Device::snapshot(const Command &c)
         return;
     }
     out_.clear();
-    JsonBuilder j(&out_);
+    reading::JsonBuilder j(&out_);
     j.str("type", "snapshot").str("image", name).integer("width", luma.width).integer("height", luma.height);
     j.integer("bytes", static_cast<long long>(image_.size())).boolean("found", r.found).num("focus", r.focus, 4);
     j.str("hint", r.hint).str("status", reading::statusName(m.status));

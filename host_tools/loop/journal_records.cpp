@@ -8,93 +8,26 @@
 #include <map>
 #include <sstream>
 
+#include "reading/record_line.h"
+
 namespace icacam::host::loop {
 
 namespace fs = std::filesystem;
 
 namespace {
 
-// One flat JSON object (the journal has no nesting): key → value as text (numbers as
-// written, strings unescaped, true/false/null as words). False on anything else.
+// One journal line's fields as text (numbers as written, strings unescaped, true/false/null
+// as words), read by the record's own line parser (reading/record_line.h).
 bool parseFlat(const std::string &s, std::map<std::string, std::string> *out)
 {
-    size_t i = 0;
-    auto ws = [&] {
-        while (i < s.size() && (s[i] == ' ' || s[i] == '\t' || s[i] == '\r')) ++i;
-    };
-    auto str = [&](std::string *v) {
-        if (i >= s.size() || s[i] != '"') return false;
-        for (++i; i < s.size(); ++i) {
-            char c = s[i];
-            if (c == '"') {
-                ++i;
-                return true;
-            }
-            if (c != '\\') {
-                v->push_back(c);
-                continue;
-            }
-            if (++i >= s.size()) return false;
-            switch (s[i]) {
-            case 'n': v->push_back('\n'); break;
-            case 't': v->push_back('\t'); break;
-            case 'r': v->push_back('\r'); break;
-            case 'b': v->push_back('\b'); break;
-            case 'f': v->push_back('\f'); break;
-            case 'u': {
-                if (i + 4 >= s.size()) return false;
-                const unsigned code = unsigned(std::stoul(s.substr(i + 1, 4), nullptr, 16));
-                v->push_back(code < 0x80 ? char(code) : '?'); // the journal writes ASCII
-                i += 4;
-                break;
-            }
-            default: v->push_back(s[i]);
-            }
-        }
-        return false;
-    };
-    ws();
-    if (i >= s.size() || s[i++] != '{') return false;
-    ws();
-    if (i < s.size() && s[i] == '}') return true;
-    while (i < s.size()) {
-        std::string key, value;
-        ws();
-        if (!str(&key)) return false;
-        ws();
-        if (i >= s.size() || s[i++] != ':') return false;
-        ws();
-        if (i < s.size() && s[i] == '"') {
-            if (!str(&value)) return false;
-        } else {
-            const size_t start = i;
-            while (i < s.size() && s[i] != ',' && s[i] != '}' && s[i] != ' ') ++i;
-            value = s.substr(start, i - start);
-            if (value.empty()) return false;
-        }
-        (*out)[key] = value;
-        ws();
-        if (i < s.size() && s[i] == ',') {
-            ++i;
-            continue;
-        }
-        if (i < s.size() && s[i] == '}') return true;
-        return false;
+    static reading::FlatObject object; // large: one, reused line after line
+    if (!reading::parseFlatObject(s, &object).empty()) return false;
+    for (int i = 0; i < object.count; ++i) {
+        const reading::JsonField &f = object.fields[i];
+        using Type = reading::JsonField::Type;
+        (*out)[f.key] = f.type == Type::Bool ? (f.boolean ? "true" : "false") : f.type == Type::Null ? "null" : f.text;
     }
-    return false;
-}
-
-// A line as the journal writes it: {...,"crc32":"xxxxxxxx"} with the CRC of what precedes
-// ,"crc32".
-bool intact(const std::string &line)
-{
-    static const std::string kKey = ",\"crc32\":\"";
-    const size_t at = line.rfind(kKey);
-    if (at == std::string::npos || line.size() != at + kKey.size() + 10 || line.compare(line.size() - 2, 2, "\"}") != 0)
-        return false;
-    char want[9];
-    std::snprintf(want, sizeof want, "%08x", journalCrc32(line.substr(0, at)));
-    return line.compare(at + kKey.size(), 8, want) == 0;
+    return true;
 }
 
 // A record id as the join key: the number when it is one (12, 000012, 12.0), else the text.
@@ -116,16 +49,6 @@ const char *const kConditions[] = {"n",          "k_mpa",    "d0_mm",       "h0_
                                    "h_final_mm", "material", "calibration", "trigger"};
 
 } // namespace
-
-uint32_t journalCrc32(const std::string &data)
-{
-    uint32_t crc = 0xFFFFFFFFu;
-    for (unsigned char c : data) {
-        crc ^= c;
-        for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
-    }
-    return ~crc;
-}
 
 bool readJournalManifest(const std::string &journalDir, const std::string &referenceCsv, Manifest *out,
                          JournalJoin *info, std::string *error)
@@ -185,7 +108,7 @@ bool readJournalManifest(const std::string &journalDir, const std::string &refer
         ++info->lines;
         const std::string where = "journal line " + std::to_string(info->lines);
         std::map<std::string, std::string> f;
-        if (!intact(line) || !parseFlat(line, &f)) {
+        if (!reading::recordLineIntact(line) || !parseFlat(line, &f)) {
             info->skipped.push_back(where + ": damaged (CRC or JSON)");
             continue;
         }

@@ -85,14 +85,15 @@ struct AimRig {
     }
     ~AimRig() { fs::remove_all(dir); }
     // All `aim` picture lines so far.
-    std::vector<fw::FlatObject> pictures() const
+    std::vector<reading::FlatObject> pictures() const
     {
-        std::vector<fw::FlatObject> out;
+        std::vector<reading::FlatObject> out;
         size_t at = 0;
         while (at < serial.out.size()) {
             const size_t nl = serial.out.find('\n', at);
-            fw::FlatObject o;
-            if (fw::parseFlatObject(serial.out.substr(at, nl - at), &o).empty() && o.find("picture")) out.push_back(o);
+            reading::FlatObject o;
+            if (reading::parseFlatObject(serial.out.substr(at, nl - at), &o).empty() && o.find("picture"))
+                out.push_back(o);
             at = nl == std::string::npos ? serial.out.size() : nl + 1;
         }
         return out;
@@ -118,7 +119,7 @@ TEST(Aim, LivePictureWithTheEndFaceFocusScoreAndHintUntilTimeRunsOut)
     }
     const auto pics = rig.pictures();
     ASSERT_GE(pics.size(), 4u) << rig.serial.out;
-    const fw::FlatObject &p = pics.front();
+    const reading::FlatObject &p = pics.front();
     EXPECT_TRUE(p.find("found")->boolean);
     EXPECT_GT(p.find("focus")->number, 1.0);
     EXPECT_EQ(p.find("hint")->text, "ok") << rig.serial.out; // the sample is centred and sharp
@@ -195,7 +196,7 @@ TEST(Snapshot, FullFramePngWithTheFittedBoundariesInTheJournal)
     ASSERT_TRUE(rig.device->start().ok());
     rig.serial.in = "{\"cmd\":\"snapshot\",\"id\":\"s1\"}\n";
     rig.device->tick();
-    const fw::FlatObject s = rig.serial.last("snapshot");
+    const reading::FlatObject s = rig.serial.last("snapshot");
     ASSERT_TRUE(s.find("image")) << rig.serial.out;
     EXPECT_EQ(s.find("tag")->text, "s1");
     EXPECT_TRUE(s.find("found")->boolean);

@@ -194,8 +194,8 @@ Outcome runModel(const DriverModel &m, int shots, uint32_t seed)
         serial.out.clear();
         serial.in = "trigger\n";
         device.tick();
-        const fw::FlatObject r = serial.last("result");
-        const fw::JsonField *seq = r.find("frame_seq"), *lat = r.find("latency_us");
+        const reading::FlatObject r = serial.last("result");
+        const reading::JsonField *seq = r.find("frame_seq"), *lat = r.find("latency_us");
         if (!seq || !lat) {
             ADD_FAILURE() << m.name << ": no capture fields in " << serial.out;
             break;

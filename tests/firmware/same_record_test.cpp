@@ -8,7 +8,6 @@
 #include <sstream>
 
 #include "firmware/device.h"
-#include "firmware/json_line.h"
 #include "friction/friction_models.h"
 #include "hal/file/clocks.h"
 #include "hal/file/file_camera.h"
@@ -20,6 +19,7 @@
 #include "host_tools/record_measurer.h"
 #include "host_tools/result_writer.h"
 #include "reading/reading_record.h"
+#include "reading/record_line.h"
 #include "tests/support/recording_serial.h"
 
 using namespace icacam;
@@ -34,7 +34,7 @@ struct NullDisplay final : hal::Display {
 const std::string kSample = std::string(ICACAM_SOURCE_DIR) + "/tests/data/sample";
 
 // The device's result line for one frame of the sample set.
-fw::FlatObject deviceResult(const std::string &image, const fw::Config &base, const friction::FrictionModel &model)
+reading::FlatObject deviceResult(const std::string &image, const fw::Config &base, const friction::FrictionModel &model)
 {
     char t[] = "/tmp/icacam-same-XXXXXX";
     const fs::path dir = ::mkdtemp(t);
@@ -54,12 +54,12 @@ fw::FlatObject deviceResult(const std::string &image, const fw::Config &base, co
     EXPECT_TRUE(device.start().ok());
     serial.in += "trigger\n";
     device.tick();
-    const fw::FlatObject r = serial.last("result");
+    const reading::FlatObject r = serial.last("result");
     fs::remove_all(dir);
     return r;
 }
 
-fw::FlatObject hostResult(const std::string &manifestText, const friction::FrictionModel &model)
+reading::FlatObject hostResult(const std::string &manifestText, const friction::FrictionModel &model)
 {
     host::Manifest manifest;
     std::string err;
@@ -80,16 +80,16 @@ fw::FlatObject hostResult(const std::string &manifestText, const friction::Frict
     writer.write(row);
     std::string line = out.str();
     line.pop_back();
-    fw::FlatObject o;
-    EXPECT_EQ(fw::parseFlatObject(line, &o), "");
+    reading::FlatObject o;
+    EXPECT_EQ(reading::parseFlatObject(line, &o), "");
     return o;
 }
 
-void expectSameReading(const fw::FlatObject &device, const fw::FlatObject &host)
+void expectSameReading(const reading::FlatObject &device, const reading::FlatObject &host)
 {
     for (int i = 0; i < reading::readingFieldCount(); ++i) {
         const char *name = reading::readingFieldName(i);
-        const fw::JsonField *d = device.find(name), *h = host.find(name);
+        const reading::JsonField *d = device.find(name), *h = host.find(name);
         ASSERT_TRUE(d) << "device record lacks " << name;
         ASSERT_TRUE(h) << "icacam measure record lacks " << name;
         EXPECT_EQ(int(d->type), int(h->type)) << name;
@@ -107,17 +107,17 @@ TEST(OneInstrument, DeviceAndMeasureGiveTheSameReading)
     cfg.n = 0.1742, cfg.kMpa = 647, cfg.mmPerPx = 0.0153924;
     cfg.cameraMaxWidth = 2048, cfg.cameraMaxHeight = 1536;
     // Nothing more declared: the reduction is inferred from the silhouette on both.
-    const fw::FlatObject d1 = deviceResult("synth-0002.jpg", cfg, *model);
-    const fw::FlatObject h1 =
+    const reading::FlatObject d1 = deviceResult("synth-0002.jpg", cfg, *model);
+    const reading::FlatObject h1 =
         hostResult("id,image,n,k_mpa,mm_per_px\na,images/synth-0002.jpg,0.1742,647,0.0153924\n", *model);
     ASSERT_NE(d1.find("mu"), nullptr);
-    EXPECT_EQ(d1.find("mu")->type, fw::JsonField::Type::Number);
+    EXPECT_EQ(d1.find("mu")->type, reading::JsonField::Type::Number);
     expectSameReading(d1, h1);
 
     // Declared final height and tolerances, set the device's way and the manifest's way.
     cfg.hFinalMm = 7.6, cfg.nTol = 0.02, cfg.toleranceMu = 0.02, cfg.toleranceRel = 0.04, cfg.mmPerPxTolRel = 0.01;
-    const fw::FlatObject d2 = deviceResult("synth-0002.jpg", cfg, *model);
-    const fw::FlatObject h2 =
+    const reading::FlatObject d2 = deviceResult("synth-0002.jpg", cfg, *model);
+    const reading::FlatObject h2 =
         hostResult("id,image,n,k_mpa,mm_per_px,h_final_mm,n_tol,tolerance_mu,tolerance_rel,mm_per_px_tol\n"
                    "a,images/synth-0002.jpg,0.1742,647,0.0153924,7.6,0.02,0.02,0.04,0.01\n",
                    *model);
@@ -137,10 +137,10 @@ TEST(OneInstrument, TheDeviceRunsAnyModelByName)
         ASSERT_EQ(fw::setConfigKey(&c, "reading.model", name, false), "") << name;
         const friction::FrictionModel *model = friction::frictionModel(c.model);
         ASSERT_NE(model, nullptr) << name;
-        const fw::FlatObject d = deviceResult("synth-0002.jpg", c, *model);
-        const fw::FlatObject h = hostResult("id,image,n,k_mpa,mm_per_px,h_final_mm\n"
-                                            "a,images/synth-0002.jpg,0.1742,647,0.0153924,7.5\n",
-                                            *model);
+        const reading::FlatObject d = deviceResult("synth-0002.jpg", c, *model);
+        const reading::FlatObject h = hostResult("id,image,n,k_mpa,mm_per_px,h_final_mm\n"
+                                                 "a,images/synth-0002.jpg,0.1742,647,0.0153924,7.5\n",
+                                                 *model);
         ASSERT_NE(d.find("model"), nullptr);
         EXPECT_EQ(d.find("model")->text, name);
         expectSameReading(d, h);

@@ -795,7 +795,7 @@ TEST_F(V4l2Mock, FirmwareStartsWithoutItsCameraAndMeasuresOnceTheNodeAppears)
     friction::PaperModel model;
     fw::Device device({cam, trigger, led, display, serial, storage, clock_}, cfg, model);
     ASSERT_TRUE(device.start().ok());
-    const fw::FlatObject hello = serial.last("hello");
+    const reading::FlatObject hello = serial.last("hello");
     ASSERT_TRUE(hello.find("camera")) << serial.out;
     EXPECT_EQ(hello.find("camera")->text, "missing");
     EXPECT_NE(hello.find("camera_problem")->text.find("/dev/video1"), std::string::npos);
@@ -817,14 +817,14 @@ TEST_F(V4l2Mock, FirmwareStartsWithoutItsCameraAndMeasuresOnceTheNodeAppears)
     ::usleep(150000);
     serial.out.clear();
     device.tick();
-    const fw::FlatObject back = serial.last("camera");
+    const reading::FlatObject back = serial.last("camera");
     ASSERT_TRUE(back.find("camera")) << serial.out;
     EXPECT_EQ(back.find("camera")->text, "ok");
     EXPECT_EQ(fw::readRow(display.last, 0), "icacam  ready");
     expose(nowNs() + 1000000000, 90);
     serial.in = "trigger\n";
     device.tick();
-    const fw::FlatObject r = serial.last("result");
+    const reading::FlatObject r = serial.last("result");
     ASSERT_TRUE(r.find("source")) << serial.out;
     EXPECT_EQ(r.find("source")->text, "/dev/video1");
     ASSERT_TRUE(r.find("latency_us"));

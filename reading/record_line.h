@@ -1,11 +1,17 @@
 #pragma once
-// Just enough JSON for one-line messages: a flat object of strings, numbers, booleans and
-// nulls in, a builder out. Nested values are refused: the protocol has none.
+// The record's one line format: a flat JSON object per line (the device's serial lines and
+// journal, `icacam measure --format jsonl`, the loop's journal reader). Just enough JSON: a
+// flat object of strings, numbers, booleans and nulls in, a builder out (nested values are
+// refused: the protocol has none); the reading's fields into a line (JsonRecordSink); and the
+// journal's seal, a CRC-32 of the line before its last field.
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <string_view>
 
-namespace icacam::fw {
+#include "reading/reading_record.h"
+
+namespace icacam::reading {
 
 struct JsonField {
     enum class Type { String, Number, Bool, Null } type = Type::Null;
@@ -46,4 +52,24 @@ private:
     bool first_ = true;
 };
 
-} // namespace icacam::fw
+// The reading's fields (reading/reading_record.h) into a JSON line.
+class JsonRecordSink final : public RecordSink {
+public:
+    explicit JsonRecordSink(JsonBuilder *j) : j_(j) {}
+    void text(const char *name, std::string_view v) override { j_->str(name, v); }
+    void number(const char *name, double v, int decimals) override { j_->fixed(name, v, decimals); }
+    void absent(const char *name) override { j_->raw(name, "null"); }
+
+private:
+    JsonBuilder *j_;
+};
+
+// CRC-32 (IEEE 802.3, reflected) of data.
+uint32_t recordCrc32(std::string_view data);
+// Seals a line without its closing brace: appends ,"crc32":"xxxxxxxx"} (the CRC of what
+// precedes it). Allocates only if line must grow.
+void sealRecordLine(std::string *line);
+// A line as sealRecordLine leaves it, its CRC matching.
+bool recordLineIntact(std::string_view line);
+
+} // namespace icacam::reading

@@ -1,11 +1,13 @@
-#include "firmware/json_line.h"
+#include "reading/record_line.h"
+
+#include <array>
 
 #include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
-namespace icacam::fw {
+namespace icacam::reading {
 
 const JsonField *FlatObject::find(std::string_view key) const
 {
@@ -231,4 +233,42 @@ JsonBuilder &JsonBuilder::raw(std::string_view key, std::string_view json)
     return *this;
 }
 
-} // namespace icacam::fw
+namespace {
+constexpr std::string_view kCrcKey = ",\"crc32\":\"";
+}
+
+uint32_t recordCrc32(std::string_view data)
+{
+    // IEEE 802.3 polynomial, reflected, table built once at compile time.
+    static constexpr auto kTable = [] {
+        std::array<uint32_t, 256> t{};
+        for (uint32_t i = 0; i < 256; ++i) {
+            uint32_t c = i;
+            for (int k = 0; k < 8; ++k) c = (c & 1u) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
+            t[i] = c;
+        }
+        return t;
+    }();
+    uint32_t c = 0xFFFFFFFFu;
+    for (char ch : data) c = kTable[(c ^ uint8_t(ch)) & 0xFFu] ^ (c >> 8);
+    return c ^ 0xFFFFFFFFu;
+}
+
+void sealRecordLine(std::string *line)
+{
+    char tail[32];
+    std::snprintf(tail, sizeof tail, "%.*s%08x\"}", int(kCrcKey.size()), kCrcKey.data(), recordCrc32(*line));
+    line->append(tail);
+}
+
+bool recordLineIntact(std::string_view line)
+{
+    const size_t at = line.rfind(kCrcKey);
+    if (at == std::string_view::npos || line.size() != at + kCrcKey.size() + 10) return false;
+    if (line.substr(line.size() - 2) != "\"}") return false;
+    char want[9];
+    std::snprintf(want, sizeof want, "%08x", recordCrc32(line.substr(0, at)));
+    return line.substr(at + kCrcKey.size(), 8) == want;
+}
+
+} // namespace icacam::reading
