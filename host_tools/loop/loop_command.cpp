@@ -10,11 +10,12 @@
 
 #include "friction/friction_models.h"
 #include "host_tools/cli_options.h"
+#include "host_tools/fe/fe_table_sources.h"
+#include "host_tools/fe/reduction_slope.h"
 #include "host_tools/image_file.h"
 #include "host_tools/loop/journal_records.h"
 #include "host_tools/loop/loop_physics_report.h"
 #include "host_tools/loop/loop_plot.h"
-#include "host_tools/loop/reduction_table.h"
 #include "host_tools/manifest.h"
 #include "host_tools/number_text.h"
 #include "host_tools/record_measurer.h"
@@ -297,7 +298,7 @@ LoopSummary runLoopOn(const Manifest &manifest, const std::string &source,
     const std::vector<Candidate> cands = buildCandidates(usable);
     // The recorded reduction is also ranked by its physics: the change in μ when u is carried
     // to 50 % with the FE du/dr (form "fe"), not only by a linear patch.
-    ReductionSlope slope;
+    fe::ReductionSlope slope;
     bool slopeLoaded = false;
     std::map<std::string, std::vector<double>> physicalForms;
     bool anyRecorded = false;
@@ -314,7 +315,7 @@ LoopSummary runLoopOn(const Manifest &manifest, const std::string &source,
                 if (r.reduction < 0) continue;
                 ModelInputs in;
                 in.uMm = r.uMm, in.n = r.n, in.kMpa = r.kMpa, in.d0Mm = r.d0Mm, in.h0Mm = r.h0Mm;
-                in.uMm = uAtModelReduction(*model, slope, in, r.reduction);
+                in.uMm = fe::uAtModelReduction(*model, slope, in, r.reduction);
                 change[i] = r.muModel - model->estimate(in).mu;
             }
             physicalForms["reduction"] = std::move(change);
@@ -378,7 +379,7 @@ LoopSummary runLoopOn(const Manifest &manifest, const std::string &source,
                 auto est = r.diagnostics.find("diag_reduction_est");
                 if (est != r.diagnostics.end()) red = est->second;
             }
-            in.uMm = uAtModelReduction(*model, slope, in, red); // red < 0: left as measured
+            in.uMm = fe::uAtModelReduction(*model, slope, in, red); // red < 0: left as measured
             muPhys[i] = model->estimate(in).mu;
             after[i] = muPhys[i] - r.muRef;
             delta[i] = r.muModel - muPhys[i]; // what the correction removed
@@ -582,20 +583,6 @@ LoopSummary runLoopOn(const Manifest &manifest, const std::string &source,
     return s;
 }
 
-std::vector<std::string> splitSources(const std::string &sources)
-{
-    std::vector<std::string> out;
-    size_t at = 0;
-    while (at < sources.size()) {
-        const size_t end = sources.find(' ', at);
-        const std::string part = sources.substr(at, end == std::string::npos ? std::string::npos : end - at);
-        if (!part.empty()) out.push_back(part);
-        if (end == std::string::npos) break;
-        at = end + 1;
-    }
-    return out;
-}
-
 } // namespace loop
 
 int loopCommand(const std::vector<std::string> &args)
@@ -643,7 +630,7 @@ int loopCommand(const std::vector<std::string> &args)
         throw cli::UsageError("--journal and --reference go together", usage());
     // By default the FE data the product's table was generated from (its kFeSources).
     if (feSweeps.empty())
-        for (const std::string &name : loop::splitSources(friction::reduction_table::kFeSources))
+        for (const std::string &name : fe::splitSources(friction::reduction_table::kFeSources))
             feSweeps.push_back(repoFile(name));
     const loop::LoopSummary s =
         journalDir.empty() ? loop::runLoop(manifestPath, reportDir, modelName, opt, feSweeps)

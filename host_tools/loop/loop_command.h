@@ -37,7 +37,7 @@ struct LoopSummary {
 };
 
 // Runs the whole analysis on a manifest and writes the report folder. feSweeps: the FE sweep
-// CSV(s) for du/dr (base data chosen over all of them, fe_base_data.h).
+// CSV(s) for du/dr (base data chosen over all of them, host_tools/fe/fe_base_data.h).
 LoopSummary runLoop(const std::string &manifestPath, const std::string &reportDir, const std::string &modelName,
                     const RankingOptions &opt, const std::vector<std::string> &feSweeps);
 
@@ -53,8 +53,5 @@ LoopSummary runLoopOn(const Manifest &manifest, const std::string &source,
                       const std::vector<std::string> &skippedBefore, const std::string &reportDir,
                       const std::string &modelName, const RankingOptions &opt,
                       const std::vector<std::string> &feSweeps);
-
-// The space-separated repository paths of a table's kFeSources.
-std::vector<std::string> splitSources(const std::string &sources);
 
 } // namespace icacam::host::loop

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "friction/friction_model.h"
 #include "host_tools/loop/loop_analysis.h"
 
 namespace icacam::host::loop {
