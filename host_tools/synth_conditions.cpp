@@ -19,8 +19,8 @@
 #include "host_tools/calibrate_command.h"
 #include "host_tools/calibration_renderer.h"
 #include "host_tools/end_face_renderer.h"
+#include "host_tools/model_inverse.h"
 #include "host_tools/specimen_body_renderer.h"
-#include "host_tools/synth_command.h"
 #include "vision/plane_calibration.h"
 
 namespace icacam::host {
@@ -53,12 +53,13 @@ struct Specimen {
 
 Specimen drawSpecimen(Rng &rng, double reductionLo, double reductionHi)
 {
+    const friction::PaperModel paper;
     for (;;) {
         Specimen s;
         s.n = uniform(rng, 0.05, 0.5), s.mu = uniform(rng, 0.06, 0.29);
         s.kMpa = uniform(rng, 250, 1250);
         s.reduction = reductionLo == reductionHi ? reductionLo : uniform(rng, reductionLo, reductionHi);
-        const double u50 = uForMu(s.mu, s.n);
+        const double u50 = uForMu(paper, s.mu, s.n);
         const double rOuter50 = 6.85 - 0.95 * u50 + uniform(rng, -0.05, 0.05);
         const double rMax50 = 5.0 * std::sqrt(2.0) * (1.008 + 0.034 * u50);
         if (s.reduction == 0.5) {

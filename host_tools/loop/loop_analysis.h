@@ -9,8 +9,6 @@
 #include <string>
 #include <vector>
 
-#include "friction/friction_model.h"
-
 namespace icacam::host::loop {
 
 struct LoopRecord {
@@ -118,10 +116,6 @@ std::vector<RankedCandidate> rankCandidates(const std::vector<Candidate> &candid
 // Cross-validated predictions of the residual by one candidate (for before/after plots).
 std::vector<double> cvPredict(const Candidate &c, const std::vector<double> &residual, const std::vector<int> &fold,
                               int folds, const std::vector<double> *scaleSensitivity = nullptr);
-
-// Inverse of the model in u at fixed n (bisection on [0, 1.25] mm at D0 = 10): for tests and
-// synthetic record sets.
-double uForMu(const friction::FrictionModel &model, double mu, double n, double d0Mm = 10);
 
 double rms(const std::vector<double> &v);
 

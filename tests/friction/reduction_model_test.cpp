@@ -19,13 +19,13 @@
 #include "host_tools/fe/fe_table_sources.h"
 #include "host_tools/fe/reduction_slope.h"
 #include "host_tools/fe/reduction_table.h"
-#include "host_tools/loop/loop_analysis.h"
+#include "host_tools/model_inverse.h"
 
 using namespace icacam::host::fe;
 using icacam::friction::ModelInputs;
 using icacam::friction::PaperModel;
 using icacam::friction::ReductionCorrectedModel;
-using icacam::host::loop::uForMu;
+using icacam::host::uForMu;
 
 namespace {
 
