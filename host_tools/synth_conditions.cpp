@@ -16,8 +16,8 @@
 #include "friction/paper_model.h"
 #include "friction/radii_consistency.h"
 #include "friction/reduction_corrected_model.h"
-#include "host_tools/calibrate_command.h"
 #include "host_tools/calibration_renderer.h"
+#include "host_tools/camera_calibrator.h"
 #include "host_tools/end_face_renderer.h"
 #include "host_tools/model_inverse.h"
 #include "host_tools/specimen_body_renderer.h"
@@ -175,8 +175,11 @@ CalibratedCamera makeCalibratedCamera(Rng &rng, const fs::path &dir)
     std::snprintf(spec, sizeof spec, "chessboard:%dx%d:%.2f", board.cols, board.rows, board.squareMm);
     const std::string out = (dir / "camera.cal").string();
     // What `icacam calibrate` prints (views used, RMS, the camera) is the set's record of it.
-    calibrateCommand(
-        {"--images", views.string(), "--board", spec, "--flat", (views / "flat.png").string(), "--out", out});
+    CameraCalibrationInputs in;
+    in.imagesDir = views.string();
+    in.board = spec;
+    in.flatPhoto = (views / "flat.png").string();
+    writeCameraCalibration(in, out);
     calibration::CalibrationFile file;
     if (std::string e = calibration::readCalibrationFile(out, &file); !e.empty()) throw std::runtime_error(e);
     c.plane = file.plane;
