@@ -263,6 +263,11 @@ bool isSymptom(const std::string &name)
     return false;
 }
 
+bool isReductionCandidate(const std::string &name)
+{
+    return name == "reduction" || name == "h_final_mm" || name == "diag_reduction_est";
+}
+
 double rms(const std::vector<double> &v)
 {
     double s = 0;

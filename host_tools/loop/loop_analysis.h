@@ -40,6 +40,10 @@ struct Candidate {
 // column named after one of them (r_outer_px, u_over_r0, ...).
 bool isSymptom(const std::string &name);
 
+// The specimen's height reduction as a candidate: recorded (h_final_mm, the derived
+// reduction) or as the silhouette implies it (diag_reduction_est).
+bool isReductionCandidate(const std::string &name);
+
 struct RankedCandidate {
     std::string name, kind;
     // "mu": an offset in μ (per level, or linear in the value); "scale": a relative scale of
