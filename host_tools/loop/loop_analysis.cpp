@@ -362,6 +362,200 @@ std::vector<double> cvPredict(const Candidate &c, const std::vector<double> &res
     return pred;
 }
 
+namespace {
+
+// The forms an effect can take, each with its baseline's held-out errors: an offset in μ, a
+// relative scale of u (optics), an additive shift of u (a process that widens the ring:
+// Δμ = dμ/du · Δu).
+struct Form {
+    const char *name;
+    const std::vector<double> *sens;
+    std::vector<double> e0;
+};
+
+std::vector<Form> linearForms(const std::vector<double> &y, const std::vector<int> &fold, int folds,
+                              const std::vector<double> *scaleSensitivity, const std::vector<double> *uSensitivity)
+{
+    std::vector<Form> formList;
+    formList.push_back({"mu", nullptr, cvErrors(nullptr, y, fold, folds)});
+    if (scaleSensitivity)
+        formList.push_back({"scale", scaleSensitivity, cvErrors(nullptr, y, fold, folds, scaleSensitivity)});
+    if (uSensitivity) formList.push_back({"u", uSensitivity, cvErrors(nullptr, y, fold, folds, uSensitivity)});
+    return formList;
+}
+
+// In-sample sum of squares and parameter count of a linear model (nullptr: the baseline).
+double inSample(const Candidate *c, const std::vector<double> &y, const std::vector<int> &fold,
+                const std::vector<double> *sens, int *params)
+{
+    std::vector<double> pred(y.size(), 0);
+    fitPredict(c, y, fold, -1, &pred, sens);
+    for (size_t i = 0; i < y.size(); ++i) pred[i] = y[i] - pred[i];
+    if (!c)
+        *params = sens ? 2 : 1;
+    else if (c->kind == "categorical")
+        *params = int(std::set<std::string>(c->levels.begin(), c->levels.end()).size()) + (sens ? 1 : 0);
+    else
+        *params = sens ? 3 : 2;
+    return sumSquares(pred);
+}
+
+// Pearson r of a numeric candidate with the residual (for reading only).
+double correlation(const Candidate &c, const std::vector<double> &y)
+{
+    double sx = 0, sy2 = 0, sxy = 0, mx = 0, myv = mean(y);
+    int cnt = 0;
+    for (size_t i = 0; i < y.size(); ++i)
+        if (std::isfinite(c.x[i])) {
+            mx += c.x[i];
+            ++cnt;
+        }
+    mx = cnt ? mx / cnt : 0;
+    for (size_t i = 0; i < y.size(); ++i) {
+        if (!std::isfinite(c.x[i])) continue;
+        sx += (c.x[i] - mx) * (c.x[i] - mx);
+        sy2 += (y[i] - myv) * (y[i] - myv);
+        sxy += (c.x[i] - mx) * (y[i] - myv);
+    }
+    return sx > 0 && sy2 > 0 ? sxy / std::sqrt(sx * sy2) : 0;
+}
+
+// What ranks one candidate: its held-out errors in its best form against that form's
+// baseline, and the in-sample fits of the nested test.
+struct FormScore {
+    std::vector<double> e1;                  // held-out errors with the candidate
+    const std::vector<double> *e0 = nullptr; // held-out errors of the form's baseline
+    std::string form = "mu";
+    double sse0 = 0, sse1 = 0;
+    int p0 = 0, p1 = 0;
+    bool better(const std::vector<double> &base, const std::vector<double> &with) const
+    {
+        return rms(base) - rms(with) > rms(*e0) - rms(e1);
+    }
+};
+
+// The candidate's best linear form (mu, scale or u): the regression patch.
+FormScore bestLinearForm(const Candidate &c, const std::vector<double> &y, const std::vector<int> &fold, int folds,
+                         const std::vector<Form> &formList)
+{
+    FormScore f;
+    f.e1 = cvErrors(&c, y, fold, folds);
+    f.e0 = &formList[0].e0;
+    const std::vector<double> *formSens = nullptr;
+    for (size_t fi = 1; fi < formList.size(); ++fi) {
+        std::vector<double> e2 = cvErrors(&c, y, fold, folds, formList[fi].sens);
+        if (f.better(formList[fi].e0, e2)) {
+            f.e1 = std::move(e2);
+            f.e0 = &formList[fi].e0;
+            f.form = formList[fi].name;
+            formSens = formList[fi].sens;
+        }
+    }
+    // The chosen form's nested test: the in-sample fit against the form's baseline.
+    f.sse0 = inSample(nullptr, y, fold, formSens, &f.p0);
+    f.sse1 = inSample(&c, y, fold, formSens, &f.p1);
+    return f;
+}
+
+// A physical form in place of the linear one where it explains more over its baseline: the
+// change in μ a physical model makes (form "fe"), or a form fitted elsewhere (a length factor
+// or an n per group).
+void tryPhysicalForms(const Candidate &c, const std::vector<double> &y, const std::vector<int> &fold, int folds,
+                      const std::vector<Form> &formList,
+                      const std::map<std::string, std::vector<double>> *physicalForms,
+                      const std::map<std::string, FittedForm> *fittedForms, FormScore *f)
+{
+    if (physicalForms) {
+        const auto it = physicalForms->find(c.name);
+        if (it != physicalForms->end() && it->second.size() == y.size()) {
+            std::vector<double> e2 = cvErrors(nullptr, y, fold, folds, &it->second);
+            if (f->better(formList[0].e0, e2)) {
+                f->e1 = std::move(e2);
+                f->e0 = &formList[0].e0;
+                f->form = "fe";
+                f->sse0 = inSample(nullptr, y, fold, nullptr, &f->p0);
+                f->sse1 = inSample(nullptr, y, fold, &it->second, &f->p1);
+            }
+        }
+    }
+    if (fittedForms) {
+        const auto it = fittedForms->find(c.name);
+        if (it != fittedForms->end() && it->second.errors.size() == y.size() &&
+            f->better(it->second.baseline, it->second.errors)) {
+            f->e1 = it->second.errors;
+            f->e0 = &it->second.baseline;
+            f->form = it->second.form;
+            f->sse0 = sumSquares(it->second.baselineFit), f->p0 = it->second.params0;
+            f->sse1 = sumSquares(it->second.errorsFit), f->p1 = it->second.params1;
+        }
+    }
+}
+
+// A symptom never outranks a cause it cannot be told from: each significant recorded
+// condition moves ahead of every symptom directly above it whose held-out |errors| are not
+// significantly smaller than its own (paired z < 2). It stops at a better cause or at a
+// symptom that is significantly better (that symptom sees something the cause does not).
+void putCausesBeforeSymptoms(std::vector<RankedCandidate> &out, const std::vector<std::vector<double>> &errors,
+                             std::vector<size_t> *order)
+{
+    std::vector<size_t> &o = *order;
+    for (size_t k = 1; k < o.size(); ++k) {
+        RankedCandidate &c = out[o[k]];
+        if (c.symptom || !c.significant) continue;
+        size_t pos = k;
+        while (pos > 0 && out[o[pos - 1]].symptom && pairedZ(errors[o[k]], errors[o[pos - 1]]) < 2.0) --pos;
+        if (pos == k) continue;
+        for (size_t j = pos; j < k; ++j) c.preferredOver.push_back(out[o[j]].name);
+        const size_t moved = o[k];
+        o.erase(o.begin() + long(k));
+        o.insert(o.begin() + long(pos), moved);
+    }
+}
+
+// A significant symptom still leads: it established that there is an effect, and the
+// question left is its name. A cause not significant on its own comes first when it
+// explains the residual as well as every symptom above it (paired z < 2), passes the test
+// of a single comparison (z above the one-sided α quantile, the same minimum gain), and
+// explains the leading symptom itself (the symptom's own values, F test at α): of such
+// causes, the one that explains the symptom best (R²). A chance correlate of the residual
+// rarely also explains the measurement; the cause that moved the geometry does.
+void nameTheLeadingSymptomsCause(const std::vector<Candidate> &candidates, std::vector<RankedCandidate> &out,
+                                 const std::vector<std::vector<double>> &errors, const RankingOptions &opt,
+                                 std::vector<size_t> *order)
+{
+    std::vector<size_t> &o = *order;
+    size_t lead = o.size(); // the first significant symptom, when no significant cause leads
+    if (!o.empty() && !(out[o[0]].significant && !out[o[0]].symptom))
+        for (size_t k = 0; k < o.size() && lead == o.size(); ++k)
+            if (out[o[k]].symptom && out[o[k]].significant && candidates[o[k]].kind != "categorical") lead = k;
+    if (lead == o.size()) return;
+    const double zSingle = normalUpperQuantile(opt.alpha);
+    size_t best = o.size();
+    double bestR2 = -1;
+    for (size_t k = 0; k < o.size(); ++k) {
+        const RankedCandidate &c = out[o[k]];
+        if (c.symptom || c.significant ||
+            !(c.gain > 0 && c.z > zSingle && c.gain >= opt.minRelativeGain * c.cvRmsBefore))
+            continue;
+        bool told = pairedZ(errors[o[k]], errors[o[lead]]) >= 2.0;
+        for (size_t j = 0; j < k && !told; ++j) told = out[o[j]].symptom && pairedZ(errors[o[k]], errors[o[j]]) >= 2.0;
+        double zAssoc = 0;
+        const double r2 = explainedShare(candidates[o[lead]], candidates[o[k]], &zAssoc);
+        if (!told && zAssoc > zSingle && r2 > bestR2) best = k, bestR2 = r2;
+    }
+    if (best == o.size()) return;
+    RankedCandidate &c = out[o[best]];
+    c.significant = c.viaSymptom = true;
+    for (size_t j = 0; j < best; ++j)
+        if (out[o[j]].symptom) c.preferredOver.push_back(out[o[j]].name);
+    if (best < lead) c.preferredOver.push_back(out[o[lead]].name);
+    const size_t moved = o[best];
+    o.erase(o.begin() + long(best));
+    o.insert(o.begin(), moved);
+}
+
+} // namespace
+
 std::vector<RankedCandidate> rankCandidates(const std::vector<Candidate> &candidates, const std::vector<double> &y,
                                             const RankingOptions &opt, const std::vector<double> *scaleSensitivity,
                                             const std::vector<double> *uSensitivity,
@@ -372,169 +566,36 @@ std::vector<RankedCandidate> rankCandidates(const std::vector<Candidate> &candid
     if (y.size() < 4) return out;
     const int folds = std::clamp(opt.folds, 2, int(y.size()));
     const std::vector<int> fold = foldAssignment(y.size(), folds, opt.seed);
-    // The forms an effect can take: an offset in μ, a relative scale of u (optics), an
-    // additive shift of u (a process that widens the ring: Δμ = dμ/du · Δu).
-    struct Form {
-        const char *name;
-        const std::vector<double> *sens;
-        std::vector<double> e0;
-    };
-    std::vector<Form> formList;
-    formList.push_back({"mu", nullptr, cvErrors(nullptr, y, fold, folds)});
-    if (scaleSensitivity)
-        formList.push_back({"scale", scaleSensitivity, cvErrors(nullptr, y, fold, folds, scaleSensitivity)});
-    if (uSensitivity) formList.push_back({"u", uSensitivity, cvErrors(nullptr, y, fold, folds, uSensitivity)});
-    const size_t forms = formList.size();
-    const size_t tries = candidates.size() * forms + (physicalForms ? physicalForms->size() : 0) +
+    const std::vector<Form> formList = linearForms(y, fold, folds, scaleSensitivity, uSensitivity);
+    const size_t tries = candidates.size() * formList.size() + (physicalForms ? physicalForms->size() : 0) +
                          (fittedForms ? fittedForms->size() : 0);
     const double zCrit = normalUpperQuantile(opt.alpha / double(std::max<size_t>(tries, 1)));
-    // In-sample sum of squares and parameter count of a linear model (nullptr: the baseline).
-    auto inSample = [&](const Candidate *c, const std::vector<double> *sens, int *params) {
-        std::vector<double> pred(y.size(), 0);
-        fitPredict(c, y, fold, -1, &pred, sens);
-        for (size_t i = 0; i < y.size(); ++i) pred[i] = y[i] - pred[i];
-        if (!c)
-            *params = sens ? 2 : 1;
-        else if (c->kind == "categorical")
-            *params = int(std::set<std::string>(c->levels.begin(), c->levels.end()).size()) + (sens ? 1 : 0);
-        else
-            *params = sens ? 3 : 2;
-        return sumSquares(pred);
-    };
     std::vector<std::vector<double>> errors; // held-out errors per candidate, as in out
     for (const Candidate &c : candidates) {
-        std::vector<double> e1 = cvErrors(&c, y, fold, folds);
-        const std::vector<double> *e0 = &formList[0].e0;
-        std::string form = "mu";
-        const std::vector<double> *formSens = nullptr;
-        for (size_t fi = 1; fi < formList.size(); ++fi) {
-            std::vector<double> e2 = cvErrors(&c, y, fold, folds, formList[fi].sens);
-            if (rms(formList[fi].e0) - rms(e2) > rms(*e0) - rms(e1)) {
-                e1 = std::move(e2);
-                e0 = &formList[fi].e0;
-                form = formList[fi].name;
-                formSens = formList[fi].sens;
-            }
-        }
-        const std::string patchForm = form;
-        const double cvRmsPatch = rms(e1);
-        // The chosen form's nested test: the in-sample fit against the form's baseline.
-        int p0 = 0, p1 = 0;
-        double sse0 = inSample(nullptr, formSens, &p0), sse1 = inSample(&c, formSens, &p1);
-        if (physicalForms) {
-            const auto it = physicalForms->find(c.name);
-            if (it != physicalForms->end() && it->second.size() == y.size()) {
-                std::vector<double> e2 = cvErrors(nullptr, y, fold, folds, &it->second);
-                if (rms(formList[0].e0) - rms(e2) > rms(*e0) - rms(e1)) {
-                    e1 = std::move(e2);
-                    e0 = &formList[0].e0;
-                    form = "fe";
-                    sse0 = inSample(nullptr, nullptr, &p0);
-                    sse1 = inSample(nullptr, &it->second, &p1);
-                }
-            }
-        }
-        if (fittedForms) {
-            const auto it = fittedForms->find(c.name);
-            if (it != fittedForms->end() && it->second.errors.size() == y.size() &&
-                rms(it->second.baseline) - rms(it->second.errors) > rms(*e0) - rms(e1)) {
-                e1 = it->second.errors;
-                e0 = &it->second.baseline;
-                form = it->second.form;
-                sse0 = sumSquares(it->second.baselineFit), p0 = it->second.params0;
-                sse1 = sumSquares(it->second.errorsFit), p1 = it->second.params1;
-            }
-        }
+        FormScore f = bestLinearForm(c, y, fold, folds, formList);
         RankedCandidate r;
+        r.patchForm = f.form;
+        r.cvRmsPatch = rms(f.e1);
+        tryPhysicalForms(c, y, fold, folds, formList, physicalForms, fittedForms, &f);
         r.name = c.name;
         r.kind = c.kind;
         r.symptom = c.symptom;
-        r.form = form;
-        r.patchForm = patchForm;
-        r.cvRmsPatch = cvRmsPatch;
-        r.cvRmsBefore = rms(*e0);
-        r.cvRmsAfter = rms(e1);
+        r.form = f.form;
+        r.cvRmsBefore = rms(*f.e0);
+        r.cvRmsAfter = rms(f.e1);
         r.gain = r.cvRmsBefore - r.cvRmsAfter;
-        r.z = nestedZ(sse0, p0, sse1, p1, y.size());
-        if (c.kind != "categorical") {
-            double sx = 0, sy2 = 0, sxy = 0, mx = 0, myv = mean(y);
-            int cnt = 0;
-            for (size_t i = 0; i < y.size(); ++i)
-                if (std::isfinite(c.x[i])) {
-                    mx += c.x[i];
-                    ++cnt;
-                }
-            mx = cnt ? mx / cnt : 0;
-            for (size_t i = 0; i < y.size(); ++i) {
-                if (!std::isfinite(c.x[i])) continue;
-                sx += (c.x[i] - mx) * (c.x[i] - mx);
-                sy2 += (y[i] - myv) * (y[i] - myv);
-                sxy += (c.x[i] - mx) * (y[i] - myv);
-            }
-            r.correlation = sx > 0 && sy2 > 0 ? sxy / std::sqrt(sx * sy2) : 0;
-        }
+        r.z = nestedZ(f.sse0, f.p0, f.sse1, f.p1, y.size());
+        if (c.kind != "categorical") r.correlation = correlation(c, y);
         r.significant = r.gain > 0 && r.z > zCrit && r.gain >= opt.minRelativeGain * r.cvRmsBefore;
         out.push_back(r);
-        errors.push_back(std::move(e1));
+        errors.push_back(std::move(f.e1));
     }
     std::vector<size_t> order(out.size());
     for (size_t i = 0; i < order.size(); ++i) order[i] = i;
     std::stable_sort(order.begin(), order.end(),
                      [&](size_t a, size_t b) { return out[a].cvRmsAfter < out[b].cvRmsAfter; });
-    // A symptom never outranks a cause it cannot be told from: each significant recorded
-    // condition moves ahead of every symptom directly above it whose held-out |errors| are not
-    // significantly smaller than its own (paired z < 2). It stops at a better cause or at a
-    // symptom that is significantly better (that symptom sees something the cause does not).
-    for (size_t k = 1; k < order.size(); ++k) {
-        RankedCandidate &c = out[order[k]];
-        if (c.symptom || !c.significant) continue;
-        size_t pos = k;
-        while (pos > 0 && out[order[pos - 1]].symptom && pairedZ(errors[order[k]], errors[order[pos - 1]]) < 2.0) --pos;
-        if (pos == k) continue;
-        for (size_t j = pos; j < k; ++j) c.preferredOver.push_back(out[order[j]].name);
-        const size_t moved = order[k];
-        order.erase(order.begin() + long(k));
-        order.insert(order.begin() + long(pos), moved);
-    }
-    // A significant symptom still leads: it established that there is an effect, and the
-    // question left is its name. A cause not significant on its own comes first when it
-    // explains the residual as well as every symptom above it (paired z < 2), passes the test
-    // of a single comparison (z above the one-sided α quantile, the same minimum gain), and
-    // explains the leading symptom itself (the symptom's own values, F test at α): of such
-    // causes, the one that explains the symptom best (R²). A chance correlate of the residual
-    // rarely also explains the measurement; the cause that moved the geometry does.
-    size_t lead = order.size(); // the first significant symptom, when no significant cause leads
-    if (!order.empty() && !(out[order[0]].significant && !out[order[0]].symptom))
-        for (size_t k = 0; k < order.size() && lead == order.size(); ++k)
-            if (out[order[k]].symptom && out[order[k]].significant && candidates[order[k]].kind != "categorical")
-                lead = k;
-    if (lead < order.size()) {
-        const double zSingle = normalUpperQuantile(opt.alpha);
-        size_t best = order.size();
-        double bestR2 = -1;
-        for (size_t k = 0; k < order.size(); ++k) {
-            const RankedCandidate &c = out[order[k]];
-            if (c.symptom || c.significant ||
-                !(c.gain > 0 && c.z > zSingle && c.gain >= opt.minRelativeGain * c.cvRmsBefore))
-                continue;
-            bool told = pairedZ(errors[order[k]], errors[order[lead]]) >= 2.0;
-            for (size_t j = 0; j < k && !told; ++j)
-                told = out[order[j]].symptom && pairedZ(errors[order[k]], errors[order[j]]) >= 2.0;
-            double zAssoc = 0;
-            const double r2 = explainedShare(candidates[order[lead]], candidates[order[k]], &zAssoc);
-            if (!told && zAssoc > zSingle && r2 > bestR2) best = k, bestR2 = r2;
-        }
-        if (best < order.size()) {
-            RankedCandidate &c = out[order[best]];
-            c.significant = c.viaSymptom = true;
-            for (size_t j = 0; j < best; ++j)
-                if (out[order[j]].symptom) c.preferredOver.push_back(out[order[j]].name);
-            if (best < lead) c.preferredOver.push_back(out[order[lead]].name);
-            const size_t moved = order[best];
-            order.erase(order.begin() + long(best));
-            order.insert(order.begin(), moved);
-        }
-    }
+    putCausesBeforeSymptoms(out, errors, &order);
+    nameTheLeadingSymptomsCause(candidates, out, errors, opt, &order);
     // The measurements that point to each significant cause: the significant symptoms, best
     // first (a symptom answers to the cause; alone it does not name it).
     for (size_t k = 0; k < order.size(); ++k) {
