@@ -24,7 +24,7 @@ struct LoopSummary {
     double rmsPhysical = 0;         // RMS after the physical reduction correction (no fitted parameter)
     double slopeScale = 0;          // least-squares scale of the FE du/dr on all records (1: FE as is)
     double cvRmsPhysicalScaled = 0; // k-fold with that scale fitted per fold
-    // The chosen effect in its physical form (docs/loop.md): "fe_slope" (the reduction through
+    // The chosen effect in its physical form (docs/loop-method.md): "fe_slope" (the reduction through
     // the FE du/dr), "scale" (a length factor per group of images: a recalibration), "n" (an n
     // per material), "process" (a recorded variable the FE does not model: its best linear
     // form and size, the FE study that would add it), "patch" (a symptom with no recorded

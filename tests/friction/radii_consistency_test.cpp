@@ -1,4 +1,4 @@
-// The silhouette check against the FE (friction/radii_consistency.h, docs/loop.md): consistent
+// The silhouette check against the FE (friction/radii_consistency.h, docs/loop-method.md): consistent
 // records stay quiet, a scale error of 4 % fires, with and without a declared final
 // height, and the reduction R_max implies is recovered. On rendered images through the whole
 // pipeline as well as on the relation itself.

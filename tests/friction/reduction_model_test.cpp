@@ -1,4 +1,4 @@
-// The reduction-aware model in the product (friction/reduction_corrected_model.h, docs/loop.md):
+// The reduction-aware model in the product (friction/reduction_corrected_model.h, docs/loop-method.md):
 // its generator reads the FE sweep by column name, its slope is the loop tool's, it carries a
 // forward reduction effect back, it is the base model at 50 %, and it flags reductions the FE
 // snapshots do not cover.
