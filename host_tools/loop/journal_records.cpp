@@ -50,6 +50,108 @@ const char *const kConditions[] = {"n",          "k_mpa",    "d0_mm",       "h0_
 
 } // namespace
 
+namespace {
+
+// The reference rows by join key; a row the CSV could not read is listed as skipped.
+std::map<std::string, const ManifestRow *> referenceById(const Manifest &ref, const std::string &idColumn,
+                                                         JournalJoin *info)
+{
+    std::map<std::string, const ManifestRow *> byId;
+    for (const ManifestRow &r : ref.rows) {
+        if (!r.error.empty()) {
+            info->skipped.push_back("reference line " + std::to_string(r.line) + ": " + r.error);
+            continue;
+        }
+        byId[joinKey(r.get(idColumn))] = &r;
+    }
+    return byId;
+}
+
+// The device's settings as its folder keeps them now (settings.conf, "key = value").
+std::map<std::string, std::string> readSettings(const std::string &journalDir)
+{
+    std::map<std::string, std::string> settings;
+    std::ifstream conf(fs::path(journalDir) / "settings.conf");
+    std::string l;
+    while (std::getline(conf, l)) {
+        const size_t eq = l.find(" = ");
+        if (eq != std::string::npos) settings[l.substr(0, eq)] = l.substr(eq + 3);
+    }
+    return settings;
+}
+
+// The manifest's columns: the record, the device's conditions, its results as device_*, and
+// the reference's columns (ref_<name> where the journal has the name too).
+std::vector<std::string> joinedColumns(const Manifest &ref)
+{
+    std::vector<std::string> columns = {"id", "image"};
+    for (const char *c : kConditions) columns.push_back(c);
+    for (const char *c : kMeasured) columns.push_back(std::string("device_") + c);
+    for (const std::string &c : ref.columns)
+        if (c != "id")
+            columns.push_back(std::find(columns.begin(), columns.end(), c) == columns.end() ? c : "ref_" + c);
+    return columns;
+}
+
+// D0 and H0: each result record carries what the device was told; a journal written before
+// the records carried them falls back on the reference CSV, then on the device's
+// settings.conf as it is now.
+struct Geometry {
+    bool fromReference = false, fromSettings = false;
+    std::map<std::string, std::string> settings;
+    int fromRecords = 0, fromElsewhere = 0;
+
+    // What the report says about where the records' D0 and H0 came from.
+    std::string note()
+    {
+        const std::string older = fromReference  ? "from the reference CSV"
+                                  : fromSettings ? "from the device's settings.conf as it is now (d0_mm " +
+                                                       settings["d0_mm"] + ", h0_mm " + settings["h0_mm"] + ")"
+                                                 : "not recorded: 10 and 15 mm assumed";
+        return fromElsewhere == 0
+                   ? "d0_mm and h0_mm as each record carries them"
+                   : "d0_mm and h0_mm as each record carries them; for " + std::to_string(fromElsewhere) + " of " +
+                         std::to_string(fromRecords + fromElsewhere) + " records " + older;
+    }
+};
+
+// One intact result line joined with its reference row: the manifest's row, or why the
+// result is left out.
+std::string joinResult(std::map<std::string, std::string> &f, const ManifestRow &reference, const std::string &idColumn,
+                       int line, Geometry *geometry, ManifestRow *row)
+{
+    if (f["image"].empty()) return "no saved frame (journal.images none, or an error before capture)";
+    if (!f["calibration"].empty()) {
+        // The frame's boundaries were mapped through a calibration file the loop does not read.
+        return "measured through calibration '" + f["calibration"] +
+               "'; the loop re-measures frames with mm_per_px only";
+    }
+    row->line = line;
+    row->cells["id"] = f["id"];
+    row->cells["image"] = f["image"];
+    for (const char *c : kConditions) row->cells[c] = f[c];
+    for (const char *c : kMeasured) row->cells[std::string("device_") + c] = f[c];
+    const bool recordGeometry = !f["d0_mm"].empty() && !f["h0_mm"].empty();
+    if (recordGeometry)
+        ++geometry->fromRecords;
+    else
+        ++geometry->fromElsewhere;
+    if (!recordGeometry && !geometry->fromReference && geometry->fromSettings)
+        row->cells["d0_mm"] = geometry->settings["d0_mm"], row->cells["h0_mm"] = geometry->settings["h0_mm"];
+    for (const auto &[k, v] : reference.cells) {
+        if (k == idColumn) continue;
+        const bool journalHas = row->cells.count(k) > 0;
+        const bool journalEmpty = journalHas && (row->cells[k].empty() || (k == "h_final_mm" && row->cells[k] == "0"));
+        if (!journalHas || journalEmpty)
+            row->cells[k] = v;
+        else
+            row->cells["ref_" + k] = v;
+    }
+    return "";
+}
+
+} // namespace
+
 bool readJournalManifest(const std::string &journalDir, const std::string &referenceCsv, Manifest *out,
                          JournalJoin *info, std::string *error)
 {
@@ -64,29 +166,11 @@ bool readJournalManifest(const std::string &journalDir, const std::string &refer
         *error = "reference CSV '" + referenceCsv + "' has no id (or record_id) column";
         return false;
     }
-    std::map<std::string, const ManifestRow *> byId;
-    for (const ManifestRow &r : ref.rows) {
-        if (!r.error.empty()) {
-            info->skipped.push_back("reference line " + std::to_string(r.line) + ": " + r.error);
-            continue;
-        }
-        byId[joinKey(r.get(idColumn))] = &r;
-    }
-    // D0 and H0: each result record carries what the device was told; a journal written
-    // before the records carried them falls back on the reference CSV, then on the device's
-    // settings.conf as it is now.
-    std::map<std::string, std::string> settings;
-    {
-        std::ifstream conf(fs::path(journalDir) / "settings.conf");
-        std::string l;
-        while (std::getline(conf, l)) {
-            const size_t eq = l.find(" = ");
-            if (eq != std::string::npos) settings[l.substr(0, eq)] = l.substr(eq + 3);
-        }
-    }
-    const bool refGeometry = hasColumn("d0_mm") && hasColumn("h0_mm");
-    const bool savedGeometry = settings.count("d0_mm") && settings.count("h0_mm");
-    int fromRecords = 0, fromElsewhere = 0;
+    const std::map<std::string, const ManifestRow *> byId = referenceById(ref, idColumn, info);
+    Geometry geometry;
+    geometry.settings = readSettings(journalDir);
+    geometry.fromReference = hasColumn("d0_mm") && hasColumn("h0_mm");
+    geometry.fromSettings = geometry.settings.count("d0_mm") && geometry.settings.count("h0_mm");
     const fs::path journal = fs::path(journalDir) / "journal.jsonl";
     std::ifstream in(journal);
     if (!in) {
@@ -95,21 +179,14 @@ bool readJournalManifest(const std::string &journalDir, const std::string &refer
     }
     *out = {};
     out->baseDir = journalDir;
-    out->columns = {"id", "image"};
-    for (const char *c : kConditions) out->columns.push_back(c);
-    for (const char *c : kMeasured) out->columns.push_back(std::string("device_") + c);
-    for (const std::string &c : ref.columns)
-        if (c != "id")
-            out->columns.push_back(
-                std::find(out->columns.begin(), out->columns.end(), c) == out->columns.end() ? c : "ref_" + c);
+    out->columns = joinedColumns(ref);
     std::map<std::string, bool> used;
     std::string line;
     while (std::getline(in, line)) {
         ++info->lines;
-        const std::string where = "journal line " + std::to_string(info->lines);
         std::map<std::string, std::string> f;
         if (!reading::recordLineIntact(line) || !parseFlat(line, &f)) {
-            info->skipped.push_back(where + ": damaged (CRC or JSON)");
+            info->skipped.push_back("journal line " + std::to_string(info->lines) + ": damaged (CRC or JSON)");
             continue;
         }
         if (f["type"] == "scalecheck") {
@@ -118,59 +195,24 @@ bool readJournalManifest(const std::string &journalDir, const std::string &refer
         }
         if (f["type"] != "result") continue;
         ++info->results;
-        const std::string id = f["id"], what = "journal record " + id;
-        const auto it = byId.find(joinKey(id));
+        const std::string what = "journal record " + f["id"];
+        const auto it = byId.find(joinKey(f["id"]));
         if (it == byId.end()) {
             info->skipped.push_back(what + ": no row in the reference CSV");
             continue;
         }
         used[it->first] = true;
-        if (f["image"].empty()) {
-            info->skipped.push_back(what + ": no saved frame (journal.images none, or an error before capture)");
-            continue;
-        }
-        if (!f["calibration"].empty()) {
-            // The frame's boundaries were mapped through a calibration file the loop does not read.
-            info->skipped.push_back(what + ": measured through calibration '" + f["calibration"] +
-                                    "'; the loop re-measures frames with mm_per_px only");
-            continue;
-        }
         ManifestRow row;
-        row.line = info->lines;
-        row.cells["id"] = id;
-        row.cells["image"] = f["image"];
-        for (const char *c : kConditions) row.cells[c] = f[c];
-        for (const char *c : kMeasured) row.cells[std::string("device_") + c] = f[c];
-        const bool recordGeometry = !f["d0_mm"].empty() && !f["h0_mm"].empty();
-        if (recordGeometry)
-            ++fromRecords;
-        else
-            ++fromElsewhere;
-        if (!recordGeometry && !refGeometry && savedGeometry)
-            row.cells["d0_mm"] = settings["d0_mm"], row.cells["h0_mm"] = settings["h0_mm"];
-        for (const auto &[k, v] : it->second->cells) {
-            if (k == idColumn) continue;
-            const bool journalHas = row.cells.count(k) > 0;
-            const bool journalEmpty =
-                journalHas && (row.cells[k].empty() || (k == "h_final_mm" && row.cells[k] == "0"));
-            if (!journalHas || journalEmpty)
-                row.cells[k] = v;
-            else
-                row.cells["ref_" + k] = v;
+        if (const std::string why = joinResult(f, *it->second, idColumn, info->lines, &geometry, &row); !why.empty()) {
+            info->skipped.push_back(what + ": " + why);
+            continue;
         }
         out->rows.push_back(std::move(row));
         ++info->joined;
     }
     for (const auto &[key, row] : byId)
         if (!used.count(key)) info->skipped.push_back("reference id " + row->get(idColumn) + ": not in the journal");
-    const std::string older = refGeometry     ? "from the reference CSV"
-                              : savedGeometry ? "from the device's settings.conf as it is now (d0_mm " +
-                                                    settings["d0_mm"] + ", h0_mm " + settings["h0_mm"] + ")"
-                                              : "not recorded: 10 and 15 mm assumed";
-    info->geometry = fromElsewhere == 0
-                         ? "d0_mm and h0_mm as each record carries them"
-                         : "d0_mm and h0_mm as each record carries them; for " + std::to_string(fromElsewhere) +
-                               " of " + std::to_string(fromRecords + fromElsewhere) + " records " + older;
+    info->geometry = geometry.note();
     return true;
 }
 

@@ -25,7 +25,7 @@
 #include "host_tools/calibration_renderer.h"
 #include "host_tools/manifest.h"
 #include "host_tools/measure_command.h"
-#include "host_tools/synth_command.h"
+#include "host_tools/model_inverse.h"
 #include "reading/instrument.h"
 
 using namespace icacam;
@@ -88,7 +88,7 @@ TEST(CalibratedMeasure, MuThroughATiltedDistortingCamera)
         const double n = 0.08 + 0.35 * U(rng), mu = 0.08 + 0.2 * U(rng);
         const double hFinal = 7.5; // 50 % of H0 = 15
         host::EndFaceScene s;
-        const double u = host::uForMu(mu, n);
+        const double u = host::uForMu(friction::PaperModel(), mu, n);
         s.rOuterMm = 6.85 - 0.95 * u;
         s.rInnerMm = s.rOuterMm - u;
         s.rMaxMm = 5.0 * std::sqrt(2.0) * (1.008 + 0.034 * u);
@@ -180,7 +180,7 @@ TEST(CalibratedMeasure, ManifestCalibrationColumn)
     c.imageWidth = cam.width, c.imageHeight = cam.height;
     ASSERT_EQ(calibration::writeCalibrationFile((d / "cal" / "cam.cal").string(), c), "");
     host::EndFaceScene s;
-    const double n = 0.2, u = host::uForMu(0.15, n);
+    const double n = 0.2, u = host::uForMu(friction::PaperModel(), 0.15, n);
     s.rOuterMm = 6.85 - 0.95 * u, s.rInnerMm = s.rOuterMm - u;
     s.rMaxMm = 5.0 * std::sqrt(2.0) * (1.008 + 0.034 * u);
     cv::imwrite((d / "a.png").string(), r.endFace(s, 0.3, -0.2, 7.5, 0.9, 2.0, 5));

@@ -19,7 +19,7 @@
 #include "hal/file/file_trigger.h"
 #include "hal/file/folder_storage.h"
 #include "host_tools/calibration_renderer.h"
-#include "host_tools/synth_command.h"
+#include "host_tools/model_inverse.h"
 #include "reading/record_line.h"
 #include "tests/support/recording_serial.h"
 
@@ -134,7 +134,7 @@ TEST(DeviceCalibration, MeasuresInTheEndFacePlaneAndJournalsWhichCalibration)
     const host::BoardPhotoRenderer r(cam);
     ASSERT_EQ(calibration::writeCalibrationFile((rig.dir / "cam.cal").string(), fileFor(cam)), "");
     host::EndFaceScene s;
-    const double n = 0.2, u = host::uForMu(0.15, n);
+    const double n = 0.2, u = host::uForMu(friction::PaperModel(), 0.15, n);
     s.rOuterMm = 6.85 - 0.95 * u, s.rInnerMm = s.rOuterMm - u;
     s.rMaxMm = 5.0 * std::sqrt(2.0) * (1.008 + 0.034 * u);
     rig.frame("a.png", r.endFace(s, 0.4, -0.3, 7.5, 0.9, 2.0, 5));

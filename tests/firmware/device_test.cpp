@@ -167,7 +167,7 @@ TEST(Device, LongPressAimsASecondShowsSettingsAndBounceDoesNotMeasure)
 
 TEST(Device, FinalHeightIsALiveJournaledKeyCheckedAgainstTheInitialHeight)
 {
-    // specimen.h_final_mm feeds the reduction-aware model (docs/loop.md): settable over
+    // specimen.h_final_mm feeds the reduction-aware model (docs/loop-method.md): settable over
     // serial, kept across restarts, and never above the initial height.
     Rig rig("");
     writeGrey(rig.dir + "/a.pgm", 64, 64, 0);

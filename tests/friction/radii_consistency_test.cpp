@@ -1,4 +1,4 @@
-// The silhouette check against the FE (friction/radii_consistency.h, docs/loop.md): consistent
+// The silhouette check against the FE (friction/radii_consistency.h, docs/loop-method.md): consistent
 // records stay quiet, a scale error of 4 % fires, with and without a declared final
 // height, and the reduction R_max implies is recovered. On rendered images through the whole
 // pipeline as well as on the relation itself.
@@ -11,7 +11,7 @@
 #include "friction/radii_consistency.h"
 #include "friction/reduction_corrected_model.h"
 #include "host_tools/end_face_renderer.h"
-#include "host_tools/loop/loop_analysis.h"
+#include "host_tools/model_inverse.h"
 #include "reading/instrument.h"
 
 using namespace icacam;
@@ -91,7 +91,7 @@ struct Rendered {
 Rendered render(double n, double mu, double r)
 {
     friction::PaperModel paper;
-    const double u = host::loop::uForMu(paper, mu, n) + friction::ReductionCorrectedModel::slopeAt(n, mu) * (r - 0.5);
+    const double u = host::uForMu(paper, mu, n) + friction::ReductionCorrectedModel::slopeAt(n, mu) * (r - 0.5);
     Rendered out;
     out.scene = host::nominalScene(u);
     double fe = 0;

@@ -7,7 +7,7 @@
 
 #include "friction/paper_model.h"
 #include "host_tools/end_face_renderer.h"
-#include "host_tools/synth_command.h"
+#include "host_tools/model_inverse.h"
 #include "reading/instrument.h"
 
 using namespace icacam;
@@ -24,7 +24,7 @@ struct Rendered {
 
 Rendered renderRandom(std::mt19937 &rng, double n, double mu)
 {
-    const double u = host::uForMu(mu, n);
+    const double u = host::uForMu(friction::PaperModel(), mu, n);
     const double rOuter = 6.85 - 0.95 * u;
     const double rMax = 5.0 * std::sqrt(2.0) * (1.008 + 0.034 * u);
     Rendered r{host::randomScene(rng, u, rOuter, rMax, false), {}};

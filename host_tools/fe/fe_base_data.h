@@ -1,13 +1,13 @@
 #pragma once
-// The FE snapshots the loop's du/dr and the generated reduction table stand on: one mesh and
-// one K out of data/fe/*.csv, chosen by the reader `icacam fe fit` uses (host_tools/fe/
-// fe_rows.h, chooseBase at 50 % reduction); E 210 GPa, D0 10, H0 15 mm. Rows of runs that
+// The FE snapshots the reduction's du/dr stands on (the generated reduction table and `icacam
+// loop`): one mesh and one K out of data/fe/*.csv, chosen as the FE model's table chooses its
+// base (fe_rows.h, chooseBase at 50 % reduction); E 210 GPa, D0 10, H0 15 mm. Rows of runs that
 // stopped later (status failed) count for the snapshots they reached: those are converged
 // states. Columns are read by name; added columns are ignored.
 #include <string>
 #include <vector>
 
-namespace icacam::host::loop {
+namespace icacam::host::fe {
 
 struct FeSnapshot {
     double n = 0, mu = 0, reduction = 0;
@@ -24,4 +24,4 @@ struct FeBaseData {
 // mesh and K are chosen over all of them together.
 bool readFeBaseData(const std::vector<std::string> &paths, FeBaseData *out, std::string *error);
 
-} // namespace icacam::host::loop
+} // namespace icacam::host::fe

@@ -8,12 +8,12 @@
 
 #include "host_tools/fe/fe_table_sources.h"
 
-namespace icacam::host::loop {
+namespace icacam::host::fe {
 
 // The table's text, exactly as committed (the test compares it byte for byte) from src.base
 // (its repository name, read under sourceDir: "" or a path ending in '/'; written into the
 // table as kFeSources, which `icacam loop` reads by default). Empty and *error set when the
 // base cannot be read or is too thin.
-std::string reductionTableText(const fe::TableSources &src, const std::string &sourceDir, std::string *error);
+std::string reductionTableText(const TableSources &src, const std::string &sourceDir, std::string *error);
 
-} // namespace icacam::host::loop
+} // namespace icacam::host::fe

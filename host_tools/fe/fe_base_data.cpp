@@ -1,10 +1,10 @@
-#include "host_tools/loop/fe_base_data.h"
+#include "host_tools/fe/fe_base_data.h"
 
 #include <exception>
 
 #include "host_tools/fe/fe_rows.h"
 
-namespace icacam::host::loop {
+namespace icacam::host::fe {
 
 bool readFeBaseData(const std::vector<std::string> &paths, FeBaseData *out, std::string *error)
 {
@@ -12,16 +12,16 @@ bool readFeBaseData(const std::vector<std::string> &paths, FeBaseData *out, std:
         *error = "no FE sweep CSV given";
         return false;
     }
-    std::vector<fe::FeRow> rows;
+    std::vector<FeRow> rows;
     try {
-        rows = fe::readSweepCsvs(paths);
+        rows = readSweepCsvs(paths);
     } catch (const std::exception &e) {
         *error = e.what();
         return false;
     }
-    // The same choice as `icacam fe fit` (fe_rows.h), made at 50 %; every snapshot of that
+    // The same choice as the FE model's table (fe_rows.h), made at 50 %; every snapshot of that
     // mesh and K is kept.
-    const fe::BaseChoice base = fe::chooseBase(rows, 0.5);
+    const BaseChoice base = chooseBase(rows, 0.5);
     if (!base.found) {
         *error = "no FE run reached 50 % reduction in the sweep CSV(s) given";
         return false;
@@ -29,9 +29,8 @@ bool readFeBaseData(const std::vector<std::string> &paths, FeBaseData *out, std:
     out->mesh = base.mesh;
     out->kMpa = base.kMpa;
     out->rows.clear();
-    for (const fe::FeRow &r : rows) {
-        if (!fe::reachedSnapshot(r, r.reduction) || !fe::isPaperSpecimen(r) || fe::meshKey(r) != base.mesh ||
-            r.kMpa != base.kMpa)
+    for (const FeRow &r : rows) {
+        if (!reachedSnapshot(r, r.reduction) || !isPaperSpecimen(r) || meshKey(r) != base.mesh || r.kMpa != base.kMpa)
             continue;
         FeSnapshot s;
         s.n = r.n;
@@ -46,4 +45,4 @@ bool readFeBaseData(const std::vector<std::string> &paths, FeBaseData *out, std:
     return true;
 }
 
-} // namespace icacam::host::loop
+} // namespace icacam::host::fe

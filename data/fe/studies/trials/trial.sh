@@ -2,7 +2,7 @@
 # One convergence trial (data/fe/convergence_trials.csv): the deck `icacam fe deck ARGS` writes,
 # optionally edited by one of the Python scripts here (environment variables select the
 # variant, see each script), run by ccx in ./NAME; prints the wall time and the last .sta line.
-# usage: ICACAM=build/host_tools/icacam docs/fe/trials/trial.sh NAME "deck args" [edit.py]
+# usage: ICACAM=build/host_tools/icacam data/fe/studies/trials/trial.sh NAME "deck args" [edit.py]
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
 icacam=$(realpath "${ICACAM:-build/host_tools/icacam}")
