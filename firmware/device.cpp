@@ -8,7 +8,6 @@
 #include "firmware/frame_luma.h"
 #include "firmware/scale_check.h"
 #include "firmware/screen.h"
-#include "friction/paper_model.h"
 #include "reading/reading_record.h"
 #include "vision/reference_disc.h"
 

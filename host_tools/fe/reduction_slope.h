@@ -21,7 +21,6 @@ public:
     // One or more sweep CSVs: the base data are chosen over all of them (fe_base_data.h).
     bool load(const std::vector<std::string> &sweepCsvs, std::string *error);
     // Direct construction (tests): slope = c0 + c1 n + c2 μ + c3 n² + c4 nμ + c5 μ².
-    void setCoefficients(const std::vector<double> &c) { coef_ = c; }
     double slope(double n, double mu) const;
     const std::vector<double> &coefficients() const { return coef_; }
     int cases() const { return cases_; }
