@@ -1,6 +1,7 @@
 #include "hal/file/file_camera.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -94,7 +95,8 @@ Error FileCamera::capture(const CaptureRequest &req, CapturedFrame *out)
         clock_.sleepMs(timeoutMs); // a sensor that delivers nothing: the caller's deadline passes
         return Error::make(Errc::Timeout, "no frame within " + std::to_string(timeoutMs) + " ms");
     }
-    const std::string &path = files_[next_++];
+    const size_t index = next_++; // a file that cannot be delivered is used up too
+    const std::string &path = files_[index];
     const int ch = channelsOf(fmt_.format);
     const int a = opts_.strideAlign;
     // The stride the sensor would use for the widest frame of this row length.
@@ -113,7 +115,9 @@ Error FileCamera::capture(const CaptureRequest &req, CapturedFrame *out)
                          size_t(img.width * ch));
     }
     if (stride < img.width * ch) return Error::make(Errc::BadStride, "stride shorter than a row");
-    if (opts_.exposureMs > 0) clock_.sleepMs(opts_.exposureMs);
+    // The scene stays until a frame has seen it lit (a file camera without a light: every frame).
+    if (!light(buffer_.get(), img.width, img.height, stride, ch, start)) next_ = index;
+    if (opts_.exposureMs + opts_.readoutMs > 0) clock_.sleepMs(opts_.exposureMs + opts_.readoutMs);
     if (clock_.monotonicMs() - start > timeoutMs)
         return Error::make(Errc::Timeout, "frame arrived after the " + std::to_string(timeoutMs) + " ms deadline");
     out->view.format = fmt_.format;
@@ -130,6 +134,23 @@ Error FileCamera::capture(const CaptureRequest &req, CapturedFrame *out)
     out->controls = opts_.controls;
     out->source = fs::path(path).filename().string();
     return {};
+}
+
+bool FileCamera::light(uint8_t *rows, int width, int height, int stride, int channels, int64_t startMs) const
+{
+    if (!opts_.light) return true;
+    bool allLit = true;
+    const double ambient = std::clamp(opts_.ambient, 0.0, 1.0);
+    for (int y = 0; y < height; ++y) {
+        const double from = double(startMs) + double(opts_.readoutMs) * y / height;
+        const double lit = opts_.light->litFraction(from, from + opts_.exposureMs);
+        allLit &= lit >= 1.0;
+        const auto gain = unsigned(std::lround((ambient + (1 - ambient) * lit) * 256));
+        if (gain >= 256) continue;
+        uint8_t *row = rows + size_t(y) * size_t(stride);
+        for (int x = 0; x < width * channels; ++x) row[x] = uint8_t((row[x] * gain + 128) >> 8);
+    }
+    return allLit;
 }
 
 } // namespace icacam::hal

@@ -6,6 +6,12 @@
 //
 // configure() again over the same frames carries on at the same position.
 //
+// Lit by a ScriptedLight (hal/file/scripted_light.h), the images are the scene under the LED
+// ring: each row is dimmed to `ambient` for the part of its exposure the ring gave no light,
+// the rows read out top to bottom over readoutMs (a rolling shutter). The scene changes only
+// once it has been seen lit: a frame lit not at all or only in part shows the same image
+// again at the next capture, as the specimen under a real camera stays where it is.
+//
 // Source: a folder (its .png/.jpg/.jpeg/.pgm files in name order) or a list file (one path a
 // line, relative to the list's folder; '#' comments; "!timeout" simulates a hung sensor).
 #include <memory>
@@ -15,21 +21,26 @@
 
 #include "hal/camera.h"
 #include "hal/clock.h"
+#include "hal/file/scripted_light.h"
 
 namespace icacam::hal {
 
 struct FileCameraOptions {
     FileCameraOptions() = default;
     FileCameraOptions(std::string src, int align = 1, bool loopAtEnd = false, int latencyMs = 0,
-                      CameraControls reported = {})
-            : source(std::move(src)), strideAlign(align), loop(loopAtEnd), exposureMs(latencyMs), controls(reported)
+                      CameraControls reported = {}, const ScriptedLight *litBy = nullptr)
+            : source(std::move(src)), strideAlign(align), loop(loopAtEnd), exposureMs(latencyMs), controls(reported),
+              light(litBy)
     {}
 
-    std::string source;      // folder or list file
-    int strideAlign = 1;     // rows padded to a multiple of this many bytes (e.g. 64)
-    bool loop = false;       // start over at the end instead of timing out
-    int exposureMs = 0;      // simulated capture latency
-    CameraControls controls; // reported back on every frame, as a sensor reports what it used
+    std::string source;                   // folder or list file
+    int strideAlign = 1;                  // rows padded to a multiple of this many bytes (e.g. 64)
+    bool loop = false;                    // start over at the end instead of timing out
+    int exposureMs = 0;                   // simulated capture latency
+    CameraControls controls;              // reported back on every frame, as a sensor reports what it used
+    const ScriptedLight *light = nullptr; // none: every image as it is, each used once
+    double ambient = 0.1;                 // the scene's brightness without the ring, of the image's
+    int readoutMs = 0;                    // first row's exposure start to the last's
 };
 
 class FileCamera final : public Camera {
@@ -43,6 +54,10 @@ public:
     std::string describe() const override;
 
 private:
+    // Dims each row for the part of its exposure the light was off; true when every row was
+    // lit throughout.
+    bool light(uint8_t *rows, int width, int height, int stride, int channels, int64_t startMs) const;
+
     Clock &clock_;
     FileCameraOptions opts_;
     CameraFormat fmt_;

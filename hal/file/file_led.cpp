@@ -20,6 +20,7 @@ Error FileLed::set(bool on)
 {
     if (on != on_) ++switches_;
     on_ = on;
+    if (light_) light_->switched(on);
     if (!fd_.valid()) return {};
     char line[48];
     const int n =

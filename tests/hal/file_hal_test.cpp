@@ -12,6 +12,7 @@
 #include "hal/file/image_decoder.h"
 #include "hal/file/png_display.h"
 #include "hal/file/pty_serial.h"
+#include "hal/file/scripted_light.h"
 #include "tests/support/temp_dir.h"
 
 using namespace icacam;
@@ -142,4 +143,45 @@ TEST(PtySerial, BytesBothWaysAndNoStallWithoutReader)
     ::fcntl(host.get(), F_SETFL, O_NONBLOCK);
     while (::read(host.get(), drain, sizeof drain) > 0) {}
     EXPECT_TRUE(s.write("back\n").ok());
+}
+
+// The file camera lit by a scripted ring: rows exposed while the ring was dark are dimmed to the
+// ambient level, a rolling shutter's rows one after the other; the image is used up only by a
+// frame lit top to bottom.
+TEST(FileCamera, ScriptedLightLightsTheRowsItReachesAndKeepsTheSceneUntilLit)
+{
+    char t[] = "/tmp/icacam-light-XXXXXX";
+    const std::string dir = ::mkdtemp(t);
+    for (const char *name : {"a.pgm", "b.pgm"}) {
+        std::ofstream f(dir + "/" + name, std::ios::binary);
+        f << "P5\n8 10\n255\n" << std::string(80, char(200));
+    }
+    hal::ManualClock clock;
+    hal::ScriptedLight light(clock);
+    ASSERT_TRUE(light.feed("late 5 # the ring lights 5 ms late\n").ok());
+    EXPECT_FALSE(light.feed("blink 3\n").ok());
+    hal::FileCameraOptions o(dir, 1, false, 0, {}, &light);
+    o.readoutMs = 10;
+    o.ambient = 0.1;
+    hal::FileCamera cam(clock, o);
+    ASSERT_TRUE(cam.configure({hal::PixelFormat::Grey8, 64, 64}).ok());
+    hal::CapturedFrame f;
+    ASSERT_TRUE(cam.capture(100, &f).ok()); // the ring off: the scene dim, not used up
+    EXPECT_EQ(f.source, "a.pgm");
+    EXPECT_EQ(f.view.data[0], 20);
+    light.switched(true);
+    const int64_t on = clock.monotonicMs();
+    ASSERT_TRUE(cam.capture({on, 100}, &f).ok()); // rows 0-4 before the light, 5-9 after
+    EXPECT_EQ(f.source, "a.pgm");
+    EXPECT_EQ(f.view.data[0], 20);
+    EXPECT_EQ(f.view.data[size_t(f.view.stride) * 4], 20);
+    EXPECT_EQ(f.view.data[size_t(f.view.stride) * 5], 200);
+    ASSERT_TRUE(cam.capture({on, 100}, &f).ok()); // lit top to bottom: a.pgm seen
+    EXPECT_EQ(f.source, "a.pgm");
+    EXPECT_EQ(f.view.data[0], 200);
+    ASSERT_TRUE(cam.capture({on, 100}, &f).ok());
+    EXPECT_EQ(f.source, "b.pgm");
+    light.switched(false);
+    EXPECT_EQ(light.litFraction(double(clock.monotonicMs()), double(clock.monotonicMs()) + 1), 0.0);
+    std::filesystem::remove_all(dir);
 }
