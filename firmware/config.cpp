@@ -99,7 +99,8 @@ const KeyDef kKeys[] = {
     {"camera.stamp_delay_us", nullptr, nullptr, &Config::stampDelayUs, nullptr, -1, 1000000, nullptr, false,
      "v4l2: most time from a frame's exposure end to its buffer timestamp (-1: one frame interval)"},
     {"camera.retry_ms", nullptr, nullptr, &Config::cameraRetryMs, nullptr, 100, 600000, nullptr, false,
-     "a missing or silent camera is looked for again this often"},
+     "a missing or silent camera, and a missing display, serial line, button or LED line, is looked for again "
+     "this often"},
     {"trigger.backend", nullptr, nullptr, nullptr, &Config::triggerBackend, 0, 0, "file|gpiod", false, "button driver"},
     {"trigger.script", nullptr, nullptr, nullptr, &Config::triggerScript, 0, 4096, nullptr, false,
      "file backend: trigger script file or FIFO"},
@@ -117,6 +118,9 @@ const KeyDef kKeys[] = {
      "gpiod: the SoC's resistor on the button line"},
     {"led.backend", nullptr, nullptr, nullptr, &Config::ledBackend, 0, 0, "file|gpiod", false, "LED ring driver"},
     {"led.log", nullptr, nullptr, nullptr, &Config::ledLog, 0, 4096, nullptr, false, "file backend: LED state log"},
+    {"led.script", nullptr, nullptr, nullptr, &Config::ledScript, 0, 4096, nullptr, false,
+     "file backend: the ring's faults, one line per switch-on (ok | late MS | dead | flash MS); the file "
+     "camera's images are lit by it"},
     {"led.gpio_chip", nullptr, nullptr, nullptr, &Config::ledChip, 0, 256, nullptr, false,
      "gpiod: chip of the LED line (\"\" = trigger.gpio_chip)"},
     {"led.gpio_line", nullptr, nullptr, nullptr, &Config::ledLine, 1, 64, nullptr, false,
@@ -125,6 +129,11 @@ const KeyDef kKeys[] = {
      "gpiod: the level that lights the ring (high: through an N-MOSFET)"},
     {"led.settle_ms", nullptr, nullptr, &Config::ledSettleMs, nullptr, 0, 1000, nullptr, false,
      "wait after switching the ring on before capturing"},
+    {"led.lit_attempts", nullptr, nullptr, &Config::litAttempts, nullptr, 1, 10, nullptr, false,
+     "frames tried per measurement: one not lit top to bottom is refused and captured again; then "
+     "the error 'LED ring not lit'"},
+    {"led.min_rise", nullptr, nullptr, &Config::litMinRise, nullptr, 1, 255, nullptr, false,
+     "luma levels the ring must add, over the frame taken with it off, to every band of the specimen's region"},
     {"display.backend", nullptr, nullptr, nullptr, &Config::displayBackend, 0, 0, "file|ssd1306|none", false,
      "display driver"},
     {"display.dir", nullptr, nullptr, nullptr, &Config::displayDir, 0, 4096, nullptr, false,

@@ -61,7 +61,13 @@ struct Config {
     std::string ledActive = "high"; // the level that lights the ring
     std::string ledBackend = "file";
     std::string ledLog;
+    std::string ledScript; // file backend: when the ring really lights (hal/file/scripted_light.h)
     int ledSettleMs = 20;
+    // Every frame measured is checked lit top to bottom against a frame taken with the ring
+    // off (firmware/lit_frame.h): a frame refused is captured again, this many times in all,
+    // and a band is lit when the ring adds this many luma levels to it.
+    int litAttempts = 3;
+    int litMinRise = 12;
     // [display]
     std::string displayBackend = "file";
     std::string displayDir;
@@ -72,8 +78,8 @@ struct Config {
     int displayContrast = 127;
     // [serial]
     std::string serialBackend = "pty";
-    std::string serialLink; // pty backend: symlink to the slave
-    std::string serialDevice = "/dev/ttyAMA0";
+    std::string serialLink;                    // pty backend: symlink to the slave
+    std::string serialDevice = "/dev/serial0"; // Raspberry Pi OS: the header UART, whichever it is
     int serialBaud = 115200;
     // [journal]
     std::string journalDir;

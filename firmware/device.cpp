@@ -79,7 +79,9 @@ hal::Error Device::start()
     if (std::string e = loadDeviceCalibration(cfg_, &cal_); !e.empty()) return hal::Error::make(hal::Errc::Invalid, e);
     useCalibration(cal_);
     discWork_ = std::make_unique<uint8_t[]>(vision::ReferenceDiscFinder::kWorkBytes);
-    if (hal::Error e = hal_.led.set(false); !e.ok()) return e;
+    // An LED ring that cannot be switched is reported, not fatal: a measurement says why it
+    // has no light, and everything else goes on.
+    const hal::Error ledOff = hal_.led.set(false);
 
     JournalRecovery rec;
     if (hal::Error e = journal_.recover(&rec); !e.ok()) return e;
@@ -117,8 +119,15 @@ hal::Error Device::start()
         .integer("recovered_cut_bytes", static_cast<long long>(rec.cutBytes))
         .integer("temp_files_removed", rec.tempFilesRemoved);
     appendCameraStatus(j0);
+    appendPartsStatus(j0);
     j0.end();
     send(out_);
+    if (!ledOff.ok() && !hal_.parts) sendError("led_failed", ledOff.message, "");
+    // The parts missing at start-up, in the journal and the log as well (their later changes
+    // come from the loop).
+    if (hal_.parts)
+        for (int i = 0; i < Parts::kCount; ++i)
+            if (Part &p = hal_.parts->at(i); p.takeChange() && !p.ok()) reportPart(p);
     if (rec.cutBytes > 0) note = "journal tail repaired";
     showIdle(note);
     return {};
@@ -126,6 +135,7 @@ hal::Error Device::start()
 
 void Device::tick()
 {
+    pollParts();
     pollButton();
     pollSerial();
     pollCamera();
@@ -168,7 +178,8 @@ void Device::pollButton()
     hal::ButtonEdge edges[16];
     hal::Result<size_t> r = hal_.trigger.readEdges(edges, 16);
     if (!r.ok()) {
-        if (lastProblem_ != r.error.message) {
+        // A part stand-in reports its own failures (device_parts.cpp).
+        if (!hal_.parts && lastProblem_ != r.error.message) {
             lastProblem_ = r.error.message;
             sendError("trigger_failed", r.error.message, "");
         }
@@ -249,6 +260,7 @@ void Device::handleCommand(const Command &c)
             .boolean("led", hal_.led.isOn())
             .str("model", instrument_.model().name());
         appendCameraStatus(j);
+        appendPartsStatus(j);
         break;
     }
     case CommandKind::Trigger:
@@ -389,40 +401,6 @@ void Device::measure(const char *origin, const std::string &tag)
     state_ = State::Idle;
 }
 
-bool Device::captureFrame(hal::CapturedFrame *frame, vision::LumaView *luma, std::string *problem)
-{
-    bool captured = false;
-    triggerMs_ = hal_.clock.monotonicMs();
-    if (!cameraHealth_.ready()) {
-        *problem =
-            std::string("camera ") + CameraHealth::stateName(cameraHealth_.state()) + ": " + cameraHealth_.problem();
-        return false;
-    }
-    state_ = State::LedOn;
-    if (hal::Error e = hal_.led.set(true); !e.ok()) *problem = "LED: " + e.message;
-    hal_.clock.sleepMs(cfg_.ledSettleMs);
-    // From here on the ring is lit and steady: only a frame exposed after now is measured.
-    const int64_t litMs = hal_.clock.monotonicMs();
-    state_ = State::Capture;
-    if (problem->empty()) {
-        const hal::Error e = hal_.camera.capture({litMs, cfg_.captureTimeoutMs}, frame);
-        cameraHealth_.onCapture(e, e.ok() ? frame : nullptr);
-        if (!e.ok())
-            *problem = std::string("camera ") + hal::errcName(e.code) + ": " + e.message;
-        else
-            captured = true;
-    }
-    state_ = State::LedOff;
-    if (hal::Error e = hal_.led.set(false); !e.ok() && problem->empty()) *problem = "LED: " + e.message;
-
-    state_ = State::Measure;
-    if (captured) {
-        const vision::ErrorCode le = frameLuma(frame->view, lumaScratch_.get(), lumaScratchBytes_, luma);
-        if (le != vision::ErrorCode::None) *problem = std::string("frame: ") + vision::errorMessage(le);
-    }
-    return captured;
-}
-
 void Device::useCalibration(const DeviceCalibration &cal)
 {
     instrument_.setCalibration(cal.present ? &cal.file.plane : nullptr, cal.file.imageWidth, cal.file.imageHeight);
@@ -551,7 +529,11 @@ void Device::buildRecord(long id, const char *origin, const std::string &tag, co
     j.str("calibration", cal_.present ? cal_.name : "");
     if (cal_.present && m.hasValue()) j.num("plane_height_mm", cfg_.h0Mm * (1 - m.reduction), 4);
     j.str("material", cfg_.material).str("trigger", origin).integer("ms", ms);
-    if (frame) appendCaptureFields(j, *frame, triggerMs_);
+    if (frame) {
+        appendCaptureFields(j, *frame, triggerMs_);
+        // The lit-frame check's verdict on the last frame tried, and how many were refused.
+        j.str("lit", litVerdictName(lastLit_.verdict)).integer("unlit_frames", unlitFrames_);
+    }
     if (!tag.empty()) j.str("tag", tag);
     j.end();
 }
@@ -594,13 +576,14 @@ void Device::showIdle(std::string_view note)
         showOrLog(screen_);
         return;
     }
-    drawIdle(&screen_, cfg_, journal_.count(), note);
+    drawIdle(&screen_, cfg_, journal_.count(), idleNote(note));
     showOrLog(screen_);
 }
 
 void Device::showOrLog(const hal::MonoBitmap &bmp)
 {
-    if (hal::Error e = hal_.display.show(bmp); !e.ok() && lastProblem_ != e.message) {
+    // A part stand-in reports its own failures (device_parts.cpp).
+    if (hal::Error e = hal_.display.show(bmp); !e.ok() && !hal_.parts && lastProblem_ != e.message) {
         lastProblem_ = e.message;
         sendError("display_failed", e.message, "");
     }

@@ -14,6 +14,8 @@
 #include "firmware/debouncer.h"
 #include "firmware/device_calibration.h"
 #include "firmware/journal.h"
+#include "firmware/lit_frame.h"
+#include "firmware/parts.h"
 #include "hal/camera.h"
 #include "hal/clock.h"
 #include "hal/display.h"
@@ -37,6 +39,9 @@ struct DeviceHal {
     hal::SerialPort &serial;
     hal::Storage &storage;
     hal::Clock &clock;
+    // The display, serial, trigger and LED as stand-ins that may be missing (firmware/parts.h):
+    // their changes are reported and retried. nullptr: the parts are the backends themselves.
+    Parts *parts = nullptr;
 };
 
 class Device {
@@ -69,8 +74,15 @@ private:
     void sendResults(const Command &c, reading::JsonBuilder &j);
     void measure(const char *origin, const std::string &tag);
     void scaleCheck(const Command &c);
-    // LED on, capture, LED off: the frame as luma, or the problem in words.
+    // device_capture.cpp. A frame with the ring off (the lit check's reference), LED on,
+    // frames until one is lit top to bottom (at most led.lit_attempts), LED off: the frame as
+    // luma, or the problem in words. True when a frame was captured (problem may still say
+    // why it is not measured: not lit, not convertible).
     bool captureFrame(hal::CapturedFrame *frame, vision::LumaView *luma, std::string *problem);
+    bool takeDarkReference(hal::CapturedFrame *frame, std::string *problem);
+    // One capture after litMs as luma; false with the problem in words.
+    bool captureLuma(int64_t notBeforeMs, hal::CapturedFrame *frame, vision::LumaView *luma, std::string *problem);
+    LitFrameOptions litOptions(int width, int height) const;
     // Loads trial's calibration.file into cal_ ("none" clears it); "" or why not.
     std::string setCalibrationFile(Config *trial);
     // Hands the loaded calibration (or none) to the instrument.
@@ -93,6 +105,13 @@ private:
     // The camera's state for `hello`, `status` and the camera line sent when it comes back.
     void appendCameraStatus(reading::JsonBuilder &j) const;
     void pollCamera();
+    // Parts (device_parts.cpp): retried from the loop; each change said on serial, on the
+    // display, in the journal and in the log; the missing ones in `hello` and `status`.
+    void pollParts();
+    void reportPart(const Part &p);
+    void appendPartsStatus(reading::JsonBuilder &j) const;
+    // The idle screen's last line: the missing parts when there are any, else note.
+    std::string idleNote(std::string_view note) const;
     void buildRecord(long id, const char *origin, const std::string &tag, const reading::Reading &m,
                      std::string_view problem, const hal::CapturedFrame *frame, std::string_view image, long ms);
     hal::Error saveImage(std::string_view name, const vision::LumaView &v);
@@ -121,6 +140,10 @@ private:
     std::string lastProblem_;
     DeviceCalibration cal_;               // calibration.file, read at start and on `set`
     std::unique_ptr<uint8_t[]> discWork_; // the scale check's disc finder
+    LitFrameCheck litCheck_;
+    LitCheckResult lastLit_; // the check's verdict on the last frame captured lit
+    int unlitFrames_ = 0;    // frames the check refused in the last capture
+    int64_t ledOffMs_ = 0;   // when the ring was last switched off
 };
 
 } // namespace icacam::fw

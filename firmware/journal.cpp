@@ -26,7 +26,7 @@ long Journal::checkLine(std::string_view line)
     reading::FlatObject obj;
     if (!reading::parseFlatObject(line, &obj).empty()) return -1;
     const reading::JsonField *id = obj.find("id");
-    if (!id || id->type != reading::JsonField::Type::Number || id->number < 1) return -1;
+    if (!id || id->type != reading::JsonField::Type::Number || id->number < 0) return -1;
     return long(id->number);
 }
 

@@ -39,7 +39,8 @@ public:
     std::string_view recent(size_t i) const { return ring_[(head_ + ring_.size() - used_ + i) % ring_.size()]; }
     long count() const { return count_; }
 
-    // Checks one stored line (without its '\n'); returns the record id or -1.
+    // Checks one stored line (without its '\n'); returns the record id (0: a device event,
+    // which takes no id) or -1.
     static long checkLine(std::string_view line);
 
 private:

@@ -4,8 +4,10 @@
 //
 // Exit codes suit systemd (Restart=on-failure, RestartPreventExitStatus=78):
 //   0 stopped by a signal, 64 bad command line, 78 bad configuration (restarting cannot
-//   help), 69 a device other than the camera could not be opened, 70 internal error. A
-//   missing camera is not an exit: the device shows it and looks for it again.
+//   help: the unit does not restart it). A missing part is no exit: the
+//   camera, display, serial line, trigger button and LED ring are each looked for again while
+//   the rest of the device runs, and each missing one is named on stderr (journalctl), on
+//   serial, on the display and in the journal (firmware/parts.h, firmware/camera_health.h).
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -37,7 +39,7 @@ void onSignal(int)
     gStop = 1;
 }
 
-constexpr int kExitUsage = 64, kExitUnavailable = 69, kExitConfig = 78;
+constexpr int kExitUsage = 64, kExitConfig = 78;
 
 std::string usage()
 {
@@ -52,14 +54,27 @@ std::string usage()
                        "The friction model is the config's reading.model (default ") +
            friction::kDefaultModel + "; known: " + models +
            ").\n"
-           "Exit codes: 0 stopped by a signal, 64 bad command line, 78 bad configuration, 69 a device\n"
-           "could not be opened. See docs/firmware.md for the keys, the serial protocol and the journal.\n";
+           "Exit codes: 0 stopped by a signal, 64 bad command line, 78 bad configuration. A missing\n"
+           "device is no exit: it is named and looked for again. See docs/firmware.md for the keys, the\n"
+           "serial protocol and the journal.\n";
 }
 
-int unavailable(const char *what, const hal::Error &e)
+int failed(const char *what, const hal::Error &e, int code)
 {
     std::fprintf(stderr, "icacam-fw: %s: %s\n", what, e.message.c_str());
-    return kExitUnavailable;
+    return code;
+}
+
+void logLine(std::string_view line)
+{
+    std::fprintf(stderr, "icacam-fw: %.*s\n", int(line.size()), line.data());
+}
+
+// A part that refused to open for a reason in the config itself (a baud rate the UART does
+// not have): a configuration mistake, not a missing part.
+bool configMistake(const fw::Part &p)
+{
+    return p.state() == fw::Part::State::Missing && p.problemCode() == hal::Errc::Invalid;
 }
 
 struct Arguments {
@@ -141,31 +156,50 @@ bool loadConfig(const std::string &path, fw::Config *cfg)
 int runDevice(const fw::Config &cfg)
 {
     hal::SystemClock clock;
-    auto camera = fw::makeCamera(cfg, clock);
-    if (!camera.ok()) return unavailable("camera", camera.error);
-    auto trigger = fw::makeTrigger(cfg, clock);
-    if (!trigger.ok()) return unavailable("trigger", trigger.error);
-    auto led = fw::makeLed(cfg, clock);
-    if (!led.ok()) return unavailable("LED", led.error);
-    auto display = fw::makeDisplay(cfg);
-    if (!display.ok()) return unavailable("display", display.error);
-    auto serial = fw::makeSerial(cfg);
-    if (!serial.ok()) return unavailable("serial", serial.error);
+    // The file backends' light: the file LED switches it, the file camera's images are lit by
+    // it (hal/file/scripted_light.h); a script names the ring's faults to try.
+    hal::ScriptedLight light(clock);
+    const bool fileLight = cfg.cameraBackend == "file" && cfg.ledBackend == "file";
+    if (hal::Error e = light.open(fw::pathFromConfig(cfg, cfg.ledScript)); !e.ok())
+        return failed("led.script", e, kExitConfig);
+    auto camera = fw::makeCamera(cfg, clock, fileLight ? &light : nullptr);
+    if (!camera.ok()) return failed("camera", camera.error, kExitConfig);
+    // The parts besides the camera: opened now, and while one is missing the device runs
+    // without it and opens it again every camera.retry_ms.
+    std::string serialName;
+    fw::DisplayPart display([&cfg] { return fw::makeDisplay(cfg); });
+    fw::SerialPart serial([&cfg, &serialName]() -> hal::Result<std::unique_ptr<hal::SerialPort>> {
+        auto s = fw::makeSerial(cfg);
+        if (!s.ok()) return {nullptr, s.error};
+        serialName = s.value.name;
+        return {std::move(s.value.port), {}};
+    });
+    fw::TriggerPart trigger([&cfg, &clock] { return fw::makeTrigger(cfg, clock); });
+    fw::LedPart led([&cfg, &clock, &light] { return fw::makeLed(cfg, clock, &light); });
+    fw::Parts parts(display, serial, trigger, led, clock, cfg.cameraRetryMs);
+    parts.setLog(logLine);
+    parts.openAll();
+    for (int i = 0; i < fw::Parts::kCount; ++i)
+        if (configMistake(parts.at(i)))
+            return failed(parts.at(i).name(), hal::Error::make(hal::Errc::Invalid, parts.at(i).problem()), kExitConfig);
     hal::FolderStorage storage;
+    // journal.dir is the config's: a folder that cannot be made or written is a mistake there
+    // (or in the unit's StateDirectory), which restarting does not mend.
     if (hal::Error e = storage.open(fw::pathFromConfig(cfg, cfg.journalDir), uint64_t(cfg.journalQuotaMb) << 20);
         !e.ok())
-        return unavailable("journal", e);
+        return failed("journal", e, kExitConfig);
     // The friction model by name, the same set and default as `icacam measure --model`
     // (reading.model: the config check refused any other name).
     const friction::FrictionModel *model = friction::frictionModel(cfg.model);
-    if (!model) return unavailable("model", hal::Error::make(hal::Errc::Invalid, "unknown reading.model " + cfg.model));
-    fw::Device device({*camera.value, *trigger.value, *led.value, *display.value, *serial.value.port, storage, clock},
-                      cfg, *model);
+    if (!model)
+        return failed("model", hal::Error::make(hal::Errc::Invalid, "unknown reading.model " + cfg.model), kExitConfig);
+    fw::Device device({*camera.value, trigger, led, display, serial, storage, clock, &parts}, cfg, *model);
     std::signal(SIGTERM, onSignal);
     std::signal(SIGINT, onSignal);
     std::signal(SIGPIPE, SIG_IGN);
-    if (hal::Error e = device.start(); !e.ok()) return unavailable("start", e);
-    std::fprintf(stderr, "icacam-fw: running; serial on %s\n", serial.value.name.c_str());
+    if (hal::Error e = device.start(); !e.ok()) return failed("start", e, kExitConfig);
+    std::fprintf(stderr, "icacam-fw: running; serial %s\n",
+                 serial.ok() ? ("on " + serialName).c_str() : ("missing: " + serial.problem()).c_str());
     // systemd (Type=notify, WatchdogSec=): ready once started, alive on every pass of the
     // loop (firmware/sd_notify.h); nothing when not run by systemd.
     fw::SystemdNotifier systemd = fw::SystemdNotifier::fromEnvironment();

@@ -72,7 +72,8 @@ std::string cameraBackendIssue(const Config &cfg)
     return notBuiltIssue("camera.backend", b, "file");
 }
 
-hal::Result<std::unique_ptr<hal::Camera>> makeCamera(const Config &cfg, hal::Clock &clock)
+hal::Result<std::unique_ptr<hal::Camera>> makeCamera(const Config &cfg, hal::Clock &clock,
+                                                     const hal::ScriptedLight *light)
 {
     // Imaging controls as configured; the file camera reports them back with each frame.
     const hal::CameraControls asked = cameraControlsOf(cfg);
@@ -80,7 +81,7 @@ hal::Result<std::unique_ptr<hal::Camera>> makeCamera(const Config &cfg, hal::Clo
     if (b == "file")
         return {std::make_unique<hal::FileCamera>(clock, hal::FileCameraOptions{pathFromConfig(cfg, cfg.cameraFrames),
                                                                                 cfg.cameraStrideAlign,
-                                                                                cfg.cameraLoop != 0, 0, asked}),
+                                                                                cfg.cameraLoop != 0, 0, asked, light}),
                 {}};
     if (kV4l2 && b == "v4l2") return {makeV4l2(cfg, clock, asked), {}};
     if (kLibcamera && b == "libcamera") return {makeLibcamera(cfg, clock, asked), {}};

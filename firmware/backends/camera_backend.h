@@ -7,6 +7,7 @@
 #include "firmware/config.h"
 #include "hal/camera.h"
 #include "hal/clock.h"
+#include "hal/file/scripted_light.h"
 
 namespace icacam::fw {
 
@@ -15,7 +16,9 @@ std::string cameraBackendIssue(const Config &cfg);
 
 // The camera camera.backend names, not configured yet: fw::Device configures it and, while
 // it is missing, looks for it again, so a camera that is not there is no error here.
-// Errors: Invalid (a backend this build does not carry).
-hal::Result<std::unique_ptr<hal::Camera>> makeCamera(const Config &cfg, hal::Clock &clock);
+// light: what lights the file camera's images (the file LED's, hal/file/scripted_light.h;
+// nullptr: the images as they are). Errors: Invalid (a backend this build does not carry).
+hal::Result<std::unique_ptr<hal::Camera>> makeCamera(const Config &cfg, hal::Clock &clock,
+                                                     const hal::ScriptedLight *light = nullptr);
 
 } // namespace icacam::fw

@@ -82,10 +82,10 @@ hal::Result<std::unique_ptr<hal::TriggerButton>> makeTrigger(const Config &cfg, 
     return TriggerResult::fail(hal::Errc::Invalid, triggerBackendIssue(cfg));
 }
 
-hal::Result<std::unique_ptr<hal::LedRing>> makeLed(const Config &cfg, hal::Clock &clock)
+hal::Result<std::unique_ptr<hal::LedRing>> makeLed(const Config &cfg, hal::Clock &clock, hal::ScriptedLight *light)
 {
     if (cfg.ledBackend == "file") {
-        auto led = std::make_unique<hal::FileLed>(clock);
+        auto led = std::make_unique<hal::FileLed>(clock, light);
         if (hal::Error e = led->open(pathFromConfig(cfg, cfg.ledLog)); !e.ok()) return {nullptr, e};
         return {std::move(led), {}};
     }

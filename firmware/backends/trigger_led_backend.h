@@ -7,6 +7,7 @@
 
 #include "firmware/config.h"
 #include "hal/clock.h"
+#include "hal/file/scripted_light.h"
 #include "hal/led_ring.h"
 #include "hal/trigger_button.h"
 
@@ -20,8 +21,9 @@ std::string ledBackendIssue(const Config &cfg);
 // only) or the gpiod line. Errors: the backend's open() (NotFound, Io), Invalid (a backend
 // this build does not carry).
 hal::Result<std::unique_ptr<hal::TriggerButton>> makeTrigger(const Config &cfg, hal::Clock &clock);
-// The ring, opened and off: the file backend's led.log (none: state only) or the gpiod
-// line. Errors as makeTrigger.
-hal::Result<std::unique_ptr<hal::LedRing>> makeLed(const Config &cfg, hal::Clock &clock);
+// The ring, opened and off: the file backend's led.log (none: state only), switching light
+// (the file camera's, nullptr: none), or the gpiod line. Errors as makeTrigger.
+hal::Result<std::unique_ptr<hal::LedRing>> makeLed(const Config &cfg, hal::Clock &clock,
+                                                   hal::ScriptedLight *light = nullptr);
 
 } // namespace icacam::fw

@@ -20,6 +20,7 @@
 #include "hal/file/file_trigger.h"
 #include "hal/file/folder_storage.h"
 #include "hal/file/image_decoder.h"
+#include "hal/file/scripted_light.h"
 #include "reading/instrument.h"
 #include "tests/support/recording_serial.h"
 
@@ -58,9 +59,10 @@ struct LevelTrigger final : hal::TriggerButton {
 struct AimRig {
     std::string dir;
     hal::ManualClock clock{50000};
+    hal::ScriptedLight light{clock}; // the file LED lights the file camera's frames
     std::unique_ptr<hal::FileCamera> camera;
     LevelTrigger trigger;
-    hal::FileLed led{clock};
+    hal::FileLed led{clock, &light};
     RecordingDisplay display;
     test::RecordingSerial serial;
     hal::FolderStorage storage;
@@ -72,7 +74,8 @@ struct AimRig {
         char t[] = "/tmp/icacam-aim-XXXXXX";
         dir = ::mkdtemp(t);
         std::ofstream(dir + "/frames.txt") << kSample << "\n";
-        camera = std::make_unique<hal::FileCamera>(clock, hal::FileCameraOptions{dir + "/frames.txt", 1, true, 0, {}});
+        camera = std::make_unique<hal::FileCamera>(clock,
+                                                   hal::FileCameraOptions{dir + "/frames.txt", 1, true, 0, {}, &light});
         EXPECT_TRUE(storage.open(dir + "/journal", 0).ok());
         fw::Config cfg;
         cfg.n = 0.1742;

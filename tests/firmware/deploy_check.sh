@@ -2,7 +2,7 @@
 # What deploy/ promises, checked without a board:
 #   deploy_check.sh SOURCE_DIR path/to/icacam-fw
 # the shipped config is one the program accepts and names /dev/serial0; the unit is
-# Type=notify with a watchdog, runs in the operator group install.sh creates, and leaves the
+# Type=notify with a watchdog, does not restart a configuration mistake (exit 78), runs in the operator group install.sh creates, and leaves the
 # journal readable by that group only; its sandboxing scores as before (systemd-analyze, when
 # there); install.sh passes shellcheck (when there). $ICACAM_EMULATOR runs a cross-built
 # program (qemu).
@@ -21,10 +21,15 @@ fail() {
 ${ICACAM_EMULATOR:-} "$fw" --check --config "$conf" >/dev/null || fail "icacam-fw --check refuses deploy/device.conf"
 grep -Eq '^device = /dev/serial0([[:space:]]|$)' "$conf" || fail "deploy/device.conf: serial device is not /dev/serial0"
 
-for line in Type=notify NotifyAccess=main UMask=0027 StateDirectoryMode=0750 RuntimeDirectory=icacam; do
+for line in Type=notify NotifyAccess=main UMask=0027 StateDirectoryMode=0750 RuntimeDirectory=icacam \
+    Restart=on-failure RestartPreventExitStatus=78; do
     grep -qx "$line" "$unit" || fail "the unit lacks $line"
 done
 grep -Eq '^WatchdogSec=[1-9][0-9]*$' "$unit" || fail "the unit has no WatchdogSec"
+# The program's own exit codes: 78 is its only configuration exit, and it has no other code
+# for systemd to restart on.
+grep -q 'kExitConfig = 78' "$top/firmware/main.cpp" || fail "firmware/main.cpp: the configuration exit is not 78"
+grep -Eq 'return[^;]*(69|kExitUnavailable)' "$top/firmware/main.cpp" && fail "firmware/main.cpp exits for a missing device"
 group=$(sed -n 's/^Group=//p' "$unit")
 [ -n "$group" ] || fail "the unit has no Group="
 grep -qx "operator_group=$group" "$install" || fail "install.sh does not create the unit's group $group"

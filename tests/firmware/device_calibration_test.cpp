@@ -18,6 +18,7 @@
 #include "hal/file/file_led.h"
 #include "hal/file/file_trigger.h"
 #include "hal/file/folder_storage.h"
+#include "hal/file/scripted_light.h"
 #include "host_tools/calibration_renderer.h"
 #include "host_tools/model_inverse.h"
 #include "reading/record_line.h"
@@ -48,9 +49,10 @@ double number(const reading::FlatObject &o, const char *key)
 struct Rig {
     fs::path dir;
     hal::ManualClock clock;
+    hal::ScriptedLight light{clock}; // the file LED lights the file camera's frames
     std::unique_ptr<hal::FileCamera> camera;
     hal::FileTrigger trigger{clock};
-    hal::FileLed led{clock};
+    hal::FileLed led{clock, &light};
     NullDisplay display;
     RecordingSerial serial;
     hal::FolderStorage storage;
@@ -72,8 +74,8 @@ struct Rig {
     void frame(const std::string &name, const cv::Mat &img) { cv::imwrite((dir / "frames" / name).string(), img); }
     bool start()
     {
-        camera = std::make_unique<hal::FileCamera>(clock,
-                                                   hal::FileCameraOptions{(dir / "frames").string(), 1, false, 0, {}});
+        camera = std::make_unique<hal::FileCamera>(
+            clock, hal::FileCameraOptions{(dir / "frames").string(), 1, false, 0, {}, &light});
         EXPECT_TRUE(storage.open((dir / "journal").string()).ok());
         device = std::make_unique<fw::Device>(fw::DeviceHal{*camera, trigger, led, display, serial, storage, clock},
                                               cfg, model);

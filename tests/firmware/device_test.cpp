@@ -13,6 +13,7 @@
 #include "hal/file/file_led.h"
 #include "hal/file/file_trigger.h"
 #include "hal/file/folder_storage.h"
+#include "hal/file/scripted_light.h"
 #include "tests/support/recording_serial.h"
 
 using namespace icacam;
@@ -35,9 +36,10 @@ struct RecordingDisplay final : hal::Display {
 struct Rig {
     std::string dir;
     hal::ManualClock clock;
+    hal::ScriptedLight light{clock}; // the file LED lights the file camera's frames
     hal::FileCamera camera;
     hal::FileTrigger trigger{clock};
-    hal::FileLed led{clock};
+    hal::FileLed led{clock, &light};
     RecordingDisplay display;
     RecordingSerial serial;
     hal::FolderStorage storage;
@@ -45,7 +47,7 @@ struct Rig {
     std::unique_ptr<fw::Device> device;
 
     explicit Rig(const std::string &frames, uint64_t quota = 0, bool loop = false)
-            : dir(makeDir()), camera(clock, {frames.empty() ? dir : frames, 1, loop, 0, {}})
+            : dir(makeDir()), camera(clock, {frames.empty() ? dir : frames, 1, loop, 0, {}, &light})
     {
         EXPECT_TRUE(storage.open(dir + "/journal", quota).ok());
         fw::Config cfg;
@@ -170,7 +172,7 @@ TEST(Device, FinalHeightIsALiveJournaledKeyCheckedAgainstTheInitialHeight)
     // specimen.h_final_mm feeds the reduction-aware model (docs/loop-method.md): settable over
     // serial, kept across restarts, and never above the initial height.
     Rig rig("");
-    writeGrey(rig.dir + "/a.pgm", 64, 64, 0);
+    writeGrey(rig.dir + "/a.pgm", 64, 64, 90);
     ASSERT_TRUE(rig.device->start().ok());
     rig.serial.in = "set h_final_mm 7.3\nset h_final_mm 15\nget h_final_mm\n";
     rig.device->tick();
@@ -204,12 +206,13 @@ TEST(Device, ConfiguredImagingControlsAreJournaledWithEachResult)
     const hal::CameraControls asked = fw::cameraControlsOf(parsed);
     EXPECT_EQ(asked.noiseReduction, 0);
     Rig rig("");
-    writeGrey(rig.dir + "/a.pgm", 64, 64, 0);
-    hal::FileCamera camera(rig.clock, {rig.dir, 1, false, 0, asked});
+    writeGrey(rig.dir + "/a.pgm", 64, 64, 90);
+    hal::FileCamera camera(rig.clock, {rig.dir, 1, false, 0, asked, &rig.light});
     fw::Config cfg = rig.device->config();
     cfg.ledSettleMs = 25;
     fw::Device device({camera, rig.trigger, rig.led, rig.display, rig.serial, rig.storage, rig.clock}, cfg, rig.model);
     ASSERT_TRUE(device.start().ok());
+    rig.clock.advance(100); // a press some time after start: a frame with the ring off is at hand
     rig.serial.in = "trigger\n";
     device.tick();
     const reading::FlatObject r = rig.serial.last("result");
@@ -252,7 +255,7 @@ TEST(Device, MissingCameraIsShownAndMeasuringStartsWhenItAppears)
     EXPECT_NE(rig.serial.out.find("camera missing"), std::string::npos) << rig.serial.out;
     EXPECT_FALSE(rig.led.isOn());
 
-    writeGrey(rig.dir + "/a.pgm", 64, 64, 0); // the camera appears
+    writeGrey(rig.dir + "/a.pgm", 64, 64, 90); // the camera appears
     rig.serial.out.clear();
     rig.clock.advance(rig.device->config().cameraRetryMs);
     rig.device->tick();

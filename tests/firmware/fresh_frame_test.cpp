@@ -47,10 +47,31 @@ const DriverModel kUnicam{"unicam", 33333, 20000, 20000, 20000 + 33333 + 5000, 2
 const DriverModel kUvcYuyv{"uvc-yuyv", 33333, 8000, 8000 + 1000, 8000 + 33333, 8000 + 1000, 1000, 4};
 const DriverModel kUvcMjpeg{"uvc-mjpeg", 33333, 15000, 15000 + 9000, 15000 + 33333 + 9000, 15000 + 9000, 9000, 3};
 
+// Records when the ring was switched on and off; a frame exposed wholly while it was on is lit.
+struct TimedLed final : hal::LedRing {
+    explicit TimedLed(hal::ManualClock &c) : clock(c) {}
+    hal::ManualClock &clock;
+    bool on = false;
+    int64_t onAtMs = -1, offAtMs = -1;
+    hal::Error set(bool v) override
+    {
+        if (v && !on) onAtMs = clock.monotonicMs();
+        if (!v && on) offAtMs = clock.monotonicMs();
+        on = v;
+        return {};
+    }
+    bool isOn() const override { return on; }
+    bool litThroughout(int64_t fromUs, int64_t toUs) const
+    {
+        return onAtMs >= 0 && fromUs >= onAtMs * 1000 && (on || offAtMs < onAtMs || toUs <= offAtMs * 1000);
+    }
+};
+
 // A free-running sensor behind a request queue, on the test's manual clock (µs = ms × 1000).
 class SimulatedSensor final : public hal::Camera {
 public:
-    SimulatedSensor(hal::ManualClock &clock, DriverModel m, int64_t phaseUs) : clock_(clock), m_(m), phase_(phaseUs)
+    SimulatedSensor(hal::ManualClock &clock, DriverModel m, int64_t phaseUs, const TimedLed &led)
+            : clock_(clock), m_(m), phase_(phaseUs), led_(led)
     {
         pixels_.assign(64 * 48, 0);
     }
@@ -86,7 +107,9 @@ public:
                     continue;
                 }
                 held_ = k;
-                std::fill(pixels_.begin(), pixels_.end(), uint8_t(k % 256));
+                // The scene under the ring, or in the dark (the lit-frame check reads it).
+                std::fill(pixels_.begin(), pixels_.end(),
+                          uint8_t(led_.litThroughout(start(k), start(k) + m_.exposureUs) ? 180 : 20));
                 out->view = {hal::PixelFormat::Grey8, pixels_.data(), 64, 48, 64, pixels_.size()};
                 out->timestampMs = hal::exposureStartNs(st) / 1000000;
                 out->latencyUs = (hal::exposureStartNs(st) - notBeforeNs) / 1000;
@@ -131,6 +154,7 @@ private:
     hal::ManualClock &clock_;
     DriverModel m_;
     int64_t phase_;
+    const TimedLed &led_;
     int free_ = 0;
     int64_t next_ = 0, held_ = -1;
     std::deque<int64_t> inflight_, done_;
@@ -139,20 +163,6 @@ private:
 
 struct QuietTrigger final : hal::TriggerButton {
     hal::Result<size_t> readEdges(hal::ButtonEdge *, size_t) override { return {}; }
-};
-// Records when the ring was switched on.
-struct TimedLed final : hal::LedRing {
-    explicit TimedLed(hal::ManualClock &c) : clock(c) {}
-    hal::ManualClock &clock;
-    bool on = false;
-    int64_t onAtMs = -1;
-    hal::Error set(bool v) override
-    {
-        if (v && !on) onAtMs = clock.monotonicMs();
-        on = v;
-        return {};
-    }
-    bool isOn() const override { return on; }
 };
 struct NullDisplay final : hal::Display {
     hal::Error show(const hal::MonoBitmap &) override { return {}; }
@@ -171,9 +181,9 @@ Outcome runModel(const DriverModel &m, int shots, uint32_t seed)
     const std::string dir = ::mkdtemp(t);
     hal::ManualClock clock(10000);
     std::mt19937 rng(seed);
-    SimulatedSensor cam(clock, m, 1000 + int64_t(rng() % 30000));
-    QuietTrigger trigger;
     TimedLed led(clock);
+    SimulatedSensor cam(clock, m, 1000 + int64_t(rng() % 30000), led);
+    QuietTrigger trigger;
     NullDisplay display;
     test::RecordingSerial serial;
     hal::FolderStorage storage;

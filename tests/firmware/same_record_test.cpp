@@ -14,6 +14,7 @@
 #include "hal/file/file_led.h"
 #include "hal/file/file_trigger.h"
 #include "hal/file/folder_storage.h"
+#include "hal/file/scripted_light.h"
 #include "host_tools/loop/loop_records.h"
 #include "host_tools/manifest.h"
 #include "host_tools/record_measurer.h"
@@ -41,9 +42,10 @@ reading::FlatObject deviceResult(const std::string &image, const fw::Config &bas
     fs::create_directories(dir / "frames");
     fs::copy_file(kSample + "/images/" + image, dir / "frames" / image);
     hal::ManualClock clock;
-    hal::FileCamera camera(clock, hal::FileCameraOptions{(dir / "frames").string(), 1, false, 0});
+    hal::ScriptedLight light{clock}; // the file LED lights the file camera's frames
+    hal::FileCamera camera(clock, hal::FileCameraOptions{(dir / "frames").string(), 1, false, 0, {}, &light});
     hal::FileTrigger trigger{clock};
-    hal::FileLed led{clock};
+    hal::FileLed led{clock, &light};
     NullDisplay display;
     test::RecordingSerial serial;
     hal::FolderStorage storage;

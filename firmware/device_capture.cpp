@@ -1,0 +1,107 @@
+// Capturing a frame for a measurement: the frame is lit by the ring from its first row to its
+// last, shown photometrically, not only by timestamps (firmware/lit_frame.h). An LED, driver
+// or led.active fault gives a fresh dark frame, and a camera that buffers or blends frames
+// can hand out one lit in part; both are refused and captured again, then reported as
+// "LED ring not lit".
+#include <algorithm>
+#include <cmath>
+
+#include "firmware/device.h"
+#include "firmware/frame_luma.h"
+
+namespace icacam::fw {
+
+namespace {
+
+LumaPlane planeOf(const vision::LumaView &v)
+{
+    return {v.data, v.width, v.height, v.stride, v.pixelStep};
+}
+
+} // namespace
+
+LitFrameOptions Device::litOptions(int width, int height) const
+{
+    LitFrameOptions o;
+    o.minRiseLevels = cfg_.litMinRise;
+    // The specimen's region: a square inside the end face the config declares (its diameter
+    // after upsetting by volume constancy, d0 · sqrt(h0 / h), at the model's 50 % when h is not
+    // given), centred, as aim mode asks the specimen to be; 0.7 of it leaves room for a
+    // specimen off centre. Without a scale, or larger than the frame: the middle half, or
+    // the frame's full height. It spans the rows top to bottom, which is what shows a frame
+    // that straddled the LED's edge.
+    const double hRatio = cfg_.hFinalMm > 0 ? cfg_.h0Mm / cfg_.hFinalMm : 2.0;
+    const double facePx = cfg_.mmPerPx > 0 ? cfg_.d0Mm * std::sqrt(hRatio) / cfg_.mmPerPx : 0;
+    int side = facePx > 0 ? int(0.7 * facePx) : std::min(width, height) / 2;
+    side = std::clamp(side, std::min(o.bands * 4, std::min(width, height)), std::min(width, height));
+    o.region = {(width - side) / 2, (height - side) / 2, side, side};
+    return o;
+}
+
+bool Device::captureLuma(int64_t notBeforeMs, hal::CapturedFrame *frame, vision::LumaView *luma, std::string *problem)
+{
+    const hal::Error e = hal_.camera.capture({notBeforeMs, cfg_.captureTimeoutMs}, frame);
+    cameraHealth_.onCapture(e, e.ok() ? frame : nullptr);
+    if (!e.ok()) {
+        *problem = std::string("camera ") + hal::errcName(e.code) + ": " + e.message;
+        return false;
+    }
+    if (const vision::ErrorCode le = frameLuma(frame->view, lumaScratch_.get(), lumaScratchBytes_, luma);
+        le != vision::ErrorCode::None) {
+        *problem = std::string("frame: ") + vision::errorMessage(le);
+        return false;
+    }
+    return true;
+}
+
+bool Device::takeDarkReference(hal::CapturedFrame *frame, std::string *problem)
+{
+    // Any frame exposed after the ring went dark: one is usually waiting in the camera's queue.
+    vision::LumaView dark;
+    if (!captureLuma(ledOffMs_ + cfg_.ledSettleMs, frame, &dark, problem)) return false;
+    litCheck_ = LitFrameCheck(litOptions(dark.width, dark.height));
+    if (!litCheck_.setDarkReference(planeOf(dark))) {
+        *problem = "frame too small for the lit check";
+        return false;
+    }
+    return true;
+}
+
+bool Device::captureFrame(hal::CapturedFrame *frame, vision::LumaView *luma, std::string *problem)
+{
+    triggerMs_ = hal_.clock.monotonicMs();
+    lastLit_ = {};
+    unlitFrames_ = 0;
+    if (!cameraHealth_.ready()) {
+        *problem =
+            std::string("camera ") + CameraHealth::stateName(cameraHealth_.state()) + ": " + cameraHealth_.problem();
+        return false;
+    }
+    state_ = State::Capture;
+    if (!takeDarkReference(frame, problem)) return false;
+    state_ = State::LedOn;
+    if (hal::Error e = hal_.led.set(true); !e.ok()) *problem = "LED: " + e.message;
+    hal_.clock.sleepMs(cfg_.ledSettleMs);
+    // From here on the ring is lit and steady: only a frame exposed after now is measured,
+    // and only one the light reached top to bottom.
+    const int64_t litMs = hal_.clock.monotonicMs();
+    state_ = State::Capture;
+    bool captured = false;
+    for (int attempt = 0; problem->empty() && attempt < cfg_.litAttempts; ++attempt) {
+        if (!captureLuma(litMs, frame, luma, problem)) break;
+        captured = true;
+        lastLit_ = litCheck_.check(planeOf(*luma));
+        if (lastLit_.verdict == LitVerdict::Lit) break;
+        ++unlitFrames_;
+    }
+    if (captured && problem->empty() && lastLit_.verdict != LitVerdict::Lit)
+        *problem = std::string("LED ring not lit: ") + lastLit_.reason + " (" + std::to_string(unlitFrames_) +
+                   " frames refused)";
+    state_ = State::LedOff;
+    if (hal::Error e = hal_.led.set(false); !e.ok() && problem->empty()) *problem = "LED: " + e.message;
+    ledOffMs_ = hal_.clock.monotonicMs();
+    state_ = State::Measure;
+    return captured;
+}
+
+} // namespace icacam::fw
