@@ -59,6 +59,7 @@ struct FakeVideo {
     struct Frame {
         int64_t ns;
         uint8_t fill;
+        int bottomFill = -1; // >= 0: the bottom half's rows (a frame the light reached in part)
     };
     std::deque<Frame> exposures; // frames the sensor will deliver, into the next queued buffer
     std::vector<uint8_t> jpeg;   // MJPEG: every frame's bytes
@@ -226,6 +227,9 @@ gboolean onIoctl(UMockdevIoctlBase *, UMockdevIoctlClient *client, gpointer user
             b->bytesused = uint32_t(v->jpeg.size());
         } else {
             std::fill(v->memory[i].begin(), v->memory[i].end(), fr.fill);
+            if (fr.bottomFill >= 0)
+                std::fill(v->memory[i].begin() + ptrdiff_t(v->width * 2 * (v->height / 2)),
+                          v->memory[i].begin() + ptrdiff_t(v->width * 2 * v->height), uint8_t(fr.bottomFill));
             b->bytesused = v->width * v->height * 2;
         }
         b->sequence = v->sequence++;
@@ -701,10 +705,20 @@ TEST_F(V4l2Mock, NoCameraIsNotFound)
 struct QuietTrigger final : hal::TriggerButton {
     hal::Result<size_t> readEdges(hal::ButtonEdge *, size_t) override { return {}; }
 };
+// The LED ring and the scene the fake camera sees: switched on, it has the camera expose the
+// frames it is scripted to (by default one lit top to bottom); the frame with the ring off
+// that each measurement starts with is exposed by the test.
 struct PlainLed final : hal::LedRing {
+    FakeVideo *video = nullptr;
+    std::vector<FakeVideo::Frame> whenOn{{0, 180}}; // ns: after the switch
     bool on = false;
     hal::Error set(bool v) override
     {
+        if (v && !on && video) {
+            std::lock_guard<std::mutex> lock(video->m);
+            for (FakeVideo::Frame f : whenOn)
+                video->exposures.push_back({nowNs() + 1000000000 + f.ns, f.fill, f.bottomFill});
+        }
         on = v;
         return {};
     }
@@ -727,6 +741,7 @@ TEST_F(V4l2Mock, FirmwareReportsUnplugAndMeasuresAgainAfterReplug)
     hal::V4l2Camera cam(clock_, opts("/dev/video0", 2), &mapper_);
     QuietTrigger trigger;
     PlainLed led;
+    led.video = &video_;
     RecordingDisplay display;
     RecordingSerial serial;
     hal::FolderStorage storage;
@@ -759,7 +774,7 @@ TEST_F(V4l2Mock, FirmwareReportsUnplugAndMeasuresAgainAfterReplug)
         video_.unplugged = false;
         video_.streaming = false;
     }
-    expose(nowNs() + 1000000000, 128);
+    expose(nowNs() + 1000000000, 20); // the ring off
     serial.out.clear();
     serial.in = "trigger\n";
     device.tick();
@@ -780,6 +795,7 @@ TEST_F(V4l2Mock, FirmwareStartsWithoutItsCameraAndMeasuresOnceTheNodeAppears)
     hal::V4l2Camera cam(clock_, opts("/dev/video1", 2), &mapper_);
     QuietTrigger trigger;
     PlainLed led;
+    led.video = &video_;
     RecordingDisplay display;
     RecordingSerial serial;
     hal::FolderStorage storage;
@@ -821,7 +837,7 @@ TEST_F(V4l2Mock, FirmwareStartsWithoutItsCameraAndMeasuresOnceTheNodeAppears)
     ASSERT_TRUE(back.find("camera")) << serial.out;
     EXPECT_EQ(back.find("camera")->text, "ok");
     EXPECT_EQ(fw::readRow(display.last, 0), "icacam  ready");
-    expose(nowNs() + 1000000000, 90);
+    expose(nowNs() + 1000000000, 20); // the ring off
     serial.in = "trigger\n";
     device.tick();
     const reading::FlatObject r = serial.last("result");
@@ -829,6 +845,59 @@ TEST_F(V4l2Mock, FirmwareStartsWithoutItsCameraAndMeasuresOnceTheNodeAppears)
     EXPECT_EQ(r.find("source")->text, "/dev/video1");
     ASSERT_TRUE(r.find("latency_us"));
     EXPECT_GE(r.find("latency_us")->number, 0);
+    std::filesystem::remove_all(dir);
+}
+
+// The lit-frame check on the V4L2 path: the ring lights late, so the first frame after it was
+// switched on is lit in its bottom half only (a webcam that buffered a frame exposed across
+// the edge). It is refused and the next one, lit top to bottom, measured; a ring that never
+// lights the whole frame ends in "LED ring not lit".
+TEST_F(V4l2Mock, FirmwareRefusesAFrameTheRingLitInPart)
+{
+    char t[] = "/tmp/icacam-v4l2-lit-XXXXXX";
+    const std::string dir = ::mkdtemp(t);
+    hal::V4l2Camera cam(clock_, opts("/dev/video0", 3), &mapper_);
+    QuietTrigger trigger;
+    PlainLed led;
+    led.video = &video_;
+    led.whenOn = {{0, 20, 180}, {1000, 180}};
+    RecordingDisplay display;
+    RecordingSerial serial;
+    hal::FolderStorage storage;
+    ASSERT_TRUE(storage.open(dir, 0).ok());
+    fw::Config cfg;
+    cfg.n = 0.2;
+    cfg.mmPerPx = 0.0125;
+    cfg.cameraMaxWidth = 640;
+    cfg.cameraMaxHeight = 480;
+    cfg.captureTimeoutMs = 300;
+    cfg.journalImages = "none";
+    friction::PaperModel model;
+    fw::Device device({cam, trigger, led, display, serial, storage, clock_}, cfg, model);
+    ASSERT_TRUE(device.start().ok());
+    expose(nowNs() + 1000000000, 20); // the ring off
+    serial.in = "trigger\n";
+    device.tick();
+    reading::FlatObject r = serial.last("result");
+    ASSERT_TRUE(r.find("lit")) << serial.out;
+    EXPECT_EQ(r.find("lit")->text, "lit");
+    EXPECT_EQ(r.find("unlit_frames")->number, 1);
+    EXPECT_EQ(serial.out.find("LED ring not lit"), std::string::npos) << serial.out;
+
+    led.whenOn = {{0, 20, 180}, {1000, 20, 180}, {2000, 20, 180}};
+    expose(nowNs() + 1000000000, 20);
+    serial.out.clear();
+    serial.in = "trigger\n";
+    device.tick();
+    r = serial.last("result");
+    ASSERT_TRUE(r.find("lit")) << serial.out;
+    EXPECT_EQ(r.find("lit")->text, "partly_lit");
+    EXPECT_EQ(r.find("status")->text, "error");
+    const reading::FlatObject e = serial.last("error");
+    ASSERT_TRUE(e.find("message")) << serial.out;
+    EXPECT_EQ(e.find("message")->text.rfind("LED ring not lit: lit at the bottom only", 0), 0u)
+        << e.find("message")->text;
+    EXPECT_FALSE(led.on);
     std::filesystem::remove_all(dir);
 }
 
