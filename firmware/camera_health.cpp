@@ -21,9 +21,32 @@ bool CameraHealth::attempt()
         if (state_ != State::Lost) state_ = State::Missing;
         return false;
     }
+    if (state_ == State::Lost) {
+        // Configured again is not proof: the frames must flow (a sensor on a loose ribbon
+        // still answers I2C, and streams nothing).
+        hal::CapturedFrame frame;
+        if (hal::Error e = camera_.capture(timeoutMs_, &frame); !e.ok()) {
+            problem_ = "configures but delivers no frame: " + e.message;
+            nextTryMs_ = clock_.monotonicMs() + retryMs_;
+            return false;
+        }
+    }
     state_ = State::Ok;
     problem_.clear();
+    timeouts_ = 0;
+    nextProbeMs_ = clock_.monotonicMs() + probeMs_;
     return true;
+}
+
+void CameraHealth::probe()
+{
+    // With the ring off, the next frame the camera has: cheap (usually one is waiting), and
+    // what a loose ribbon or an unplugged webcam cannot give.
+    hal::CapturedFrame frame;
+    const hal::Error e = camera_.capture(timeoutMs_, &frame);
+    onCapture(e, e.ok() ? &frame : nullptr);
+    // A probe that timed out once is repeated at once: the second decides.
+    if (!e.ok() && state_ == State::Ok) nextProbeMs_ = clock_.monotonicMs();
 }
 
 bool CameraHealth::open()
@@ -31,9 +54,15 @@ bool CameraHealth::open()
     return attempt();
 }
 
-bool CameraHealth::poll()
+bool CameraHealth::poll(bool probing)
 {
-    if (state_ == State::Ok || clock_.monotonicMs() < nextTryMs_) return false;
+    const int64_t now = clock_.monotonicMs();
+    if (state_ == State::Ok) {
+        if (!probing || probeMs_ <= 0 || now < nextProbeMs_) return false;
+        probe();
+        return state_ != State::Ok;
+    }
+    if (now < nextTryMs_) return false;
     return attempt();
 }
 
@@ -46,6 +75,7 @@ void CameraHealth::onCapture(const hal::Error &e, const hal::CapturedFrame *fram
 {
     if (e.ok()) {
         timeouts_ = 0;
+        nextProbeMs_ = clock_.monotonicMs() + probeMs_; // frames flow: no probe needed yet
         if (frame) {
             lastLatencyUs_ = frame->latencyUs;
             lastControls_ = frame->controls;

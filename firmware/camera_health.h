@@ -4,6 +4,11 @@
 // every retry interval (and before each trigger) and measuring starts once it answers; a
 // camera that stops answering (a loose CSI ribbon: captures time out) or goes away (USB
 // unplug) is configured afresh, which re-acquires it.
+//
+// Between presses an idle probe (one frame, every probe interval, none while frames flow)
+// finds a camera that went away before a technician presses the button. A camera that was
+// lost is ok again only once it has delivered a frame: a sensor that still answers on I2C
+// configures fine but may stream nothing, and must not be reported ok after each retry.
 #include <cstdint>
 #include <string>
 
@@ -17,15 +22,19 @@ public:
     enum class State { Unknown, Ok, Missing, Lost };
     static constexpr int kTimeoutsLost = 2;
 
-    CameraHealth(hal::Camera &camera, hal::Clock &clock, hal::CameraFormat format, int retryMs)
-            : camera_(camera), clock_(clock), format_(format), retryMs_(retryMs)
+    // probeMs: the idle probe's interval (0: none); timeoutMs: a probe's wait for its frame.
+    CameraHealth(hal::Camera &camera, hal::Clock &clock, hal::CameraFormat format, int retryMs, int probeMs = 0,
+                 int timeoutMs = 2000)
+            : camera_(camera), clock_(clock), format_(format), retryMs_(retryMs), probeMs_(probeMs),
+              timeoutMs_(timeoutMs)
     {}
 
     // Configures the camera now; false (and the words in problem()) when it is not there.
     bool open();
-    // From the main loop: tries again once the retry interval has passed. True when the
-    // camera has just come (back).
-    bool poll();
+    // From the main loop: tries again once the retry interval has passed, and (probe: the
+    // device is idle) probes a camera that is ok. True when the state changed (the camera
+    // came back, or was found lost).
+    bool poll(bool probe = true);
     // Before a capture: ready, or one more attempt now.
     bool ready();
     // After a capture: a timeout or a closed camera marks it lost (re-acquired by the next
@@ -43,10 +52,12 @@ public:
 
 private:
     bool attempt();
+    void probe();
     hal::Camera &camera_;
     hal::Clock &clock_;
     hal::CameraFormat format_;
-    int retryMs_;
+    int retryMs_, probeMs_, timeoutMs_;
+    int64_t nextProbeMs_ = 0;
     State state_ = State::Unknown;
     std::string problem_;
     int64_t nextTryMs_ = 0;

@@ -101,6 +101,8 @@ const KeyDef kKeys[] = {
     {"camera.retry_ms", nullptr, nullptr, &Config::cameraRetryMs, nullptr, 100, 600000, nullptr, false,
      "a missing or silent camera, and a missing display, serial line, button or LED line, is looked for again "
      "this often"},
+    {"camera.probe_ms", nullptr, nullptr, &Config::cameraProbeMs, nullptr, 0, 3600000, nullptr, false,
+     "idle: a frame this often (none while frames flow) finds a camera lost between presses (0: never)"},
     {"trigger.backend", nullptr, nullptr, nullptr, &Config::triggerBackend, 0, 0, "file|gpiod", false, "button driver"},
     {"trigger.script", nullptr, nullptr, nullptr, &Config::triggerScript, 0, 4096, nullptr, false,
      "file backend: trigger script file or FIFO"},

@@ -48,6 +48,7 @@ struct Config {
     std::string noiseReduction = "default"; // default | off | fast | high_quality
     int stampDelayUs = -1;                  // v4l2: stamp after exposure end (-1: a frame interval)
     int cameraRetryMs = 2000;               // a missing camera is looked for again this often
+    int cameraProbeMs = 5000;               // idle: one frame this often shows the camera is there
     // [trigger] and [led]
     std::string triggerBackend = "file";
     std::string triggerScript; // file backend: script file or FIFO ("" = serial only)

@@ -55,7 +55,7 @@ Device::Device(DeviceHal hal, Config cfg, const friction::FrictionModel &model)
           cameraHealth_(hal.camera, hal.clock,
                         {cfg_.cameraFormat == "rgb24" ? hal::PixelFormat::RGB24 : hal::PixelFormat::Grey8,
                          cfg_.cameraMaxWidth, cfg_.cameraMaxHeight},
-                        cfg_.cameraRetryMs),
+                        cfg_.cameraRetryMs, cfg_.cameraProbeMs, cfg_.captureTimeoutMs),
           journal_(hal.storage, cfg_.journalMemory), debouncer_(cfg_.debounceMs, cfg_.longPressMs), lines_(kMaxLine)
 {
     instrument_.setModel(model);
@@ -144,14 +144,15 @@ void Device::tick()
 
 void Device::pollCamera()
 {
-    if (!cameraHealth_.poll()) return;
+    // No probe while aiming: aim mode captures all the time, and says when it cannot.
+    if (!cameraHealth_.poll(aimUntilMs_ < 0)) return;
     out_.clear();
     reading::JsonBuilder j(&out_);
     j.str("type", "camera");
     appendCameraStatus(j);
     j.end();
     send(out_);
-    showIdle("camera found");
+    if (state_ == State::Idle && aimUntilMs_ < 0) showIdle(cameraHealth_.ok() ? "camera found" : "");
 }
 
 void Device::appendCameraStatus(reading::JsonBuilder &j) const

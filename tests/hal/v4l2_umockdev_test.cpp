@@ -774,7 +774,10 @@ TEST_F(V4l2Mock, FirmwareReportsUnplugAndMeasuresAgainAfterReplug)
         video_.unplugged = false;
         video_.streaming = false;
     }
-    expose(nowNs() + 1000000000, 20); // the ring off
+    // The camera streams again: a frame proves it (a lost camera is ok again only then), one
+    // more is the measurement's frame with the ring off.
+    expose(nowNs() + 1000000000, 20);
+    expose(nowNs() + 1000000000, 20);
     serial.out.clear();
     serial.in = "trigger\n";
     device.tick();
