@@ -31,6 +31,9 @@ bool kindOf(std::string_view name, CommandKind *k)
         {"scalecheck", CommandKind::ScaleCheck},
         {"aim", CommandKind::Aim},
         {"snapshot", CommandKind::Snapshot},
+        {"lens", CommandKind::Lens},
+        {"focus", CommandKind::Focus},
+        {"fetch", CommandKind::Fetch},
     };
     for (const auto &n : kNames)
         if (name == n.name) {
@@ -76,6 +79,17 @@ bool wordNumber(std::string_view w, double *v)
 }
 
 constexpr const char *kScaleUsage = "usage: scalecheck DIAMETER_MM [TOLERANCE_PCT [THICKNESS_MM]]";
+constexpr const char *kFetchUsage = "usage: fetch NAME (a snapshot's name, snap-....png)";
+constexpr double kMaxLensPosition = 10000;
+
+// fetch: only a snapshot the device wrote (snap-….png), never a path.
+bool snapshotName(std::string_view n)
+{
+    if (n.size() < 9 || n.size() > 64 || n.substr(0, 5) != "snap-" || n.substr(n.size() - 4) != ".png") return false;
+    for (char ch : n)
+        if (!((ch >= '0' && ch <= '9') || ch == '-' || ch == '.' || (ch >= 'a' && ch <= 'z'))) return false;
+    return true;
+}
 
 // {"cmd":"set","key":"n","value":0.2,"id":"x"}: the command's fields by name.
 CommandParse parseJsonCommand(std::string_view line)
@@ -113,6 +127,18 @@ CommandParse parseJsonCommand(std::string_view line)
                 return fail("bad_argument", "\"seconds\" must be a whole number from 0 (off) to 600");
             p.cmd.aimSeconds = int(sec->number);
         }
+    }
+    if (p.cmd.kind == CommandKind::Lens) {
+        const reading::JsonField *v = obj.find("position");
+        if (!v || v->type != reading::JsonField::Type::Number || !(v->number >= 0 && v->number <= kMaxLensPosition))
+            return fail("bad_argument", "lens needs \"position\", a number from 0 to 10000");
+        p.cmd.lensPosition = v->number;
+    }
+    if (p.cmd.kind == CommandKind::Fetch) {
+        const reading::JsonField *v = obj.find("name");
+        if (!v || v->type != reading::JsonField::Type::String || !snapshotName(v->text))
+            return fail("bad_argument", kFetchUsage);
+        p.cmd.name = v->text;
     }
     if (p.cmd.kind == CommandKind::ScaleCheck) {
         const struct {
@@ -182,6 +208,14 @@ CommandParse parseWordCommand(std::string_view line)
             else
                 return fail("bad_argument", "usage: aim [SECONDS | off] (SECONDS a whole number up to 600)");
         }
+    } else if (p.cmd.kind == CommandKind::Lens) {
+        double v = 0;
+        if (nw != 2 || !wordNumber(words[1], &v) || !(v >= 0 && v <= kMaxLensPosition))
+            return fail("bad_argument", "usage: lens POSITION (0 to 10000; Camera Module 3: dioptres)");
+        p.cmd.lensPosition = v;
+    } else if (p.cmd.kind == CommandKind::Fetch) {
+        if (nw != 2 || !snapshotName(words[1])) return fail("bad_argument", kFetchUsage);
+        p.cmd.name = std::string(words[1]);
     } else if (p.cmd.kind == CommandKind::Set) {
         if (nw != 3) return fail("bad_argument", "usage: set KEY VALUE");
         p.cmd.key = std::string(words[1]);

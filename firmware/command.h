@@ -10,7 +10,7 @@
 
 namespace icacam::fw {
 
-enum class CommandKind { Help, Status, Trigger, Get, Set, Results, ScaleCheck, Aim, Snapshot };
+enum class CommandKind { Help, Status, Trigger, Get, Set, Results, ScaleCheck, Aim, Snapshot, Lens, Focus, Fetch };
 
 struct Command {
     CommandKind kind = CommandKind::Help;
@@ -20,8 +20,10 @@ struct Command {
     // scalecheck: the reference disc's declared diameter, the tolerance (percent) and the
     // disc's thickness (its edge is measured in its top face)
     double diameterMm = 0, tolerancePct = 0.5, thicknessMm = 0;
-    int aimSeconds = 60; // aim: how long the live view runs (0: `aim off`)
-    std::string tag;     // the request's "id", echoed in the answer
+    int aimSeconds = 60;     // aim: how long the live view runs (0: `aim off`)
+    double lensPosition = 0; // lens: where to hold the lens (the camera's units; CM3: dioptres)
+    std::string name;        // fetch: a snapshot's file name
+    std::string tag;         // the request's "id", echoed in the answer
 };
 
 struct CommandParse {

@@ -89,7 +89,7 @@ const KeyDef kKeys[] = {
      "colour gain of red, auto white balance off (-1: libcamera 1.6; v4l2: red_balance units)"},
     {"camera.blue_gain", nullptr, &Config::blueGain, nullptr, nullptr, -1, 10000, nullptr, false,
      "colour gain of blue, as red_gain"},
-    {"camera.lens_position", nullptr, &Config::lensPosition, nullptr, nullptr, -1, 10000, nullptr, false,
+    {"camera.lens_position", "lens_position", &Config::lensPosition, nullptr, nullptr, -1, 10000, nullptr, true,
      "autofocus off at this lens position (libcamera: dioptres = 1 / distance in m, Camera Module 3; "
      "v4l2: focus_absolute units; -1: leave the lens)"},
     {"camera.sharpness", nullptr, &Config::sharpness, nullptr, nullptr, -1, 1000, nullptr, false,
@@ -101,6 +101,12 @@ const KeyDef kKeys[] = {
     {"camera.retry_ms", nullptr, nullptr, &Config::cameraRetryMs, nullptr, 100, 600000, nullptr, false,
      "a missing or silent camera, and a missing display, serial line, button or LED line, is looked for again "
      "this often"},
+    {"camera.white_balance_k", nullptr, nullptr, &Config::whiteBalanceK, nullptr, -1, 15000, nullptr, false,
+     "v4l2: white balance fixed at this colour temperature in kelvin when red/blue gains are not set "
+     "(-1: leave the camera's auto white balance)"},
+    {"camera.tuning", nullptr, nullptr, nullptr, &Config::cameraTuning, 0, 4096, nullptr, false,
+     "libcamera: \"\" the sensor's tuning file with adaptive contrast off (a fixed tone curve), "
+     "\"system\" libcamera's own file as installed, or the path of a tuning file"},
     {"camera.probe_ms", nullptr, nullptr, &Config::cameraProbeMs, nullptr, 0, 3600000, nullptr, false,
      "idle: a frame this often (none while frames flow) finds a camera lost between presses (0: never)"},
     {"trigger.backend", nullptr, nullptr, nullptr, &Config::triggerBackend, 0, 0, "file|gpiod", false, "button driver"},

@@ -47,6 +47,8 @@ struct Config {
     double sharpness = -1;
     std::string noiseReduction = "default"; // default | off | fast | high_quality
     int stampDelayUs = -1;                  // v4l2: stamp after exposure end (-1: a frame interval)
+    int whiteBalanceK = 5000;               // v4l2: fixed colour temperature (-1: leave the camera's)
+    std::string cameraTuning;               // libcamera: "" fixed tone curve, "system", or a tuning file
     int cameraRetryMs = 2000;               // a missing camera is looked for again this often
     int cameraProbeMs = 5000;               // idle: one frame this often shows the camera is there
     // [trigger] and [led]

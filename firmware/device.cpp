@@ -107,6 +107,7 @@ hal::Error Device::start()
         }
         cfg_ = trial;
     }
+    applyLens(); // a lens position saved over serial
     if (!cal_.present && !(cfg_.mmPerPx > 0))
         return hal::Error::make(hal::Errc::Invalid, "no scale: calibration.mm_per_px or calibration.file is required");
     out_.clear();
@@ -152,6 +153,7 @@ void Device::pollCamera()
     appendCameraStatus(j);
     j.end();
     send(out_);
+    if (cameraHealth_.ok()) applyLens(); // a camera configured afresh holds the saved lens again
     if (state_ == State::Idle && aimUntilMs_ < 0) showIdle(cameraHealth_.ok() ? "camera found" : "");
 }
 
@@ -244,10 +246,10 @@ void Device::handleCommand(const Command &c)
     switch (c.kind) {
     case CommandKind::Help:
         j.str("type", "help")
-            .str("commands",
-                 "status | trigger | get [KEY] | set KEY VALUE | results [N] | "
-                 "scalecheck DIAMETER_MM [TOLERANCE_PCT [THICKNESS_MM]] | aim [SECONDS | off] | snapshot | help; "
-                 "as words or JSON {\"cmd\":\"set\",\"key\":\"n\",\"value\":0.2,\"id\":\"x\"}")
+            .str("commands", "status | trigger | get [KEY] | set KEY VALUE | results [N] | "
+                             "scalecheck DIAMETER_MM [TOLERANCE_PCT [THICKNESS_MM]] | aim [SECONDS | off] | snapshot | "
+                             "fetch NAME | lens POSITION | focus | help; "
+                             "as words or JSON {\"cmd\":\"set\",\"key\":\"n\",\"value\":0.2,\"id\":\"x\"}")
             .str("keys", liveKeyList());
         break;
     case CommandKind::Status: {
@@ -278,6 +280,12 @@ void Device::handleCommand(const Command &c)
         if (aimUntilMs_ >= 0) stopAim("snapshot");
         snapshot(c);
         return;
+    case CommandKind::Lens: setLens(c); return;
+    case CommandKind::Focus:
+        if (aimUntilMs_ >= 0) stopAim("focus");
+        focus(c);
+        return;
+    case CommandKind::Fetch: fetch(c); return;
     case CommandKind::Get: {
         j.str("type", "settings");
         int matched = 0;
@@ -315,6 +323,8 @@ bool Device::applySetting(const Command &c, reading::JsonBuilder &j)
     std::string err = setConfigKey(&trial, c.key, c.value, true);
     if (err.empty()) err = specimenIssue(trial);
     if (err.empty() && liveKeyName(c.key) == "calibration_file") err = setCalibrationFile(&trial);
+    if (err.empty() && liveKeyName(c.key) == "lens_position" && trial.lensPosition >= 0)
+        if (hal::Error e = hal_.camera.setLensPosition(trial.lensPosition); !e.ok()) err = e.message;
     if (!err.empty()) {
         sendError("bad_argument", err, c.tag);
         return false;

@@ -99,6 +99,15 @@ private:
     // `snapshot`: a frame (lit as for a measurement) with the boundaries drawn, as a PNG in
     // the journal folder; answers its name.
     void snapshot(const Command &c);
+    // `fetch NAME`: a snapshot's bytes over serial, base64 in lines (device_aim.cpp).
+    void fetch(const Command &c);
+    // Lens and focus (device_lens.cpp): `lens POSITION` holds the lens there; `focus` lights
+    // the ring, runs one autofocus sweep and holds the lens where it ended; both saved as
+    // lens_position and held again after a restart or a camera coming back.
+    void setLens(const Command &c);
+    void focus(const Command &c);
+    void applyLens();
+    void sendLens(const char *by, const std::string &tag);
     // Measures the frame in luma for aim and snapshot (the same specimen and scale as a
     // measurement).
     reading::Reading measureForSetup(const vision::LumaView &luma);

@@ -1,4 +1,5 @@
 // Aim mode and snapshots: setting the camera up at the press with what the device has.
+#include <algorithm>
 #include <cstdio>
 
 #include "firmware/aim_view.h"
@@ -11,6 +12,23 @@ namespace icacam::fw {
 
 namespace {
 constexpr int64_t kAimPeriodMs = 250; // four pictures a second: enough to turn a focus ring by
+
+// RFC 4648 base64 with padding, into *out.
+void base64(std::string_view in, std::string *out)
+{
+    static constexpr char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    out->clear();
+    for (size_t i = 0; i < in.size(); i += 3) {
+        const size_t n = in.size() - i < 3 ? in.size() - i : 3;
+        uint32_t v = uint32_t(uint8_t(in[i])) << 16;
+        if (n > 1) v |= uint32_t(uint8_t(in[i + 1])) << 8;
+        if (n > 2) v |= uint32_t(uint8_t(in[i + 2]));
+        out->push_back(kAlphabet[(v >> 18) & 63]);
+        out->push_back(kAlphabet[(v >> 12) & 63]);
+        out->push_back(n > 1 ? kAlphabet[(v >> 6) & 63] : '=');
+        out->push_back(n > 2 ? kAlphabet[v & 63] : '=');
+    }
+}
 } // namespace
 
 reading::Reading Device::measureForSetup(const vision::LumaView &luma)
@@ -76,7 +94,9 @@ void Device::aimTick()
     if (now < aimNextMs_) return;
     aimNextMs_ = now + kAimPeriodMs;
     hal::CapturedFrame frame;
-    const hal::Error e = hal_.camera.capture({aimLitMs_, cfg_.captureTimeoutMs}, &frame);
+    // The newest picture, not the oldest one queued: only a frame exposed from now on (the
+    // camera hands back the ones waiting), lit since the ring settled.
+    const hal::Error e = hal_.camera.capture({std::max(aimLitMs_, now), cfg_.captureTimeoutMs}, &frame);
     cameraHealth_.onCapture(e, e.ok() ? &frame : nullptr);
     vision::LumaView luma;
     std::string problem = e.ok() ? "" : std::string("camera ") + hal::errcName(e.code) + ": " + e.message;
@@ -158,6 +178,43 @@ void Device::snapshot(const Command &c)
     drawProblem(&screen_, title, name);
     showOrLog(screen_);
     state_ = State::Idle;
+}
+
+void Device::fetch(const Command &c)
+{
+    // A snapshot to a PC over the serial line itself (`icacam ctl snapshot --out FILE`): the
+    // journal folder may be out of an operator's reach, and the line is what every
+    // installation has. A header with the size, the bytes in base64 lines, an end line.
+    const hal::Result<std::string> file = hal_.storage.read(c.name);
+    if (!file.ok()) {
+        sendError("fetch_failed", c.name + ": " + file.error.message, c.tag);
+        return;
+    }
+    const std::string &bytes = file.value;
+    constexpr size_t kChunk = 576; // 768 base64 characters a line, far under kMaxLine
+    const size_t lines = (bytes.size() + kChunk - 1) / kChunk;
+    out_.clear();
+    reading::JsonBuilder head(&out_);
+    head.str("type", "file").str("name", c.name).integer("bytes", static_cast<long long>(bytes.size()));
+    head.integer("lines", static_cast<long long>(lines));
+    if (!c.tag.empty()) head.str("tag", c.tag);
+    head.end();
+    send(out_);
+    std::string b64;
+    for (size_t i = 0; i < lines; ++i) {
+        base64(std::string_view(bytes).substr(i * kChunk, kChunk), &b64);
+        out_.clear();
+        reading::JsonBuilder j(&out_);
+        j.str("type", "data").integer("i", static_cast<long long>(i)).str("b64", b64);
+        j.end();
+        send(out_);
+    }
+    out_.clear();
+    reading::JsonBuilder end(&out_);
+    end.str("type", "file_end").str("name", c.name).integer("bytes", static_cast<long long>(bytes.size()));
+    if (!c.tag.empty()) end.str("tag", c.tag);
+    end.end();
+    send(out_);
 }
 
 } // namespace icacam::fw

@@ -70,6 +70,20 @@ public:
     }
     // Words for `status` and the display: model, mode, what it was asked (one line).
     virtual std::string describe() const { return {}; }
+    // The lens of a camera with a focus motor (Camera Module 3, a UVC camera with
+    // focus_absolute), held at position (CameraControls::lensPosition's units), autofocus
+    // off; kept across configure(). Errors: Invalid (no lens control), Io, Closed.
+    virtual Error setLensPosition(double /*position*/)
+    {
+        return Error::make(Errc::Invalid, "this camera has no lens control (fixed focus)");
+    }
+    // One autofocus sweep on what the camera sees now, then the lens held where it ended, as
+    // setLensPosition(): the position. Errors: Invalid (no autofocus), Timeout (no focus within
+    // timeoutMs, the lens left as it was), Io, Closed.
+    virtual Result<double> focusOnce(int /*timeoutMs*/)
+    {
+        return Result<double>::fail(Errc::Invalid, "this camera has no autofocus");
+    }
 };
 
 } // namespace icacam::hal

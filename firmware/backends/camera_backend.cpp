@@ -27,7 +27,8 @@ std::unique_ptr<hal::Camera> makeV4l2(const Config &cfg, hal::Clock &clock, cons
                                   : std::filesystem::exists("/dev/icacam-camera") ? "/dev/icacam-camera"
                                                                                   : "/dev/video0";
     return std::make_unique<hal::V4l2Camera>(
-        clock, hal::V4l2Options{videoNode, 4, asked, cfg.cameraWidth, cfg.cameraHeight, cfg.stampDelayUs});
+        clock,
+        hal::V4l2Options{videoNode, 4, asked, cfg.cameraWidth, cfg.cameraHeight, cfg.stampDelayUs, cfg.whiteBalanceK});
 }
 #else
 constexpr bool kV4l2 = false;
@@ -47,6 +48,8 @@ std::unique_ptr<hal::Camera> makeLibcamera(const Config &cfg, hal::Clock &clock,
     csi.camera = cfg.cameraId;
     csi.width = cfg.cameraWidth;
     csi.height = cfg.cameraHeight;
+    csi.tuning = cfg.cameraTuning.empty() || cfg.cameraTuning == "system" ? cfg.cameraTuning
+                                                                          : pathFromConfig(cfg, cfg.cameraTuning);
     if (asked.exposureUs >= 0) csi.controls.exposureUs = asked.exposureUs;
     if (asked.analogueGain >= 0) csi.controls.analogueGain = asked.analogueGain;
     if (asked.redGain >= 0) csi.controls.redGain = asked.redGain, csi.controls.blueGain = asked.blueGain;

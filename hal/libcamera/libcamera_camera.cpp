@@ -175,6 +175,11 @@ struct LibcameraCamera::Session {
     std::vector<lc::Request *> done; // completed, not yet looked at (capacity = requests)
     lc::Request *held = nullptr;     // handed out by the last capture()
     bool gone = false;
+    // Controls for the next request queued (lens, autofocus), and what the last frame handed
+    // out reported of them. Touched by the calling thread only.
+    lc::ControlList pending{lc::controls::controls};
+    int afState = -1;
+    float lensPosition = -1;
 
     // Called on libcamera's thread: only records the request (no allocation: reserved).
     void onCompleted(lc::Request *r)
@@ -507,7 +512,11 @@ Error LibcameraCamera::capture(const CaptureRequest &req, CapturedFrame *out)
     const int timeoutMs = req.timeoutMs;
     const int64_t notBeforeNs = notBeforeOnMonotonicNs(clock_, req.notBeforeMs);
     auto requeue = [&s](lc::Request *r) {
-        r->reuse(lc::Request::ReuseBuffers);
+        r->reuse(lc::Request::ReuseBuffers); // clears the request's controls too
+        if (!s.pending.empty()) {
+            r->controls().merge(s.pending);
+            s.pending.clear();
+        }
         return s.camera->queueRequest(r) >= 0;
     };
     int stale = 0;
@@ -561,6 +570,9 @@ Error LibcameraCamera::capture(const CaptureRequest &req, CapturedFrame *out)
                 got.blueGain = (*cg)[1];
             }
             if (const auto lens = meta.get(lc::controls::LensPosition)) got.lensPosition = *lens;
+            s.lensPosition = float(got.lensPosition);
+            const auto af = meta.get(lc::controls::AfState);
+            s.afState = af ? int(*af) : -1;
             got.sharpness = options_.controls.sharpness; // not reported per frame
             got.noiseReduction = options_.controls.noiseReduction;
             out->source = source_;
@@ -571,6 +583,59 @@ Error LibcameraCamera::capture(const CaptureRequest &req, CapturedFrame *out)
                                                   std::to_string(timeoutMs) + " ms (" + std::to_string(stale) +
                                                   " earlier frames refused)");
     }
+}
+
+Error LibcameraCamera::setLensPosition(double dioptres)
+{
+    if (!configured_) return Error::make(Errc::Invalid, "camera: not configured");
+    if (!session_)
+        if (Error e = configure(wanted_); !e.ok()) return e;
+    Session &s = *session_;
+    if (!supports(*s.camera, lc::controls::AfMode) || !supports(*s.camera, lc::controls::LensPosition))
+        return Error::make(Errc::Invalid, "libcamera: " + modelOf(*s.camera) + " has no lens control (fixed focus)");
+    s.pending.set(lc::controls::AfMode, lc::controls::AfModeManual);
+    s.pending.set(lc::controls::LensPosition, float(dioptres));
+    options_.controls.lensPosition = dioptres; // and after a reconfigure
+    return {};
+}
+
+Result<double> LibcameraCamera::focusOnce(int timeoutMs)
+{
+    if (!configured_) return Result<double>::fail(Errc::Invalid, "camera: not configured");
+    if (!session_)
+        if (Error e = configure(wanted_); !e.ok()) return {0, e};
+    {
+        Session &s = *session_;
+        if (!supports(*s.camera, lc::controls::AfTrigger) || !supports(*s.camera, lc::controls::LensPosition))
+            return Result<double>::fail(Errc::Invalid,
+                                        "libcamera: " + modelOf(*s.camera) + " has no autofocus (fixed focus)");
+        // A one-shot sweep, as rpicam-still --autofocus-on-capture: auto mode, triggered.
+        s.pending.set(lc::controls::AfMode, lc::controls::AfModeAuto);
+        s.pending.set(lc::controls::AfTrigger, lc::controls::AfTriggerStart);
+    }
+    const int64_t deadline = clock_.monotonicMs() + timeoutMs;
+    bool scanned = false;
+    while (clock_.monotonicMs() < deadline) {
+        CapturedFrame frame;
+        if (Error e = capture(CaptureRequest{CaptureRequest::kAtCall, timeoutMs}, &frame); !e.ok()) return {0, e};
+        if (!session_) return Result<double>::fail(Errc::Closed, "libcamera: camera disconnected");
+        const Session &s = *session_;
+        // Frames queued before the trigger still say Idle or Focused: the sweep's own
+        // answer comes after it reported Scanning.
+        if (s.afState == lc::controls::AfStateScanning) scanned = true;
+        if (!scanned) continue;
+        if (s.afState == lc::controls::AfStateFocused) {
+            const double lens = s.lensPosition;
+            if (Error e = setLensPosition(lens); !e.ok()) return {0, e};
+            return {lens, {}};
+        }
+        if (s.afState == lc::controls::AfStateFailed) {
+            (void)setLensPosition(options_.controls.lensPosition >= 0 ? options_.controls.lensPosition : 0);
+            return Result<double>::fail(Errc::Timeout, "libcamera: autofocus found nothing sharp");
+        }
+    }
+    return Result<double>::fail(Errc::Timeout,
+                                "libcamera: autofocus did not settle within " + std::to_string(timeoutMs) + " ms");
 }
 
 } // namespace icacam::hal

@@ -68,6 +68,11 @@ public:
     using Camera::capture;
     Error capture(const CaptureRequest &req, CapturedFrame *out) override;
     std::string describe() const override { return description_; }
+    // AfMode Manual with LensPosition (dioptres) on the next requests.
+    Error setLensPosition(double dioptres) override;
+    // AfMode Auto and AfTrigger Start, frames until AfState says Focused (or Failed), then
+    // the LensPosition the frame reports held as setLensPosition() holds it.
+    Result<double> focusOnce(int timeoutMs) override;
     // Valid after a successful configure().
     const LibcameraMode &mode() const { return mode_; }
 

@@ -556,4 +556,55 @@ Error V4l2Camera::capture(const CaptureRequest &req, CapturedFrame *out)
     return failure;
 }
 
+Error V4l2Camera::setLensPosition(double position)
+{
+    if (!configured_) return Error::make(Errc::Invalid, "camera: not configured");
+    if (!streaming_)
+        if (Error e = openAndStart(); !e.ok()) return e;
+    int32_t v = 0;
+    if (!getControl(fd_.get(), V4L2_CID_FOCUS_ABSOLUTE, &v))
+        return Error::make(Errc::Invalid, "camera " + options_.device + " has no focus_absolute (fixed focus)");
+    (void)setControl(fd_.get(), V4L2_CID_FOCUS_AUTO, 0); // the absolute value is inactive while it is on
+    if (!setControl(fd_.get(), V4L2_CID_FOCUS_ABSOLUTE, int32_t(std::lround(position))))
+        return Error::make(Errc::Io, sysError("camera: focus_absolute"));
+    options_.controls.lensPosition = position; // and after a reconfigure
+    if (getControl(fd_.get(), V4L2_CID_FOCUS_ABSOLUTE, &v)) reported_.lensPosition = v;
+    return {};
+}
+
+Result<double> V4l2Camera::focusOnce(int timeoutMs)
+{
+    if (!configured_) return Result<double>::fail(Errc::Invalid, "camera: not configured");
+    if (!streaming_)
+        if (Error e = openAndStart(); !e.ok()) return {0, e};
+    int32_t v = 0;
+    if (!getControl(fd_.get(), V4L2_CID_FOCUS_AUTO, &v) || !getControl(fd_.get(), V4L2_CID_FOCUS_ABSOLUTE, &v))
+        return Result<double>::fail(Errc::Invalid, "camera " + options_.device + " has no autofocus");
+    if (!setControl(fd_.get(), V4L2_CID_FOCUS_AUTO, 1))
+        return Result<double>::fail(Errc::Io, sysError("camera: focus_automatic_continuous"));
+    // Settled: the same focus_absolute for kStill frames in a row, after at least one more.
+    constexpr int kStill = 5;
+    const int64_t deadline = clock_.monotonicMs() + timeoutMs;
+    int32_t last = -1;
+    int still = 0, frames = 0;
+    while (clock_.monotonicMs() < deadline) {
+        CapturedFrame frame;
+        if (Error e = capture(CaptureRequest{CaptureRequest::kAtCall, timeoutMs}, &frame); !e.ok()) return {0, e};
+        if (!getControl(fd_.get(), V4L2_CID_FOCUS_ABSOLUTE, &v)) break; // inactive while auto: no reading
+        still = v == last ? still + 1 : 0;
+        last = v;
+        if (++frames > kStill && still >= kStill) {
+            if (Error e = setLensPosition(v); !e.ok()) return {0, e};
+            return {double(v), {}};
+        }
+    }
+    const double before = options_.controls.lensPosition;
+    if (before >= 0)
+        (void)setLensPosition(before);
+    else
+        (void)setControl(fd_.get(), V4L2_CID_FOCUS_AUTO, 0);
+    return Result<double>::fail(Errc::Timeout, "camera " + options_.device + ": focus did not settle within " +
+                                                   std::to_string(timeoutMs) + " ms");
+}
+
 } // namespace icacam::hal

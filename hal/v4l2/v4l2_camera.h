@@ -62,6 +62,11 @@ public:
     using Camera::capture;
     Error capture(const CaptureRequest &req, CapturedFrame *out) override;
     std::string describe() const override { return description_; }
+    // focus_automatic_continuous off, focus_absolute at position (the device's units).
+    Error setLensPosition(double position) override;
+    // Continuous autofocus on, frames until focus_absolute has held still for a while, then
+    // that position held as setLensPosition() holds it (UVC has no one-shot focus).
+    Result<double> focusOnce(int timeoutMs) override;
 
     // What the driver agreed to (valid after configure()).
     PixelFormat format() const { return format_; }
