@@ -205,9 +205,16 @@ int runDevice(const fw::Config &cfg)
     fw::SystemdNotifier systemd = fw::SystemdNotifier::fromEnvironment();
     if (hal::Error e = systemd.ready("idle"); !e.ok())
         std::fprintf(stderr, "icacam-fw: systemd: %s\n", e.message.c_str());
+    std::string missing = parts.missingNames() + (device.camera().ok() ? "" : " camera");
+    (void)systemd.status(missing.empty() ? "idle" : "missing: " + missing);
     while (!gStop) {
         device.tick();
         systemd.keepAlive(clock.monotonicMs());
+        // `systemctl status` names what is missing, when that changes.
+        if (std::string now = parts.missingNames() + (device.camera().ok() ? "" : " camera"); now != missing) {
+            missing = now;
+            (void)systemd.status(missing.empty() ? "idle" : "missing: " + missing);
+        }
         clock.sleepMs(5);
     }
     systemd.stopping();
