@@ -14,6 +14,8 @@
 #include "firmware/debouncer.h"
 #include "firmware/device_calibration.h"
 #include "firmware/journal.h"
+#include "firmware/net/command_inbox.h"
+#include "firmware/net/device_listener.h"
 #include "hal/camera.h"
 #include "hal/clock.h"
 #include "hal/display.h"
@@ -57,9 +59,17 @@ public:
     State state() const { return state_; }
     const CameraHealth &camera() const { return cameraHealth_; }
 
+    // The network side (firmware/net/): listeners hear every line the device says and every
+    // record journaled; an inbox's lines are handled as serial lines are. Set before start().
+    static constexpr int kMaxListeners = 4;
+    bool addListener(net::DeviceListener *l);
+    void setInbox(net::CommandInbox *inbox) { inbox_ = inbox; }
+
 private:
     void pollButton();
     void pollSerial();
+    void pollInbox();
+    void journaled(long id);
     void handleLine(std::string_view line);
     void handleCommand(const Command &c);
     // `set KEY VALUE`: tried on a copy of the config, kept and saved when valid, the new
@@ -121,6 +131,10 @@ private:
     std::string lastProblem_;
     DeviceCalibration cal_;               // calibration.file, read at start and on `set`
     std::unique_ptr<uint8_t[]> discWork_; // the scale check's disc finder
+    net::DeviceListener *listeners_[kMaxListeners] = {};
+    int listenerCount_ = 0;
+    net::CommandInbox *inbox_ = nullptr;
+    std::unique_ptr<char[]> inboxLine_;
 };
 
 } // namespace icacam::fw

@@ -22,6 +22,9 @@
 #include "firmware/config.h"
 #include "firmware/device.h"
 #include "firmware/device_calibration.h"
+#ifdef ICACAM_HAVE_NET
+#include "firmware/net/network.h"
+#endif
 #include "firmware/sd_notify.h"
 #include "friction/friction_models.h"
 #include "hal/file/clocks.h"
@@ -161,6 +164,11 @@ int runDevice(const fw::Config &cfg)
     if (!model) return unavailable("model", hal::Error::make(hal::Errc::Invalid, "unknown reading.model " + cfg.model));
     fw::Device device({*camera.value, *trigger.value, *led.value, *display.value, *serial.value.port, storage, clock},
                       cfg, *model);
+#ifdef ICACAM_HAVE_NET
+    fw::net::Network network;
+    if (hal::Error e = network.attach(cfg, fw::pathFromConfig(cfg, cfg.journalDir), device); !e.ok())
+        return unavailable("network", e);
+#endif
     std::signal(SIGTERM, onSignal);
     std::signal(SIGINT, onSignal);
     std::signal(SIGPIPE, SIG_IGN);
