@@ -48,10 +48,12 @@ std::string usage()
     for (std::string_view name : friction::kModelNames) (models += models.empty() ? "" : ", ") += name;
     return std::string("usage: icacam-fw --config FILE [--check]\n"
                        "       icacam-fw --help-config\n"
+                       "       icacam-fw --hash-password < password\n"
                        "Runs the icacam device program on the backends the config names.\n"
                        "  --config FILE  the device configuration (key = value lines; no default)\n"
                        "  --check        validate the config (and the calibration file it names) and exit\n"
                        "  --help-config  every config key with its default\n"
+                       "  --hash-password  the web login's password file line for the password on stdin\n"
                        "The friction model is the config's reading.model (default ") +
            friction::kDefaultModel + "; known: " + models +
            ").\n"
@@ -93,6 +95,10 @@ std::optional<int> parseArguments(int argc, char **argv, Arguments *args)
         else if (a == "--help-config") {
             std::printf("config keys:\n%s", fw::configHelp().c_str());
             return 0;
+#ifdef ICACAM_HAVE_NET
+        } else if (a == "--hash-password") {
+            return fw::net::hashPasswordCommand();
+#endif
         } else if (a == "-h" || a == "--help") {
             std::printf("%s", usage().c_str());
             return 0;
@@ -129,6 +135,15 @@ bool loadConfig(const std::string &path, fw::Config *cfg)
             std::fprintf(stderr, "%s: %s\n", path.c_str(), issue.c_str());
             ok = false;
         }
+#ifndef ICACAM_HAVE_NET
+    if (cfg->httpPort > 0 || !cfg->mqttHost.empty()) {
+        std::fprintf(stderr,
+                     "%s: http.port / mqtt.host: this icacam-fw is built without the network "
+                     "(libmicrohttpd, libmosquitto, libsodium)\n",
+                     path.c_str());
+        ok = false;
+    }
+#endif
     cfg->baseDir = std::filesystem::path(path).parent_path().string();
     // The calibration file is part of the configuration: unreadable, of another format or
     // for larger frames than the camera's is a configuration mistake (exit 78).
@@ -166,7 +181,12 @@ int runDevice(const fw::Config &cfg)
                       cfg, *model);
 #ifdef ICACAM_HAVE_NET
     fw::net::Network network;
-    if (hal::Error e = network.attach(cfg, fw::pathFromConfig(cfg, cfg.journalDir), device); !e.ok())
+    if (hal::Error e =
+            network.attach(cfg,
+                           {fw::pathFromConfig(cfg, cfg.journalDir), fw::pathFromConfig(cfg, cfg.httpPasswordFile),
+                            fw::pathFromConfig(cfg, cfg.httpTlsCert), fw::pathFromConfig(cfg, cfg.httpTlsKey)},
+                           device);
+        !e.ok())
         return unavailable("network", e);
 #endif
     std::signal(SIGTERM, onSignal);

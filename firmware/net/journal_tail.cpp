@@ -111,6 +111,16 @@ std::vector<std::string> JournalTail::after(long after, size_t max) const
     return out;
 }
 
+std::vector<std::string> JournalTail::last(size_t n) const
+{
+    long after = 0;
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (n < index_.size()) after = index_[index_.size() - n - 1].id;
+    }
+    return this->after(after, n);
+}
+
 bool JournalTail::line(long id, std::string *out) const
 {
     std::lock_guard<std::mutex> lock(mutex_);

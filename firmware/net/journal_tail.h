@@ -20,6 +20,8 @@ public:
     long newestId() const;
     // Up to max lines (without '\n') of the records after id `after`, oldest first.
     std::vector<std::string> after(long after, size_t max) const;
+    // The last n lines, oldest first.
+    std::vector<std::string> last(size_t n) const;
     // The line of record id; false when there is none.
     bool line(long id, std::string *out) const;
     // Every intact line, oldest first, for a download.
