@@ -229,7 +229,9 @@ void Device::pollInbox()
     for (int i = 0; i < 4; ++i) { // a few a tick, so buttons stay responsive
         const size_t n = inbox_->pop(inboxLine_.get());
         if (n == 0) return;
+        lineOrigin_ = "web";
         handleLine(std::string_view(inboxLine_.get(), n));
+        lineOrigin_ = "serial";
     }
 }
 
@@ -277,7 +279,7 @@ void Device::handleCommand(const Command &c)
     }
     case CommandKind::Trigger:
         if (aimUntilMs_ >= 0) stopAim("measurement");
-        measure("serial", c.tag);
+        measure(lineOrigin_, c.tag);
         return;
     case CommandKind::Aim:
         if (c.aimSeconds == 0)

@@ -135,6 +135,7 @@ private:
     int listenerCount_ = 0;
     net::CommandInbox *inbox_ = nullptr;
     std::unique_ptr<char[]> inboxLine_;
+    const char *lineOrigin_ = "serial"; // a record's "trigger": where the command line came from
 };
 
 } // namespace icacam::fw
