@@ -6,6 +6,8 @@
 // blocks.
 #include <string_view>
 
+#include "vision/luma_view.h"
+
 namespace icacam::fw::net {
 
 class DeviceListener {
@@ -14,6 +16,8 @@ public:
     virtual void onLine(std::string_view line) = 0;
     // The record with this id is in the journal (fsynced).
     virtual void onJournaled(long id) = 0;
+    // Aim mode's newest picture (before its "aim" line is said); valid during the call only.
+    virtual void onAimPicture(const vision::LumaView &) {}
 };
 
 } // namespace icacam::fw::net

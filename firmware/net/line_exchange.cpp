@@ -37,6 +37,19 @@ std::vector<std::string> LineExchange::answers(std::string_view tag) const
     return out;
 }
 
+std::string LineExchange::newestOfType(std::string_view type) const
+{
+    std::string prefix = "{\"type\":\"";
+    prefix.append(type);
+    prefix.push_back('"');
+    std::lock_guard<std::mutex> lock(mutex_);
+    for (size_t i = 0; i < used_; ++i) {
+        const std::string &s = lines_[(head_ + kLines - 1 - i) % kLines];
+        if (s.rfind(prefix, 0) == 0) return s;
+    }
+    return "";
+}
+
 long LineExchange::newestJournaled() const
 {
     std::lock_guard<std::mutex> lock(mutex_);

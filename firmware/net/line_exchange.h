@@ -26,6 +26,8 @@ public:
     // The lines (without '\n') whose "tag" is tag, oldest first.
     std::vector<std::string> answers(std::string_view tag) const;
     long newestJournaled() const;
+    // The newest line of this "type" ("" when none is kept).
+    std::string newestOfType(std::string_view type) const;
 
 private:
     mutable std::mutex mutex_;

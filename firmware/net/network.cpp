@@ -5,6 +5,7 @@
 #include <iostream>
 #include <iterator>
 
+#include "firmware/net/aim_exchange.h"
 #include "firmware/net/command_inbox.h"
 #include "firmware/net/journal_tail.h"
 #include "firmware/net/line_exchange.h"
@@ -34,6 +35,7 @@ struct Network::Parts {
     std::unique_ptr<JournalTail> journal;
     CommandInbox inbox;
     LineExchange lines;
+    AimExchange aim;
     std::unique_ptr<WebAuth> auth;
     std::unique_ptr<WebApi> api;
     std::unique_ptr<WebServer> server;
@@ -83,11 +85,12 @@ hal::Error Network::attach(const Config &cfg, const Paths &paths, Device &device
             if (!readFile(paths.tlsKey, &s.tlsKeyPem))
                 return hal::Error::make(hal::Errc::NotFound, "http.tls_key: cannot read " + paths.tlsKey);
         }
-        p.api = std::make_unique<WebApi>(WebContext{*p.journal, paths.journalDir, p.inbox, p.lines, *p.auth,
+        p.api = std::make_unique<WebApi>(WebContext{*p.journal, paths.journalDir, p.inbox, p.lines, p.aim, *p.auth,
                                                     cfg.httpPublicRead == 1, !paths.tlsCert.empty()});
         p.server = std::make_unique<WebServer>(*p.api);
         if (hal::Error e = p.server->start(s); !e.ok()) return e;
         device.addListener(&p.lines);
+        device.addListener(&p.aim);
         device.setInbox(&p.inbox);
         std::fprintf(stderr, "icacam-fw: web page on %s://%s:%d/\n", paths.tlsCert.empty() ? "http" : "https",
                      cfg.httpAddress.c_str(), p.server->port());

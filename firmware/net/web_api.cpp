@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "firmware/command.h"
+#include "firmware/net/aim_exchange.h"
 #include "firmware/net/command_inbox.h"
 #include "firmware/net/journal_tail.h"
 #include "firmware/net/line_exchange.h"
@@ -137,6 +138,20 @@ HttpResponse WebApi::handle(const HttpRequest &r)
         return out;
     }
     if (r.path == "/api/results.csv") return csv();
+    if (r.path == "/api/aim") {
+        const std::string line = c_.lines.newestOfType("aim");
+        return line.empty() ? error(404, "no_aim", "not aiming: POST /api/command {\"cmd\":\"aim\"}")
+                            : json(line + "\n");
+    }
+    if (r.path == "/api/aim.png") {
+        HttpResponse out;
+        long picture = 0;
+        int step = 1;
+        if (std::string e = c_.aim.png(&out.body, &picture, &step); !e.empty()) return error(500, "image", e);
+        if (picture == 0) return error(404, "no_aim", "no aim picture yet");
+        out.contentType = "image/png";
+        return out;
+    }
     return error(404, "not_found", "no such page");
 }
 

@@ -11,6 +11,7 @@
 //                              the newest N
 //   GET  /api/result?id=ID     one record;  GET /api/image?id=ID&step=S  its frame as PNG
 //   GET  /api/journal.jsonl    the journal;  GET /api/results.csv  the results as CSV
+//   GET  /api/aim              aim mode's newest "aim" line; GET /api/aim.png its picture
 // Reading needs a session unless http.public_read; commands that change or measure
 // (trigger, set, aim, snapshot, scalecheck) always need one.
 #include <atomic>
@@ -20,6 +21,7 @@
 
 namespace icacam::fw::net {
 
+class AimExchange;
 class CommandInbox;
 class JournalTail;
 class LineExchange;
@@ -44,6 +46,7 @@ struct WebContext {
     std::string journalDir; // the frames are read from here
     CommandInbox &inbox;
     LineExchange &lines;
+    AimExchange &aim;
     WebAuth &auth;
     bool publicRead = false;
     bool secureCookie = false; // served over TLS

@@ -9,6 +9,7 @@
 #include <string>
 #include <string_view>
 
+#include "firmware/net/aim_exchange.h"
 #include "firmware/net/command_inbox.h"
 #include "firmware/net/journal_tail.h"
 #include "firmware/net/line_exchange.h"
@@ -25,6 +26,7 @@ struct World {
     JournalTail tail;
     CommandInbox inbox;
     LineExchange lines;
+    AimExchange aim;
     WebAuth auth{""}; // no password: a login is refused at once (a real one costs 0.1 s)
     WebApi api;
     static std::string makeDir()
@@ -32,7 +34,9 @@ struct World {
         char tmpl[] = "/tmp/icacam-fuzz-web-XXXXXX";
         return mkdtemp(tmpl);
     }
-    World() : dir(makeDir()), tail(dir + "/journal.jsonl"), api(WebContext{tail, dir, inbox, lines, auth, true, false})
+    World()
+            : dir(makeDir()), tail(dir + "/journal.jsonl"),
+              api(WebContext{tail, dir, inbox, lines, aim, auth, true, false})
     {
         std::ofstream(dir + "/journal.jsonl") << "{\"type\":\"result\",\"id\":1,\"crc32\":\"00000000\"}\n";
     }

@@ -4,7 +4,8 @@ DevTools protocol (python3-websocket), against icacam-fw on the file HAL.
 
 It opens the page (the login form shows), logs in with the device's password, presses
 Measure, and sees the new reading: the μ shown is the journal's, the frame shows (decoded,
-not blank) with the fitted boundaries drawn over it, and History lists it. Screenshots of
+not blank) with the fitted boundaries drawn over it; Aim shows the live picture with the
+found end face and a focus score; History lists the reading. Screenshots of
 each step go to ARTEFACT_DIR. A wrong password is refused on the page. Exit 77 without
 chromium or python3-websocket.
 usage: browser_test.py ICACAM_FW ARTEFACT_DIR
@@ -69,8 +70,9 @@ class Browser:
 
     def wait(self, expression, timeout, what):
         end = time.time() + timeout
+        guarded = "(() => { try { return !!(%s); } catch (e) { return false; } })()" % expression
         while time.time() < end:
-            if self.js(expression):
+            if self.js(guarded):  # a page still loading is not there yet
                 return
             time.sleep(0.2)
         fail("the page never showed " + what + " (text: %r)" % self.js("document.body.innerText")[:600])
@@ -151,10 +153,20 @@ def main():
         fail("the fitted boundaries are not drawn over the frame (%d circles)" % spread[3])
     browser.screenshot(os.path.join(artefacts, "2-reading.png"))
 
+    # Aim: the live picture (four a second) with the found end face and the focus score.
+    browser.js("location.hash = '#aim'; document.getElementById('aim-start').click()")
+    browser.wait("document.getElementById('aim-image').naturalWidth > 0 && "
+                 "document.querySelectorAll('#aim-overlay circle').length === 2 && "
+                 "/^[0-9.]+$/.test(document.getElementById('aim-focus').textContent)", 30,
+                 "an aim picture with the end face found and a focus score")
+    browser.screenshot(os.path.join(artefacts, "3-aim.png"))
+    browser.js("document.getElementById('aim-stop').click()")
+    browser.wait("document.getElementById('aim-left').textContent === 'stopped'", 20, "aiming stopped")
+
     browser.js("location.hash = '#history'")
     browser.wait("document.querySelectorAll('#table tbody tr').length === 1 && "
                  "document.querySelectorAll('#plot circle').length === 1", 20, "History with result #1")
-    browser.screenshot(os.path.join(artefacts, "3-history.png"))
+    browser.screenshot(os.path.join(artefacts, "4-history.png"))
     browser.close()
     dev.kill()
     Procs.kill_all()

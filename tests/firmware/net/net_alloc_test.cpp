@@ -5,7 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
+#include "firmware/net/aim_exchange.h"
 #include "firmware/net/command_inbox.h"
 #include "firmware/net/line_exchange.h"
 #include "firmware/net/mqtt_publisher.h"
@@ -23,7 +25,10 @@ TEST(NetSeam, ListenersAndTheInboxAllocateNothingOnTheDevicesThread)
     ASSERT_TRUE(storage.open(dir.path).ok());
     MqttPublisher mqtt({"127.0.0.1", 1, "t", "id", 30}, storage, dir.path + "/journal.jsonl");
     LineExchange lines;
+    AimExchange aim;
     CommandInbox inbox;
+    std::vector<uint8_t> frame(1456 * 1088, 100); // a frame as the sample's
+    const vision::LumaView picture{frame.data(), 1456, 1088, 1456, 1};
     const std::string result(1500, 'r'); // a record line is about 1.2 kB
     char out[CommandInbox::kMaxLine];
     inbox.push("status");
@@ -35,6 +40,7 @@ TEST(NetSeam, ListenersAndTheInboxAllocateNothingOnTheDevicesThread)
         mqtt.onLine(result);
         mqtt.onJournaled(i);
         inbox.pop(out);
+        aim.onAimPicture(picture);
     }
     EXPECT_EQ(test::allocationCount(), before);
 }

@@ -4,8 +4,10 @@
 
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "firmware/journal.h"
+#include "firmware/net/aim_exchange.h"
 #include "firmware/net/command_inbox.h"
 #include "firmware/net/journal_tail.h"
 #include "firmware/net/line_exchange.h"
@@ -53,6 +55,22 @@ TEST(LineExchange, FindsAnswersByTheirWholeTag)
     // Older lines give way to newer ones.
     for (size_t i = 0; i < LineExchange::kLines; ++i) x.onLine("{\"type\":\"x\"}");
     EXPECT_TRUE(x.answers("web-12").empty());
+}
+
+TEST(AimExchange, KeepsTheNewestPictureWithinItsSize)
+{
+    AimExchange aim;
+    std::string png;
+    long picture = -1;
+    int step = 0;
+    ASSERT_EQ(aim.png(&png, &picture, &step), "");
+    EXPECT_EQ(picture, 0);
+    std::vector<uint8_t> pixels(2000 * 1000, 7);
+    aim.onAimPicture({pixels.data(), 2000, 1000, 2000, 1});
+    ASSERT_EQ(aim.png(&png, &picture, &step), "");
+    EXPECT_EQ(picture, 1);
+    EXPECT_EQ(step, 3); // 2000 / 3 = 667 columns, within 800
+    EXPECT_EQ(png.substr(1, 3), "PNG");
 }
 
 TEST(RateLimiter, AllowsTheBurstThenTheRatePerAddress)
@@ -151,8 +169,9 @@ protected:
     JournalTail tail{dir.path + "/journal.jsonl"};
     CommandInbox inbox;
     LineExchange lines;
+    AimExchange aim;
     WebAuth auth{WebAuth::hash("pw")};
-    WebApi api{WebContext{tail, dir.path, inbox, lines, auth, false, false}};
+    WebApi api{WebContext{tail, dir.path, inbox, lines, aim, auth, false, false}};
     int64_t now = 1000;
 };
 
@@ -173,7 +192,7 @@ TEST_F(WebApiTest, ReadingNeedsALoginUnlessOpen)
 TEST_F(WebApiTest, CommandsAreQueuedWithATagAndChangesNeedALogin)
 {
     WebAuth open{""};
-    WebApi openApi{WebContext{tail, dir.path, inbox, lines, open, true, false}};
+    WebApi openApi{WebContext{tail, dir.path, inbox, lines, aim, open, true, false}};
     HttpRequest r;
     r.method = "POST";
     r.path = "/api/command";
