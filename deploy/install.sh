@@ -40,6 +40,25 @@ if [ ! -f /etc/icacam/device.conf ]; then
     install -m 0644 "$here/device.conf" /etc/icacam/device.conf
     echo "install: wrote /etc/icacam/device.conf: set specimen.n and calibration.mm_per_px"
 fi
+# The network (web page, MQTT; docs/network.md): IP sockets for the unit, and the web login's
+# password, made here once per device, printed once, kept only as its Argon2id hash, readable
+# by the service alone.
+install -d -m 0755 /etc/systemd/system/icacam-fw.service.d
+install -m 0644 "$here/icacam-fw-network.conf" /etc/systemd/system/icacam-fw.service.d/network.conf
+password_file=/etc/icacam/web-password
+if [ ! -f "$password_file" ]; then
+    password=$(head -c 512 /dev/urandom | LC_ALL=C tr -dc 'abcdefghijkmnpqrstuvwxyzACDEFGHJKLMNPQRTUVWXY34679' | cut -c1-16)
+    [ "${#password}" = 16 ] || { echo "install: could not make a password" >&2; exit 1; }
+    if hash=$(printf '%s\n' "$password" | /usr/local/bin/icacam-fw --hash-password); then
+        (umask 0377 && printf '%s\n' "$hash" >"$password_file.new")
+        chown icacam:root "$password_file.new"
+        mv "$password_file.new" "$password_file"
+        echo "install: the web page's password for this device is: $password"
+        echo "install: (shown this once; stored hashed in $password_file; a new one: delete the file, run install.sh again)"
+    else
+        echo "install: warning: this icacam-fw cannot hash a password (built without the network)" >&2
+    fi
+fi
 # A journal written before the operator group existed: systemd hands the state folder to
 # the unit's user and group on start; the modes are set here once.
 if [ -d /var/lib/icacam ]; then

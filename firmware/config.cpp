@@ -170,6 +170,27 @@ const KeyDef kKeys[] = {
      "limit the journal folder (0 = free space of the card)"},
     {"journal.memory", nullptr, nullptr, &Config::journalMemory, nullptr, 1, 1000, nullptr, false,
      "results kept for the `results` command"},
+    {"http.address", nullptr, nullptr, nullptr, &Config::httpAddress, 1, 64, nullptr, false,
+     "web page and JSON API: the IPv4 address to listen on (0.0.0.0: every interface)"},
+    {"http.port", nullptr, nullptr, &Config::httpPort, nullptr, 0, 65535, nullptr, false,
+     "web page and JSON API: TCP port (0 = off)"},
+    {"http.password_file", nullptr, nullptr, nullptr, &Config::httpPasswordFile, 1, 4096, nullptr, false,
+     "the web login's password, stored hashed (written by deploy/install.sh or icacam-fw --hash-password)"},
+    {"http.public_read", nullptr, nullptr, &Config::httpPublicRead, nullptr, 0, 1, nullptr, false,
+     "1 = the read-only pages and API open without a login (changes always need one)"},
+    {"http.tls_cert", nullptr, nullptr, nullptr, &Config::httpTlsCert, 0, 4096, nullptr, false,
+     "HTTPS: certificate file (PEM; with http.tls_key)"},
+    {"http.tls_key", nullptr, nullptr, nullptr, &Config::httpTlsKey, 0, 4096, nullptr, false,
+     "HTTPS: private key file (PEM; with http.tls_cert)"},
+    {"mqtt.host", nullptr, nullptr, nullptr, &Config::mqttHost, 0, 255, nullptr, false,
+     "MQTT broker to publish every result to (\"\" = off)"},
+    {"mqtt.port", nullptr, nullptr, &Config::mqttPort, nullptr, 1, 65535, nullptr, false, "MQTT broker's port"},
+    {"mqtt.topic", nullptr, nullptr, nullptr, &Config::mqttTopic, 1, 128, nullptr, false,
+     "topic prefix: results on TOPIC/result, the retained online/offline state on TOPIC/state"},
+    {"mqtt.client_id", nullptr, nullptr, nullptr, &Config::mqttClientId, 0, 64, nullptr, false,
+     "MQTT client id (\"\" = icacam-<host name>)"},
+    {"mqtt.keepalive_s", nullptr, nullptr, &Config::mqttKeepaliveS, nullptr, 5, 3600, nullptr, false,
+     "MQTT keepalive: a broker that goes silent is noticed within 1.5 times this"},
 };
 
 const KeyDef *findKey(std::string_view key, bool allowAlias)
@@ -379,6 +400,10 @@ std::vector<ConfigIssue> parseConfig(std::string_view text, Config *cfg)
     if (cfg->displayRotate != 0 && cfg->displayRotate != 180) issues.push_back({0, "display.rotate must be 0 or 180"});
     if ((cfg->redGain < 0) != (cfg->blueGain < 0))
         issues.push_back({0, "camera.red_gain and camera.blue_gain are set together (both or neither)"});
+    if (cfg->httpTlsCert.empty() != cfg->httpTlsKey.empty())
+        issues.push_back({0, "http.tls_cert and http.tls_key are set together (both or neither)"});
+    if (cfg->mqttTopic.find_first_of("+#") != std::string::npos)
+        issues.push_back({0, "mqtt.topic must not contain the wildcards + or #"});
     if (cfg->serialBackend == "pty" && cfg->serialLink.empty())
         issues.push_back({0, "serial.link is required with serial.backend = pty"});
     return issues;

@@ -89,6 +89,18 @@ struct Config {
     std::string journalImages = "pgm"; // pgm | none
     int journalQuotaMb = 0;            // 0 = the card's free space
     int journalMemory = 64;            // results kept in RAM for `results`
+    // [http] and [mqtt]: the device on the lab's network (docs/network.md); each off unless
+    // its port or host is set
+    std::string httpAddress = "127.0.0.1";
+    int httpPort = 0; // 0 = no web page
+    std::string httpPasswordFile = "/etc/icacam/web-password";
+    int httpPublicRead = 0; // 1 = the read-only pages and API without a login
+    std::string httpTlsCert, httpTlsKey;
+    std::string mqttHost; // "" = no MQTT
+    int mqttPort = 1883;
+    std::string mqttTopic = "icacam";
+    std::string mqttClientId; // "" = icacam-<host name>
+    int mqttKeepaliveS = 30;
     // Not a key: the config file's folder, against which relative paths set over serial
     // (calibration.file) are resolved.
     std::string baseDir;

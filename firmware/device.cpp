@@ -139,6 +139,7 @@ void Device::tick()
     pollParts();
     pollButton();
     pollSerial();
+    pollInbox();
     pollCamera();
     if (aimUntilMs_ >= 0) aimTick();
 }
@@ -228,6 +229,31 @@ void Device::pollSerial()
     }
 }
 
+bool Device::addListener(net::DeviceListener *l)
+{
+    if (listenerCount_ == kMaxListeners) return false;
+    listeners_[listenerCount_++] = l;
+    return true;
+}
+
+void Device::pollInbox()
+{
+    if (!inbox_) return;
+    if (!inboxLine_) inboxLine_ = std::make_unique<char[]>(net::CommandInbox::kMaxLine);
+    for (int i = 0; i < 4; ++i) { // a few a tick, so buttons stay responsive
+        const size_t n = inbox_->pop(inboxLine_.get());
+        if (n == 0) return;
+        lineOrigin_ = "web";
+        handleLine(std::string_view(inboxLine_.get(), n));
+        lineOrigin_ = "serial";
+    }
+}
+
+void Device::journaled(long id)
+{
+    for (int i = 0; i < listenerCount_; ++i) listeners_[i]->onJournaled(id);
+}
+
 void Device::handleLine(std::string_view line)
 {
     if (line.empty() || line == "\r") return;
@@ -268,7 +294,7 @@ void Device::handleCommand(const Command &c)
     }
     case CommandKind::Trigger:
         if (aimUntilMs_ >= 0) stopAim("measurement");
-        measure("serial", c.tag);
+        measure(lineOrigin_, c.tag);
         return;
     case CommandKind::Aim:
         if (c.aimSeconds == 0)
@@ -398,6 +424,8 @@ void Device::measure(const char *origin, const std::string &tag)
     // The record is durable before anyone hears of it: what was reported survives a crash.
     if (hal::Error e = journal_.append(out_); !e.ok())
         storageProblem = e.code == hal::Errc::Full ? "storage full: result not journaled" : "journal: " + e.message;
+    else
+        journaled(id);
     send(out_);
     if (!problem.empty()) sendError("measurement_failed", problem, tag);
     if (!storageProblem.empty()) sendError("storage", storageProblem, tag);
@@ -472,6 +500,8 @@ void Device::scaleCheck(const Command &c)
     j.end();
     if (hal::Error e = journal_.append(out_); !e.ok())
         storageProblem = e.code == hal::Errc::Full ? "storage full: result not journaled" : "journal: " + e.message;
+    else
+        journaled(id);
     send(out_);
     if (!problem.empty()) sendError("measurement_failed", problem, c.tag);
     if (!storageProblem.empty()) sendError("storage", storageProblem, c.tag);
@@ -613,6 +643,7 @@ void Device::sendError(const char *code, std::string_view message, std::string_v
 void Device::send(std::string_view line)
 {
     (void)hal_.serial.write(line);
+    for (int i = 0; i < listenerCount_; ++i) listeners_[i]->onLine(line);
 }
 
 } // namespace icacam::fw

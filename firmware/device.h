@@ -16,6 +16,8 @@
 #include "firmware/journal.h"
 #include "firmware/lit_frame.h"
 #include "firmware/parts.h"
+#include "firmware/net/command_inbox.h"
+#include "firmware/net/device_listener.h"
 #include "hal/camera.h"
 #include "hal/clock.h"
 #include "hal/display.h"
@@ -62,9 +64,17 @@ public:
     State state() const { return state_; }
     const CameraHealth &camera() const { return cameraHealth_; }
 
+    // The network side (firmware/net/): listeners hear every line the device says and every
+    // record journaled; an inbox's lines are handled as serial lines are. Set before start().
+    static constexpr int kMaxListeners = 4;
+    bool addListener(net::DeviceListener *l);
+    void setInbox(net::CommandInbox *inbox) { inbox_ = inbox; }
+
 private:
     void pollButton();
     void pollSerial();
+    void pollInbox();
+    void journaled(long id);
     void handleLine(std::string_view line);
     void handleCommand(const Command &c);
     // `set KEY VALUE`: tried on a copy of the config, kept and saved when valid, the new
@@ -153,6 +163,11 @@ private:
     LitCheckResult lastLit_; // the check's verdict on the last frame captured lit
     int unlitFrames_ = 0;    // frames the check refused in the last capture
     int64_t ledOffMs_ = 0;   // when the ring was last switched off
+    net::DeviceListener *listeners_[kMaxListeners] = {};
+    int listenerCount_ = 0;
+    net::CommandInbox *inbox_ = nullptr;
+    std::unique_ptr<char[]> inboxLine_;
+    const char *lineOrigin_ = "serial"; // a record's "trigger": where the command line came from
 };
 
 } // namespace icacam::fw

@@ -114,6 +114,7 @@ void Device::aimTick()
     const reading::Reading m = measureForSetup(luma);
     const AimReading r = aimReading(luma, m);
     ++aimFrames_;
+    for (int i = 0; i < listenerCount_; ++i) listeners_[i]->onAimPicture(luma);
     drawAim(&screen_, luma, r);
     showOrLog(screen_);
     out_.clear();

@@ -24,6 +24,9 @@
 #include "firmware/config.h"
 #include "firmware/device.h"
 #include "firmware/device_calibration.h"
+#ifdef ICACAM_HAVE_NET
+#include "firmware/net/network.h"
+#endif
 #include "firmware/sd_notify.h"
 #include "friction/friction_models.h"
 #include "hal/file/clocks.h"
@@ -47,10 +50,12 @@ std::string usage()
     for (std::string_view name : friction::kModelNames) (models += models.empty() ? "" : ", ") += name;
     return std::string("usage: icacam-fw --config FILE [--check]\n"
                        "       icacam-fw --help-config\n"
+                       "       icacam-fw --hash-password < password\n"
                        "Runs the icacam device program on the backends the config names.\n"
                        "  --config FILE  the device configuration (key = value lines; no default)\n"
                        "  --check        validate the config (and the calibration file it names) and exit\n"
                        "  --help-config  every config key with its default\n"
+                       "  --hash-password  the web login's password file line for the password on stdin\n"
                        "The friction model is the config's reading.model (default ") +
            friction::kDefaultModel + "; known: " + models +
            ").\n"
@@ -105,6 +110,10 @@ std::optional<int> parseArguments(int argc, char **argv, Arguments *args)
         else if (a == "--help-config") {
             std::printf("config keys:\n%s", fw::configHelp().c_str());
             return 0;
+#ifdef ICACAM_HAVE_NET
+        } else if (a == "--hash-password") {
+            return fw::net::hashPasswordCommand();
+#endif
         } else if (a == "-h" || a == "--help") {
             std::printf("%s", usage().c_str());
             return 0;
@@ -141,6 +150,15 @@ bool loadConfig(const std::string &path, fw::Config *cfg)
             std::fprintf(stderr, "%s: %s\n", path.c_str(), issue.c_str());
             ok = false;
         }
+#ifndef ICACAM_HAVE_NET
+    if (cfg->httpPort > 0 || !cfg->mqttHost.empty()) {
+        std::fprintf(stderr,
+                     "%s: http.port / mqtt.host: this icacam-fw is built without the network "
+                     "(libmicrohttpd, libmosquitto, libsodium)\n",
+                     path.c_str());
+        ok = false;
+    }
+#endif
     cfg->baseDir = std::filesystem::path(path).parent_path().string();
     // The calibration file is part of the configuration: unreadable, of another format or
     // for larger frames than the camera's is a configuration mistake (exit 78).
@@ -194,6 +212,18 @@ int runDevice(const fw::Config &cfg)
     if (!model)
         return failed("model", hal::Error::make(hal::Errc::Invalid, "unknown reading.model " + cfg.model), kExitConfig);
     fw::Device device({*camera.value, trigger, led, display, serial, storage, clock, &parts}, cfg, *model);
+#ifdef ICACAM_HAVE_NET
+    // The network is configured, not a part that may be absent: an address it cannot bind or a
+    // certificate it cannot read is a configuration mistake, said once, not a restart loop.
+    fw::net::Network network;
+    if (hal::Error e =
+            network.attach(cfg,
+                           {fw::pathFromConfig(cfg, cfg.journalDir), fw::pathFromConfig(cfg, cfg.httpPasswordFile),
+                            fw::pathFromConfig(cfg, cfg.httpTlsCert), fw::pathFromConfig(cfg, cfg.httpTlsKey)},
+                           device);
+        !e.ok())
+        return failed("network", e, kExitConfig);
+#endif
     std::signal(SIGTERM, onSignal);
     std::signal(SIGINT, onSignal);
     std::signal(SIGPIPE, SIG_IGN);
