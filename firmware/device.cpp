@@ -107,7 +107,8 @@ hal::Error Device::start()
         }
         cfg_ = trial;
     }
-    applyLens(); // a lens position saved over serial
+    applyLens();       // a lens position saved over serial
+    applyStampDelay(); // and a camera delay measured
     if (!cal_.present && !(cfg_.mmPerPx > 0))
         return hal::Error::make(hal::Errc::Invalid, "no scale: calibration.mm_per_px or calibration.file is required");
     out_.clear();
@@ -248,7 +249,7 @@ void Device::handleCommand(const Command &c)
         j.str("type", "help")
             .str("commands", "status | trigger | get [KEY] | set KEY VALUE | results [N] | "
                              "scalecheck DIAMETER_MM [TOLERANCE_PCT [THICKNESS_MM]] | aim [SECONDS | off] | snapshot | "
-                             "fetch NAME | lens POSITION | focus | help; "
+                             "fetch NAME | lens POSITION | focus | measure-latency | help; "
                              "as words or JSON {\"cmd\":\"set\",\"key\":\"n\",\"value\":0.2,\"id\":\"x\"}")
             .str("keys", liveKeyList());
         break;
@@ -286,6 +287,10 @@ void Device::handleCommand(const Command &c)
         focus(c);
         return;
     case CommandKind::Fetch: fetch(c); return;
+    case CommandKind::MeasureLatency:
+        if (aimUntilMs_ >= 0) stopAim("measure-latency");
+        measureLatency(c);
+        return;
     case CommandKind::Get: {
         j.str("type", "settings");
         int matched = 0;
@@ -323,6 +328,8 @@ bool Device::applySetting(const Command &c, reading::JsonBuilder &j)
     std::string err = setConfigKey(&trial, c.key, c.value, true);
     if (err.empty()) err = specimenIssue(trial);
     if (err.empty() && liveKeyName(c.key) == "calibration_file") err = setCalibrationFile(&trial);
+    if (err.empty() && liveKeyName(c.key) == "stamp_delay_us" && trial.stampDelayUs >= 0)
+        if (hal::Error e = hal_.camera.setStampDelayUs(trial.stampDelayUs); !e.ok()) err = e.message;
     if (err.empty() && liveKeyName(c.key) == "lens_position" && trial.lensPosition >= 0)
         if (hal::Error e = hal_.camera.setLensPosition(trial.lensPosition); !e.ok()) err = e.message;
     if (!err.empty()) {
