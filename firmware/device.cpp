@@ -86,6 +86,7 @@ hal::Error Device::start()
     JournalRecovery rec;
     if (hal::Error e = journal_.recover(&rec); !e.ok()) return e;
     lastId_ = rec.lastId;
+    const Config configured = cfg_;
     // Settings changed over serial survive a restart; a bad saved value is reported and skipped.
     std::string note;
     if (auto saved = hal_.storage.read(kSettingsFile); saved.ok()) {
@@ -107,8 +108,10 @@ hal::Error Device::start()
         }
         cfg_ = trial;
     }
-    applyLens();       // a lens position saved over serial
-    applyStampDelay(); // and a camera delay measured
+    // A lens position or camera delay saved over serial, which the camera was not built with
+    // (it keeps them across reconfigures from then on).
+    if (cfg_.lensPosition != configured.lensPosition) applyLens();
+    if (cfg_.stampDelayUs != configured.stampDelayUs) applyStampDelay();
     if (!cal_.present && !(cfg_.mmPerPx > 0))
         return hal::Error::make(hal::Errc::Invalid, "no scale: calibration.mm_per_px or calibration.file is required");
     out_.clear();
@@ -154,7 +157,6 @@ void Device::pollCamera()
     appendCameraStatus(j);
     j.end();
     send(out_);
-    if (cameraHealth_.ok()) applyLens(); // a camera configured afresh holds the saved lens again
     if (state_ == State::Idle && aimUntilMs_ < 0) showIdle(cameraHealth_.ok() ? "camera found" : "");
 }
 

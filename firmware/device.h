@@ -103,7 +103,7 @@ private:
     void fetch(const Command &c);
     // Lens and focus (device_lens.cpp): `lens POSITION` holds the lens there; `focus` lights
     // the ring, runs one autofocus sweep and holds the lens where it ended; both saved as
-    // lens_position and held again after a restart or a camera coming back.
+    // lens_position and held again after a restart (the camera keeps it across reconfigures).
     void setLens(const Command &c);
     void focus(const Command &c);
     void applyLens();
