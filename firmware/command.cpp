@@ -34,6 +34,7 @@ bool kindOf(std::string_view name, CommandKind *k)
         {"lens", CommandKind::Lens},
         {"focus", CommandKind::Focus},
         {"fetch", CommandKind::Fetch},
+        {"measure-latency", CommandKind::MeasureLatency},
     };
     for (const auto &n : kNames)
         if (name == n.name) {

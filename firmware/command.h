@@ -10,7 +10,21 @@
 
 namespace icacam::fw {
 
-enum class CommandKind { Help, Status, Trigger, Get, Set, Results, ScaleCheck, Aim, Snapshot, Lens, Focus, Fetch };
+enum class CommandKind {
+    Help,
+    Status,
+    Trigger,
+    Get,
+    Set,
+    Results,
+    ScaleCheck,
+    Aim,
+    Snapshot,
+    Lens,
+    Focus,
+    Fetch,
+    MeasureLatency
+};
 
 struct Command {
     CommandKind kind = CommandKind::Help;

@@ -96,7 +96,7 @@ const KeyDef kKeys[] = {
      "ISP sharpening (libcamera: 0 off, 1 default; it shifts edges, 0 is advised; -1: leave)"},
     {"camera.noise_reduction", nullptr, nullptr, nullptr, &Config::noiseReduction, 0, 0,
      "default|off|fast|high_quality", false, "ISP noise reduction (libcamera)"},
-    {"camera.stamp_delay_us", nullptr, nullptr, &Config::stampDelayUs, nullptr, -1, 1000000, nullptr, false,
+    {"camera.stamp_delay_us", "stamp_delay_us", nullptr, &Config::stampDelayUs, nullptr, -1, 1000000, nullptr, true,
      "v4l2: most time from a frame's exposure end to its buffer timestamp (-1: one frame interval)"},
     {"camera.retry_ms", nullptr, nullptr, &Config::cameraRetryMs, nullptr, 100, 600000, nullptr, false,
      "a missing or silent camera, and a missing display, serial line, button or LED line, is looked for again "

@@ -86,6 +86,7 @@ hal::Error Device::start()
     JournalRecovery rec;
     if (hal::Error e = journal_.recover(&rec); !e.ok()) return e;
     lastId_ = rec.lastId;
+    const Config configured = cfg_;
     // Settings changed over serial survive a restart; a bad saved value is reported and skipped.
     std::string note;
     if (auto saved = hal_.storage.read(kSettingsFile); saved.ok()) {
@@ -107,7 +108,10 @@ hal::Error Device::start()
         }
         cfg_ = trial;
     }
-    applyLens(); // a lens position saved over serial
+    // A lens position or camera delay saved over serial, which the camera was not built with
+    // (it keeps them across reconfigures from then on).
+    if (cfg_.lensPosition != configured.lensPosition) applyLens();
+    if (cfg_.stampDelayUs != configured.stampDelayUs) applyStampDelay();
     if (!cal_.present && !(cfg_.mmPerPx > 0))
         return hal::Error::make(hal::Errc::Invalid, "no scale: calibration.mm_per_px or calibration.file is required");
     out_.clear();
@@ -154,7 +158,6 @@ void Device::pollCamera()
     appendCameraStatus(j);
     j.end();
     send(out_);
-    if (cameraHealth_.ok()) applyLens(); // a camera configured afresh holds the saved lens again
     if (state_ == State::Idle && aimUntilMs_ < 0) showIdle(cameraHealth_.ok() ? "camera found" : "");
 }
 
@@ -274,7 +277,7 @@ void Device::handleCommand(const Command &c)
         j.str("type", "help")
             .str("commands", "status | trigger | get [KEY] | set KEY VALUE | results [N] | "
                              "scalecheck DIAMETER_MM [TOLERANCE_PCT [THICKNESS_MM]] | aim [SECONDS | off] | snapshot | "
-                             "fetch NAME | lens POSITION | focus | help; "
+                             "fetch NAME | lens POSITION | focus | measure-latency | help; "
                              "as words or JSON {\"cmd\":\"set\",\"key\":\"n\",\"value\":0.2,\"id\":\"x\"}")
             .str("keys", liveKeyList());
         break;
@@ -312,6 +315,10 @@ void Device::handleCommand(const Command &c)
         focus(c);
         return;
     case CommandKind::Fetch: fetch(c); return;
+    case CommandKind::MeasureLatency:
+        if (aimUntilMs_ >= 0) stopAim("measure-latency");
+        measureLatency(c);
+        return;
     case CommandKind::Get: {
         j.str("type", "settings");
         int matched = 0;
@@ -349,6 +356,8 @@ bool Device::applySetting(const Command &c, reading::JsonBuilder &j)
     std::string err = setConfigKey(&trial, c.key, c.value, true);
     if (err.empty()) err = specimenIssue(trial);
     if (err.empty() && liveKeyName(c.key) == "calibration_file") err = setCalibrationFile(&trial);
+    if (err.empty() && liveKeyName(c.key) == "stamp_delay_us" && trial.stampDelayUs >= 0)
+        if (hal::Error e = hal_.camera.setStampDelayUs(trial.stampDelayUs); !e.ok()) err = e.message;
     if (err.empty() && liveKeyName(c.key) == "lens_position" && trial.lensPosition >= 0)
         if (hal::Error e = hal_.camera.setLensPosition(trial.lensPosition); !e.ok()) err = e.message;
     if (!err.empty()) {

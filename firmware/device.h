@@ -113,10 +113,18 @@ private:
     void fetch(const Command &c);
     // Lens and focus (device_lens.cpp): `lens POSITION` holds the lens there; `focus` lights
     // the ring, runs one autofocus sweep and holds the lens where it ended; both saved as
-    // lens_position and held again after a restart or a camera coming back.
+    // lens_position and held again after a restart (the camera keeps it across reconfigures).
     void setLens(const Command &c);
     void focus(const Command &c);
     void applyLens();
+    // `measure-latency` (device_latency.cpp): the ring stepped on under a running camera, the
+    // first frame lit top to bottom found, and from its stamp the most the camera's timestamps
+    // lag an exposure; saved as stamp_delay_us and used from then on.
+    void measureLatency(const Command &c);
+    // One step: the ring off, a reference, the ring on; the stamp delay bound this step gives
+    // (µs), or -1 with the problem.
+    int64_t latencyStep(std::string *problem);
+    void applyStampDelay();
     void sendLens(const char *by, const std::string &tag);
     // Measures the frame in luma for aim and snapshot (the same specimen and scale as a
     // measurement).

@@ -4,7 +4,6 @@
 // can hand out one lit in part; both are refused and captured again, then reported as
 // "LED ring not lit".
 #include <algorithm>
-#include <cmath>
 
 #include "firmware/device.h"
 #include "firmware/frame_luma.h"
@@ -24,15 +23,21 @@ LitFrameOptions Device::litOptions(int width, int height) const
 {
     LitFrameOptions o;
     o.minRiseLevels = cfg_.litMinRise;
-    // The specimen's region: a square inside the end face the config declares (its diameter
-    // after upsetting by volume constancy, d0 · sqrt(h0 / h), at the model's 50 % when h is not
-    // given), centred, as aim mode asks the specimen to be; 0.7 of it leaves room for a
-    // specimen off centre. Without a scale, or larger than the frame: the middle half, or
-    // the frame's full height. It spans the rows top to bottom, which is what shows a frame
-    // that straddled the LED's edge.
-    const double hRatio = cfg_.hFinalMm > 0 ? cfg_.h0Mm / cfg_.hFinalMm : 2.0;
-    const double facePx = cfg_.mmPerPx > 0 ? cfg_.d0Mm * std::sqrt(hRatio) / cfg_.mmPerPx : 0;
-    int side = facePx > 0 ? int(0.7 * facePx) : std::min(width, height) / 2;
+    // The specimen's region: a square as wide as the original end face (at least d0 across
+    // after upsetting: it and the inner part of the immigrated ring, PRODUCT.md §1), centred
+    // as aim mode asks; its rows span the specimen's middle, top to bottom, which is where
+    // a frame that straddled the LED's edge shows. Without a scale, or larger than the frame:
+    // the middle half, or the frame's full height.
+    //
+    // Judged against the LED-off frame alone, band by band (16 bands): a band the ring adds
+    // less than led.min_rise to is not lit. The top-to-bottom ratio test is off: a real end
+    // face's reflectance differs top to bottom more than that test allows (the devset's
+    // photographs). What it cannot see: a dark sliver thinner than a band, and rows above or
+    // below the region.
+    o.bands = 16;
+    o.partialRatio = 0;
+    const double facePx = cfg_.mmPerPx > 0 ? cfg_.d0Mm / cfg_.mmPerPx : 0;
+    int side = facePx > 0 ? int(facePx) : std::min(width, height) / 2;
     side = std::clamp(side, std::min(o.bands * 4, std::min(width, height)), std::min(width, height));
     o.region = {(width - side) / 2, (height - side) / 2, side, side};
     return o;

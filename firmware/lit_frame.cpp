@@ -9,7 +9,7 @@ namespace {
 bool optionsValid(const LitFrameOptions &o)
 {
     return o.bands >= 2 && o.bands <= LitFrameCheck::kMaxBands && o.minRiseLevels >= 1 && o.darkFraction >= 0 &&
-           o.darkFraction < o.litFraction && o.litFraction <= 1.5 && o.partialRatio > 0 && o.partialRatio < 1 &&
+           o.darkFraction < o.litFraction && o.litFraction <= 1.5 && o.partialRatio >= 0 && o.partialRatio < 1 &&
            o.maxSamples >= o.bands;
 }
 
@@ -155,7 +155,7 @@ LitCheckResult LitFrameCheck::check(const LumaPlane &frame) const
         r.verdict = LitVerdict::PartlyLit;
         r.litAtTop = top > bottom;
         r.reason = partlyReason(r.litAtTop);
-    } else if (std::fmin(top, bottom) < float(o.partialRatio) * std::fmax(top, bottom)) {
+    } else if (o.partialRatio > 0 && std::fmin(top, bottom) < float(o.partialRatio) * std::fmax(top, bottom)) {
         r.verdict = LitVerdict::PartlyLit;
         r.litAtTop = top > bottom;
         r.reason = partlyReason(r.litAtTop);

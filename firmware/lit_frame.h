@@ -51,8 +51,10 @@ struct LitFrameOptions {
     int minRiseLevels = 12;    // luma levels the LED adds, at least, to a lit band
     double litFraction = 0.7;  // with an LED-on reference: a band this lit or more is lit
     double darkFraction = 0.3; // ... this lit or less is dark; between, it straddled the edge
-    double partialRatio = 0.5; // LED-off reference only: top and bottom rises further apart: partly lit
-    int maxSamples = 65536;    // pixels read per frame (a grid over the region)
+    // LED-off reference only: top and bottom rises further apart: partly lit (0: not compared,
+    // for scenes whose reflectance differs top to bottom; each band is then judged alone).
+    double partialRatio = 0.5;
+    int maxSamples = 65536; // pixels read per frame (a grid over the region)
     LitRegion region;
 };
 

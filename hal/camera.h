@@ -48,6 +48,10 @@ struct CapturedFrame {
     int64_t exposureUs = -1; // exposure time the frame's start was computed with
     uint32_t sequence = 0;   // the driver's frame counter (gaps: frames the driver dropped)
     int staleFrames = 0;     // frames refused because their exposure began before notBefore
+    // How late the driver's stamp may be after the exposure, as the start was computed with
+    // (V4L2: camera.stamp_delay_us, or a bound from the frame interval); 0: the stamp is the
+    // sensor's own, nothing added.
+    int64_t stampDelayUs = 0;
     CameraControls controls; // values the camera reports for this frame
     std::string source;      // where it came from (file name, sensor model), for the journal
 };
@@ -76,6 +80,13 @@ public:
     virtual Error setLensPosition(double /*position*/)
     {
         return Error::make(Errc::Invalid, "this camera has no lens control (fixed focus)");
+    }
+    // The most a buffer's timestamp lags the end of its exposure, measured (`measure-latency`):
+    // used from the next capture on. Errors: Invalid (a camera whose stamps are the sensor's
+    // own, or < 0).
+    virtual Error setStampDelayUs(int /*us*/)
+    {
+        return Error::make(Errc::Invalid, "this camera's timestamps are the sensor's own: no delay to set");
     }
     // One autofocus sweep on what the camera sees now, then the lens held where it ended, as
     // setLensPosition(): the position. Errors: Invalid (no autofocus), Timeout (no focus within

@@ -525,6 +525,7 @@ Error V4l2Camera::capture(const CaptureRequest &req, CapturedFrame *out)
             out->exposureUs = timing.exposureNs / 1000;
             out->sequence = b.sequence;
             out->staleFrames = stale;
+            out->stampDelayUs = stamp.stampDelayNs / 1000;
             out->controls = reported_;
             out->source = options_.device;
             return {};
@@ -554,6 +555,13 @@ Error V4l2Camera::capture(const CaptureRequest &req, CapturedFrame *out)
     stop(); // reopened by the next capture()
     description_ = "v4l2 " + options_.device + ": " + failure.message;
     return failure;
+}
+
+Error V4l2Camera::setStampDelayUs(int us)
+{
+    if (us < 0) return Error::make(Errc::Invalid, "camera: a stamp delay is 0 or more microseconds");
+    options_.stampDelayUs = us;
+    return {};
 }
 
 Error V4l2Camera::setLensPosition(double position)

@@ -62,6 +62,7 @@ public:
     using Camera::capture;
     Error capture(const CaptureRequest &req, CapturedFrame *out) override;
     std::string describe() const override { return description_; }
+    Error setStampDelayUs(int us) override;
     // focus_automatic_continuous off, focus_absolute at position (the device's units).
     Error setLensPosition(double position) override;
     // Continuous autofocus on, frames until focus_absolute has held still for a while, then
