@@ -89,17 +89,17 @@ BarrelProfile extractBarrelProfile(const fe::FeCase &c, const fe::NodeXY &coords
         if (ci == coords.end() || di == disp.end()) throw std::runtime_error("fe: node missing in results");
         side.push_back({ci->second.second + di->second.second, ci->second.first + di->second.first});
     }
-    // The free surface ends below the nodes that rolled onto the platen (the immigrated ring):
-    // walk down from the corner past them, as fe::computeRadii does.
-    int firstFree = int(side.size()) - 1;
-    while (firstFree > 0 && zPlaten - side[size_t(firstFree)].first <= fe::kGapTolMm) --firstFree;
-    for (int j = 0; j <= firstFree; ++j)
-        p.zMm.push_back(side[size_t(j)].first), p.rMm.push_back(side[size_t(j)].second);
-    // The contact edge: the last node on the platen, or the sub-node edge the FE's
-    // post-processing puts between it and the first free node.
-    const fe::Radii radii = fe::computeRadii(c, m, coords, disp, reduction);
+    // The free surface runs up from the mid-plane to the first node on the platen: the
+    // contact edge, the outermost node of the immigrated ring. Walked from below, because a
+    // quadratic element's mid-side node can hover a micrometre above the platen inside the
+    // ring (fe_contact_track.h); on the platen here means within a few micrometres, far below
+    // a pixel, and a node pressed into it (the penalty contact) is put on it.
+    constexpr double kOnPlatenMm = 0.005;
+    size_t edge = 0;
+    while (edge + 1 < side.size() && zPlaten - side[edge].first > kOnPlatenMm) ++edge;
+    for (size_t j = 0; j < edge; ++j) p.zMm.push_back(side[j].first), p.rMm.push_back(side[j].second);
     p.zMm.push_back(zPlaten);
-    p.rMm.push_back(firstFree + 1 < int(side.size()) ? radii.roInterpMm : side.back().second);
+    p.rMm.push_back(side[edge].second);
     return p;
 }
 

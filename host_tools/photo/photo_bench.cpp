@@ -180,7 +180,10 @@ std::string writePhotoSet(const std::string &dir, const PhotoBenchOptions &opt)
             std::seed_seq seq{opt.seed, uint32_t(cond), uint32_t(i)};
             std::mt19937 rng(seq);
             const FaceProfile profile = profiles[size_t(i - 1) % profiles.size()];
-            const PhotoRecord rec = drawRecord(cond, profile, rng, table, opt.small);
+            PhotoRecord rec = drawRecord(cond, profile, rng, table, opt.small);
+            if (opt.encoding == PhotoBenchOptions::Encoding::Png) rec.sensor.jpegQuality = 0;
+            if (opt.encoding == PhotoBenchOptions::Encoding::Jpeg && rec.sensor.jpegQuality == 0)
+                rec.sensor.jpegQuality = 92;
             char id[48];
             std::snprintf(id, sizeof id, "%s-%04d", conditionName(cond), i);
             writeText(root / "scenes" / (std::string(id) + ".pov"), povraySceneText(rec.scene));

@@ -44,9 +44,12 @@ struct PhotoBenchOptions {
     bool small = false;                     // 640 × 480 (the CI size)
     std::string profilesCsv;                // the FE barrel profiles (barrel_profile.h)
     std::string povray = "povray";          // the renderer's binary
-    std::string quality = "+A0.1 +AM2 +R2"; // POV-Ray's anti-aliasing: adaptive, 2 levels
+    std::string quality = "+A0.2 +AM2 +R1"; // POV-Ray's anti-aliasing: adaptive, one level
     bool keepRender = false;                // keep the linear 16-bit render beside the scene
     bool labels = false;                    // also DIR/labels/<id>.png: the zones as flat greys (photo_scene.h)
+    // The file format: as the sensor drew it (JPEG 80–95 or PNG), or every photograph PNG
+    // (test images) or JPEG (committed sets: a tenth of the bytes; a PNG draw becomes quality 92).
+    enum class Encoding { Sensor, Png, Jpeg } encoding = Encoding::Sensor;
     bool quiet = false;
 };
 

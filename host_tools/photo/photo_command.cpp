@@ -20,6 +20,7 @@ std::string usage()
     return "usage: icacam synth --renderer povray --out DIR [--condition LIST|all] [--count N] [--seed S]\n"
            "                    [--first K] [--profile LIST|all] [--small] [--quality 'POV-Ray options']\n"
            "                    [--profiles CSV] [--povray PATH] [--keep-render] [--labels]\n"
+           "                    [--encoding sensor|png|jpeg] [--quiet]\n"
            "       icacam synth --renderer povray --make-profiles CSV --fe-work DIR [--ccx PATH]\n"
            "Photographs rendered with real light transport (POV-Ray): a ring light of 12-32 LEDs about the\n"
            "lens, metallic finishes with gloss, turning grooves, stains, the barrel through the FE's free\n"
@@ -39,6 +40,8 @@ std::string usage()
            "')\n"
            "  --labels      also DIR/labels/<id>.png: the zones as flat greys (face 255, ring 170, barrel 85,\n"
            "                fixture 0) through the same camera, to check the truth's projections against\n"
+           "  --encoding    sensor (default: JPEG 80-95 or PNG as drawn), png (every photograph), jpeg\n"
+           "                (every photograph; a PNG draw at quality 92)\n"
            "  --keep-render keep POV-Ray's linear 16-bit render in DIR/scenes/\n"
            "  --profiles    the FE barrel profiles (default " ICACAM_PHOTOBENCH_PROFILES ")\n"
            "  --make-profiles CSV --fe-work DIR: solve (or reuse in DIR) the FE cases of the profile grid\n"
@@ -92,6 +95,18 @@ int photoSynthCommand(const std::vector<std::string> &args)
             opt.keepRender = opts.flag();
         else if (opts.is("--labels"))
             opt.labels = opts.flag();
+        else if (opts.is("--encoding")) {
+            const std::string v = opts.value();
+            if (v == "sensor")
+                opt.encoding = PhotoBenchOptions::Encoding::Sensor;
+            else if (v == "png")
+                opt.encoding = PhotoBenchOptions::Encoding::Png;
+            else if (v == "jpeg")
+                opt.encoding = PhotoBenchOptions::Encoding::Jpeg;
+            else
+                opts.fail("sensor, png or jpeg, not '" + v + "'");
+        } else if (opts.is("--quiet"))
+            opt.quiet = opts.flag();
         else if (opts.is("--make-profiles"))
             makeProfiles = opts.value();
         else if (opts.is("--fe-work"))

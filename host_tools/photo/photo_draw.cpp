@@ -93,13 +93,18 @@ void drawFinishes(PhotoScene &s, FaceProfile p, const cv::Vec3d &metal, std::mt1
         break;
     }
     }
-    // The platen's grinding marks imprinted in the face; the turning marks (feed 0.05–0.2 mm)
-    // on the former lateral surface: rolled onto the platen about as wide, on the barrel
-    // pressed together axially.
-    s.face.grain = uniform(rng, 0.05, 0.25), s.face.grainMm = uniform(rng, 0.05, 0.2);
+    // The platen's grinding marks imprinted in the face, fine and drawn out along one direction
+    // (shallower on a polished face, whose gloss shows every slope); the turning marks (feed
+    // 0.05–0.2 mm) on the former lateral surface: rolled onto the platen about as wide, on the
+    // barrel pressed together axially.
+    s.face.grain = s.face.roughness < 0.03 ? uniform(rng, 0.01, 0.04) : uniform(rng, 0.03, 0.12);
+    s.face.grainMm = uniform(rng, 0.01, 0.04), s.face.grainStretch = uniform(rng, 5, 20);
+    s.face.grainAxisDeg = uniform(rng, 0, 180);
     const double feed = uniform(rng, 0.05, 0.2);
     s.ring.grooveDepth = uniform(rng, 0.3, 1.3), s.ring.groovePitchMm = feed * uniform(rng, 0.8, 1.2);
-    s.barrel.grooveDepth = uniform(rng, 0.3, 1.3), s.barrel.groovePitchMm = feed * uniform(rng, 0.5, 0.7);
+    // Seen from above the barrel's grooves crowd below a pixel, where a point-sampling renderer
+    // shows moiré a sensor's pixel area would average away: kept shallow there.
+    s.barrel.grooveDepth = uniform(rng, 0.1, 0.4), s.barrel.groovePitchMm = feed * uniform(rng, 0.5, 0.7);
     s.fixture = fixtureFinish(rng, lightFixture);
     // Lubricant residue or oxide in patches, on most specimens.
     if (uniform(rng, 0, 1) < 0.6) {

@@ -67,7 +67,10 @@ std::string labelTexture(const std::string &name, double grey)
 std::string grainNormal(const SurfaceFinish &f, const cv::Vec3d &offset)
 {
     if (f.grain <= 0) return "";
-    return "normal { bumps " + num(f.grain) + " scale " + num(f.grainMm) + " translate " + vec(offset) + " }";
+    const std::string scale = f.grainStretch > 1 ? "<" + num(f.grainMm * f.grainStretch) + ", " + num(f.grainMm) +
+                                                       ", " + num(f.grainMm) + "> rotate y * " + num(f.grainAxisDeg)
+                                                 : num(f.grainMm);
+    return "normal { bumps " + num(f.grain) + " scale " + scale + " translate " + vec(offset) + " }";
 }
 
 // The zones' textures. The immigrated ring is former lateral surface: its turning grooves,
@@ -85,7 +88,7 @@ std::string materials(const PhotoScene &s)
     o << texture("RingClean", s.ring, ringNormal);
     std::string barrelNormal = grainNormal(s.barrel, off);
     if (s.barrel.grooveDepth > 0)
-        barrelNormal = "normal { gradient y " + num(s.barrel.grooveDepth) + " scallop_wave scale " +
+        barrelNormal = "normal { gradient y " + num(s.barrel.grooveDepth) + " sine_wave scale " +
                        num(s.barrel.groovePitchMm) + " translate " + vec(off) + " }";
     o << texture("Barrel", s.barrel, barrelNormal);
     o << texture("Stain", s.stain, grainNormal(s.stain, off));

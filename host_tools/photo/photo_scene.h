@@ -42,6 +42,7 @@ struct SurfaceFinish {
     double reflection = 0;
     double grooveDepth = 0, groovePitchMm = 0.1; // turning grooves (0: none)
     double grain = 0, grainMm = 0.2;             // random roughness of the surface
+    double grainStretch = 1, grainAxisDeg = 0;   // > 1: marks drawn out along one direction (grinding)
 };
 
 struct PhotoScene {
