@@ -42,6 +42,7 @@ std::string usage()
            "                fixture 0) through the same camera, to check the truth's projections against\n"
            "  --encoding    sensor (default: JPEG 80-95 or PNG as drawn), png (every photograph), jpeg\n"
            "                (every photograph; a PNG draw at quality 92)\n"
+           "  --quiet       no line per record on stderr\n"
            "  --keep-render keep POV-Ray's linear 16-bit render in DIR/scenes/\n"
            "  --profiles    the FE barrel profiles (default " ICACAM_PHOTOBENCH_PROFILES ")\n"
            "  --make-profiles CSV --fe-work DIR: solve (or reuse in DIR) the FE cases of the profile grid\n"
