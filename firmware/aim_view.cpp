@@ -58,13 +58,14 @@ void invertCircle(hal::MonoBitmap *bmp, const Fit &f, double cx, double cy, doub
 
 } // namespace
 
-double focusScore(const vision::LumaView &v, const vision::Measurement &m)
+double focusScore(const vision::LumaView &v, const reading::Reading &m)
 {
     int x0 = v.width / 4, x1 = v.width * 3 / 4, y0 = v.height / 4, y1 = v.height * 3 / 4;
-    const double r = m.hasValue() ? std::max(m.rMaxPx, m.outer.rEqPx) : 0;
+    const vision::EndFaceGeometry &g = m.geometry;
+    const double r = m.hasValue() ? std::max(g.rMaxPx, g.outer.rEqPx) : 0;
     if (r > 4) {
-        x0 = std::max(1, int(m.centreX - r)), x1 = std::min(v.width - 1, int(m.centreX + r));
-        y0 = std::max(1, int(m.centreY - r)), y1 = std::min(v.height - 1, int(m.centreY + r));
+        x0 = std::max(1, int(g.centreX - r)), x1 = std::min(v.width - 1, int(g.centreX + r));
+        y0 = std::max(1, int(g.centreY - r)), y1 = std::min(v.height - 1, int(g.centreY + r));
     }
     x0 = std::max(x0, 1), y0 = std::max(y0, 1);
     x1 = std::min(x1, v.width - 1), y1 = std::min(y1, v.height - 1);
@@ -101,20 +102,21 @@ double focusScore(const vision::LumaView &v, const vision::Measurement &m)
     return total / double(taken);
 }
 
-AimReading aimReading(const vision::LumaView &v, const vision::Measurement &m)
+AimReading aimReading(const vision::LumaView &v, const reading::Reading &m)
 {
     AimReading r;
     r.focus = focusScore(v, m);
-    r.found = m.hasValue() || m.outer.rEqPx > 0;
+    const vision::EndFaceGeometry &g = m.geometry;
+    r.found = m.hasValue() || g.outer.rEqPx > 0;
     if (!r.found) {
         r.hint = "no specimen: centre it";
         return r;
     }
-    r.centreX = m.centreX, r.centreY = m.centreY;
-    r.rOuterPx = m.outer.rEqPx, r.rInnerPx = m.inner.rEqPx, r.rMaxPx = m.rMaxPx;
-    r.edgeSigmaPx = m.edgeWidthPx;
-    const double dx = m.centreX - 0.5 * (v.width - 1), dy = m.centreY - 0.5 * (v.height - 1);
-    const double across = 2 * std::max(m.rMaxPx, m.outer.rEqPx);
+    r.centreX = g.centreX, r.centreY = g.centreY;
+    r.rOuterPx = g.outer.rEqPx, r.rInnerPx = g.inner.rEqPx, r.rMaxPx = g.rMaxPx;
+    r.edgeSigmaPx = g.edgeWidthPx;
+    const double dx = g.centreX - 0.5 * (v.width - 1), dy = g.centreY - 0.5 * (v.height - 1);
+    const double across = 2 * std::max(g.rMaxPx, g.outer.rEqPx);
     const double tol = 0.08 * std::min(v.width, v.height);
     if (std::fabs(dx) > tol && std::fabs(dx) >= std::fabs(dy))
         r.hint = dx > 0 ? "move left" : "move right";
@@ -122,9 +124,9 @@ AimReading aimReading(const vision::LumaView &v, const vision::Measurement &m)
         r.hint = dy > 0 ? "move up" : "move down";
     else if (across < 0.4 * v.height)
         r.hint = "closer";
-    else if (across > 0.95 * v.height || (m.flags & vision::kFlagSpecimenClipped))
+    else if (across > 0.95 * v.height || (m.flags & reading::kFlagSpecimenClipped))
         r.hint = "farther";
-    else if ((m.flags & vision::kFlagBlurred) || m.error == vision::ErrorCode::Blurred)
+    else if ((m.flags & reading::kFlagBlurred) || m.error == vision::ErrorCode::Blurred)
         r.hint = "focus";
     else
         r.hint = "ok";

@@ -5,8 +5,8 @@
 #include <string_view>
 
 #include "hal/display.h"
+#include "reading/reading.h"
 #include "vision/luma_view.h"
-#include "vision/measurement.h"
 
 namespace icacam::fw {
 
@@ -22,12 +22,12 @@ struct AimReading {
 // inside the specimen's silhouette when found, else over the middle half of the frame. The
 // edges' steepness: turning the focus ring towards sharp raises it; the light and the
 // specimen's contrast change it too, so compare readings of one set-up.
-double focusScore(const vision::LumaView &v, const vision::Measurement &m);
+double focusScore(const vision::LumaView &v, const reading::Reading &m);
 
 // Reading and hint from a measurement: "no specimen: centre it", "move left/right/up/down"
 // (the specimen's way to the frame's centre), "closer" / "farther" (the barrel's silhouette
 // should span 40-95 % of the frame's height: large, but whole), "focus" (edges blurred), "ok".
-AimReading aimReading(const vision::LumaView &v, const vision::Measurement &m);
+AimReading aimReading(const vision::LumaView &v, const reading::Reading &m);
 
 // The picture: the frame scaled to fit 128 × 64 on the left (ordered dither after a
 // min/max stretch), the end face's two boundaries drawn inverted over it, and the focus

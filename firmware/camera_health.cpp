@@ -16,13 +16,11 @@ const char *CameraHealth::stateName(State s)
 bool CameraHealth::attempt()
 {
     nextTryMs_ = clock_.monotonicMs() + retryMs_;
-    const bool wasLost = state_ == State::Lost;
     if (hal::Error e = camera_.configure(format_); !e.ok()) {
         problem_ = e.message;
         if (state_ != State::Lost) state_ = State::Missing;
         return false;
     }
-    if (wasLost) ++reacquired_;
     state_ = State::Ok;
     problem_.clear();
     return true;
@@ -51,7 +49,6 @@ void CameraHealth::onCapture(const hal::Error &e, const hal::CapturedFrame *fram
         if (frame) {
             lastLatencyUs_ = frame->latencyUs;
             lastControls_ = frame->controls;
-            staleFrames_ = frame->staleFrames;
         }
         return;
     }

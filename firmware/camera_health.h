@@ -40,8 +40,6 @@ public:
     int64_t lastLatencyUs() const { return lastLatencyUs_; }
     // The controls the camera reported for the last frame.
     const hal::CameraControls &lastControls() const { return lastControls_; }
-    int staleFrames() const { return staleFrames_; }
-    long reacquired() const { return reacquired_; }
 
 private:
     bool attempt();
@@ -54,8 +52,6 @@ private:
     int64_t nextTryMs_ = 0;
     int64_t lastLatencyUs_ = -1;
     hal::CameraControls lastControls_;
-    int staleFrames_ = 0;
-    long reacquired_ = 0;
     int timeouts_ = 0;
 };
 

@@ -2,7 +2,7 @@
 
 namespace icacam::fw {
 
-void appendCaptureFields(JsonBuilder &j, const hal::CapturedFrame &f, int64_t triggerMs)
+void appendCaptureFields(reading::JsonBuilder &j, const hal::CapturedFrame &f, int64_t triggerMs)
 {
     j.integer("latency_us", f.latencyUs).integer("trigger_latency_ms", f.timestampMs - triggerMs);
     j.integer("stale_frames", f.staleFrames).integer("frame_seq", f.sequence);

@@ -77,74 +77,74 @@ bool wordNumber(std::string_view w, double *v)
 
 constexpr const char *kScaleUsage = "usage: scalecheck DIAMETER_MM [TOLERANCE_PCT [THICKNESS_MM]]";
 
-} // namespace
-
-CommandParse parseCommand(std::string_view line)
+// {"cmd":"set","key":"n","value":0.2,"id":"x"}: the command's fields by name.
+CommandParse parseJsonCommand(std::string_view line)
 {
-    while (!line.empty() && (line.back() == '\r' || line.back() == ' ' || line.back() == '\t')) line.remove_suffix(1);
-    while (!line.empty() && (line.front() == ' ' || line.front() == '\t')) line.remove_prefix(1);
-    if (line.empty()) return fail("malformed", "empty line");
     CommandParse p;
-    if (line.front() == '{') {
-        FlatObject obj;
-        if (std::string err = parseFlatObject(line, &obj); !err.empty()) return fail("malformed", "bad JSON: " + err);
-        const JsonField *cmd = obj.find("cmd");
-        if (!cmd || cmd->type != JsonField::Type::String) return fail("malformed", "missing \"cmd\" string");
-        if (const JsonField *id = obj.find("id"))
-            p.cmd.tag = id->type == JsonField::Type::String ? id->text.substr(0, 64) : id->text.substr(0, 64);
-        if (!kindOf(cmd->text, &p.cmd.kind))
-            return fail("unknown_command", "unknown command '" + printable(cmd->text) + "' (try help)");
-        if (const JsonField *k = obj.find("key")) {
-            if (k->type != JsonField::Type::String) return fail("bad_argument", "\"key\" must be a string");
-            p.cmd.key = k->text;
-        }
-        if (const JsonField *v = obj.find("value")) {
-            if (v->type != JsonField::Type::String && v->type != JsonField::Type::Number)
-                return fail("bad_argument", "\"value\" must be a number or a string");
-            p.cmd.value = v->text;
-        } else if (p.cmd.kind == CommandKind::Set) {
-            return fail("bad_argument", "set needs \"key\" and \"value\"");
-        }
-        if (const JsonField *n = obj.find("n")) {
-            if (n->type != JsonField::Type::Number || !parseCount(n->number, &p.cmd.count))
-                return fail("bad_argument", "\"n\" must be a whole number from 1 to 1000");
-        }
-        if (p.cmd.kind == CommandKind::Set && p.cmd.key.empty()) return fail("bad_argument", "set needs \"key\"");
-        if (p.cmd.kind == CommandKind::Aim) {
-            if (const JsonField *sec = obj.find("seconds")) {
-                if (sec->type != JsonField::Type::Number || !(sec->number >= 0 && sec->number <= kMaxAimSeconds) ||
-                    sec->number != std::floor(sec->number))
-                    return fail("bad_argument", "\"seconds\" must be a whole number from 0 (off) to 600");
-                p.cmd.aimSeconds = int(sec->number);
-            }
-        }
-        if (p.cmd.kind == CommandKind::ScaleCheck) {
-            const struct {
-                const char *key;
-                double lo, hi;
-                double *dst;
-                bool required;
-            } fields[] = {
-                {"diameter_mm", 1, 300, &p.cmd.diameterMm, true},
-                {"tolerance_pct", 0.01, 20, &p.cmd.tolerancePct, false},
-                {"thickness_mm", 0, 50, &p.cmd.thicknessMm, false},
-            };
-            for (const auto &f : fields) {
-                const JsonField *v = obj.find(f.key);
-                if (!v) {
-                    if (f.required) return fail("bad_argument", "scalecheck needs \"diameter_mm\"");
-                    continue;
-                }
-                if (v->type != JsonField::Type::Number)
-                    return fail("bad_argument", std::string("\"") + f.key + "\" must be a number");
-                if (std::string e = scaleNumber(f.key, v->number, f.lo, f.hi, f.dst); !e.empty())
-                    return fail("bad_argument", e);
-            }
-        }
-        p.ok = true;
-        return p;
+    reading::FlatObject obj;
+    if (std::string err = reading::parseFlatObject(line, &obj); !err.empty())
+        return fail("malformed", "bad JSON: " + err);
+    const reading::JsonField *cmd = obj.find("cmd");
+    if (!cmd || cmd->type != reading::JsonField::Type::String) return fail("malformed", "missing \"cmd\" string");
+    if (const reading::JsonField *id = obj.find("id"))
+        p.cmd.tag = id->text.substr(0, 64); // a string's text or a number's literal
+    if (!kindOf(cmd->text, &p.cmd.kind))
+        return fail("unknown_command", "unknown command '" + printable(cmd->text) + "' (try help)");
+    if (const reading::JsonField *k = obj.find("key")) {
+        if (k->type != reading::JsonField::Type::String) return fail("bad_argument", "\"key\" must be a string");
+        p.cmd.key = k->text;
     }
-    // Words: cmd [arg [arg]]
+    if (const reading::JsonField *v = obj.find("value")) {
+        if (v->type != reading::JsonField::Type::String && v->type != reading::JsonField::Type::Number)
+            return fail("bad_argument", "\"value\" must be a number or a string");
+        p.cmd.value = v->text;
+    } else if (p.cmd.kind == CommandKind::Set) {
+        return fail("bad_argument", "set needs \"key\" and \"value\"");
+    }
+    if (const reading::JsonField *n = obj.find("n")) {
+        if (n->type != reading::JsonField::Type::Number || !parseCount(n->number, &p.cmd.count))
+            return fail("bad_argument", "\"n\" must be a whole number from 1 to 1000");
+    }
+    if (p.cmd.kind == CommandKind::Set && p.cmd.key.empty()) return fail("bad_argument", "set needs \"key\"");
+    if (p.cmd.kind == CommandKind::Aim) {
+        if (const reading::JsonField *sec = obj.find("seconds")) {
+            if (sec->type != reading::JsonField::Type::Number || !(sec->number >= 0 && sec->number <= kMaxAimSeconds) ||
+                sec->number != std::floor(sec->number))
+                return fail("bad_argument", "\"seconds\" must be a whole number from 0 (off) to 600");
+            p.cmd.aimSeconds = int(sec->number);
+        }
+    }
+    if (p.cmd.kind == CommandKind::ScaleCheck) {
+        const struct {
+            const char *key;
+            double lo, hi;
+            double *dst;
+            bool required;
+        } fields[] = {
+            {"diameter_mm", 1, 300, &p.cmd.diameterMm, true},
+            {"tolerance_pct", 0.01, 20, &p.cmd.tolerancePct, false},
+            {"thickness_mm", 0, 50, &p.cmd.thicknessMm, false},
+        };
+        for (const auto &f : fields) {
+            const reading::JsonField *v = obj.find(f.key);
+            if (!v) {
+                if (f.required) return fail("bad_argument", "scalecheck needs \"diameter_mm\"");
+                continue;
+            }
+            if (v->type != reading::JsonField::Type::Number)
+                return fail("bad_argument", std::string("\"") + f.key + "\" must be a number");
+            if (std::string e = scaleNumber(f.key, v->number, f.lo, f.hi, f.dst); !e.empty())
+                return fail("bad_argument", e);
+        }
+    }
+    p.ok = true;
+    return p;
+}
+
+// Words, as typed at a terminal: cmd [arg [arg]] (scalecheck takes three).
+CommandParse parseWordCommand(std::string_view line)
+{
+    CommandParse p;
     std::string_view words[4];
     int nw = 0;
     size_t i = 0;
@@ -203,6 +203,16 @@ CommandParse parseCommand(std::string_view line)
     }
     p.ok = true;
     return p;
+}
+
+} // namespace
+
+CommandParse parseCommand(std::string_view line)
+{
+    while (!line.empty() && (line.back() == '\r' || line.back() == ' ' || line.back() == '\t')) line.remove_suffix(1);
+    while (!line.empty() && (line.front() == ' ' || line.front() == '\t')) line.remove_prefix(1);
+    if (line.empty()) return fail("malformed", "empty line");
+    return line.front() == '{' ? parseJsonCommand(line) : parseWordCommand(line);
 }
 
 LineAssembler::Event LineAssembler::push(std::string_view *data)

@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-#include "firmware/json_line.h"
+#include "reading/record_line.h"
 
 namespace icacam::fw {
 

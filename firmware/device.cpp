@@ -5,15 +5,13 @@
 #include <ctime>
 
 #include "firmware/capture_fields.h"
+#include "firmware/frame_luma.h"
 #include "firmware/scale_check.h"
 #include "firmware/screen.h"
-#include "friction/paper_model.h"
-#include "vision/reading_record.h"
+#include "reading/reading_record.h"
 #include "vision/reference_disc.h"
 
 namespace icacam::fw {
-
-using vision::Measurement;
 
 namespace {
 
@@ -26,18 +24,6 @@ void isoTime(int64_t wallMs, char (&b)[96])
     std::snprintf(b, sizeof b, "%04d-%02d-%02dT%02d:%02d:%02d.%03dZ", t.tm_year + 1900, t.tm_mon + 1, t.tm_mday,
                   t.tm_hour, t.tm_min, t.tm_sec, int(wallMs % 1000));
 }
-
-// The reading's fields into a device JSON line (the one schema: vision/reading_record.h).
-class JsonRecordSink final : public vision::RecordSink {
-public:
-    explicit JsonRecordSink(JsonBuilder *j) : j_(j) {}
-    void text(const char *name, std::string_view v) override { j_->str(name, v); }
-    void number(const char *name, double v, int decimals) override { j_->fixed(name, v, decimals); }
-    void absent(const char *name) override { j_->raw(name, "null"); }
-
-private:
-    JsonBuilder *j_;
-};
 
 constexpr const char *kSettingsFile = "settings.conf";
 
@@ -65,20 +51,23 @@ const char *Device::stateName(State s)
 }
 
 Device::Device(DeviceHal hal, Config cfg, const friction::FrictionModel &model)
-        : hal_(hal), cfg_(std::move(cfg)), model_(model),
+        : hal_(hal), cfg_(std::move(cfg)),
           cameraHealth_(hal.camera, hal.clock,
-                        {cfg_.cameraFormat == "rgb24" ? vision::PixelFormat::RGB24 : vision::PixelFormat::Grey8,
+                        {cfg_.cameraFormat == "rgb24" ? hal::PixelFormat::RGB24 : hal::PixelFormat::Grey8,
                          cfg_.cameraMaxWidth, cfg_.cameraMaxHeight},
                         cfg_.cameraRetryMs),
           journal_(hal.storage, cfg_.journalMemory), debouncer_(cfg_.debounceMs, cfg_.longPressMs), lines_(kMaxLine)
-{}
+{
+    instrument_.setModel(model);
+}
 
 hal::Error Device::start()
 {
     startMs_ = hal_.clock.monotonicMs();
     out_.reserve(8192);
     const auto fmt = cfg_.cameraFormat == "rgb24" ? vision::PixelFormat::RGB24 : vision::PixelFormat::Grey8;
-    if (analyzer_.configure(cfg_.cameraMaxWidth, cfg_.cameraMaxHeight) != vision::ErrorCode::None)
+    if (instrument_.configure(cfg_.cameraMaxWidth, cfg_.cameraMaxHeight, instrument_.model()) !=
+        vision::ErrorCode::None)
         return hal::Error::make(hal::Errc::Invalid, "vision: cannot size working memory");
     lumaScratchBytes_ = vision::lumaScratchBytes(fmt, cfg_.cameraMaxWidth, cfg_.cameraMaxHeight);
     if (lumaScratchBytes_ > 0) lumaScratch_ = std::make_unique<uint8_t[]>(lumaScratchBytes_);
@@ -88,6 +77,7 @@ hal::Error Device::start()
     // icacam-fw --check reports a bad calibration file first; a device started without
     // that check refuses it here.
     if (std::string e = loadDeviceCalibration(cfg_, &cal_); !e.empty()) return hal::Error::make(hal::Errc::Invalid, e);
+    useCalibration(cal_);
     discWork_ = std::make_unique<uint8_t[]>(vision::ReferenceDiscFinder::kWorkBytes);
     if (hal::Error e = hal_.led.set(false); !e.ok()) return e;
 
@@ -118,10 +108,10 @@ hal::Error Device::start()
     if (!cal_.present && !(cfg_.mmPerPx > 0))
         return hal::Error::make(hal::Errc::Invalid, "no scale: calibration.mm_per_px or calibration.file is required");
     out_.clear();
-    JsonBuilder j0(&out_);
+    reading::JsonBuilder j0(&out_);
     j0.str("type", "hello")
         .str("version", "0.1.0")
-        .str("model", model_.name())
+        .str("model", instrument_.model().name())
         .integer("records", rec.records)
         .integer("last_id", rec.lastId)
         .integer("recovered_cut_bytes", static_cast<long long>(rec.cutBytes))
@@ -146,7 +136,7 @@ void Device::pollCamera()
 {
     if (!cameraHealth_.poll()) return;
     out_.clear();
-    JsonBuilder j(&out_);
+    reading::JsonBuilder j(&out_);
     j.str("type", "camera");
     appendCameraStatus(j);
     j.end();
@@ -154,7 +144,7 @@ void Device::pollCamera()
     showIdle("camera found");
 }
 
-void Device::appendCameraStatus(JsonBuilder &j) const
+void Device::appendCameraStatus(reading::JsonBuilder &j) const
 {
     j.str("camera", CameraHealth::stateName(cameraHealth_.state()));
     if (!cameraHealth_.ok()) j.str("camera_problem", cameraHealth_.problem());
@@ -238,7 +228,7 @@ void Device::handleLine(std::string_view line)
 void Device::handleCommand(const Command &c)
 {
     out_.clear();
-    JsonBuilder j(&out_);
+    reading::JsonBuilder j(&out_);
     switch (c.kind) {
     case CommandKind::Help:
         j.str("type", "help")
@@ -257,7 +247,7 @@ void Device::handleCommand(const Command &c)
             .integer("uptime_ms", hal_.clock.monotonicMs() - startMs_)
             .integer("free_bytes", free.ok() ? (long long)free.value : -1)
             .boolean("led", hal_.led.isOn())
-            .str("model", model_.name());
+            .str("model", instrument_.model().name());
         appendCameraStatus(j);
         break;
     }
@@ -292,46 +282,10 @@ void Device::handleCommand(const Command &c)
         }
         break;
     }
-    case CommandKind::Set: {
-        Config trial = cfg_;
-        std::string err = setConfigKey(&trial, c.key, c.value, true);
-        if (err.empty()) err = specimenIssue(trial);
-        if (err.empty() && liveKeyName(c.key) == "calibration_file") err = setCalibrationFile(&trial);
-        if (!err.empty()) {
-            sendError("bad_argument", err, c.tag);
-            return;
-        }
-        cfg_ = trial;
-        persistSettings();
-        std::string v;
-        bool num = false;
-        getConfigKey(cfg_, c.key, &v, &num);
-        j.str("type", "settings");
-        num ? j.raw(c.key, v) : j.str(c.key, v);
-        showIdle("");
+    case CommandKind::Set:
+        if (!applySetting(c, j)) return;
         break;
-    }
-    case CommandKind::Results: {
-        const size_t have = journal_.recentCount();
-        const size_t n = std::min(have, size_t(c.count));
-        j.str("type", "results").integer("count", static_cast<long long>(n));
-        if (!c.tag.empty()) j.str("tag", c.tag);
-        j.end();
-        send(out_);
-        for (size_t i = have - n; i < have; ++i) {
-            // Measurements come back as records; scale checks as they were sent.
-            const std::string_view line = journal_.recent(i), result = "{\"type\":\"result\"";
-            if (line.substr(0, result.size()) == result) {
-                out_.assign("{\"type\":\"record\"");
-                out_.append(line.substr(result.size()));
-            } else {
-                out_.assign(line);
-            }
-            out_.push_back('\n');
-            send(out_);
-        }
-        return;
-    }
+    case CommandKind::Results: sendResults(c, j); return;
     case CommandKind::ScaleCheck:
         if (aimUntilMs_ >= 0) stopAim("scalecheck");
         scaleCheck(c);
@@ -342,26 +296,65 @@ void Device::handleCommand(const Command &c)
     send(out_);
 }
 
+bool Device::applySetting(const Command &c, reading::JsonBuilder &j)
+{
+    Config trial = cfg_;
+    std::string err = setConfigKey(&trial, c.key, c.value, true);
+    if (err.empty()) err = specimenIssue(trial);
+    if (err.empty() && liveKeyName(c.key) == "calibration_file") err = setCalibrationFile(&trial);
+    if (!err.empty()) {
+        sendError("bad_argument", err, c.tag);
+        return false;
+    }
+    cfg_ = trial;
+    persistSettings();
+    std::string v;
+    bool num = false;
+    getConfigKey(cfg_, c.key, &v, &num);
+    j.str("type", "settings");
+    num ? j.raw(c.key, v) : j.str(c.key, v);
+    showIdle("");
+    return true;
+}
+
+void Device::sendResults(const Command &c, reading::JsonBuilder &j)
+{
+    const size_t have = journal_.recentCount();
+    const size_t n = std::min(have, size_t(c.count));
+    j.str("type", "results").integer("count", static_cast<long long>(n));
+    if (!c.tag.empty()) j.str("tag", c.tag);
+    j.end();
+    send(out_);
+    for (size_t i = have - n; i < have; ++i) {
+        // Measurements come back as records; scale checks as they were sent.
+        const std::string_view line = journal_.recent(i), result = "{\"type\":\"result\"";
+        if (line.substr(0, result.size()) == result) {
+            out_.assign("{\"type\":\"record\"");
+            out_.append(line.substr(result.size()));
+        } else {
+            out_.assign(line);
+        }
+        out_.push_back('\n');
+        send(out_);
+    }
+}
+
 void Device::measure(const char *origin, const std::string &tag)
 {
     const int64_t t0 = hal_.clock.monotonicMs();
     const long id = lastId_ + 1;
     drawBusy(&screen_, id);
     showOrLog(screen_);
-    Measurement m;
+    reading::Reading m;
     std::string problem;
     hal::CapturedFrame frame;
     vision::LumaView luma;
     const bool captured = captureFrame(&frame, &luma, &problem);
     if (captured && problem.empty()) {
-        vision::SpecimenSpec spec = specimenSpec(cfg_);
-        if (cal_.present) {
-            // The interpreter puts the end face's plane at the reading's final height.
-            problem = frameSizeIssue(cal_, luma.width, luma.height);
-            plane_ = cal_.file.plane;
-            spec.calibration = &plane_;
-        }
-        if (problem.empty()) m = analyzer_.measure(luma, spec, model_);
+        if (std::string issue = instrument_.frameSizeIssue(luma.width, luma.height); !issue.empty())
+            problem = "calibration '" + cal_.name + "': " + issue;
+        else
+            m = instrument_.read(luma, specimenSpec(cfg_));
     }
 
     state_ = State::Report;
@@ -424,10 +417,15 @@ bool Device::captureFrame(hal::CapturedFrame *frame, vision::LumaView *luma, std
 
     state_ = State::Measure;
     if (captured) {
-        const vision::ErrorCode le = vision::lumaOf(frame->view, lumaScratch_.get(), lumaScratchBytes_, luma);
+        const vision::ErrorCode le = frameLuma(frame->view, lumaScratch_.get(), lumaScratchBytes_, luma);
         if (le != vision::ErrorCode::None) *problem = std::string("frame: ") + vision::errorMessage(le);
     }
     return captured;
+}
+
+void Device::useCalibration(const DeviceCalibration &cal)
+{
+    instrument_.setCalibration(cal.present ? &cal.file.plane : nullptr, cal.file.imageWidth, cal.file.imageHeight);
 }
 
 std::string Device::setCalibrationFile(Config *trial)
@@ -438,6 +436,7 @@ std::string Device::setCalibrationFile(Config *trial)
     DeviceCalibration d;
     if (std::string e = loadDeviceCalibration(*trial, &d); !e.empty()) return e;
     cal_ = d;
+    useCalibration(cal_);
     return "";
 }
 
@@ -468,7 +467,7 @@ void Device::scaleCheck(const Command &c)
                 e.code == hal::Errc::Full ? "storage full: image not saved" : "image not saved: " + e.message;
     }
     out_.clear();
-    JsonBuilder j(&out_);
+    reading::JsonBuilder j(&out_);
     char when[96];
     isoTime(hal_.clock.wallMs(), when);
     const char *status = !problem.empty() || !r.measured ? "error" : r.pass ? "pass" : "fail";
@@ -497,26 +496,49 @@ void Device::scaleCheck(const Command &c)
     state_ = State::Idle;
 }
 
-vision::SpecimenSpec specimenSpec(const Config &c)
+reading::SpecimenSpec specimenSpec(const Config &c)
 {
-    vision::SpecimenSpec s;
-    s.n = c.n, s.kMpa = c.kMpa, s.d0Mm = c.d0Mm, s.h0Mm = c.h0Mm, s.mmPerPx = c.mmPerPx, s.hFinalMm = c.hFinalMm;
-    s.tolerances.n = c.nTol, s.tolerances.hFinalMm = c.hFinalTolMm, s.tolerances.scaleRel = c.mmPerPxTolRel;
-    s.tolerance.absMu = c.toleranceMu, s.tolerance.relMu = c.toleranceRel;
+    // The config's keys under their manifest names (Config's aliases), each value printed
+    // exactly (17 digits round-trip a double); the config checked their ranges already.
+    const std::pair<const char *, double> values[] = {
+        {"n", c.n},
+        {"mm_per_px", c.mmPerPx},
+        {"k_mpa", c.kMpa},
+        {"d0_mm", c.d0Mm},
+        {"h0_mm", c.h0Mm},
+        {"h_final_mm", c.hFinalMm},
+        {"mm_per_px_tol", c.mmPerPxTolRel},
+        {"h_final_tol_mm", c.hFinalTolMm},
+        {"n_tol", c.nTol},
+        {"tolerance_mu", c.toleranceMu},
+        {"tolerance_rel", c.toleranceRel},
+    };
+    char text[40];
+    auto lookup = [&values, &text](std::string_view key) -> const char * {
+        for (const auto &[name, value] : values)
+            if (key == name) {
+                std::snprintf(text, sizeof text, "%.17g", value);
+                return text;
+            }
+        return nullptr;
+    };
+    reading::SpecimenSpec s;
+    std::string why;
+    reading::specimenFromFields(lookup, false, &s, &why);
     return s;
 }
 
-void Device::buildRecord(long id, const char *origin, const std::string &tag, const Measurement &m,
+void Device::buildRecord(long id, const char *origin, const std::string &tag, const reading::Reading &m,
                          std::string_view problem, const hal::CapturedFrame *frame, std::string_view image, long ms)
 {
     out_.clear();
-    JsonBuilder j(&out_);
+    reading::JsonBuilder j(&out_);
     char when[96];
     isoTime(hal_.clock.wallMs(), when);
     j.str("type", "result").integer("id", id);
-    JsonRecordSink sink(&j);
+    reading::JsonRecordSink sink(&j);
     // A frame never measured (capture, LED or calibration problem) is a record without a reading.
-    vision::writeReading(problem.empty() ? &m : nullptr, problem, model_.name(), sink);
+    reading::writeReading(problem.empty() ? &m : nullptr, problem, instrument_.model().name(), sink);
     j.str("time", when);
     j.str("image", image).str("source", frame ? std::string_view(frame->source) : std::string_view());
     j.num("n", cfg_.n)
@@ -587,7 +609,7 @@ void Device::showOrLog(const hal::MonoBitmap &bmp)
 void Device::sendError(const char *code, std::string_view message, std::string_view tag)
 {
     std::string line;
-    JsonBuilder j(&line);
+    reading::JsonBuilder j(&line);
     j.str("type", "error").str("code", code).str("message", message);
     if (!tag.empty()) j.str("tag", tag);
     j.end();

@@ -21,12 +21,13 @@
 #include "hal/serial_port.h"
 #include "hal/storage.h"
 #include "hal/trigger_button.h"
-#include "vision/end_face_analyzer.h"
+#include "reading/instrument.h"
 
 namespace icacam::fw {
 
-// What the config declares about the specimen and the tolerances, as the interpreter takes it.
-vision::SpecimenSpec specimenSpec(const Config &c);
+// What the config declares about the specimen and the tolerances, as the instrument takes it
+// (through reading::specimenFromFields, as a manifest row's columns are).
+reading::SpecimenSpec specimenSpec(const Config &c);
 
 struct DeviceHal {
     hal::Camera &camera;
@@ -61,12 +62,19 @@ private:
     void pollSerial();
     void handleLine(std::string_view line);
     void handleCommand(const Command &c);
+    // `set KEY VALUE`: tried on a copy of the config, kept and saved when valid, the new
+    // value into j; false when refused (the error already sent).
+    bool applySetting(const Command &c, reading::JsonBuilder &j);
+    // `results [N]`: the header line (started in j), then the last N journal lines.
+    void sendResults(const Command &c, reading::JsonBuilder &j);
     void measure(const char *origin, const std::string &tag);
     void scaleCheck(const Command &c);
     // LED on, capture, LED off: the frame as luma, or the problem in words.
     bool captureFrame(hal::CapturedFrame *frame, vision::LumaView *luma, std::string *problem);
     // Loads trial's calibration.file into cal_ ("none" clears it); "" or why not.
     std::string setCalibrationFile(Config *trial);
+    // Hands the loaded calibration (or none) to the instrument.
+    void useCalibration(const DeviceCalibration &cal);
     void sendError(const char *code, std::string_view message, std::string_view tag);
     void send(std::string_view line);
     void showIdle(std::string_view note);
@@ -81,11 +89,11 @@ private:
     void snapshot(const Command &c);
     // Measures the frame in luma for aim and snapshot (the same specimen and scale as a
     // measurement).
-    vision::Measurement measureForSetup(const vision::LumaView &luma);
+    reading::Reading measureForSetup(const vision::LumaView &luma);
     // The camera's state for `hello`, `status` and the camera line sent when it comes back.
-    void appendCameraStatus(JsonBuilder &j) const;
+    void appendCameraStatus(reading::JsonBuilder &j) const;
     void pollCamera();
-    void buildRecord(long id, const char *origin, const std::string &tag, const vision::Measurement &m,
+    void buildRecord(long id, const char *origin, const std::string &tag, const reading::Reading &m,
                      std::string_view problem, const hal::CapturedFrame *frame, std::string_view image, long ms);
     hal::Error saveImage(std::string_view name, const vision::LumaView &v);
     void persistSettings();
@@ -93,8 +101,7 @@ private:
 
     DeviceHal hal_;
     Config cfg_;
-    const friction::FrictionModel &model_;
-    vision::EndFaceAnalyzer analyzer_;
+    reading::Instrument instrument_;
     CameraHealth cameraHealth_;
     int64_t triggerMs_ = 0;   // when the frame being measured was asked for
     int64_t aimUntilMs_ = -1; // aim mode runs until then (-1: off)
@@ -113,7 +120,6 @@ private:
     hal::MonoBitmap screen_;
     std::string lastProblem_;
     DeviceCalibration cal_;               // calibration.file, read at start and on `set`
-    vision::PlaneCalibration plane_;      // cal_ at the current specimen's end-face height
     std::unique_ptr<uint8_t[]> discWork_; // the scale check's disc finder
 };
 

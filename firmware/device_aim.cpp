@@ -3,6 +3,7 @@
 
 #include "firmware/aim_view.h"
 #include "firmware/device.h"
+#include "firmware/frame_luma.h"
 #include "firmware/screen.h"
 #include "firmware/snapshot_png.h"
 
@@ -12,14 +13,11 @@ namespace {
 constexpr int64_t kAimPeriodMs = 250; // four pictures a second: enough to turn a focus ring by
 } // namespace
 
-vision::Measurement Device::measureForSetup(const vision::LumaView &luma)
+reading::Reading Device::measureForSetup(const vision::LumaView &luma)
 {
-    // The specimen as configured, in pixels: the set-up is judged without the calibration's
-    // plane mapping (the boundaries are drawn in the image).
-    vision::SpecimenSpec spec{cfg_.n, cfg_.kMpa, cfg_.d0Mm, cfg_.h0Mm, cfg_.mmPerPx, cfg_.hFinalMm};
-    if (!(spec.mmPerPx > 0) && cal_.present)
-        spec.mmPerPx = vision::planeScaleAt(cal_.file.plane, 0.5 * (luma.width - 1), 0.5 * (luma.height - 1));
-    return analyzer_.measure(luma, spec, model_);
+    // The specimen as configured, read as a measurement reads it (the boundaries are drawn
+    // in the image from the reading's geometry).
+    return instrument_.read(luma, specimenSpec(cfg_));
 }
 
 void Device::startAim(int seconds, const std::string &tag)
@@ -46,7 +44,7 @@ void Device::startAim(int seconds, const std::string &tag)
     }
     aimUntilMs_ = now + int64_t(seconds) * 1000;
     out_.clear();
-    JsonBuilder j(&out_);
+    reading::JsonBuilder j(&out_);
     j.str("type", "aim").str("state", "on").integer("seconds", seconds);
     if (!tag.empty()) j.str("tag", tag);
     j.end();
@@ -60,7 +58,7 @@ void Device::stopAim(const char *why)
     aimUntilMs_ = -1;
     (void)hal_.led.set(false);
     out_.clear();
-    JsonBuilder j(&out_);
+    reading::JsonBuilder j(&out_);
     j.str("type", "aim").str("state", "off").str("by", why).integer("pictures", aimFrames_);
     if (!aimTag_.empty()) j.str("tag", aimTag_);
     j.end();
@@ -83,7 +81,7 @@ void Device::aimTick()
     vision::LumaView luma;
     std::string problem = e.ok() ? "" : std::string("camera ") + hal::errcName(e.code) + ": " + e.message;
     if (problem.empty())
-        if (const vision::ErrorCode le = vision::lumaOf(frame.view, lumaScratch_.get(), lumaScratchBytes_, &luma);
+        if (const vision::ErrorCode le = frameLuma(frame.view, lumaScratch_.get(), lumaScratchBytes_, &luma);
             le != vision::ErrorCode::None)
             problem = std::string("frame: ") + vision::errorMessage(le);
     if (!problem.empty()) {
@@ -93,13 +91,13 @@ void Device::aimTick()
         if (!cameraHealth_.ok()) stopAim("camera");
         return;
     }
-    const vision::Measurement m = measureForSetup(luma);
+    const reading::Reading m = measureForSetup(luma);
     const AimReading r = aimReading(luma, m);
     ++aimFrames_;
     drawAim(&screen_, luma, r);
     showOrLog(screen_);
     out_.clear();
-    JsonBuilder j(&out_);
+    reading::JsonBuilder j(&out_);
     j.str("type", "aim").integer("picture", aimFrames_).num("focus", r.focus, 4).boolean("found", r.found);
     if (r.found) {
         j.num("x", r.centreX, 5)
@@ -127,7 +125,7 @@ void Device::snapshot(const Command &c)
         state_ = State::Idle;
         return;
     }
-    const vision::Measurement m = measureForSetup(luma);
+    const reading::Reading m = measureForSetup(luma);
     const AimReading r = aimReading(luma, m);
     // Named by the next record id it would take and the time, so snapshots sort with the
     // journal without using up an id.
@@ -146,10 +144,10 @@ void Device::snapshot(const Command &c)
         return;
     }
     out_.clear();
-    JsonBuilder j(&out_);
+    reading::JsonBuilder j(&out_);
     j.str("type", "snapshot").str("image", name).integer("width", luma.width).integer("height", luma.height);
     j.integer("bytes", static_cast<long long>(image_.size())).boolean("found", r.found).num("focus", r.focus, 4);
-    j.str("hint", r.hint).str("status", vision::statusName(m.status));
+    j.str("hint", r.hint).str("status", reading::statusName(m.status));
     if (!m.hasValue()) j.str("message", vision::errorMessage(m.error));
     j.str("source", frame.source);
     if (!c.tag.empty()) j.str("tag", c.tag);

@@ -3,30 +3,9 @@
 #include <array>
 #include <cstdio>
 
-#include "firmware/json_line.h"
+#include "reading/record_line.h"
 
 namespace icacam::fw {
-
-namespace {
-constexpr std::string_view kCrcKey = ",\"crc32\":\"";
-}
-
-uint32_t crc32(std::string_view data)
-{
-    // IEEE 802.3 polynomial, reflected, table built once at compile time.
-    static constexpr auto kTable = [] {
-        std::array<uint32_t, 256> t{};
-        for (uint32_t i = 0; i < 256; ++i) {
-            uint32_t c = i;
-            for (int k = 0; k < 8; ++k) c = (c & 1u) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
-            t[i] = c;
-        }
-        return t;
-    }();
-    uint32_t c = 0xFFFFFFFFu;
-    for (char ch : data) c = kTable[(c ^ uint8_t(ch)) & 0xFFu] ^ (c >> 8);
-    return c ^ 0xFFFFFFFFu;
-}
 
 Journal::Journal(hal::Storage &storage, int memory) : storage_(storage), ring_(size_t(memory > 0 ? memory : 1))
 {
@@ -43,16 +22,11 @@ void Journal::remember(std::string_view line)
 
 long Journal::checkLine(std::string_view line)
 {
-    const size_t at = line.rfind(kCrcKey);
-    if (at == std::string_view::npos || line.size() != at + kCrcKey.size() + 10) return -1;
-    if (line.substr(line.size() - 2) != "\"}") return -1;
-    char want[9];
-    std::snprintf(want, sizeof want, "%08x", crc32(line.substr(0, at)));
-    if (line.substr(at + kCrcKey.size(), 8) != want) return -1;
-    FlatObject obj;
-    if (!parseFlatObject(line, &obj).empty()) return -1;
-    const JsonField *id = obj.find("id");
-    if (!id || id->type != JsonField::Type::Number || id->number < 1) return -1;
+    if (!reading::recordLineIntact(line)) return -1;
+    reading::FlatObject obj;
+    if (!reading::parseFlatObject(line, &obj).empty()) return -1;
+    const reading::JsonField *id = obj.find("id");
+    if (!id || id->type != reading::JsonField::Type::Number || id->number < 1) return -1;
     return long(id->number);
 }
 
@@ -96,9 +70,7 @@ hal::Error Journal::append(std::string_view record)
     if (record.size() < 3 || record.substr(record.size() - 2) != "}\n")
         return hal::Error::make(hal::Errc::Invalid, "journal record must be one JSON object line");
     line_.assign(record.substr(0, record.size() - 2));
-    char tail[32];
-    std::snprintf(tail, sizeof tail, "%.*s%08x\"}", int(kCrcKey.size()), kCrcKey.data(), crc32(line_));
-    line_.append(tail);
+    reading::sealRecordLine(&line_);
     line_.push_back('\n');
     if (hal::Error e = storage_.append(kFile, line_); !e.ok()) return e;
     line_.pop_back();

@@ -13,8 +13,6 @@
 
 namespace icacam::fw {
 
-uint32_t crc32(std::string_view data);
-
 struct JournalRecovery {
     long records = 0;      // intact records found
     long lastId = 0;       // highest record id (0 when empty)

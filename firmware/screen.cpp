@@ -23,19 +23,20 @@ const char *shortError(ErrorCode c)
     case ErrorCode::InnerEdgeNotFound: return "inner edge not found";
     case ErrorCode::Blurred: return "image blurred";
     case ErrorCode::InconsistentRing: return "edges out of order";
+    case ErrorCode::CalibrationSize: return "calibration size";
     }
     return "unknown error";
 }
 
 const char *shortFlag(int bit)
 {
-    static const char *const kWords[vision::kFlagCount] = {
+    static const char *const kWords[reading::kFlagCount] = {
         "n outside 0.05-0.5", "K outside model",   "mu below model",     "mu above model",  "u outside model",
         "low contrast",       "edge coverage low", "edges scatter",      "image blurred",   "saturated",
         "specimen clipped",   "elliptical",        "not concentric",     "check scale",     "narrow ring",
         "no silhouette",      "reduction outside", "radii inconsistent", "H0/D0 outside",   "edges uncertain",
         "scale uncertain",    "give final height", "n tolerance wide",   "model uncertain", "silhouette unusable"};
-    return bit >= 0 && bit < vision::kFlagCount ? kWords[bit] : "check";
+    return bit >= 0 && bit < reading::kFlagCount ? kWords[bit] : "check";
 }
 
 namespace {
@@ -78,11 +79,11 @@ void drawBusy(hal::MonoBitmap *bmp, long id)
     drawText(bmp, 0, 3, "measuring...");
 }
 
-void drawResult(hal::MonoBitmap *bmp, long id, const vision::Measurement &m, std::string_view note)
+void drawResult(hal::MonoBitmap *bmp, long id, const reading::Reading &m, std::string_view note)
 {
     bmp->clear();
     char line[64];
-    std::snprintf(line, sizeof line, "#%ld %s", id, vision::statusName(m.status));
+    std::snprintf(line, sizeof line, "#%ld %s", id, reading::statusName(m.status));
     drawText(bmp, 0, 0, line);
     if (!m.hasValue()) {
         wrap(bmp, 2, 5, shortError(m.error));
@@ -91,10 +92,10 @@ void drawResult(hal::MonoBitmap *bmp, long id, const vision::Measurement &m, std
         drawText(bmp, 0, 2, line);
         std::snprintf(line, sizeof line, "u=%.3f mm", m.uMm);
         drawText(bmp, 0, 3, line);
-        std::snprintf(line, sizeof line, "Ri=%.3f Ro=%.3f", m.rInnerMm, m.rOuterMm);
+        std::snprintf(line, sizeof line, "Ri=%.3f Ro=%.3f", m.rInnerMm(), m.rOuterMm());
         drawText(bmp, 0, 4, line);
         int row = 5;
-        for (int b = 0; b < vision::kFlagCount && row <= 6; ++b)
+        for (int b = 0; b < reading::kFlagCount && row <= 6; ++b)
             if (m.flags & (1u << b)) drawText(bmp, 0, row++, shortFlag(b));
     }
     if (!note.empty()) drawText(bmp, 0, 7, note);

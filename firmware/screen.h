@@ -5,7 +5,7 @@
 
 #include "firmware/config.h"
 #include "hal/display.h"
-#include "vision/measurement.h"
+#include "reading/reading.h"
 
 namespace icacam::fw {
 
@@ -15,7 +15,7 @@ const char *shortFlag(int bit);
 
 void drawIdle(hal::MonoBitmap *bmp, const Config &cfg, long records, std::string_view note);
 void drawBusy(hal::MonoBitmap *bmp, long id);
-void drawResult(hal::MonoBitmap *bmp, long id, const vision::Measurement &m, std::string_view note);
+void drawResult(hal::MonoBitmap *bmp, long id, const reading::Reading &m, std::string_view note);
 // A device-level problem (camera timeout, storage full …): title and words, wrapped.
 void drawProblem(hal::MonoBitmap *bmp, std::string_view title, std::string_view words);
 void drawSettings(hal::MonoBitmap *bmp, const Config &cfg);

@@ -69,12 +69,13 @@ void quietPng(png_structp, png_const_charp) {}
 
 } // namespace
 
-std::string encodeSnapshotPng(const vision::LumaView &v, const vision::Measurement &m, std::string *out)
+std::string encodeSnapshotPng(const vision::LumaView &v, const reading::Reading &r, std::string *out)
 {
     if (!v.valid()) return "snapshot: no frame";
     // Everything with a destructor exists before setjmp, so a longjmp skips none.
     Marks marks{{}, v.width, v.height, v.width >= 1200 ? 1 : 0};
-    if (m.hasValue() || m.outer.rEqPx > 0) {
+    const vision::EndFaceGeometry &m = r.geometry;
+    if (r.hasValue() || m.outer.rEqPx > 0) {
         marks.points(m.outerPoints, m.rayCount, kYellow);
         marks.points(m.innerPoints, m.rayCount, kYellow);
         marks.curve(m.outer, m.centreX, m.centreY, kGreen);

@@ -6,12 +6,12 @@
 // full-frame copy is made.
 #include <string>
 
+#include "reading/reading.h"
 #include "vision/luma_view.h"
-#include "vision/measurement.h"
 
 namespace icacam::fw {
 
 // Appends the PNG to *out. Returns "" or what went wrong.
-std::string encodeSnapshotPng(const vision::LumaView &v, const vision::Measurement &m, std::string *out);
+std::string encodeSnapshotPng(const vision::LumaView &v, const reading::Reading &m, std::string *out);
 
 } // namespace icacam::fw

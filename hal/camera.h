@@ -11,12 +11,12 @@
 #include <string>
 
 #include "hal/error.h"
-#include "vision/luma_view.h"
+#include "hal/frame.h"
 
 namespace icacam::hal {
 
 struct CameraFormat {
-    vision::PixelFormat format = vision::PixelFormat::Grey8;
+    PixelFormat format = PixelFormat::Grey8;
     int maxWidth = 0;
     int maxHeight = 0;
 };
@@ -40,7 +40,7 @@ struct CaptureRequest {
 };
 
 struct CapturedFrame {
-    vision::FrameView view;
+    FrameView view;
     int64_t timestampMs = 0; // Clock::monotonicMs() time the exposure started (first row)
     // Exposure start minus CaptureRequest::notBeforeMs, microseconds (>= 0 for a frame
     // handed out; -1 unknown). For V4L2 a lower bound of the start (fresh_frame.h).

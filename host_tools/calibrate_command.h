@@ -1,6 +1,7 @@
 #pragma once
-// `icacam calibrate`: camera intrinsics, distortion and the fixture plane's pose from
-// photos of a chessboard or circle grid, written to a calibration file.
+// `icacam calibrate`: the options of a camera calibration (host_tools/camera_calibrator.h:
+// intrinsics, distortion and the fixture plane's pose from photos of a chessboard or circle
+// grid), written to a calibration file.
 #include <string>
 #include <vector>
 

@@ -21,6 +21,7 @@ namespace icacam::host {
 
 namespace fs = std::filesystem;
 using namespace icacam::friction;
+using namespace icacam::reading;
 using namespace icacam::vision;
 
 namespace {
@@ -59,8 +60,9 @@ std::string usage()
            "(docs/uncertainty.md).\n";
 }
 
-void drawOverlay(const cv::Mat &luma, const Measurement &m, const std::string &path)
+void drawOverlay(const cv::Mat &luma, const reading::Reading &reading, const std::string &path)
 {
+    const vision::EndFaceGeometry &m = reading.geometry;
     cv::Mat bgr;
     cv::cvtColor(luma, bgr, cv::COLOR_GRAY2BGR);
     auto curve = [&](const BoundaryFit &f, cv::Scalar colour) {
@@ -83,7 +85,8 @@ void drawOverlay(const cv::Mat &luma, const Measurement &m, const std::string &p
     curve(m.outer, {0, 0, 255});
     if (m.rMaxPx > 0) cv::circle(bgr, {int(m.centreX), int(m.centreY)}, int(m.rMaxPx), {0, 255, 0}, 1, cv::LINE_AA);
     char text[160];
-    std::snprintf(text, sizeof text, "mu=%.4f +- %.4f  u=%.4f mm  %s", m.mu, m.muSigma, m.uMm, statusName(m.status));
+    std::snprintf(text, sizeof text, "mu=%.4f +- %.4f  u=%.4f mm  %s", reading.mu, reading.muSigma, reading.uMm,
+                  statusName(reading.status));
     cv::putText(bgr, text, {20, 40}, cv::FONT_HERSHEY_SIMPLEX, 1.0, {0, 255, 255}, 2);
     cv::imwrite(path, bgr);
 }
@@ -145,7 +148,7 @@ int measureCommand(const std::vector<std::string> &args)
         r.id = row.get("id", "line" + std::to_string(row.line));
         r.model = model->name();
         measurer.measure(row, manifest, &reading, repeat);
-        const Measurement &m = reading.m;
+        const reading::Reading &m = reading.reading;
         if (reading.measured) {
             r.m = &m;
             if (!overlayDir.empty() && m.hasValue())

@@ -5,13 +5,11 @@
 namespace icacam::host {
 
 namespace fs = std::filesystem;
-using namespace icacam::friction;
-using namespace icacam::vision;
+using namespace icacam::reading;
 
-RecordMeasurer::RecordMeasurer(const FrictionModel &model, const SpecimenSpec &defaults)
-        : model_(model), defaults_(defaults)
+RecordMeasurer::RecordMeasurer(const friction::FrictionModel &model, const SpecimenSpec &defaults) : defaults_(defaults)
 {
-    analyzer_.configure(16384, 16384); // working memory does not grow with the frame
+    instrument_.configure(16384, 16384, model); // working memory does not grow with the frame
 }
 
 bool parseTolerance(const std::string &text, ReadingTolerance *t)
@@ -25,56 +23,58 @@ bool parseTolerance(const std::string &text, ReadingTolerance *t)
     return true;
 }
 
-bool RecordMeasurer::readSpec(const ManifestRow &row, SpecimenSpec *spec, std::string *why) const
+bool RecordMeasurer::readSpec(const ManifestRow &row, bool needsScale, SpecimenSpec *spec, std::string *why) const
 {
-    auto number = [&](const char *key, bool required, double *v, double min = -1e300) {
-        if (!row.has(key) || row.get(key).empty()) {
-            if (required) *why = std::string("missing ") + key;
-            return !required;
-        }
-        if (!parseNumber(row.get(key), v)) {
-            *why = std::string("bad number in ") + key + ": '" + row.get(key) + "'";
-            return false;
-        }
-        if (*v < min) {
-            *why = std::string(key) + " must not be negative";
-            return false;
-        }
-        return true;
-    };
     *spec = defaults_;
-    const bool calibrated = row.has("calibration") && !row.get("calibration").empty();
-    DeclaredTolerances &dt = spec->tolerances;
-    ReadingTolerance &rt = spec->tolerance;
-    if (!(number("n", true, &spec->n) && number("mm_per_px", !calibrated, &spec->mmPerPx) &&
-          number("k_mpa", false, &spec->kMpa) && number("d0_mm", false, &spec->d0Mm) &&
-          number("h0_mm", false, &spec->h0Mm) && number("h_final_mm", false, &spec->hFinalMm, 0) &&
-          number("mm_per_px_tol", false, &dt.scaleRel, 0) && number("h_final_tol_mm", false, &dt.hFinalMm, 0) &&
-          number("n_tol", false, &dt.n, 0) && number("tolerance_mu", false, &rt.absMu, 0) &&
-          number("tolerance_rel", false, &rt.relMu, 0)))
-        return false;
-    if (!(spec->mmPerPx > 0) && !(calibrated && spec->mmPerPx == 0)) {
-        *why = "mm_per_px must be positive";
+    std::string text; // the looked-up value, held until the next lookup
+    auto lookup = [&row, &text](std::string_view key) -> const char * {
+        const std::string k(key);
+        if (!row.has(k)) return nullptr;
+        text = row.get(k);
+        return text.c_str();
+    };
+    return specimenFromFields(lookup, needsScale, spec, why);
+}
+
+// The row's calibration file (read once per path), set on the instrument; false with *why
+// set when it cannot be read or is for another image size.
+bool RecordMeasurer::useCalibration(const ManifestRow &row, const Manifest &manifest, int width, int height,
+                                    std::string *why)
+{
+    if (!row.has("calibration") || row.get("calibration").empty()) {
+        instrument_.setCalibration(nullptr, 0, 0);
+        return true;
+    }
+    fs::path c = row.get("calibration");
+    if (c.is_relative()) c = fs::path(manifest.baseDir) / c;
+    auto it = calibrations_.find(c.string());
+    if (it == calibrations_.end()) {
+        calibration::CalibrationFile file;
+        const std::string e = calibration::readCalibrationFile(c.string(), &file);
+        it = calibrations_.emplace(c.string(), std::make_pair(file, e)).first;
+    }
+    const calibration::CalibrationFile &file = it->second.first;
+    if (!it->second.second.empty()) {
+        *why = it->second.second;
         return false;
     }
-    if (!(spec->h0Mm > 0)) {
-        *why = "h0_mm must be positive";
-        return false;
-    }
-    return true;
+    instrument_.setCalibration(&file.plane, file.imageWidth, file.imageHeight);
+    *why = instrument_.frameSizeIssue(width, height);
+    return why->empty();
 }
 
 void RecordMeasurer::measure(const ManifestRow &row, const Manifest &manifest, RecordReading *out, long repeat)
 {
     out->measured = false;
     out->message.clear();
-    out->m = Measurement{};
+    out->reading = Reading{};
     if (!row.error.empty()) {
         out->message = "manifest line " + std::to_string(row.line) + ": " + row.error;
         return;
     }
     SpecimenSpec &spec = out->spec;
-    if (!readSpec(row, &spec, &out->message)) return;
+    const bool calibrated = row.has("calibration") && !row.get("calibration").empty();
+    if (!readSpec(row, !calibrated, &spec, &out->message)) return;
     if (!row.has("image") || row.get("image").empty()) {
         out->message = "missing image";
         return;
@@ -86,28 +86,9 @@ void RecordMeasurer::measure(const ManifestRow &row, const Manifest &manifest, R
         return;
     }
     const cv::Mat &luma = out->image.luma;
-    if (row.has("calibration") && !row.get("calibration").empty()) {
-        fs::path c = row.get("calibration");
-        if (c.is_relative()) c = fs::path(manifest.baseDir) / c;
-        auto it = calibrations_.find(c.string());
-        if (it == calibrations_.end()) {
-            calibration::CalibrationFile file;
-            const std::string e = calibration::readCalibrationFile(c.string(), &file);
-            it = calibrations_.emplace(c.string(), std::make_pair(file, e)).first;
-        }
-        const calibration::CalibrationFile &file = it->second.first;
-        if (!it->second.second.empty())
-            out->message = it->second.second;
-        else if (file.imageWidth != luma.cols || file.imageHeight != luma.rows)
-            out->message = "calibration is for " + std::to_string(file.imageWidth) + "x" +
-                           std::to_string(file.imageHeight) + " images, this one is " + std::to_string(luma.cols) +
-                           "x" + std::to_string(luma.rows);
-        if (!out->message.empty()) return;
-        plane_ = file.plane;
-        spec.calibration = &plane_;
-    }
-    const LumaView view{luma.data, luma.cols, luma.rows, int(luma.step[0]), 1};
-    for (long k = 0; k < repeat; ++k) out->m = analyzer_.measure(view, spec, model_);
+    if (!useCalibration(row, manifest, luma.cols, luma.rows, &out->message)) return;
+    const vision::LumaView view{luma.data, luma.cols, luma.rows, int(luma.step[0]), 1};
+    for (long k = 0; k < repeat; ++k) out->reading = instrument_.read(view, spec);
     out->measured = true;
 }
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "vision/reading_record.h"
+#include "reading/reading_record.h"
 
 namespace icacam::host {
 
@@ -41,7 +41,7 @@ std::string fixed(double v, int decimals)
     return b;
 }
 
-class CsvSink final : public vision::RecordSink {
+class CsvSink final : public reading::RecordSink {
 public:
     explicit CsvSink(std::string *line) : line_(line) {}
     void text(const char *, std::string_view v) override { *line_ += "," + csvQuote(v); }
@@ -52,7 +52,7 @@ private:
     std::string *line_;
 };
 
-class JsonSink final : public vision::RecordSink {
+class JsonSink final : public reading::RecordSink {
 public:
     explicit JsonSink(std::string *line) : line_(line) {}
     void text(const char *k, std::string_view v) override { *line_ += "," + jsonQuote(k) + ":" + jsonQuote(v); }
@@ -68,14 +68,14 @@ private:
 std::vector<std::string> ResultWriter::columns()
 {
     std::vector<std::string> c{"id"};
-    for (int i = 0; i < vision::readingFieldCount(); ++i) c.emplace_back(vision::readingFieldName(i));
+    for (int i = 0; i < reading::readingFieldCount(); ++i) c.emplace_back(reading::readingFieldName(i));
     return c;
 }
 
 std::string ResultWriter::flagList(uint32_t flags)
 {
     char b[512];
-    vision::flagList(flags, b, sizeof b);
+    reading::flagList(flags, b, sizeof b);
     return b;
 }
 
@@ -93,12 +93,12 @@ void ResultWriter::write(const ResultRow &r)
     if (jsonl_) {
         line = "{\"id\":" + jsonQuote(r.id);
         JsonSink sink(&line);
-        vision::writeReading(r.m, r.message, r.model, sink);
+        reading::writeReading(r.m, r.message, r.model, sink);
         line += "}\n";
     } else {
         line = csvQuote(r.id);
         CsvSink sink(&line);
-        vision::writeReading(r.m, r.message, r.model, sink);
+        reading::writeReading(r.m, r.message, r.model, sink);
         line += "\n";
     }
     out_ << line;

@@ -1,18 +1,18 @@
 #pragma once
 // One output row per manifest record, as CSV or JSON lines: the record id, then the
-// reading's fields in the one schema the device uses too (vision/reading_record.h).
+// reading's fields in the one schema the device uses too (reading/reading_record.h).
 #include <ostream>
 #include <string>
 #include <vector>
 
-#include "vision/measurement.h"
+#include "reading/reading.h"
 
 namespace icacam::host {
 
 struct ResultRow {
     std::string id;
-    std::string message;                    // why a row never reached vision; else "" (the reading says)
-    const vision::Measurement *m = nullptr; // null for rows that never reached vision
+    std::string message;                 // why a row never reached vision; else "" (the reading says)
+    const reading::Reading *m = nullptr; // null for rows that never reached vision
     std::string model;
 };
 

@@ -12,6 +12,7 @@
 #include "host_tools/cli_options.h"
 #include "host_tools/end_face_renderer.h"
 #include "host_tools/manifest.h"
+#include "host_tools/model_inverse.h"
 #include "host_tools/number_text.h"
 #include "host_tools/photo/photo_command.h"
 #include "host_tools/synth_conditions.h"
@@ -20,17 +21,6 @@
 namespace icacam::host {
 
 namespace fs = std::filesystem;
-
-double uForMu(double mu, double n)
-{
-    friction::PaperModel model;
-    double lo = 0.0, hi = 1.25;
-    for (int i = 0; i < 60; ++i) {
-        const double mid = 0.5 * (lo + hi);
-        (model.estimate({mid, n, 0, 10, 15}).mu < mu ? lo : hi) = mid;
-    }
-    return 0.5 * (lo + hi);
-}
 
 namespace {
 // The image count unless --count says otherwise (per condition with --condition).
@@ -127,7 +117,7 @@ int synthCommand(const std::vector<std::string> &args)
     friction::PaperModel model;
     for (int i = 0; i < int(count); ++i) {
         const double n = U(0.05, 0.5), mu = U(0.06, 0.29);
-        const double u = uForMu(mu, n);
+        const double u = uForMu(model, mu, n);
         const double rOuter = 6.85 - 0.95 * u + U(-0.05, 0.05);
         const double rMax = 5.0 * std::sqrt(2.0) * (1.008 + 0.034 * u);
         EndFaceScene s = randomScene(rng, u, rOuter, rMax, hard);

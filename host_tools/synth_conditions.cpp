@@ -16,11 +16,11 @@
 #include "friction/paper_model.h"
 #include "friction/radii_consistency.h"
 #include "friction/reduction_corrected_model.h"
-#include "host_tools/calibrate_command.h"
 #include "host_tools/calibration_renderer.h"
+#include "host_tools/camera_calibrator.h"
 #include "host_tools/end_face_renderer.h"
+#include "host_tools/model_inverse.h"
 #include "host_tools/specimen_body_renderer.h"
-#include "host_tools/synth_command.h"
 #include "vision/plane_calibration.h"
 
 namespace icacam::host {
@@ -53,12 +53,13 @@ struct Specimen {
 
 Specimen drawSpecimen(Rng &rng, double reductionLo, double reductionHi)
 {
+    const friction::PaperModel paper;
     for (;;) {
         Specimen s;
         s.n = uniform(rng, 0.05, 0.5), s.mu = uniform(rng, 0.06, 0.29);
         s.kMpa = uniform(rng, 250, 1250);
         s.reduction = reductionLo == reductionHi ? reductionLo : uniform(rng, reductionLo, reductionHi);
-        const double u50 = uForMu(s.mu, s.n);
+        const double u50 = uForMu(paper, s.mu, s.n);
         const double rOuter50 = 6.85 - 0.95 * u50 + uniform(rng, -0.05, 0.05);
         const double rMax50 = 5.0 * std::sqrt(2.0) * (1.008 + 0.034 * u50);
         if (s.reduction == 0.5) {
@@ -174,8 +175,11 @@ CalibratedCamera makeCalibratedCamera(Rng &rng, const fs::path &dir)
     std::snprintf(spec, sizeof spec, "chessboard:%dx%d:%.2f", board.cols, board.rows, board.squareMm);
     const std::string out = (dir / "camera.cal").string();
     // What `icacam calibrate` prints (views used, RMS, the camera) is the set's record of it.
-    calibrateCommand(
-        {"--images", views.string(), "--board", spec, "--flat", (views / "flat.png").string(), "--out", out});
+    CameraCalibrationInputs in;
+    in.imagesDir = views.string();
+    in.board = spec;
+    in.flatPhoto = (views / "flat.png").string();
+    writeCameraCalibration(in, out);
     calibration::CalibrationFile file;
     if (std::string e = calibration::readCalibrationFile(out, &file); !e.empty()) throw std::runtime_error(e);
     c.plane = file.plane;

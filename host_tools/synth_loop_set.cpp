@@ -7,10 +7,11 @@
 #include <random>
 #include <stdexcept>
 
+#include "friction/paper_model.h"
 #include "friction/radii_consistency.h"
 #include "friction/reduction_corrected_model.h"
 #include "host_tools/end_face_renderer.h"
-#include "host_tools/synth_command.h"
+#include "host_tools/model_inverse.h"
 
 namespace icacam::host {
 
@@ -71,6 +72,7 @@ std::string writeLoopSet(const std::string &dir, const LoopSetOptions &opt)
     const int badCamera = int(rng() % 3), badMaterial = int(rng() % uint32_t(kMaterialCount));
     double wrongN = kMaterials[badMaterial].n + (rng() % 2 ? 1 : -1) * U(0.06, 0.10);
     if (wrongN < 0.06 || wrongN > 0.5) wrongN = kMaterials[badMaterial].n + (wrongN < 0.06 ? 1 : -1) * 0.08;
+    const friction::PaperModel paper; // the truth: μ from u at 50 %
     for (int i = 0; i < opt.count; ++i) {
         const int m = int(rng() % uint32_t(kMaterialCount)), cam = int(rng() % 3);
         const Material &mat = kMaterials[m];
@@ -87,7 +89,8 @@ std::string writeLoopSet(const std::string &dir, const LoopSetOptions &opt)
         // FE snapshots at (n, μ, r). A rate-sensitive material's ring widens with the speed.
         const double speedFactor =
             opt.effect == LoopEffect::Speed ? 1 + kSpeedLogSlope * std::log(speed / kSpeedReferenceMmS) : 1.0;
-        const double u = (uForMu(mu, n) + friction::ReductionCorrectedModel::slopeAt(n, mu) * (r - 0.5)) * speedFactor;
+        const double u =
+            (uForMu(paper, mu, n) + friction::ReductionCorrectedModel::slopeAt(n, mu) * (r - 0.5)) * speedFactor;
         double ro = 0, rMax = 0;
         if (!friction::feRadiusAt(friction::FeRadius::Outer, n, mu, r, &ro) ||
             !friction::feRadiusAt(friction::FeRadius::Max, n, mu, r, &rMax))

@@ -1,7 +1,7 @@
 #pragma once
 // The closed curve through a boundary's edge points: a robust least-squares Fourier series
 // r(θ) about the pipeline's centre, and its enclosed area (the paper's equivalent radius).
-#include "vision/measurement.h"
+#include "vision/end_face_geometry.h"
 
 namespace icacam::vision {
 

@@ -6,9 +6,10 @@
 #include <numbers>
 
 #include "vision/boundary_fit.h"
+#include "vision/edge_profile.h"
 #include "vision/radial_profile.h"
-#include "vision/reading_interpreter.h"
 #include "vision/ring_search.h"
+#include "vision/specimen_locator.h"
 
 namespace icacam::vision {
 
@@ -102,35 +103,19 @@ bool EndFaceAnalyzer::refineCentre(const LumaView &v, double r0Px, double *cx, d
     return true;
 }
 
-Measurement EndFaceAnalyzer::measure(const LumaView &v, const SpecimenSpec &spec, const friction::FrictionModel &model)
+EndFaceGeometry EndFaceAnalyzer::measure(const LumaView &v, const FaceSearch &face)
 {
-    Measurement m = measureFace(v, spec);
-    if (m.error != ErrorCode::None) return m;
-    interpretEndFace(spec, model, &m);
-    return m;
-}
-
-Measurement EndFaceAnalyzer::measureFace(const LumaView &v, const SpecimenSpec &spec)
-{
-    Measurement m;
+    EndFaceGeometry m;
     auto fail = [&m](ErrorCode c) {
-        m.status = Status::Error;
         m.error = c;
         return m;
     };
     if (!arena_) return fail(ErrorCode::NotConfigured);
     if (!v.valid()) return fail(ErrorCode::BadFrame);
     if (v.width > maxWidth_ || v.height > maxHeight_) return fail(ErrorCode::FrameTooLarge);
-    double mmPerPx = spec.mmPerPx;
-    if (!(mmPerPx > 0) && spec.calibration) {
-        // Only a calibration: the search is sized from its scale at the image centre.
-        PlaneCalibration plane = *spec.calibration;
-        plane.heightMm = 0.5 * spec.h0Mm;
-        mmPerPx = planeScaleAt(plane, 0.5 * (v.width - 1), 0.5 * (v.height - 1));
-    }
-    if (!(mmPerPx > 1e-5 && mmPerPx < 10) || !(spec.d0Mm > 0.5 && spec.d0Mm < 500) || !std::isfinite(spec.n))
-        return fail(ErrorCode::BadSpecimen);
-    const double r0 = 0.5 * spec.d0Mm / mmPerPx; // initial radius in pixels
+    const double mmPerPx = face.mmPerPx;
+    if (!(mmPerPx > 1e-5 && mmPerPx < 10) || !(face.d0Mm > 0.5 && face.d0Mm < 500)) return fail(ErrorCode::BadSpecimen);
+    const double r0 = 0.5 * face.d0Mm / mmPerPx; // initial radius in pixels
     if (r0 < 15 || r0 > 4 * std::max(v.width, v.height)) return fail(ErrorCode::BadSpecimen);
 
     SpecimenLocator locator(locatorWork_);
@@ -148,7 +133,7 @@ Measurement EndFaceAnalyzer::measureFace(const LumaView &v, const SpecimenSpec &
     RingSearch search{&v, r0, cx, cy, coarse_, fine_, deriv_, meanProfile_, meanDeriv_, innerPts_, outerPts_};
     const ErrorCode e = search.run(&m);
     if (e != ErrorCode::None) return fail(e);
-    m.error = ErrorCode::None; // found; the interpretation gives it a status
+    m.error = ErrorCode::None;
     return m;
 }
 

@@ -17,6 +17,7 @@ enum class ErrorCode : uint8_t {
     InnerEdgeNotFound, // the original face edge (face / ICA) was not found
     Blurred,           // edges too wide to locate the ring
     InconsistentRing,  // found edges are not ordered R_i < R_o < R_max
+    CalibrationSize,   // the frame's size differs from the calibration's images
 };
 
 const char *errorName(ErrorCode c);

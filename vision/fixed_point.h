@@ -44,23 +44,22 @@ public:
     constexpr bool operator<(Q o) const { return raw_ < o.raw_; }
     constexpr bool operator==(const Q &o) const = default;
 
-    // Product rounded to nearest; the intermediate is 64-bit (or 128-bit for wide types).
+    // Product rounded to nearest; the intermediate is 64-bit (the static_assert bounds it).
     template <int I2, int F2> constexpr Q mul(Q<I2, F2> o) const
     {
         static_assert(IntBits + FracBits + I2 + F2 <= 63, "product needs more than 64 bits");
         using Wide = int64_t;
         const Wide p = Wide(raw_) * Wide(o.raw());
         if constexpr (F2 == 0)
-            return fromRaw(int64_t(clampWide(p)));
+            return fromRaw(int64_t(p));
         else {
             const Wide half = Wide(1) << (F2 - 1);
-            return fromRaw(int64_t(clampWide((p + half) >> F2)));
+            return fromRaw(int64_t((p + half) >> F2));
         }
     }
 
 private:
     constexpr explicit Q(Raw r) : raw_(r) {}
-    static constexpr int64_t clampWide(int64_t v) { return v; }
     static constexpr Raw saturate(int64_t v)
     {
         if (v > int64_t(kMaxRaw)) return kMaxRaw;

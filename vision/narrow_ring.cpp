@@ -107,34 +107,34 @@ TwoStep evaluate(const Profile &pr, double xi, double xo, double s)
     return t;
 }
 
-} // namespace
-
-NarrowRingFit fitNarrowRing(const int32_t *profile, int count, int edgeIndex, int outerSign, double startWidthPx)
+// The profile around the contact edge, its mean taken out; false where it is clipped or
+// too short to fit.
+bool profileAround(const int32_t *profile, int count, int edgeIndex, Profile *pr)
 {
-    NarrowRingFit out;
-    Profile pr;
     for (int k = std::max(0, edgeIndex - kInside); k <= std::min(count - 1, edgeIndex + kOutside); ++k) {
-        if (profile[k] >= kClipped) return out;
-        pr.x[pr.n] = k - edgeIndex;
-        pr.p[pr.n] = profile[k];
-        pr.mean += profile[k];
-        ++pr.n;
+        if (profile[k] >= kClipped) return false;
+        pr->x[pr->n] = k - edgeIndex;
+        pr->p[pr->n] = profile[k];
+        pr->mean += profile[k];
+        ++pr->n;
     }
-    if (pr.n < 12) return out;
-    pr.mean /= pr.n;
-    for (int i = 0; i < pr.n; ++i) {
-        pr.p[i] -= pr.mean;
-        pr.sumP2 += pr.p[i] * pr.p[i];
+    if (pr->n < 12) return false;
+    pr->mean /= pr->n;
+    for (int i = 0; i < pr->n; ++i) {
+        pr->p[i] -= pr->mean;
+        pr->sumP2 += pr->p[i] * pr->p[i];
     }
+    return true;
+}
 
-    // One step, the model the second must beat: a pattern search over its place and blur
-    // from two blurs. Where the per-ray search saw the face's edge the profile only places
-    // it, and this test is not needed.
-    const bool seen = startWidthPx > 0;
+// One step, the model the second must beat: a pattern search over its place and blur from
+// two blurs; the smaller residual.
+double singleStepSsr(const Profile &pr)
+{
     double single = 1e300;
     constexpr double kSingleBlurs[] = {0.8, 1.8};
-    for (int start = 0; start < (seen ? 0 : 2); ++start) {
-        double xo = 0, bl = kSingleBlurs[start], h = 0.5, hs = 0.15;
+    for (double blur : kSingleBlurs) {
+        double xo = 0, bl = blur, h = 0.5, hs = 0.15;
         auto ssrAt = [&](double x, double b) {
             double f1[kMaxPoints], coef[3];
             stepBasis(pr, x, b, f1);
@@ -154,89 +154,93 @@ NarrowRingFit fitNarrowRing(const int32_t *profile, int count, int edgeIndex, in
         }
         single = std::min(single, cur);
     }
+    return single;
+}
 
-    // Two steps: a pattern search over (x_i, x_o, s) from a few starts, the best taken (on a
-    // narrow ring blur, width and step heights trade against each other: one start can end
-    // in the wrong valley). With a width from the per-ray search, two starts at it and at
-    // most 25 steps each (the fit only places the edge the rays saw); without,
-    // the best of a coarse grid for each of four blurs and three width ranges.
+constexpr int kMaxStarts = 4 * 3;
+
+// Where the two-step search starts (on a narrow ring blur, width and step heights trade
+// against each other: one start can end in the wrong valley). With a width from the per-ray
+// search, two starts at it; without, the best of a coarse grid for each of four blurs and
+// three width ranges. Returns the number of starts.
+int twoStepStarts(const Profile &pr, double startWidthPx, int outerSign, TwoStep *start)
+{
     constexpr double kGridBlurs[] = {0.6, 0.9, 1.3, 1.9};
     constexpr double kWidthBuckets[] = {1.0, 2.5, 4.5, kMaxWidthPx + 0.5}; // bounds
-    constexpr int kMaxStarts = 4 * 3;
-    TwoStep start[kMaxStarts];
     int starts = 0;
     if (startWidthPx > 0) {
         for (double s0 : {0.9, 1.6}) start[starts++] = evaluate(pr, -startWidthPx, 0.0, s0);
-    } else {
-        for (double s0 : kGridBlurs)
-            for (int bucket = 0; bucket < 3; ++bucket) {
-                TwoStep &b = start[starts++];
-                for (double xo = -2; xo <= 2.001; xo += 0.5)
-                    for (double w = kWidthBuckets[bucket]; w < kWidthBuckets[bucket + 1] - 0.001; w += 0.5) {
-                        const TwoStep t = evaluate(pr, xo - w, xo, s0);
-                        if (t.ssr < b.ssr && t.coef[2] * outerSign > 0) b = t;
-                    }
-            }
+        return starts;
     }
-    TwoStep best;
-    for (int k = 0; k < starts; ++k) {
-        TwoStep t = start[k];
-        if (t.ssr >= 1e299) continue;
-        // The current point's two step bases: a trial that moves one step alone reuses the
-        // other's (two thirds of the trials; the fit's cost is these normal-distribution
-        // evaluations). An accepted trial's bases swap in for the current ones.
-        double buf[4][kMaxPoints];
-        double *f1 = buf[0], *f2 = buf[1], *g1 = buf[2], *g2 = buf[3];
-        stepBasis(pr, t.xi, t.s, f1);
-        stepBasis(pr, t.xo, t.s, f2);
-        double hx = 0.25, hs = 0.08;
-        for (int iteration = 0; hx > (seen ? 0.02 : 0.01) && iteration < (seen ? 25 : 100); ++iteration) {
-            bool moved = false;
-            const double trial[6][3] = {{hx, 0, 0}, {-hx, 0, 0}, {0, hx, 0}, {0, -hx, 0}, {0, 0, hs}, {0, 0, -hs}};
-            for (const auto &dv : trial) {
-                const double xi = t.xi + dv[0], xo = t.xo + dv[1], bl = t.s * (1 + dv[2]);
-                if (xo - xi < 0.5 || bl < 0.3) continue;
-                const bool movesInner = dv[0] != 0 || dv[2] != 0, movesOuter = dv[1] != 0 || dv[2] != 0;
-                if (movesInner) stepBasis(pr, xi, bl, g1);
-                if (movesOuter) stepBasis(pr, xo, bl, g2);
-                TwoStep c;
-                c.xi = xi, c.xo = xo, c.s = bl;
-                c.ssr = solve(pr, movesInner ? g1 : f1, movesOuter ? g2 : f2, c.coef);
-                if (c.ssr < t.ssr) {
-                    t = c;
-                    moved = true;
-                    if (movesInner) std::swap(f1, g1);
-                    if (movesOuter) std::swap(f2, g2);
+    for (double s0 : kGridBlurs)
+        for (int bucket = 0; bucket < 3; ++bucket) {
+            TwoStep &b = start[starts++];
+            for (double xo = -2; xo <= 2.001; xo += 0.5)
+                for (double w = kWidthBuckets[bucket]; w < kWidthBuckets[bucket + 1] - 0.001; w += 0.5) {
+                    const TwoStep t = evaluate(pr, xo - w, xo, s0);
+                    if (t.ssr < b.ssr && t.coef[2] * outerSign > 0) b = t;
                 }
-            }
-            if (!moved) hx *= 0.5, hs *= 0.5;
         }
-        if (t.ssr < best.ssr && t.coef[2] * outerSign > 0) best = t;
-    }
-    if (best.ssr >= 1e299) return out;
+    return starts;
+}
 
-    // The second step must earn its place, and stand well above the noise.
-    const double dof = std::max(1, pr.n - 6);
-    const double resid = std::sqrt(best.ssr / dof);
-    if (!(single >= 4 * best.ssr) || std::fabs(best.coef[1]) < std::max(4 * resid, kMinInnerStep)) return out;
-    // Two steps closer than their blur are one edge of another shape, not a ring.
-    if (best.xo - best.xi > kMaxWidthPx || best.xo - best.xi < best.s) return out;
-    // Inside the inner step lies the original face: its level all the way in must be the
-    // fit's innermost one. On a wide ring the fit's inner step is a mark on the ICA, and
-    // farther in, past the real edge, the face's level differs.
+// A pattern search over (x_i, x_o, s) from one start: at most 25 steps where the per-ray
+// search saw the edge (the fit only places it), 100 otherwise.
+TwoStep refineTwoStep(const Profile &pr, TwoStep t, bool seen)
+{
+    // The current point's two step bases: a trial that moves one step alone reuses the
+    // other's (two thirds of the trials; the fit's cost is these normal-distribution
+    // evaluations). An accepted trial's bases swap in for the current ones.
+    double buf[4][kMaxPoints];
+    double *f1 = buf[0], *f2 = buf[1], *g1 = buf[2], *g2 = buf[3];
+    stepBasis(pr, t.xi, t.s, f1);
+    stepBasis(pr, t.xo, t.s, f2);
+    double hx = 0.25, hs = 0.08;
+    for (int iteration = 0; hx > (seen ? 0.02 : 0.01) && iteration < (seen ? 25 : 100); ++iteration) {
+        bool moved = false;
+        const double trial[6][3] = {{hx, 0, 0}, {-hx, 0, 0}, {0, hx, 0}, {0, -hx, 0}, {0, 0, hs}, {0, 0, -hs}};
+        for (const auto &dv : trial) {
+            const double xi = t.xi + dv[0], xo = t.xo + dv[1], bl = t.s * (1 + dv[2]);
+            if (xo - xi < 0.5 || bl < 0.3) continue;
+            const bool movesInner = dv[0] != 0 || dv[2] != 0, movesOuter = dv[1] != 0 || dv[2] != 0;
+            if (movesInner) stepBasis(pr, xi, bl, g1);
+            if (movesOuter) stepBasis(pr, xo, bl, g2);
+            TwoStep c;
+            c.xi = xi, c.xo = xo, c.s = bl;
+            c.ssr = solve(pr, movesInner ? g1 : f1, movesOuter ? g2 : f2, c.coef);
+            if (c.ssr < t.ssr) {
+                t = c;
+                moved = true;
+                if (movesInner) std::swap(f1, g1);
+                if (movesOuter) std::swap(f2, g2);
+            }
+        }
+        if (!moved) hx *= 0.5, hs *= 0.5;
+    }
+    return t;
+}
+
+// Inside the inner step lies the original face: its level all the way in must be the fit's
+// innermost one. On a wide ring the fit's inner step is a mark on the ICA, and farther in,
+// past the real edge, the face's level differs.
+bool faceLevelHolds(const int32_t *profile, int edgeIndex, const TwoStep &best)
+{
     int windows = 0;
     for (int from = 0; from + kFaceWindow <= edgeIndex - kFaceFrom; from += kFaceWindow / 2) {
         double face = 0;
         for (int k = from; k < from + kFaceWindow; ++k) face += profile[k];
         face /= kFaceWindow;
-        if (std::fabs(face - best.coef[0]) > 0.3 * std::fabs(best.coef[1])) return out;
+        if (std::fabs(face - best.coef[0]) > 0.3 * std::fabs(best.coef[1])) return false;
         ++windows;
     }
-    if (windows == 0) return out;
+    return windows > 0;
+}
 
-    // The width's statistical error from the curvature of the residual profile along it:
-    // at each trial width the contact edge's place and the blur are refitted (on a narrow
-    // ring width, blur and step heights trade against each other), and the model's error.
+// The width's statistical error from the curvature of the residual profile along it: at
+// each trial width the contact edge's place and the blur are refitted (on a narrow ring
+// width, blur and step heights trade against each other).
+double widthStatError(const Profile &pr, const TwoStep &best, bool seen, double dof)
+{
     const int reach = seen ? 1 : 2;
     auto profileAt = [&](double w) {
         double m = 1e300;
@@ -249,14 +253,46 @@ NarrowRingFit fitNarrowRing(const int32_t *profile, int count, int edgeIndex, in
     };
     const double d = 0.25, w0 = best.xo - best.xi;
     const double curv = (profileAt(w0 + d) + profileAt(std::max(0.25, w0 - d)) - 2 * best.ssr) / (d * d);
-    const double stat = curv > 0 ? std::sqrt(2 * best.ssr / dof / curv) : w0;
+    return curv > 0 ? std::sqrt(2 * best.ssr / dof / curv) : w0;
+}
+
+} // namespace
+
+NarrowRingFit fitNarrowRing(const int32_t *profile, int count, int edgeIndex, int outerSign, double startWidthPx)
+{
+    NarrowRingFit out;
+    Profile pr;
+    if (!profileAround(profile, count, edgeIndex, &pr)) return out;
+    // Where the per-ray search saw the face's edge the profile only places it, and the
+    // one-step model need not be beaten.
+    const bool seen = startWidthPx > 0;
+    const double single = seen ? 1e300 : singleStepSsr(pr);
+
+    TwoStep start[kMaxStarts];
+    const int starts = twoStepStarts(pr, startWidthPx, outerSign, start);
+    TwoStep best;
+    for (int k = 0; k < starts; ++k) {
+        if (start[k].ssr >= 1e299) continue;
+        const TwoStep t = refineTwoStep(pr, start[k], seen);
+        if (t.ssr < best.ssr && t.coef[2] * outerSign > 0) best = t;
+    }
+    if (best.ssr >= 1e299) return out;
+
+    // The second step must earn its place, and stand well above the noise.
+    const double dof = std::max(1, pr.n - 6);
+    const double resid = std::sqrt(best.ssr / dof);
+    if (!(single >= 4 * best.ssr) || std::fabs(best.coef[1]) < std::max(4 * resid, kMinInnerStep)) return out;
+    // Two steps closer than their blur are one edge of another shape, not a ring.
+    if (best.xo - best.xi > kMaxWidthPx || best.xo - best.xi < best.s) return out;
+    if (!faceLevelHolds(profile, edgeIndex, best)) return out;
 
     out.found = true;
     out.innerPx = best.xi;
     out.outerPx = best.xo;
     out.blurPx = best.s;
     out.innerStep = best.coef[1];
-    out.sigmaWidthPx = std::hypot(stat, kModelWidthPx);
+    // The width's statistical error and the model's.
+    out.sigmaWidthPx = std::hypot(widthStatError(pr, best, seen, dof), kModelWidthPx);
     return out;
 }
 

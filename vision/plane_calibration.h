@@ -6,8 +6,8 @@
 // distortion (k1, k2, p1, p2, k3), so a calibration from `icacam calibrate` applies as is.
 #include <cstdint>
 
+#include "vision/end_face_geometry.h"
 #include "vision/fixed_point.h"
-#include "vision/measurement.h"
 
 namespace icacam::vision {
 

@@ -7,9 +7,9 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "vision/end_face_geometry.h"
 #include "vision/error.h"
 #include "vision/luma_view.h"
-#include "vision/measurement.h"
 #include "vision/specimen_locator.h"
 
 namespace icacam::vision {

@@ -7,9 +7,9 @@
 #include "vision/angle_table.h"
 #include "vision/boundary_fit.h"
 #include "vision/edge_profile.h"
-#include "vision/end_face_analyzer.h"
 #include "vision/narrow_ring.h"
 #include "vision/radial_profile.h"
+#include "vision/ray_capacity.h"
 
 namespace icacam::vision {
 
@@ -20,9 +20,9 @@ constexpr double kNarrowRingPx = 6.0;
 // Grey levels between the two sides of the original face's edge below which the rays' edge
 // is not taken (low_contrast warns below 5; no rendered or photographed face shows under 6).
 constexpr double kMinInnerContrast = 2.0;
-constexpr int kRays = EndFaceAnalyzer::kFineRays;
-constexpr int kMaxFine = EndFaceAnalyzer::kMaxFineSamples;
-constexpr int kMaxCoarse = EndFaceAnalyzer::kMaxCoarseSamples;
+constexpr int kRays = kFineRays;
+constexpr int kMaxFine = kMaxFineSamples;
+constexpr int kMaxCoarse = kMaxCoarseSamples;
 // The fine rays' sample spacing (pixels).
 constexpr double kFineStepPx = 1.0;
 // A 3-grey-level step blurred to σ = 2 px gives a coarse derivative of about 1200.
@@ -100,19 +100,19 @@ bool isExtremum(const int32_t *d, int i)
 RingSearch::MeanEdges RingSearch::meanProfileEdges()
 {
     // The coarse rows hold the centre refinement's last pass (see refineCentre).
-    const double rA = EndFaceAnalyzer::kCoarseStart * r0, rB = EndFaceAnalyzer::kCoarseEnd * r0;
-    const double step = EndFaceAnalyzer::coarseStep(r0);
+    const double rA = kCoarseStart * r0, rB = kCoarseEnd * r0;
+    const double step = coarseStep(r0);
     const int count = std::min(kMaxCoarse, int((rB - rA) / step));
     uint16_t mean[kMaxCoarse];
     for (int j = 0; j < count; ++j) {
         uint32_t sum = 0, n = 0;
-        for (int i = 0; i < EndFaceAnalyzer::kCoarseRays; ++i) {
+        for (int i = 0; i < kCoarseRays; ++i) {
             const uint16_t s = coarse[size_t(i) * kMaxCoarse + j];
             if (s == kOutsideFrame) continue;
             sum += s;
             ++n;
         }
-        mean[j] = n * 4 >= EndFaceAnalyzer::kCoarseRays ? uint16_t(sum / n) : kOutsideFrame;
+        mean[j] = n * 4 >= kCoarseRays ? uint16_t(sum / n) : kOutsideFrame;
         meanProfile[j] = mean[j];
     }
     profileDerivative(mean, count, meanDeriv);
@@ -175,7 +175,7 @@ RingSearch::MeanEdges RingSearch::meanProfileEdges()
     return e;
 }
 
-void RingSearch::sampleWindow(const double *start, double step, int count, int boxHalf, Measurement *m)
+void RingSearch::sampleWindow(const double *start, double step, int count, int boxHalf, EndFaceGeometry *m)
 {
     fineStep_ = step;
     fineCount_ = count;
@@ -187,7 +187,7 @@ void RingSearch::sampleWindow(const double *start, double step, int count, int b
         uint16_t *row = fine + size_t(i) * kMaxFine;
         inside += uint32_t(sampleRay(*frame, ray, count, row));
     }
-    if (inside < uint32_t(count) * kRays) m->flags |= kFlagSpecimenClipped;
+    if (inside < uint32_t(count) * kRays) m->imageFlags |= kImageSpecimenClipped;
 
     // Derivative across a [1 2 1] angular smoothing of neighbouring rays (the boundaries
     // vary slowly with angle; the noise does not). Samples at the same index of adjacent
@@ -317,7 +317,7 @@ double RingSearch::centreOnContactEdge(const MeanEdges &me)
     // two edges' offset smears) as the radius the fine stage searches about, where they
     // differ by 3 px or more.
     constexpr int kCentringRays = 32, kFirstPassRays = 16; // the first pass: every fourth coarse ray
-    constexpr int kCoarseStride = EndFaceAnalyzer::kCoarseRays / kFirstPassRays;
+    constexpr int kCoarseStride = kCoarseRays / kFirstPassRays;
     constexpr int kFineStride = kRays / kCentringRays;
     const double w = 0.15 * r0;
     int32_t d[kMaxCoarse], peaks[kCentringRays], sorted[kCentringRays];
@@ -328,9 +328,9 @@ double RingSearch::centreOnContactEdge(const MeanEdges &me)
         // Pass 0: the coarse rows (from kCoarseStart·R0 at the coarse step); then fresh rays
         // at 2 px steps from r − w, sampled into the fine rows (the fine stage refills them).
         const bool coarseRows = pass == 0;
-        const double rA = coarseRows ? EndFaceAnalyzer::kCoarseStart * r0 : r - w;
-        const double step = coarseRows ? EndFaceAnalyzer::coarseStep(r0) : 2.0;
-        const int count = coarseRows ? std::min(kMaxCoarse, int((EndFaceAnalyzer::kCoarseEnd * r0 - rA) / step))
+        const double rA = coarseRows ? kCoarseStart * r0 : r - w;
+        const double step = coarseRows ? coarseStep(r0) : 2.0;
+        const int count = coarseRows ? std::min(kMaxCoarse, int((kCoarseEnd * r0 - rA) / step))
                                      : std::min(kMaxFine, int(2 * w / step) + 7);
         const int lo = std::max(3, int((r - w - rA) / step));
         const int hi = std::min(count - 4, int((r + w - rA) / step) + 1);
@@ -444,7 +444,7 @@ bool RingSearch::silhouetteOnRay(const uint16_t *row, int lo, int hi, int w, dou
 bool RingSearch::barrelBandLopsided(const double *radius, const bool *valid, const double *outerR) const
 {
     // Least squares of width = w0 + a cos θ + b sin θ over the coarse rays with a silhouette.
-    constexpr int kCoarse = EndFaceAnalyzer::kCoarseRays;
+    constexpr int kCoarse = kCoarseRays;
     double n = 0, sc = 0, ss = 0, scc = 0, sss = 0, scs = 0, sw = 0, swc = 0, sws = 0;
     for (int i = 0; i < kCoarse; ++i) {
         if (!valid[i]) continue;
@@ -478,9 +478,9 @@ double RingSearch::silhouetteFromRays(const double *outerR, double *coverage, do
     *coverage = 0;
     *scatterPx = 0;
     *lopsided = false;
-    constexpr int kCoarse = EndFaceAnalyzer::kCoarseRays;
-    const double rA = EndFaceAnalyzer::kCoarseStart * r0, rB = EndFaceAnalyzer::kCoarseEnd * r0;
-    const double step = EndFaceAnalyzer::coarseStep(r0);
+    constexpr int kCoarse = kCoarseRays;
+    const double rA = kCoarseStart * r0, rB = kCoarseEnd * r0;
+    const double step = coarseStep(r0);
     const int count = std::min(kMaxCoarse, int((rB - rA) / step));
     const int w = std::max(4, int(0.035 * r0 / step)); // step detector half-width
     double radius[kCoarse];
@@ -621,7 +621,7 @@ RingSearch::OriginalFaceName RingSearch::nameOriginalFace(const AlignedProfile &
 }
 
 bool RingSearch::originalFaceOnRays(OriginalFaceName name, const AlignedProfile &p, const double *outerR,
-                                    Measurement *m, BoundaryFit *inner, double *innerR, double *contrast)
+                                    EndFaceGeometry *m, BoundaryFit *inner, double *innerR, double *contrast)
 {
     if (!name.sign) return false;
     const int K = p.K;
@@ -689,7 +689,7 @@ bool RingSearch::narrowRingFromProfile(const AlignedProfile &p, int signOuter, d
     return true;
 }
 
-ErrorCode RingSearch::run(Measurement *m)
+ErrorCode RingSearch::run(EndFaceGeometry *m)
 {
     static_assert(kRays == AngleTable::kSize, "fine ray i is table angle i");
     const AngleTable &angles = angleTable();
@@ -756,7 +756,7 @@ ErrorCode RingSearch::run(Measurement *m)
     } else if (narrowRingFromProfile(profile, me.signOuter, 0.0, &outer, &inner, &contrastInner)) {
         // No ray saw the original face's edge: the profile alone says the ring is narrow,
         // and the reading says so (warn).
-        m->flags |= kFlagNarrowRing;
+        m->imageFlags |= kImageNarrowRingFit;
     } else {
         return !name.sign && m->saturatedFraction > 0.1 ? ErrorCode::Saturated : ErrorCode::InnerEdgeNotFound;
     }

@@ -4,9 +4,9 @@
 // fine rays locate them per angle, and a robust closed curve is fitted to each.
 #include <cstdint>
 
+#include "vision/end_face_geometry.h"
 #include "vision/fixed_point.h"
 #include "vision/luma_view.h"
-#include "vision/measurement.h"
 
 namespace icacam::vision {
 
@@ -24,7 +24,7 @@ struct RingSearch {
     EdgeSample *innerPts;
     EdgeSample *outerPts;
 
-    ErrorCode run(Measurement *m);
+    ErrorCode run(EndFaceGeometry *m);
 
     // Internal steps (public only so that RingSearch stays an aggregate).
 
@@ -63,7 +63,7 @@ struct RingSearch {
     OriginalFaceName nameOriginalFace(const AlignedProfile &p) const;
     // The named edge on every fine ray, in a window following the contact edge, and its fit
     // (inner, its curve innerR at every fine ray, its contrast); false where it is not found.
-    bool originalFaceOnRays(OriginalFaceName name, const AlignedProfile &p, const double *outerR, Measurement *m,
+    bool originalFaceOnRays(OriginalFaceName name, const AlignedProfile &p, const double *outerR, EndFaceGeometry *m,
                             BoundaryFit *inner, double *innerR, double *contrast);
     // A ring too narrow for the per-ray search: both edges from the aligned profile's
     // two-step fit (narrow_ring.h), the original face's edge following the contact edge's
@@ -72,7 +72,7 @@ struct RingSearch {
                                BoundaryFit *inner, double *contrastInner);
     // Samples every fine ray from start[i] (pixels) and fills the smoothed derivative rows.
     // boxHalf > 0: the rows hold a box step detector of that half-width instead.
-    void sampleWindow(const double *start, double step, int count, int boxHalf, Measurement *m);
+    void sampleWindow(const double *start, double step, int count, int boxHalf, EndFaceGeometry *m);
     // Silhouette R_max from the coarse rays, outside the fitted contact edge; 0 if unclear
     // (lopsided: the barrel is seen obliquely, so no silhouette is a circle about the axis).
     // coverage and scatterPx: the per-ray fit's.

@@ -23,48 +23,36 @@ uint32_t isqrt(uint32_t v)
     return r;
 }
 
-} // namespace
+// The decimated frame's geometry: D×D pixel cells, W × H of them, and where in a cell its
+// four samples lie.
+struct Cells {
+    int D, W, H, off, step2;
+};
 
-CentreEstimate SpecimenLocator::locate(const LumaView &v, double rMinPx, double rMaxPx)
+// Decimate: mean of 4 pixels spread over each D×D cell, at a quarter and three quarters of
+// its width and height. Spread (not a 2×2 block at the centre) so that an edge crossing the
+// cell shades it in proportion: point samples would turn the circles into staircases whose
+// Sobel directions scatter the votes by a cell or two.
+void decimate(const LumaView &v, const Cells &c, uint8_t *dec)
 {
-    CentreEstimate est;
-    const int maxDim = std::max(v.width, v.height);
-    const int D = std::max(1, (maxDim + kMaxCells - 1) / kMaxCells);
-    const int W = v.width / D, H = v.height / D;
-    if (W < 8 || H < 8) return est;
-
-    uint8_t *dec = work_;                                                                    // W × H luma
-    uint16_t *acc = reinterpret_cast<uint16_t *>(work_ + size_t(kMaxCells) * kMaxCells * 3); // votes
-    std::fill(acc, acc + size_t(W) * H, uint16_t(0));
-
-    // Decimate: mean of 4 pixels spread over each D×D cell, at a quarter and three
-    // quarters of its width and height. Spread (not a 2×2 block at the centre) so that an
-    // edge crossing the cell shades it in proportion: point samples would turn the circles
-    // into staircases whose Sobel directions scatter the votes by a cell or two.
-    const int off = D >= 2 ? D / 4 : 0;
-    const int step2 = D >= 2 ? D / 2 : 0;
     // For D ≥ 2 the second pixel (off + D/2 < D) stays inside the cell and so inside the
     // frame (W·D ≤ width): no clamping; for D = 1 the "block" is the pixel itself.
     const size_t ps = size_t(v.pixelStep);
-    const size_t colStep = size_t(D) * ps, pairStep = size_t(step2) * ps;
-    for (int y = 0; y < H; ++y) {
-        const uint8_t *r0 = v.data + size_t(y * D + off) * size_t(v.stride) + size_t(off) * ps;
-        const uint8_t *r1 = r0 + size_t(step2) * size_t(v.stride);
-        uint8_t *out = dec + y * W;
-        for (int x = 0; x < W; ++x, r0 += colStep, r1 += colStep)
+    const size_t colStep = size_t(c.D) * ps, pairStep = size_t(c.step2) * ps;
+    for (int y = 0; y < c.H; ++y) {
+        const uint8_t *r0 = v.data + size_t(y * c.D + c.off) * size_t(v.stride) + size_t(c.off) * ps;
+        const uint8_t *r1 = r0 + size_t(c.step2) * size_t(v.stride);
+        uint8_t *out = dec + y * c.W;
+        for (int x = 0; x < c.W; ++x, r0 += colStep, r1 += colStep)
             out[x] = uint8_t((r0[0] + r0[pairStep] + r1[0] + r1[pairStep] + 2) >> 2);
     }
+}
 
-    // Sobel gradients; threshold at the 96th percentile of the L1 magnitude so that the
-    // voters are the strongest edges whatever the exposure (and at least 4 grey levels).
+// Sobel L1 magnitudes into mag, and the voters' threshold: the 96th percentile, so that the
+// voters are the strongest edges whatever the exposure (and at least 16).
+int gradientThreshold(const uint8_t *dec, int W, int H, uint16_t *mag)
+{
     uint32_t hist[1024] = {};
-    // L1 gradient magnitudes, kept for the voting pass (the second half of the work area).
-    uint16_t *mag = reinterpret_cast<uint16_t *>(work_ + size_t(kMaxCells) * kMaxCells);
-    auto sobel = [&](int x, int y, int *gx, int *gy) {
-        const uint8_t *p = dec + y * W + x;
-        *gx = (p[-W + 1] + 2 * p[1] + p[W + 1]) - (p[-W - 1] + 2 * p[-1] + p[W - 1]);
-        *gy = (p[W - 1] + 2 * p[W] + p[W + 1]) - (p[-W - 1] + 2 * p[-W] + p[-W + 1]);
-    };
     for (int y = 1; y < H - 1; ++y) {
         // One row of magnitudes in a loop the compiler can vectorise, then its histogram.
         const uint8_t *a = dec + (y - 1) * W, *b = dec + y * W, *c = dec + (y + 1) * W;
@@ -80,10 +68,17 @@ CentreEstimate SpecimenLocator::locate(const LumaView &v, double rMinPx, double 
     uint32_t above = 0;
     int thr = 1023;
     while (thr > 0 && above + hist[thr] < total / 25) above += hist[thr--];
-    thr = std::max(thr, 16);
+    return std::max(thr, 16);
+}
 
-    const int rLo = std::max(2, int(rMinPx / D));
-    const int rHi = std::max(rLo + 1, int(rMaxPx / D + 1));
+// Every voter above the threshold votes along its gradient, both ways, at radii rLo … rHi.
+void vote(const uint8_t *dec, const uint16_t *mag, int thr, int W, int H, int rLo, int rHi, uint16_t *acc)
+{
+    auto sobel = [&](int x, int y, int *gx, int *gy) {
+        const uint8_t *p = dec + y * W + x;
+        *gx = (p[-W + 1] + 2 * p[1] + p[W + 1]) - (p[-W - 1] + 2 * p[-1] + p[W - 1]);
+        *gy = (p[W - 1] + 2 * p[W] + p[W + 1]) - (p[-W - 1] + 2 * p[-W] + p[-W + 1]);
+    };
     for (int y = 1; y < H - 1; ++y)
         for (int x = 1; x < W - 1; ++x) {
             if (mag[y * W + x] < thr) continue;
@@ -106,10 +101,15 @@ CentreEstimate SpecimenLocator::locate(const LumaView &v, double rMinPx, double 
                 if (cx < unsigned(W) && cy < unsigned(H) && acc[cy * W + cx] < 65535) acc[cy * W + cx]++;
             }
         }
+}
 
-    // Peak of the 3×3 sums, then the vote-weighted centroid around it. A cell below a
-    // quarter of the highest single cell cannot hold the best 3×3 sum's centre in practice
-    // (the peak's cell carries the most votes of its block), so it is skipped.
+// Peak of the 3×3 sums, then the vote-weighted centroid around it. A cell below a quarter of
+// the highest single cell cannot hold the best 3×3 sum's centre in practice (the peak's cell
+// carries the most votes of its block), so it is skipped.
+CentreEstimate peakOf(const uint16_t *acc, const Cells &c)
+{
+    const int W = c.W, H = c.H;
+    CentreEstimate est;
     uint64_t sum = 0;
     uint16_t top = 0;
     for (int y = 1; y < H - 1; ++y)
@@ -138,12 +138,37 @@ CentreEstimate SpecimenLocator::locate(const LumaView &v, double rMinPx, double 
             sy += w * dy;
             sw += w;
         }
-    est.x = (bx + sx / sw) * D + off + 0.5 * step2;
-    est.y = (by + sy / sw) * D + off + 0.5 * step2;
+    est.x = (bx + sx / sw) * c.D + c.off + 0.5 * c.step2;
+    est.y = (by + sy / sw) * c.D + c.off + 0.5 * c.step2;
     est.votes = best;
     est.background = int(sum * 900 / std::max<uint64_t>(1, uint64_t(W - 2) * (H - 2)));
     est.found = true;
     return est;
+}
+
+} // namespace
+
+CentreEstimate SpecimenLocator::locate(const LumaView &v, double rMinPx, double rMaxPx)
+{
+    const int maxDim = std::max(v.width, v.height);
+    Cells c;
+    c.D = std::max(1, (maxDim + kMaxCells - 1) / kMaxCells);
+    c.W = v.width / c.D, c.H = v.height / c.D;
+    if (c.W < 8 || c.H < 8) return CentreEstimate{};
+    c.off = c.D >= 2 ? c.D / 4 : 0;
+    c.step2 = c.D >= 2 ? c.D / 2 : 0;
+
+    uint8_t *dec = work_;                                                                    // W × H luma
+    uint16_t *acc = reinterpret_cast<uint16_t *>(work_ + size_t(kMaxCells) * kMaxCells * 3); // votes
+    // L1 gradient magnitudes, kept for the voting pass (the second part of the work area).
+    uint16_t *mag = reinterpret_cast<uint16_t *>(work_ + size_t(kMaxCells) * kMaxCells);
+    std::fill(acc, acc + size_t(c.W) * c.H, uint16_t(0));
+    decimate(v, c, dec);
+    const int thr = gradientThreshold(dec, c.W, c.H, mag);
+    const int rLo = std::max(2, int(rMinPx / c.D));
+    const int rHi = std::max(rLo + 1, int(rMaxPx / c.D + 1));
+    vote(dec, mag, thr, c.W, c.H, rLo, rHi, acc);
+    return peakOf(acc, c);
 }
 
 } // namespace icacam::vision

@@ -38,7 +38,6 @@ public:
     int64_t monotonicMs() const override { return now_.load(); }
     int64_t wallMs() const override { return wallOrigin_ + now_.load(); }
     void sleepMs(int64_t ms) override { advance(ms); }
-    void set(int64_t ms) { now_.store(ms); }
     void advance(int64_t ms)
     {
         if (ms > 0) now_.fetch_add(ms);

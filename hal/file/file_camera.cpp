@@ -10,7 +10,6 @@
 namespace icacam::hal {
 
 namespace fs = std::filesystem;
-using vision::PixelFormat;
 
 namespace {
 

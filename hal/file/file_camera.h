@@ -42,10 +42,6 @@ public:
     Error capture(const CaptureRequest &req, CapturedFrame *out) override;
     std::string describe() const override;
 
-    size_t frameCount() const { return files_.size(); }
-    size_t position() const { return next_; }
-    void seek(size_t index) { next_ = index; }
-
 private:
     Clock &clock_;
     FileCameraOptions opts_;

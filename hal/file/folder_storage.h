@@ -12,7 +12,6 @@ namespace icacam::hal {
 class FolderStorage final : public Storage {
 public:
     Error open(const std::string &folder, uint64_t quotaBytes = 0);
-    const std::string &folder() const { return folder_; }
 
     Error append(std::string_view name, std::string_view data) override;
     Error writeAtomic(std::string_view name, std::string_view data) override;

@@ -12,7 +12,6 @@ class PngDisplay final : public Display {
 public:
     Error open(const std::string &folder, int scale = 1, int maxPictures = 10000);
     Error show(const MonoBitmap &picture) override;
-    const MonoBitmap &current() const { return current_; }
     int pictureCount() const { return count_; }
 
 private:

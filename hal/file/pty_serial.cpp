@@ -73,7 +73,6 @@ Error PtySerial::write(std::string_view data)
         // a device with nobody listening must not slow down by the timeout per line.
         if (waitedMs >= (stalled_ ? 0 : writeTimeoutMs_)) {
             stalled_ = true;
-            dropped_ += long(data.size() - done);
             return Error::make(Errc::Full, "serial output dropped: nobody is reading");
         }
         pollfd p{master_.get(), POLLOUT, 0};

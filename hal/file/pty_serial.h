@@ -19,13 +19,11 @@ public:
 
     Result<size_t> read(char *buf, size_t cap) override;
     Error write(std::string_view data) override;
-    long droppedBytes() const { return dropped_; }
 
 private:
     UniqueFd master_, slave_;
     std::string slavePath_, linkPath_;
     int writeTimeoutMs_ = 200;
-    long dropped_ = 0;
     bool stalled_ = false;
 };
 

@@ -1,4 +1,5 @@
 // libcamera backend. Version points (PLATFORM.md "Library versions to support"):
+//  * 0.2+: CameraConfiguration::sensorConfig names the sensor mode; before, a raw stream.
 //  * 0.5+: manual exposure and gain are ignored unless ExposureTimeMode / AnalogueGainMode
 //    are set to Manual.
 //  * 0.6: FrameBuffer::planes() is a Span (only iterated and indexed here: no #if needed);
@@ -24,14 +25,19 @@
 
 #include <algorithm>
 #include <array>
+#include <cerrno>
 #include <chrono>
 #include <condition_variable>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <mutex>
 #include <vector>
 
 #include "hal/fresh_frame.h"
+#include "hal/libcamera/sensor_mode.h"
+#include "hal/libcamera/tuning.h"
 
 #define ICACAM_LIBCAMERA_AT_LEAST(maj, min)                                                                            \
     (LIBCAMERA_VERSION_MAJOR > (maj) || (LIBCAMERA_VERSION_MAJOR == (maj) && LIBCAMERA_VERSION_MINOR >= (min)))
@@ -91,19 +97,48 @@ std::string fmtNum(double v)
     return b;
 }
 
-bool lumaFormat(const lc::PixelFormat &pf, vision::PixelFormat *out)
+bool lumaFormat(const lc::PixelFormat &pf, PixelFormat *out)
 {
     if (pf == lc::formats::R8)
-        *out = vision::PixelFormat::Grey8;
+        *out = PixelFormat::Grey8;
     else if (pf == lc::formats::NV12)
-        *out = vision::PixelFormat::NV12;
+        *out = PixelFormat::NV12;
     else if (pf == lc::formats::YUV420)
-        *out = vision::PixelFormat::YUV420;
+        *out = PixelFormat::YUV420;
     else if (pf == lc::formats::YUYV)
-        *out = vision::PixelFormat::YUYV;
+        *out = PixelFormat::YUYV;
     else
         return false;
     return true;
+}
+
+// The sensor's modes as the pipeline lists them for a raw stream: each raw pixel format
+// (one per bit depth) with its sizes, which on a Raspberry Pi are the sensor driver's own
+// (generateConfiguration(Raw) translates the sensor's media-bus formats, pipeline_base.cpp).
+struct RawMode {
+    SensorMode mode;
+    lc::PixelFormat format;
+};
+
+std::vector<RawMode> rawModes(lc::Camera &cam)
+{
+    std::vector<RawMode> out;
+    const std::vector<lc::StreamRole> roles{lc::StreamRole::Raw};
+    const auto config = cam.generateConfiguration(roles);
+    if (!config || config->empty()) return out;
+    const lc::StreamFormats &formats = config->at(0).formats();
+    for (const lc::PixelFormat &pf : formats.pixelformats()) {
+        const int depth = rawBitDepth(pf.toString());
+        if (depth == 0) continue;
+        for (const lc::Size &sz : formats.sizes(pf)) {
+            const SensorMode m{int(sz.width), int(sz.height), depth};
+            bool seen = false;
+            for (const RawMode &o : out)
+                seen = seen || (o.mode.width == m.width && o.mode.height == m.height && o.mode.bitDepth == depth);
+            if (!seen) out.push_back({m, pf});
+        }
+    }
+    return out;
 }
 
 // One mapped dmabuf region (RAII, STYLE.md §11): plane 0 of a frame buffer.
@@ -132,7 +167,7 @@ struct LibcameraCamera::Session {
     lc::Stream *stream = nullptr;
     std::vector<std::unique_ptr<lc::Request>> requests;
     std::vector<std::unique_ptr<Mapping>> maps; // by request cookie
-    vision::PixelFormat format = vision::PixelFormat::Grey8;
+    PixelFormat format = PixelFormat::Grey8;
     int width = 0, height = 0, stride = 0;
 
     std::mutex m;
@@ -178,6 +213,10 @@ LibcameraCamera::LibcameraCamera(const Clock &clock, LibcameraOptions options)
 LibcameraCamera::~LibcameraCamera()
 {
     stop();
+    if (!tuningDir_.empty()) {
+        std::error_code ec;
+        std::filesystem::remove_all(tuningDir_, ec); // the override is this process's only
+    }
 }
 
 void LibcameraCamera::stop()
@@ -185,14 +224,94 @@ void LibcameraCamera::stop()
     session_.reset();
 }
 
-Error LibcameraCamera::configure(const CameraFormat &fmt)
+// Three ways to put the sensor in the chosen mode, best first: the sensor configuration
+// (libcamera 0.2+, what rpicam-still sets beside its raw stream), a raw stream at the mode's
+// size (the pipeline takes the largest raw stream's size for the sensor, pipeline_base.cpp
+// validate(); requests carry no raw buffer, so the pipeline fills its own), or only the
+// processed stream at the mode's size (pipelines without raw modes). Each is validated; the
+// first that gives a luma format at the asked size is kept.
+Error LibcameraCamera::configureStreams(Session &s, const CameraFormat &fmt)
 {
-    if (fmt.maxWidth <= 0 || fmt.maxHeight <= 0)
-        return Error::make(Errc::Invalid, "camera: maximum frame size must be positive");
-    stop();
-    wanted_ = fmt;
-    configured_ = true;
+    const std::vector<RawMode> modes = rawModes(*s.camera);
+    mode_.sensorModes.clear();
+    for (const RawMode &m : modes) mode_.sensorModes.push_back(m.mode);
+    lc::Size out(unsigned(options_.width), unsigned(options_.height));
+    const RawMode *raw = nullptr;
+    if (!modes.empty()) {
+        mode_.choice =
+            chooseSensorMode(mode_.sensorModes, fmt.maxWidth, fmt.maxHeight, options_.width, options_.height);
+        if (!mode_.choice.found)
+            return Error::make(Errc::TooLarge, "libcamera: camera.width x height " + std::to_string(options_.width) +
+                                                   "x" + std::to_string(options_.height) + " above the maximum");
+        for (const RawMode &m : modes)
+            if (m.mode.width == mode_.choice.mode.width && m.mode.height == mode_.choice.mode.height &&
+                m.mode.bitDepth == mode_.choice.mode.bitDepth)
+                raw = &m;
+        out = lc::Size(unsigned(mode_.choice.outWidth), unsigned(mode_.choice.outHeight));
+    }
 
+    enum class NamedBy { SensorConfig, RawStream, StreamSize };
+    std::vector<NamedBy> ways;
+#if ICACAM_LIBCAMERA_AT_LEAST(0, 2)
+    if (raw) ways.push_back(NamedBy::SensorConfig);
+#endif
+    if (raw) ways.push_back(NamedBy::RawStream);
+    ways.push_back(NamedBy::StreamSize);
+    // R8 is a raw format on a Raspberry Pi (isRaw, pipeline_base.cpp): a processed stream
+    // asked for it turns into a second raw stream. Only a pipeline without raw modes may
+    // offer it processed.
+    std::vector<lc::PixelFormat> prefer;
+    if (modes.empty() && fmt.format == PixelFormat::Grey8) prefer.push_back(lc::formats::R8);
+    prefer.push_back(lc::formats::NV12);
+    prefer.push_back(lc::formats::YUV420);
+    if (modes.empty()) prefer.push_back(lc::formats::R8);
+
+    for (NamedBy way : ways) {
+        std::vector<lc::StreamRole> roles{lc::StreamRole::StillCapture};
+        if (way == NamedBy::RawStream) roles.push_back(lc::StreamRole::Raw);
+        for (const lc::PixelFormat &pf : prefer) {
+            s.config = s.camera->generateConfiguration(roles);
+            if (!s.config || s.config->size() != roles.size()) break;
+            lc::StreamConfiguration &sc = s.config->at(0);
+            sc.pixelFormat = pf;
+            sc.size = out.width ? out : sensorSize(*s.camera, sc, pf, fmt.maxWidth, fmt.maxHeight);
+            if (sc.size.width == 0) sc.size = lc::Size(unsigned(fmt.maxWidth), unsigned(fmt.maxHeight));
+            sc.bufferCount = unsigned(options_.bufferCount);
+            if (way == NamedBy::RawStream) {
+                lc::StreamConfiguration &rc = s.config->at(1);
+                rc.pixelFormat = raw->format;
+                rc.size = lc::Size(unsigned(raw->mode.width), unsigned(raw->mode.height));
+                // The Pi 5 pipeline allocates max(2, 4 - this) raw buffers of its own
+                // (PipelineHandlerPiSP::allocateBuffers); none of the application's are used.
+                rc.bufferCount = 1;
+            }
+#if ICACAM_LIBCAMERA_AT_LEAST(0, 2)
+            if (way == NamedBy::SensorConfig) {
+                s.config->sensorConfig = lc::SensorConfiguration();
+                s.config->sensorConfig->outputSize = lc::Size(unsigned(raw->mode.width), unsigned(raw->mode.height));
+                s.config->sensorConfig->bitDepth = unsigned(raw->mode.bitDepth);
+            }
+#endif
+            const lc::Size asked = sc.size;
+            if (s.config->validate() == lc::CameraConfiguration::Invalid) continue;
+            if (!lumaFormat(sc.pixelFormat, &s.format)) continue;
+            if (int(sc.size.width) > fmt.maxWidth || int(sc.size.height) > fmt.maxHeight)
+                return Error::make(Errc::TooLarge, "libcamera: stream " + sc.size.toString() + " above the maximum " +
+                                                       std::to_string(fmt.maxWidth) + "x" +
+                                                       std::to_string(fmt.maxHeight));
+            mode_.namedBy = way == NamedBy::SensorConfig ? "sensor configuration"
+                            : way == NamedBy::RawStream  ? "raw stream"
+                                                         : "stream size";
+            if (sc.size != asked) mode_.namedBy += ", size adjusted from " + asked.toString();
+            return {};
+        }
+    }
+    s.config.reset();
+    return Error::make(Errc::BadFormat, "libcamera: no luma format (NV12, YUV420, R8) offered at " + out.toString());
+}
+
+Error LibcameraCamera::openSession(std::unique_ptr<Session> *out)
+{
     auto s = std::make_unique<Session>();
     if (int r = s->manager.start(); r < 0)
         return Error::make(Errc::Io, std::string("libcamera: camera manager: ") + std::strerror(-r));
@@ -202,37 +321,101 @@ Error LibcameraCamera::configure(const CameraFormat &fmt)
         return Error::make(Errc::NotFound, "libcamera: no camera '" + options_.camera + "' (by id or model)");
     if (s->camera->acquire() < 0) return Error::make(Errc::Io, "libcamera: camera in use by another program");
     s->acquired = true;
+    *out = std::move(s);
+    return {};
+}
 
-    // A still configuration, kept streaming: each trigger then costs one frame.
-    s->config = s->camera->generateConfiguration({lc::StreamRole::StillCapture});
-    if (!s->config || s->config->empty()) return Error::make(Errc::BadFormat, "libcamera: no still configuration");
-    lc::StreamConfiguration &sc = s->config->at(0);
-    const lc::PixelFormat prefer[] = {fmt.format == vision::PixelFormat::Grey8 ? lc::formats::R8 : lc::formats::NV12,
-                                      lc::formats::R8, lc::formats::NV12, lc::formats::YUV420};
-    bool ok = false;
-    for (const lc::PixelFormat &pf : prefer) {
-        sc.pixelFormat = pf;
-        lc::Size size(unsigned(options_.width), unsigned(options_.height));
-        if (options_.width <= 0 || options_.height <= 0)
-            size = sensorSize(*s->camera, sc, pf, fmt.maxWidth, fmt.maxHeight);
-        if (size.width == 0) size = lc::Size(unsigned(fmt.maxWidth), unsigned(fmt.maxHeight));
-        sc.size = size;
-        sc.bufferCount = unsigned(options_.bufferCount);
-        const auto status = s->config->validate();
-        if (status != lc::CameraConfiguration::Invalid && lumaFormat(sc.pixelFormat, &s->format)) {
-            ok = true;
-            break;
-        }
+// The tuning file is read when the camera manager starts (the pipeline loads the IPA as it
+// registers the camera: CameraData::loadIPA, pipeline_base.cpp), so the environment is set
+// before a manager exists; the fixed-tone override needs the sensor's model, so the first
+// configure() looks at the camera, writes the override and starts the manager again.
+Error LibcameraCamera::prepareTuning(const std::string &model, bool *restart)
+{
+    *restart = false;
+    if (options_.tuning == "system") {
+        tuningNote_ = "tuning: libcamera's file for " + model;
+        return {};
     }
-    if (!ok) return Error::make(Errc::BadFormat, "libcamera: no luma format (R8, NV12, YUV420) offered");
-    if (int(sc.size.width) > fmt.maxWidth || int(sc.size.height) > fmt.maxHeight)
-        return Error::make(Errc::TooLarge, "libcamera: sensor mode " + sc.size.toString() + " above the maximum");
+    if (!options_.tuning.empty()) { // set before the first manager started (configure())
+        tuningNote_ = "tuning: " + options_.tuning;
+        return {};
+    }
+    if (const char *forced = std::getenv("LIBCAMERA_RPI_TUNING_FILE"); forced && *forced) {
+        // libcamera takes this over every search path (ipaConfigurationFile, ipa_proxy.cpp).
+        tuningNote_ = std::string("tuning: LIBCAMERA_RPI_TUNING_FILE=") + forced + " (not the fixed-tone override)";
+        return {};
+    }
+    if (model == tuningModel_) return {};
+    if (tuningDir_.empty()) {
+        std::string base = options_.tuningDir;
+        if (base.empty()) {
+            const char *runtime = std::getenv("RUNTIME_DIRECTORY"); // systemd's RuntimeDirectory=
+            base = runtime && *runtime ? std::string(runtime).substr(0, std::string(runtime).find(':')) : "/tmp";
+        }
+        std::string tmpl = base + "/icacam-tuning-XXXXXX";
+        if (!::mkdtemp(tmpl.data())) {
+            tuningModel_ = model;
+            tuningNote_ = "tuning: no folder for the override in " + base + " (" + std::strerror(errno) +
+                          "), adaptive contrast as libcamera's file sets";
+            return {};
+        }
+        tuningDir_ = tmpl;
+    }
+    TuningOverride written, mono; // a mono sensor's file is <model>_mono.json (loadIPA)
+    Error e = writeFixedToneTuning(kIpaDataDirs, model, tuningDir_, &written);
+    if (e.ok()) e = writeFixedToneTuning(kIpaDataDirs, model + "_mono", tuningDir_, &mono);
+    tuningModel_ = model;
+    if (!e.ok()) {
+        // The camera still works with libcamera's own file: measure, and say so everywhere.
+        tuningNote_ = "tuning: override failed (" + e.message + "), adaptive contrast as libcamera's file sets";
+        return {};
+    }
+    if (written.files + mono.files == 0) {
+        tuningNote_ = "tuning: no Raspberry Pi tuning file for " + model + " (tone curve as the pipeline sets it)";
+        return {};
+    }
+    const char *old = std::getenv("LIBCAMERA_IPA_CONFIG_PATH");
+    std::string path = tuningDir_;
+    if (old && *old && std::string(old).find(tuningDir_) == std::string::npos) path += std::string(":") + old;
+    ::setenv("LIBCAMERA_IPA_CONFIG_PATH", path.c_str(), 1);
+    const std::string &from = written.files ? written.source : mono.source;
+    tuningNote_ = "tuning: " + from.substr(from.rfind('/') + 1) + " with adaptive contrast off";
+    *restart = true;
+    return {};
+}
+
+Error LibcameraCamera::configure(const CameraFormat &fmt)
+{
+    if (fmt.maxWidth <= 0 || fmt.maxHeight <= 0)
+        return Error::make(Errc::Invalid, "camera: maximum frame size must be positive");
+    stop();
+    wanted_ = fmt;
+    configured_ = true;
+    mode_ = {};
+    if (!options_.tuning.empty() && options_.tuning != "system")
+        ::setenv("LIBCAMERA_RPI_TUNING_FILE", options_.tuning.c_str(), 1);
+
+    std::unique_ptr<Session> s;
+    if (Error e = openSession(&s); !e.ok()) return e;
+    bool restart = false;
+    if (Error e = prepareTuning(modelOf(*s->camera), &restart); !e.ok()) return e;
+    if (restart) {
+        s.reset(); // a new manager reads the tuning override when it registers the camera
+        if (Error e = openSession(&s); !e.ok()) return e;
+    }
+    if (Error e = configureStreams(*s, fmt); !e.ok()) return e;
     if (int r = s->camera->configure(s->config.get()); r < 0)
         return Error::make(Errc::Io, std::string("libcamera: configure: ") + std::strerror(-r));
+    lc::StreamConfiguration &sc = s->config->at(0);
     s->stream = sc.stream();
     s->width = int(sc.size.width);
     s->height = int(sc.size.height);
     s->stride = int(sc.stride);
+    mode_.model = modelOf(*s->camera);
+    mode_.width = s->width;
+    mode_.height = s->height;
+    mode_.pixelFormat = sc.pixelFormat.toString();
+    mode_.tuning = tuningNote_;
 
     // Buffers, their mappings and one request per buffer: all allocated here, once.
     s->allocator = std::make_unique<lc::FrameBufferAllocator>(s->camera);
@@ -294,9 +477,23 @@ Error LibcameraCamera::configure(const CameraFormat &fmt)
     s->started = true;
     for (auto &req : s->requests)
         if (s->camera->queueRequest(req.get()) < 0) return Error::make(Errc::Io, "libcamera: queueRequest failed");
+    // The mode, the stream and the tuning go into `status` (describe()) and, shorter, into
+    // every frame's `source`, which the journal keeps with each result.
+    std::string mode = "sensor mode ";
+    if (mode_.choice.found)
+        mode += std::to_string(mode_.choice.mode.width) + "x" + std::to_string(mode_.choice.mode.height) + " " +
+                std::to_string(mode_.choice.mode.bitDepth) + "-bit by " + mode_.namedBy +
+                (mode_.choice.scaled ? ", scaled by the ISP" : "");
+    else
+        mode += "unlisted, by " + mode_.namedBy;
     description_ = "libcamera " + s->camera->id() + " " + modelOf(*s->camera) + " " + sc.size.toString() + " " +
-                   sc.pixelFormat.toString() + ", exposure " + std::to_string(want.exposureUs) + " us, gain " +
-                   fmtNum(want.analogueGain) + notes;
+                   sc.pixelFormat.toString() + " (" + mode + "), " + tuningNote_ + ", exposure " +
+                   std::to_string(want.exposureUs) + " us, gain " + fmtNum(want.analogueGain) + notes;
+    source_ = "libcamera:" + modelOf(*s->camera) + " " + sc.size.toString();
+    if (mode_.choice.found)
+        source_ += " mode " + std::to_string(mode_.choice.mode.width) + "x" + std::to_string(mode_.choice.mode.height) +
+                   "/" + std::to_string(mode_.choice.mode.bitDepth);
+    source_ += tuningNote_.find("adaptive contrast off") != std::string::npos ? " tone fixed" : " tone default";
     session_ = std::move(s);
     return {};
 }
@@ -366,7 +563,7 @@ Error LibcameraCamera::capture(const CaptureRequest &req, CapturedFrame *out)
             if (const auto lens = meta.get(lc::controls::LensPosition)) got.lensPosition = *lens;
             got.sharpness = options_.controls.sharpness; // not reported per frame
             got.noiseReduction = options_.controls.noiseReduction;
-            out->source = "libcamera:" + s.camera->id();
+            out->source = source_;
             return {};
         }
         if (s.cv.wait_until(lock, deadline) == std::cv_status::timeout && s.done.empty() && !s.gone)

@@ -1,6 +1,11 @@
 #pragma once
 // A CSI camera through libcamera behind the Camera seam. A still configuration is set up
-// once and kept streaming, so a trigger costs one frame, not a reconfiguration; exposure,
+// once and kept streaming, so a trigger costs one frame, not a reconfiguration. The sensor
+// runs in the mode chooseSensorMode() picks from the modes the camera lists (its full
+// resolution when the maximum allows), named to the pipeline as rpicam-still does, and the
+// processed stream is that mode's size, so the luma is the sensor's pixels, not an ISP
+// crop (hal/libcamera/sensor_mode.h). The tone curve is fixed: the Raspberry Pi tuning file
+// with adaptive contrast off (hal/libcamera/tuning.h) unless told otherwise. Exposure,
 // gain and colour gains are fixed (no auto-exposure drift between shots), autofocus is off
 // at a set lens position, sharpening and noise reduction as configured; capture() hands out
 // the first completed frame whose exposure (SensorTimestamp − ExposureTime) started after
@@ -9,9 +14,11 @@
 // libcamera's types stay in the .cpp: nothing here depends on its version.
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "hal/camera.h"
 #include "hal/clock.h"
+#include "hal/libcamera/sensor_mode.h"
 
 namespace icacam::hal {
 
@@ -26,6 +33,26 @@ struct LibcameraOptions {
     // (a full-resolution mode, not an ISP upscale to the buffer limit).
     int width = 0, height = 0;
     int bufferCount = 4;
+    // The tone curve. "": fixed, the sensor's Raspberry Pi tuning file with adaptive
+    // contrast off, written to a directory of this process's (tuningDir, else
+    // $RUNTIME_DIRECTORY, else /tmp) and found by libcamera through LIBCAMERA_IPA_CONFIG_PATH;
+    // "system": libcamera's installed file as it is; else the path of a tuning file
+    // (LIBCAMERA_RPI_TUNING_FILE, for every camera of the process).
+    std::string tuning;
+    std::string tuningDir;
+};
+
+// What configure() set up, for `status`, the journal and the hardware-in-the-loop test.
+struct LibcameraMode {
+    std::string model;                   // the sensor (properties::Model: imx708, imx477 ...)
+    std::vector<SensorMode> sensorModes; // the raw modes the camera lists (empty: none listed)
+    SensorModeChoice choice;             // what chooseSensorMode() made of them
+    // How the mode was named to the pipeline: "sensor configuration", "raw stream", or
+    // "stream size" (a pipeline without raw modes: it picks the mode from the size).
+    std::string namedBy;
+    int width = 0, height = 0; // the processed stream the pipeline agreed to
+    std::string pixelFormat;   // NV12, YUV420, R8 ...
+    std::string tuning;        // which tuning file, adaptive contrast on or off
 };
 
 class LibcameraCamera final : public Camera {
@@ -41,15 +68,25 @@ public:
     using Camera::capture;
     Error capture(const CaptureRequest &req, CapturedFrame *out) override;
     std::string describe() const override { return description_; }
+    // Valid after a successful configure().
+    const LibcameraMode &mode() const { return mode_; }
 
 private:
     struct Session; // CameraManager, camera, allocator, mapped buffers, requests
     void stop();
+    Error openSession(std::unique_ptr<Session> *out);
+    Error prepareTuning(const std::string &model, bool *restart);
+    Error configureStreams(Session &s, const CameraFormat &fmt);
     const Clock &clock_;
     LibcameraOptions options_;
     CameraFormat wanted_{};
     std::string description_ = "libcamera: not opened";
+    std::string source_; // the frame's `source`: camera, mode, tuning
     bool configured_ = false;
+    LibcameraMode mode_;
+    std::string tuningDir_;   // the fixed-tone override's directory (removed at destruction)
+    std::string tuningModel_; // the sensor it was written for
+    std::string tuningNote_;
     std::unique_ptr<Session> session_;
 };
 

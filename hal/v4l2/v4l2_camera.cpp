@@ -16,9 +16,12 @@
 #include <cmath>
 #include <cstring>
 #include <iterator>
+#include <vector>
 
 #include "hal/fresh_frame.h"
+#include "hal/v4l2/buffer_stamp.h"
 #include "hal/v4l2/mjpeg_luma.h"
+#include "hal/v4l2/stream_mode.h"
 
 namespace icacam::hal {
 
@@ -44,22 +47,22 @@ bool unplugged(int err)
     return err == ENODEV || err == ENXIO || err == EIO;
 }
 
-uint32_t fourcc(vision::PixelFormat f)
+uint32_t fourcc(PixelFormat f)
 {
     switch (f) {
-    case vision::PixelFormat::Grey8: return V4L2_PIX_FMT_GREY;
-    case vision::PixelFormat::YUYV: return V4L2_PIX_FMT_YUYV;
-    case vision::PixelFormat::NV12: return V4L2_PIX_FMT_NV12;
+    case PixelFormat::Grey8: return V4L2_PIX_FMT_GREY;
+    case PixelFormat::YUYV: return V4L2_PIX_FMT_YUYV;
+    case PixelFormat::NV12: return V4L2_PIX_FMT_NV12;
     default: return 0;
     }
 }
 
-bool fromFourcc(uint32_t cc, vision::PixelFormat *f)
+bool fromFourcc(uint32_t cc, PixelFormat *f)
 {
     switch (cc) {
-    case V4L2_PIX_FMT_GREY: *f = vision::PixelFormat::Grey8; return true;
-    case V4L2_PIX_FMT_YUYV: *f = vision::PixelFormat::YUYV; return true;
-    case V4L2_PIX_FMT_NV12: *f = vision::PixelFormat::NV12; return true;
+    case V4L2_PIX_FMT_GREY: *f = PixelFormat::Grey8; return true;
+    case V4L2_PIX_FMT_YUYV: *f = PixelFormat::YUYV; return true;
+    case V4L2_PIX_FMT_NV12: *f = PixelFormat::NV12; return true;
     default: return false;
     }
 }
@@ -70,9 +73,40 @@ int64_t monotonicNs()
 }
 
 // Preference among formats of equal size: in place before decoded.
+// capture() polls in slices this long, so a buffer waits at most this in the driver's queue.
+constexpr int kPollSliceMs = 20;
+
 const uint32_t kFormats[] = {V4L2_PIX_FMT_GREY, V4L2_PIX_FMT_NV12, V4L2_PIX_FMT_YUYV, V4L2_PIX_FMT_MJPEG};
 
-bool listed(int fd, uint32_t cc, bool *enumerated)
+bool known(uint32_t cc)
+{
+    for (uint32_t k : kFormats)
+        if (k == cc) return true;
+    return false;
+}
+
+// The fastest frame interval the device lists for a format and size (0 / 0: none listed).
+void fastestInterval(int fd, uint32_t cc, uint32_t w, uint32_t h, uint32_t *num, uint32_t *den)
+{
+    *num = *den = 0;
+    for (uint32_t i = 0; i < 64; ++i) {
+        v4l2_frmivalenum f{};
+        f.index = i;
+        f.pixel_format = cc;
+        f.width = w;
+        f.height = h;
+        if (xioctl(fd, VIDIOC_ENUM_FRAMEINTERVALS, &f) < 0) return;
+        const v4l2_fract t = f.type == V4L2_FRMIVAL_TYPE_DISCRETE ? f.discrete : f.stepwise.min;
+        if (t.numerator && t.denominator && (!*den || uint64_t(t.numerator) * *den < uint64_t(*num) * t.denominator))
+            *num = t.numerator, *den = t.denominator;
+        if (f.type != V4L2_FRMIVAL_TYPE_DISCRETE) return;
+    }
+}
+
+// Every listed format vision can take, with each listed size (a stepwise or continuous range:
+// its largest size within the maximum; none listed: the maximum, for S_FMT to adjust) and
+// that size's fastest frame interval. `enumerated`: the device answers ENUM_FMT at all.
+void listModes(int fd, int maxW, int maxH, std::vector<V4l2Mode> *out, bool *enumerated)
 {
     *enumerated = false;
     for (uint32_t i = 0; i < 64; ++i) {
@@ -81,34 +115,28 @@ bool listed(int fd, uint32_t cc, bool *enumerated)
         d.type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
         if (xioctl(fd, VIDIOC_ENUM_FMT, &d) < 0) break;
         *enumerated = true;
-        if (d.pixelformat == cc) return true;
-    }
-    return false;
-}
-
-// The largest size the device lists for a format within maxW × maxH (0 × 0 when none; the
-// maximum itself when the device does not list sizes: S_FMT then adjusts).
-void largestSize(int fd, uint32_t cc, int maxW, int maxH, uint32_t *w, uint32_t *h)
-{
-    *w = *h = 0;
-    for (uint32_t i = 0; i < 256; ++i) {
-        v4l2_frmsizeenum f{};
-        f.index = i;
-        f.pixel_format = cc;
-        if (xioctl(fd, VIDIOC_ENUM_FRAMESIZES, &f) < 0) {
-            if (i == 0) *w = uint32_t(maxW), *h = uint32_t(maxH);
-            return;
+        if (!known(d.pixelformat)) continue;
+        for (uint32_t k = 0; k < 256; ++k) {
+            v4l2_frmsizeenum f{};
+            f.index = k;
+            f.pixel_format = d.pixelformat;
+            if (xioctl(fd, VIDIOC_ENUM_FRAMESIZES, &f) < 0) {
+                if (k == 0) out->push_back({d.pixelformat, maxW, maxH, 0, 0});
+                break;
+            }
+            V4l2Mode m;
+            m.fourcc = d.pixelformat;
+            if (f.type == V4L2_FRMSIZE_TYPE_DISCRETE) {
+                m.width = int(f.discrete.width);
+                m.height = int(f.discrete.height);
+            } else {
+                m.width = f.stepwise.max_width < uint32_t(maxW) ? int(f.stepwise.max_width) : maxW;
+                m.height = f.stepwise.max_height < uint32_t(maxH) ? int(f.stepwise.max_height) : maxH;
+            }
+            fastestInterval(fd, m.fourcc, uint32_t(m.width), uint32_t(m.height), &m.intervalNum, &m.intervalDen);
+            out->push_back(m);
+            if (f.type != V4L2_FRMSIZE_TYPE_DISCRETE) break;
         }
-        uint32_t cw = 0, ch = 0;
-        if (f.type == V4L2_FRMSIZE_TYPE_DISCRETE) {
-            cw = f.discrete.width;
-            ch = f.discrete.height;
-        } else { // stepwise / continuous: the largest step within the maximum
-            cw = f.stepwise.max_width < uint32_t(maxW) ? f.stepwise.max_width : uint32_t(maxW);
-            ch = f.stepwise.max_height < uint32_t(maxH) ? f.stepwise.max_height : uint32_t(maxH);
-        }
-        if (cw <= uint32_t(maxW) && ch <= uint32_t(maxH) && uint64_t(cw) * ch > uint64_t(*w) * *h) *w = cw, *h = ch;
-        if (f.type != V4L2_FRMSIZE_TYPE_DISCRETE) return;
     }
 }
 
@@ -217,6 +245,8 @@ Error V4l2Camera::openAndStart()
         stop();
         return e;
     }
+    driver_.assign(reinterpret_cast<const char *>(cap.driver),
+                   strnlen(reinterpret_cast<const char *>(cap.driver), sizeof cap.driver));
     const uint32_t caps = (cap.capabilities & V4L2_CAP_DEVICE_CAPS) ? cap.device_caps : cap.capabilities;
     if (!(caps & V4L2_CAP_VIDEO_CAPTURE) || !(caps & V4L2_CAP_STREAMING)) {
         stop();
@@ -249,6 +279,8 @@ Error V4l2Camera::openAndStart()
             stop();
             return e;
         }
+        // vb2 reports the queue's timestamp flags on every buffer, QUERYBUF included.
+        if (i == 0) stampModel_ = bufferStampModel(b.flags, driver_);
         buffers_[i].addr = mapper_->map(fd_.get(), b.length, b.m.offset);
         buffers_[i].length = b.length;
         if (!buffers_[i].addr) {
@@ -269,11 +301,13 @@ Error V4l2Camera::openAndStart()
         return e;
     }
     streaming_ = true;
-    char mode[160];
-    std::snprintf(mode, sizeof mode, "v4l2 %s %dx%d %s%s, %.1f fps", dev.c_str(), width_, height_,
+    char mode[256];
+    std::snprintf(mode, sizeof mode, "v4l2 %s %s %dx%d %s%s, %.1f fps", dev.c_str(), driver_.c_str(), width_, height_,
                   mjpeg_ ? "MJPEG" : fourccName(fourcc(format_)).c_str(), mjpeg_ ? " (decoded to luma)" : "",
                   1e6 / double(frameIntervalUs_));
     description_ = mode;
+    description_ += whiteBalanceReadK_ >= 0 ? ", white balance " + std::to_string(whiteBalanceReadK_) + " K" : "";
+    description_ += ", timestamps: " + describeStampModel(stampModel_);
     if (!refused_.empty()) description_ += ", refused: " + refused_;
     return {};
 }
@@ -282,32 +316,35 @@ Error V4l2Camera::negotiate()
 {
     const std::string &dev = options_.device;
     const int fd = fd_.get();
-    // The format and size: listed sizes first (the largest within the maximum, or the one
-    // configured), ties to the in-place formats; a device that lists nothing is asked with
-    // S_FMT in the same order and its answer taken as it comes.
+    // The mode from what the device lists (chooseV4l2Mode: 15 fps or more preferred, then
+    // the largest area, in-place formats before MJPEG); a configured size the device does
+    // not list is asked as it is, in the best format that lists anything up to it. A device
+    // that lists nothing is asked with S_FMT in the formats' order, its answer taken as it
+    // comes.
     uint32_t order[5];
     size_t n = 0;
     order[n++] = fourcc(wanted_.format);
     for (uint32_t cc : kFormats)
         if (cc != order[0]) order[n++] = cc;
-    uint32_t bestCc = 0, bestW = 0, bestH = 0;
+    std::vector<V4l2Mode> modes;
     bool enumerated = false;
-    for (size_t k = 0; k < n; ++k) {
-        bool any = false;
-        if (!listed(fd, order[k], &any)) {
-            enumerated = enumerated || any;
-            continue;
-        }
-        enumerated = true;
-        uint32_t w = 0, h = 0;
-        if (options_.width > 0 && options_.height > 0)
-            w = uint32_t(options_.width), h = uint32_t(options_.height);
-        else
-            largestSize(fd, order[k], wanted_.maxWidth, wanted_.maxHeight, &w, &h);
-        if (uint64_t(w) * h > uint64_t(bestW) * bestH) bestCc = order[k], bestW = w, bestH = h;
+    listModes(fd, wanted_.maxWidth, wanted_.maxHeight, &modes, &enumerated);
+    const bool sized = options_.width > 0 && options_.height > 0;
+    V4l2ModeChoice choice =
+        chooseV4l2Mode(modes, wanted_.maxWidth, wanted_.maxHeight, options_.width, options_.height, order[0]);
+    if (!choice.found && sized) {
+        choice = chooseV4l2Mode(modes, options_.width, options_.height, 0, 0, order[0]);
+        choice.mode.width = options_.width;
+        choice.mode.height = options_.height;
+        choice.mode.intervalNum = choice.mode.intervalDen = 0;
     }
-    if (enumerated && !bestCc)
-        return Error::make(Errc::BadFormat, "camera " + dev + ": lists none of GREY, NV12, YUYV, MJPEG");
+    if (enumerated && !choice.found)
+        return Error::make(Errc::BadFormat, "camera " + dev + ": lists none of GREY, NV12, YUYV, MJPEG within " +
+                                                std::to_string(wanted_.maxWidth) + "x" +
+                                                std::to_string(wanted_.maxHeight));
+    mode_ = choice.mode;
+    const uint32_t bestCc = choice.mode.fourcc;
+    const uint32_t bestW = uint32_t(choice.mode.width), bestH = uint32_t(choice.mode.height);
     v4l2_format f{};
     bool agreed = false;
     for (size_t k = 0; k < n && !agreed; ++k) {
@@ -335,7 +372,7 @@ Error V4l2Camera::negotiate()
         return Error::make(Errc::TooLarge, "camera " + dev + ": driver chose " + std::to_string(width_) + "x" +
                                                std::to_string(height_) + ", above the configured maximum");
     if (mjpeg_) {
-        format_ = vision::PixelFormat::Grey8;
+        format_ = PixelFormat::Grey8;
         stride_ = width_;
         const size_t need = size_t(width_) * size_t(height_);
         if (need > decodedBytes_) {
@@ -343,14 +380,23 @@ Error V4l2Camera::negotiate()
             decodedBytes_ = need;
         }
     } else {
-        const int minStride = format_ == vision::PixelFormat::YUYV ? 2 * width_ : width_;
+        const int minStride = format_ == PixelFormat::YUYV ? 2 * width_ : width_;
         stride_ = f.fmt.pix.bytesperline ? int(f.fmt.pix.bytesperline) : minStride;
         if (stride_ < minStride)
             return Error::make(Errc::BadStride, "camera " + dev + ": stride " + std::to_string(stride_) + " too short");
     }
-    // The frame interval bounds the exposure and the stamp's delay when nothing better is known.
+    // The chosen mode's fastest interval (a UVC camera otherwise streams at its descriptor's
+    // default rate). The interval bounds the exposure and the stamp's delay when nothing
+    // better is known: read back what the device took.
     v4l2_streamparm parm{};
     parm.type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
+    if (enumerated && choice.mode.intervalNum && choice.mode.intervalDen) {
+        parm.parm.capture.timeperframe.numerator = choice.mode.intervalNum;
+        parm.parm.capture.timeperframe.denominator = choice.mode.intervalDen;
+        (void)xioctl(fd, VIDIOC_S_PARM, &parm); // a device without it keeps its own rate
+        parm = {};
+        parm.type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
+    }
     if (xioctl(fd, VIDIOC_G_PARM, &parm) == 0 && parm.parm.capture.timeperframe.denominator > 0 &&
         parm.parm.capture.timeperframe.numerator > 0)
         frameIntervalUs_ =
@@ -374,10 +420,16 @@ void V4l2Camera::applyControls()
         set(V4L2_CID_EXPOSURE_ABSOLUTE, c.exposureUs / 100.0, "exposure_absolute");
     }
     if (c.analogueGain >= 0) set(V4L2_CID_GAIN, c.analogueGain, "gain");
+    int32_t v = 0;
     if (c.redGain >= 0 && c.blueGain >= 0) {
         set(V4L2_CID_AUTO_WHITE_BALANCE, 0, "white_balance_automatic");
         set(V4L2_CID_RED_BALANCE, c.redGain, "red_balance");
         set(V4L2_CID_BLUE_BALANCE, c.blueGain, "blue_balance");
+    } else if (options_.whiteBalanceK >= 0 && getControl(fd, V4L2_CID_WHITE_BALANCE_TEMPERATURE, &v)) {
+        // UVC cameras offer a colour temperature, not red/blue gains. Auto off first: the
+        // temperature is inactive (not settable) while auto white balance is on.
+        set(V4L2_CID_AUTO_WHITE_BALANCE, 0, "white_balance_automatic");
+        set(V4L2_CID_WHITE_BALANCE_TEMPERATURE, options_.whiteBalanceK, "white_balance_temperature");
     }
     if (c.lensPosition >= 0) {
         set(V4L2_CID_FOCUS_AUTO, 0, "focus_automatic_continuous");
@@ -386,7 +438,6 @@ void V4l2Camera::applyControls()
     if (c.sharpness >= 0) set(V4L2_CID_SHARPNESS, c.sharpness, "sharpness");
     // What the device reports now: journaled with each frame.
     reported_ = {};
-    int32_t v = 0;
     bool manual = false;
     if (getControl(fd, V4L2_CID_EXPOSURE_AUTO, &v)) manual = v == V4L2_EXPOSURE_MANUAL;
     if (manual && getControl(fd, V4L2_CID_EXPOSURE_ABSOLUTE, &v)) reported_.exposureUs = v * 100;
@@ -395,6 +446,9 @@ void V4l2Camera::applyControls()
     if (getControl(fd, V4L2_CID_BLUE_BALANCE, &v)) reported_.blueGain = v;
     if (getControl(fd, V4L2_CID_FOCUS_ABSOLUTE, &v)) reported_.lensPosition = v;
     if (getControl(fd, V4L2_CID_SHARPNESS, &v)) reported_.sharpness = v;
+    whiteBalanceReadK_ = -1;
+    const bool autoWhite = getControl(fd, V4L2_CID_AUTO_WHITE_BALANCE, &v) && v != 0;
+    if (!autoWhite && getControl(fd, V4L2_CID_WHITE_BALANCE_TEMPERATURE, &v)) whiteBalanceReadK_ = v;
 }
 
 Error V4l2Camera::requeueHeld()
@@ -423,9 +477,13 @@ Error V4l2Camera::capture(const CaptureRequest &req, CapturedFrame *out)
     // Also bounded in real time: a test's manual clock does not move while poll() waits.
     const int64_t realDeadlineNs = startNs + int64_t(timeoutMs) * 1000000;
     // Without a manual exposure read back, the exposure is at most one frame interval.
+    BufferTiming timing;
+    timing.exposureNs = (reported_.exposureUs > 0 ? int64_t(reported_.exposureUs) : frameIntervalUs_) * 1000;
+    timing.frameIntervalNs = frameIntervalUs_ * 1000;
+    timing.configuredDelayNs = options_.stampDelayUs >= 0 ? int64_t(options_.stampDelayUs) * 1000 : -1;
+    timing.pollSliceNs = int64_t(kPollSliceMs) * 1000000;
+    timing.waitingAtCall = true; // until the first poll: buffers filled before this call
     FrameStamp stamp;
-    stamp.exposureNs = (reported_.exposureUs > 0 ? int64_t(reported_.exposureUs) : frameIntervalUs_) * 1000;
-    stamp.stampDelayNs = (options_.stampDelayUs >= 0 ? int64_t(options_.stampDelayUs) : frameIntervalUs_) * 1000;
     int stale = 0;
     std::string corrupt;
     Error failure;
@@ -435,9 +493,12 @@ Error V4l2Camera::capture(const CaptureRequest &req, CapturedFrame *out)
         b.type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
         b.memory = V4L2_MEMORY_MMAP;
         if (xioctl(fd_.get(), VIDIOC_DQBUF, &b) == 0) {
-            stamp.stampNs = int64_t(b.timestamp.tv_sec) * 1000000000 + int64_t(b.timestamp.tv_usec) * 1000;
-            // Filled before the light settled, or in flight across it: hand it back.
-            const bool early = !exposedAfter(stamp, notBeforeNs);
+            timing.stampNs = int64_t(b.timestamp.tv_sec) * 1000000000 + int64_t(b.timestamp.tv_usec) * 1000;
+            timing.nowNs = monotonicNs();
+            const BufferStampModel model = bufferStampModel(b.flags, driver_);
+            // Filled before the light settled, in flight across it, or with no believable
+            // time at all: hand it back.
+            const bool early = !boundExposureStart(model, timing, &stamp) || !exposedAfter(stamp, notBeforeNs);
             bool usable = !early && !(b.flags & V4L2_BUF_FLAG_ERROR) && int(b.index) < bufferCount_;
             stale += early ? 1 : 0;
             const size_t used = b.bytesused ? b.bytesused : imageBytes_;
@@ -461,7 +522,7 @@ Error V4l2Camera::capture(const CaptureRequest &req, CapturedFrame *out)
             const int64_t exposedNs = exposureStartNs(stamp);
             out->timestampMs = monotonicNsOnClockMs(clock_, exposedNs);
             out->latencyUs = (exposedNs - notBeforeNs) / 1000;
-            out->exposureUs = stamp.exposureNs / 1000;
+            out->exposureUs = timing.exposureNs / 1000;
             out->sequence = b.sequence;
             out->staleFrames = stale;
             out->controls = reported_;
@@ -482,7 +543,9 @@ Error V4l2Camera::capture(const CaptureRequest &req, CapturedFrame *out)
                                                   " earlier frames refused" + (corrupt.empty() ? "" : "; " + corrupt) +
                                                   ")");
         pollfd p{fd_.get(), POLLIN, 0};
-        const int pr = ::poll(&p, 1, int(left < 20 ? left : 20)); // short slices: the deadline rules
+        const int pr =
+            ::poll(&p, 1, int(left < kPollSliceMs ? left : kPollSliceMs)); // short slices: the deadline rules
+        timing.waitingAtCall = false;
         if (pr < 0 && errno != EINTR)
             failure = Error::make(Errc::Io, sysError("camera: poll"));
         else if (pr > 0 && (p.revents & (POLLERR | POLLHUP | POLLNVAL)) && !(p.revents & POLLIN))

@@ -1,11 +1,14 @@
 #pragma once
-// A V4L2 capture device (a USB UVC camera) behind the Camera seam: the frame size chosen
-// from the sizes the device lists (the largest within the configured maximum, or the one
-// configured), GREY / NV12 / YUYV viewed in place by vision::lumaOf or MJPEG decoded to luma
-// (libjpeg-turbo), imaging controls set through VIDIOC_S_EXT_CTRLS and read back, mmap
-// streaming with buffers allocated once in configure(), dequeue with a poll timeout, only
-// frames exposed after the LED settled handed out (fresh_frame.h), and recovery after an
-// unplug: capture() reports Errc::Closed once, then reopens the device on the next call.
+// A V4L2 capture device (a USB UVC camera) behind the Camera seam: the mode chosen from
+// the formats, sizes and frame intervals the device lists (hal/v4l2/stream_mode.h: 15 fps or
+// more preferred, then the largest area within the configured maximum, or the size
+// configured), streamed at its fastest interval; GREY / NV12 / YUYV viewed in place by
+// vision::lumaOf or MJPEG decoded to luma (libjpeg-turbo), imaging controls set through
+// VIDIOC_S_EXT_CTRLS and read back, white balance fixed, mmap streaming with buffers
+// allocated once in configure(), dequeue with a poll timeout, only frames exposed after the
+// LED settled handed out (fresh_frame.h), their timestamps believed as far as the buffer
+// flags and the driver allow (hal/v4l2/buffer_stamp.h), and recovery after an unplug:
+// capture() reports Errc::Closed once, then reopens the device on the next call.
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -14,6 +17,8 @@
 #include "hal/camera.h"
 #include "hal/clock.h"
 #include "hal/unique_fd.h"
+#include "hal/v4l2/buffer_stamp.h"
+#include "hal/v4l2/stream_mode.h"
 
 namespace icacam::hal {
 
@@ -36,6 +41,11 @@ struct V4l2Options {
     // Most time from the end of a frame's exposure to its buffer timestamp (uvcvideo: the
     // first USB packet); -1: one frame interval, which covers readout and MJPEG encoding.
     int stampDelayUs = -1;
+    // White balance fixed at this colour temperature (kelvin; auto white balance off) when
+    // the camera has the control and red/blue gains are not set; -1 leaves it as it is.
+    // 5000 K is a white LED ring's neighbourhood; luma moves with the balance, through the
+    // colour matrix, so an auto balance moves the grey levels from shot to shot.
+    int whiteBalanceK = 5000;
 };
 
 class V4l2Camera final : public Camera {
@@ -54,12 +64,16 @@ public:
     std::string describe() const override { return description_; }
 
     // What the driver agreed to (valid after configure()).
-    vision::PixelFormat format() const { return format_; }
+    PixelFormat format() const { return format_; }
     int width() const { return width_; }
     int height() const { return height_; }
     int stride() const { return stride_; }
     bool mjpeg() const { return mjpeg_; }
     int64_t frameIntervalUs() const { return frameIntervalUs_; }
+    const V4l2Mode &mode() const { return mode_; }
+    // What the buffer timestamps are taken to mean (from the flags QUERYBUF reports).
+    const BufferStampModel &stampModel() const { return stampModel_; }
+    int whiteBalanceK() const { return whiteBalanceReadK_; } // read back; -1 not fixed
     const CameraControls &reported() const { return reported_; }
 
 private:
@@ -83,13 +97,17 @@ private:
     int bufferCount_ = 0;
     int held_ = -1; // index of the buffer handed out by the last capture()
     bool streaming_ = false;
-    vision::PixelFormat format_ = vision::PixelFormat::Grey8;
+    PixelFormat format_ = PixelFormat::Grey8;
     int width_ = 0, height_ = 0, stride_ = 0;
     size_t imageBytes_ = 0;
     bool mjpeg_ = false;
     std::unique_ptr<uint8_t[]> decoded_; // MJPEG frames' luma, sized in configure()
     size_t decodedBytes_ = 0;
     int64_t frameIntervalUs_ = 33333;
+    V4l2Mode mode_;               // as chosen from the list (its interval: the one asked)
+    std::string driver_;          // QUERYCAP's driver name: "uvcvideo"
+    BufferStampModel stampModel_; // from the buffers' flags
+    int whiteBalanceReadK_ = -1;
     CameraControls reported_; // read back after setting
     std::string description_ = "v4l2: not opened";
     std::string refused_; // controls the device did not take

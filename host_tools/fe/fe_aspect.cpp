@@ -73,75 +73,102 @@ AspectRatios aspectRatios(const std::vector<std::string> &in, double minU)
     return out;
 }
 
+namespace {
+
+using RatioMap = std::map<std::tuple<double, double, double, double>, double>;
+
+// The table's axes: every simulated slenderness (the base's among them), n, reduction and μ.
+struct AspectAxes {
+    std::vector<double> aspect, n, reduction, mu;
+};
+
+AspectAxes aspectAxes(const RatioMap &ratio)
+{
+    std::set<double> as{kBaseAspect}, ns, rs, ms;
+    for (const auto &[k, v] : ratio) {
+        as.insert(std::get<0>(k));
+        ns.insert(std::get<1>(k));
+        rs.insert(std::get<2>(k));
+        ms.insert(std::get<3>(k));
+    }
+    return {{as.begin(), as.end()}, {ns.begin(), ns.end()}, {rs.begin(), rs.end()}, {ms.begin(), ms.end()}};
+}
+
+// A full table for the device's multilinear lookup: a point not simulated takes the nearest
+// simulated one of the same slenderness (distance in μ, reduction and n, each over its span
+// in the paper's study); the base slenderness is 1 by definition.
+double nearestRatio(const RatioMap &m, double a, double n, double r, double mu)
+{
+    if (std::fabs(a - kBaseAspect) < 1e-6) return 1.0;
+    if (const auto it = m.find({a, n, r, mu}); it != m.end()) return it->second;
+    double best = 1e9, value = 1.0;
+    for (const auto &[k, v] : m) {
+        if (std::fabs(std::get<0>(k) - a) > 1e-6) continue;
+        const double dist = std::fabs(std::get<1>(k) - n) / 0.45 + std::fabs(std::get<2>(k) - r) / 0.3 +
+                            std::fabs(std::get<3>(k) - mu) / 0.25;
+        if (dist < best) {
+            best = dist;
+            value = v;
+        }
+    }
+    return value;
+}
+
+// The three [aspect][n][reduction][μ] tables' rows: u's ratio, whether it was simulated, and
+// R_max's ratio; count: the simulated points.
+struct AspectTables {
+    std::string values, simulated, rMaxValues;
+    int count = 0;
+};
+
+AspectTables aspectTables(const AspectRatios &ar, const AspectAxes &x)
+{
+    AspectTables t;
+    for (double a : x.aspect) {
+        t.values += "    {\n";
+        t.simulated += "    {\n";
+        t.rMaxValues += "    {\n";
+        for (double n : x.n) {
+            t.values += "        {\n";
+            t.simulated += "        {\n";
+            t.rMaxValues += "        {\n";
+            for (double r : x.reduction) {
+                std::string line = "            {", sline = "            {", rline = "            {";
+                for (size_t mi = 0; mi < x.mu.size(); ++mi) {
+                    const bool sim = ar.ratio.count({a, n, r, x.mu[mi]}) > 0;
+                    char b[32];
+                    std::snprintf(b, sizeof b, "%s%.5f", mi ? ", " : "", nearestRatio(ar.ratio, a, n, r, x.mu[mi]));
+                    line += b;
+                    std::snprintf(b, sizeof b, "%s%.5f", mi ? ", " : "", nearestRatio(ar.rMaxRatio, a, n, r, x.mu[mi]));
+                    rline += b;
+                    sline += std::string(mi ? ", " : "") + (sim ? "1" : "0");
+                    t.count += sim;
+                }
+                t.values += line + "},\n";
+                t.simulated += sline + "},\n";
+                t.rMaxValues += rline + "},\n";
+            }
+            t.values += "        },\n";
+            t.simulated += "        },\n";
+            t.rMaxValues += "        },\n";
+        }
+        t.values += "    },\n";
+        t.simulated += "    },\n";
+        t.rMaxValues += "    },\n";
+    }
+    return t;
+}
+
+} // namespace
+
 std::string aspectTableText(const TableSources &src, const std::string &sourceDir, std::string *summary)
 {
     std::vector<std::string> in;
     for (const std::string &name : src.aspect) in.push_back(sourceDir + name);
     const AspectRatios ar = aspectRatios(in);
     if (ar.ratio.empty()) throw std::runtime_error("tables: no run at another H0/D0 with a base run to compare");
-    std::set<double> as{kBaseAspect}, ns, rs, ms;
-    for (const auto &[k, v] : ar.ratio) {
-        as.insert(std::get<0>(k));
-        ns.insert(std::get<1>(k));
-        rs.insert(std::get<2>(k));
-        ms.insert(std::get<3>(k));
-    }
-    const std::vector<double> av(as.begin(), as.end()), nv(ns.begin(), ns.end()), rv(rs.begin(), rs.end()),
-        mv(ms.begin(), ms.end());
-    // A full table for the device's multilinear lookup: a point not simulated takes the
-    // nearest simulated one of the same slenderness (distance in μ, reduction and n, each
-    // over its span in the paper's study); the base slenderness is 1 by definition.
-    using RatioMap = std::map<std::tuple<double, double, double, double>, double>;
-    auto fillFrom = [&](const RatioMap &m, double a, double n, double r, double mu) {
-        if (std::fabs(a - kBaseAspect) < 1e-6) return 1.0;
-        if (const auto it = m.find({a, n, r, mu}); it != m.end()) return it->second;
-        double best = 1e9, value = 1.0;
-        for (const auto &[k, v] : m) {
-            if (std::fabs(std::get<0>(k) - a) > 1e-6) continue;
-            const double dist = std::fabs(std::get<1>(k) - n) / 0.45 + std::fabs(std::get<2>(k) - r) / 0.3 +
-                                std::fabs(std::get<3>(k) - mu) / 0.25;
-            if (dist < best) {
-                best = dist;
-                value = v;
-            }
-        }
-        return value;
-    };
-    auto fillValue = [&](double a, double n, double r, double mu) { return fillFrom(ar.ratio, a, n, r, mu); };
-    std::string values, simulated, rMaxValues;
-    int count = 0;
-    for (double a : av) {
-        values += "    {\n";
-        simulated += "    {\n";
-        rMaxValues += "    {\n";
-        for (double n : nv) {
-            values += "        {\n";
-            simulated += "        {\n";
-            rMaxValues += "        {\n";
-            for (double r : rv) {
-                std::string line = "            {", sline = "            {", rline = "            {";
-                for (size_t mi = 0; mi < mv.size(); ++mi) {
-                    const bool sim = ar.ratio.count({a, n, r, mv[mi]}) > 0;
-                    char b[32];
-                    std::snprintf(b, sizeof b, "%s%.5f", mi ? ", " : "", fillValue(a, n, r, mv[mi]));
-                    line += b;
-                    std::snprintf(b, sizeof b, "%s%.5f", mi ? ", " : "", fillFrom(ar.rMaxRatio, a, n, r, mv[mi]));
-                    rline += b;
-                    sline += std::string(mi ? ", " : "") + (sim ? "1" : "0");
-                    count += sim;
-                }
-                values += line + "},\n";
-                simulated += sline + "},\n";
-                rMaxValues += rline + "},\n";
-            }
-            values += "        },\n";
-            simulated += "        },\n";
-            rMaxValues += "        },\n";
-        }
-        values += "    },\n";
-        simulated += "    },\n";
-        rMaxValues += "    },\n";
-    }
+    const AspectAxes x = aspectAxes(ar.ratio);
+    const AspectTables t = aspectTables(ar, x);
     std::ostringstream f;
     f << "#pragma once\n"
       << "// GENERATED by `" << src.command << "` — do not edit.\n"
@@ -157,25 +184,25 @@ std::string aspectTableText(const TableSources &src, const std::string &sourceDi
       << "inline constexpr const char *kProvenance = \"" << src.command << "\";\n"
       << "inline constexpr const char *kInputs = \"" << joined(src.aspect) << "\";\n"
       << "inline constexpr double kBaseAspect = " << kBaseAspect << ";\n"
-      << "inline constexpr int kACount = " << av.size() << ", kNCount = " << nv.size() << ", kRCount = " << rv.size()
-      << ", kMuCount = " << mv.size() << ";\n"
-      << "inline constexpr double kAspect[kACount] = {" << list(av) << "};\n"
-      << "inline constexpr double kN[kNCount] = {" << list(nv) << "};\n"
-      << "inline constexpr double kR[kRCount] = {" << list(rv) << "};\n"
-      << "inline constexpr double kMu[kMuCount] = {" << list(mv) << "};\n"
+      << "inline constexpr int kACount = " << x.aspect.size() << ", kNCount = " << x.n.size()
+      << ", kRCount = " << x.reduction.size() << ", kMuCount = " << x.mu.size() << ";\n"
+      << "inline constexpr double kAspect[kACount] = {" << list(x.aspect) << "};\n"
+      << "inline constexpr double kN[kNCount] = {" << list(x.n) << "};\n"
+      << "inline constexpr double kR[kRCount] = {" << list(x.reduction) << "};\n"
+      << "inline constexpr double kMu[kMuCount] = {" << list(x.mu) << "};\n"
       << "// [aspect][n][reduction][μ]\n"
       << "inline constexpr double kURatio[kACount][kNCount][kRCount][kMuCount] = {\n"
-      << values << "};\n"
+      << t.values << "};\n"
       << "inline constexpr unsigned char kSimulated[kACount][kNCount][kRCount][kMuCount] = {\n"
-      << simulated << "};\n"
+      << t.simulated << "};\n"
       << "// R_max(H0/D0) / R_max(1.5), the silhouette's ratio, on the same axes (every run pair; the\n"
       << "// nearest simulated one where there is none).\n"
       << "inline constexpr double kRMaxRatio[kACount][kNCount][kRCount][kMuCount] = {\n"
-      << rMaxValues << "};\n"
+      << t.rMaxValues << "};\n"
       << "} // namespace icacam::friction::aspect_table\n";
     if (summary)
-        *summary =
-            std::to_string(count) + " simulated ratios, H0/D0 " + list(av) + ", n " + list(nv) + ", mu " + list(mv);
+        *summary = std::to_string(t.count) + " simulated ratios, H0/D0 " + list(x.aspect) + ", n " + list(x.n) +
+                   ", mu " + list(x.mu);
     return f.str();
 }
 

@@ -113,7 +113,7 @@ void writeRunResiduals(std::ostream &md, const std::vector<FeRow> &rows)
         const KCarry c = kCarry(rows, 0.5, b);
         std::snprintf(b1, sizeof b1,
                       "The base is one K (K %g MPa on %s): the model is its runs at the grid points. "
-                      "The spread over K is in docs/fe/factorial.md; %s.\n",
+                      "The spread over K is in data/fe/studies/factorial.md; %s.\n",
                       b.kMpa, b.mesh.c_str(),
                       c.found ? ("the model carries it (u and the radii at K minus at the base's K, from " + c.mesh +
                                  ", K " + std::to_string(int(c.k.front())) + "-" + std::to_string(int(c.k.back())) +

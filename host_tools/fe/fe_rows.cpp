@@ -123,22 +123,25 @@ bool BaseChoice::sameRegularisation(const FeRow &r) const
     return slopesPerK(r) == SlopesPerK{std::lround(contactPerK * 1000), std::lround(stickPerK * 1000)};
 }
 
-BaseChoice chooseBase(const std::vector<FeRow> &rows, double reduction)
+namespace {
+
+// A family: one mesh with one regularisation (slopes per K).
+using Family = std::pair<std::string, SlopesPerK>;
+using Grid = std::set<std::pair<double, double>>; // (n, μ)
+
+// A family's rows, its finest element (the corner, or the uniform size) and the (n, μ) grid of
+// each K in it, over the cases, whatever reduction they reached, so that every reduction of
+// the model comes from the same runs.
+struct FamilyInfo {
+    int rows = 0;
+    double size = 0;
+    std::map<double, Grid> grid;
+};
+
+std::map<Family, FamilyInfo> familiesOf(const std::vector<FeRow> &rows)
 {
-    BaseChoice b;
-    auto inBase = [&](const FeRow &r) { return reachedSnapshot(r, reduction) && isPaperSpecimen(r); };
-    // Per family — one mesh with one regularisation (slopes per K) — its rows, its finest
-    // element (the corner, or the uniform size) and the (n, μ) grid of each K in it, over the
-    // cases, whatever reduction they reached, so that every reduction of the model comes from
-    // the same runs.
     auto inCases = [](const FeRow &r) {
         return (r.status == "ok" || r.status == "failed") && r.reduction > 0 && isPaperSpecimen(r);
-    };
-    using Family = std::pair<std::string, SlopesPerK>;
-    struct FamilyInfo {
-        int rows = 0;
-        double size = 0;
-        std::map<double, std::set<std::pair<double, double>>> grid;
     };
     std::map<Family, FamilyInfo> families;
     for (const auto &r : rows)
@@ -148,8 +151,18 @@ BaseChoice chooseBase(const std::vector<FeRow> &rows, double reduction)
             f.size = r.cornerMm > 0 ? r.cornerMm : r.elem;
             f.grid[r.kMpa].insert({r.n, r.mu});
         }
-    // The whole grid: every (n, μ) any family has at one K.
-    std::set<std::pair<double, double>> whole;
+    return families;
+}
+
+// The finest mesh that covers the whole grid (every (n, μ) any family has at one K) at one K
+// is the best answer the data has; a finer mesh at a few points is a mesh study, not a base.
+// On that mesh, the stiffest stick slope, then contact penalty, that covers the grid: the
+// regularised Coulomb law and the penalty contact are approximations that approach the exact
+// laws as the slopes grow (the penalty study), so the stiffer complete set is the better
+// answer too. Ties: the most rows. No complete family: the most common one. nullptr: none.
+const Family *bestFamily(const std::map<Family, FamilyInfo> &families)
+{
+    Grid whole;
     for (const auto &[key, f] : families)
         for (const auto &[k, g] : f.grid) whole.insert(g.begin(), g.end());
     auto complete = [&](const FamilyInfo &f) {
@@ -157,12 +170,6 @@ BaseChoice chooseBase(const std::vector<FeRow> &rows, double reduction)
             if (std::includes(g.begin(), g.end(), whole.begin(), whole.end())) return true;
         return false;
     };
-    // The finest mesh that covers the whole grid at one K is the best answer the data has;
-    // a finer mesh at a few points is a mesh study, not a base. On that mesh, the stiffest
-    // stick slope, then contact penalty, that covers the grid: the regularised Coulomb law
-    // and the penalty contact are approximations that approach the exact laws as the slopes
-    // grow (the penalty study), so the stiffer complete set is the better answer too. Ties:
-    // the most rows. No complete family: the most common one.
     const Family *chosen = nullptr;
     const FamilyInfo *info = nullptr;
     for (const auto &[key, f] : families) {
@@ -186,13 +193,52 @@ BaseChoice chooseBase(const std::vector<FeRow> &rows, double reduction)
             info = &f;
         }
     }
+    return chosen;
+}
+
+// The K the base averages and the K range the model answers for, at one reduction.
+// Averaged: the K of the base's own family that cover its grid. Covered: the K of any family
+// that covers the grid at the base's K too — a factorial run with one regularisation scaled
+// with K, which checked K-independence (on a coarser mesh, or with other slopes per K, it
+// still shows that u does not depend on K beyond what docs/fe.md states).
+void baseKRange(const std::vector<FeRow> &rows, double reduction, const Family &chosen, BaseChoice *b)
+{
+    // The (n, μ) grid of each family and K at this reduction.
+    std::map<Family, std::map<double, Grid>> grid;
+    for (const auto &r : rows)
+        if (reachedSnapshot(r, reduction) && isPaperSpecimen(r))
+            grid[{meshKey(r), slopesPerK(r)}][r.kMpa].insert({r.n, r.mu});
+    const auto &baseGrid = grid[chosen][b->kMpa];
+    auto covers = [&](const Grid &g) { return std::includes(g.begin(), g.end(), baseGrid.begin(), baseGrid.end()); };
+    std::set<double> covered;
+    for (const auto &[fam, byK] : grid) {
+        const auto atBaseK = byK.find(b->kMpa);
+        if (atBaseK == byK.end() || !covers(atBaseK->second)) continue;
+        for (const auto &[k, g] : byK) {
+            if (!covers(g)) continue;
+            covered.insert(k);
+            if (fam == chosen) b->kAveraged.push_back(k);
+        }
+    }
+    b->kCovered.assign(covered.begin(), covered.end());
+}
+
+} // namespace
+
+BaseChoice chooseBase(const std::vector<FeRow> &rows, double reduction)
+{
+    BaseChoice b;
+    const std::map<Family, FamilyInfo> families = familiesOf(rows);
+    const Family *chosen = bestFamily(families);
     if (!chosen) return b;
     b.mesh = chosen->first;
     b.contactPerK = double(chosen->second.first) / 1000.0;
     b.stickPerK = double(chosen->second.second) / 1000.0;
+    // The base's K: the most common among its snapshots at this reduction (ties: the lowest).
     std::map<double, int> kCount;
     for (const auto &r : rows)
-        if (inBase(r) && meshKey(r) == b.mesh && b.sameRegularisation(r)) ++kCount[r.kMpa];
+        if (reachedSnapshot(r, reduction) && isPaperSpecimen(r) && meshKey(r) == b.mesh && b.sameRegularisation(r))
+            ++kCount[r.kMpa];
     int best = 0;
     for (auto [k, c] : kCount)
         if (c > best) {
@@ -201,30 +247,7 @@ BaseChoice chooseBase(const std::vector<FeRow> &rows, double reduction)
         }
     b.found = best > 0;
     if (!b.found) return b;
-    // The (n, μ) grid of each family and K at this reduction.
-    std::map<Family, std::map<double, std::set<std::pair<double, double>>>> grid;
-    for (const auto &r : rows)
-        if (inBase(r)) grid[{meshKey(r), slopesPerK(r)}][r.kMpa].insert({r.n, r.mu});
-    const auto &baseGrid = grid[*chosen][b.kMpa];
-    auto covers = [&](const std::set<std::pair<double, double>> &g) {
-        return std::includes(g.begin(), g.end(), baseGrid.begin(), baseGrid.end());
-    };
-    // Averaged: the K of the base's own family that cover its grid. Covered (the K range the
-    // model answers for): the K of any family that covers the grid at the base's K too —
-    // a factorial run with one regularisation scaled with K, which checked K-independence
-    // (on a coarser mesh, or with other slopes per K, it still shows that u does not depend
-    // on K beyond what docs/fe.md states).
-    std::set<double> covered;
-    for (const auto &[fam, byK] : grid) {
-        const auto atBaseK = byK.find(b.kMpa);
-        if (atBaseK == byK.end() || !covers(atBaseK->second)) continue;
-        for (const auto &[k, g] : byK) {
-            if (!covers(g)) continue;
-            covered.insert(k);
-            if (fam == *chosen) b.kAveraged.push_back(k);
-        }
-    }
-    b.kCovered.assign(covered.begin(), covered.end());
+    baseKRange(rows, reduction, *chosen, &b);
     return b;
 }
 

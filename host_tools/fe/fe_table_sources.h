@@ -21,4 +21,19 @@ inline std::string joined(const std::vector<std::string> &files)
     return s;
 }
 
+// The files of such a list (a table's kFeSources), in order.
+inline std::vector<std::string> splitSources(const std::string &sources)
+{
+    std::vector<std::string> out;
+    size_t at = 0;
+    while (at < sources.size()) {
+        const size_t end = sources.find(' ', at);
+        const std::string part = sources.substr(at, end == std::string::npos ? std::string::npos : end - at);
+        if (!part.empty()) out.push_back(part);
+        if (end == std::string::npos) break;
+        at = end + 1;
+    }
+    return out;
+}
+
 } // namespace icacam::host::fe

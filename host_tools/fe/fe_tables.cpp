@@ -8,7 +8,7 @@
 #include "host_tools/cli_options.h"
 #include "host_tools/fe/fe_aspect.h"
 #include "host_tools/fe/fe_fit.h"
-#include "host_tools/loop/reduction_table.h"
+#include "host_tools/fe/reduction_table.h"
 #include "host_tools/number_text.h"
 
 namespace icacam::host::fe {
@@ -78,7 +78,7 @@ std::vector<TableText> tablesText(const TablesRequest &request, const std::strin
     out[0].text = feModelTableText(request.src, sourceDir, request.reduction, &out[0].summary);
     out[1].file = "reduction_table.h";
     std::string error;
-    out[1].text = loop::reductionTableText(request.src, sourceDir, &error);
+    out[1].text = reductionTableText(request.src, sourceDir, &error);
     if (out[1].text.empty()) throw std::runtime_error("reduction table: " + error);
     out[1].summary = "du/dr at 50 % from " + request.src.base;
     out[2].file = "aspect_table.h";

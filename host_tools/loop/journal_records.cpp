@@ -8,93 +8,26 @@
 #include <map>
 #include <sstream>
 
+#include "reading/record_line.h"
+
 namespace icacam::host::loop {
 
 namespace fs = std::filesystem;
 
 namespace {
 
-// One flat JSON object (the journal has no nesting): key → value as text (numbers as
-// written, strings unescaped, true/false/null as words). False on anything else.
+// One journal line's fields as text (numbers as written, strings unescaped, true/false/null
+// as words), read by the record's own line parser (reading/record_line.h).
 bool parseFlat(const std::string &s, std::map<std::string, std::string> *out)
 {
-    size_t i = 0;
-    auto ws = [&] {
-        while (i < s.size() && (s[i] == ' ' || s[i] == '\t' || s[i] == '\r')) ++i;
-    };
-    auto str = [&](std::string *v) {
-        if (i >= s.size() || s[i] != '"') return false;
-        for (++i; i < s.size(); ++i) {
-            char c = s[i];
-            if (c == '"') {
-                ++i;
-                return true;
-            }
-            if (c != '\\') {
-                v->push_back(c);
-                continue;
-            }
-            if (++i >= s.size()) return false;
-            switch (s[i]) {
-            case 'n': v->push_back('\n'); break;
-            case 't': v->push_back('\t'); break;
-            case 'r': v->push_back('\r'); break;
-            case 'b': v->push_back('\b'); break;
-            case 'f': v->push_back('\f'); break;
-            case 'u': {
-                if (i + 4 >= s.size()) return false;
-                const unsigned code = unsigned(std::stoul(s.substr(i + 1, 4), nullptr, 16));
-                v->push_back(code < 0x80 ? char(code) : '?'); // the journal writes ASCII
-                i += 4;
-                break;
-            }
-            default: v->push_back(s[i]);
-            }
-        }
-        return false;
-    };
-    ws();
-    if (i >= s.size() || s[i++] != '{') return false;
-    ws();
-    if (i < s.size() && s[i] == '}') return true;
-    while (i < s.size()) {
-        std::string key, value;
-        ws();
-        if (!str(&key)) return false;
-        ws();
-        if (i >= s.size() || s[i++] != ':') return false;
-        ws();
-        if (i < s.size() && s[i] == '"') {
-            if (!str(&value)) return false;
-        } else {
-            const size_t start = i;
-            while (i < s.size() && s[i] != ',' && s[i] != '}' && s[i] != ' ') ++i;
-            value = s.substr(start, i - start);
-            if (value.empty()) return false;
-        }
-        (*out)[key] = value;
-        ws();
-        if (i < s.size() && s[i] == ',') {
-            ++i;
-            continue;
-        }
-        if (i < s.size() && s[i] == '}') return true;
-        return false;
+    static reading::FlatObject object; // large: one, reused line after line
+    if (!reading::parseFlatObject(s, &object).empty()) return false;
+    for (int i = 0; i < object.count; ++i) {
+        const reading::JsonField &f = object.fields[i];
+        using Type = reading::JsonField::Type;
+        (*out)[f.key] = f.type == Type::Bool ? (f.boolean ? "true" : "false") : f.type == Type::Null ? "null" : f.text;
     }
-    return false;
-}
-
-// A line as the journal writes it: {...,"crc32":"xxxxxxxx"} with the CRC of what precedes
-// ,"crc32".
-bool intact(const std::string &line)
-{
-    static const std::string kKey = ",\"crc32\":\"";
-    const size_t at = line.rfind(kKey);
-    if (at == std::string::npos || line.size() != at + kKey.size() + 10 || line.compare(line.size() - 2, 2, "\"}") != 0)
-        return false;
-    char want[9];
-    std::snprintf(want, sizeof want, "%08x", journalCrc32(line.substr(0, at)));
-    return line.compare(at + kKey.size(), 8, want) == 0;
+    return true;
 }
 
 // A record id as the join key: the number when it is one (12, 000012, 12.0), else the text.
@@ -117,15 +50,107 @@ const char *const kConditions[] = {"n",          "k_mpa",    "d0_mm",       "h0_
 
 } // namespace
 
-uint32_t journalCrc32(const std::string &data)
+namespace {
+
+// The reference rows by join key; a row the CSV could not read is listed as skipped.
+std::map<std::string, const ManifestRow *> referenceById(const Manifest &ref, const std::string &idColumn,
+                                                         JournalJoin *info)
 {
-    uint32_t crc = 0xFFFFFFFFu;
-    for (unsigned char c : data) {
-        crc ^= c;
-        for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
+    std::map<std::string, const ManifestRow *> byId;
+    for (const ManifestRow &r : ref.rows) {
+        if (!r.error.empty()) {
+            info->skipped.push_back("reference line " + std::to_string(r.line) + ": " + r.error);
+            continue;
+        }
+        byId[joinKey(r.get(idColumn))] = &r;
     }
-    return ~crc;
+    return byId;
 }
+
+// The device's settings as its folder keeps them now (settings.conf, "key = value").
+std::map<std::string, std::string> readSettings(const std::string &journalDir)
+{
+    std::map<std::string, std::string> settings;
+    std::ifstream conf(fs::path(journalDir) / "settings.conf");
+    std::string l;
+    while (std::getline(conf, l)) {
+        const size_t eq = l.find(" = ");
+        if (eq != std::string::npos) settings[l.substr(0, eq)] = l.substr(eq + 3);
+    }
+    return settings;
+}
+
+// The manifest's columns: the record, the device's conditions, its results as device_*, and
+// the reference's columns (ref_<name> where the journal has the name too).
+std::vector<std::string> joinedColumns(const Manifest &ref)
+{
+    std::vector<std::string> columns = {"id", "image"};
+    for (const char *c : kConditions) columns.push_back(c);
+    for (const char *c : kMeasured) columns.push_back(std::string("device_") + c);
+    for (const std::string &c : ref.columns)
+        if (c != "id")
+            columns.push_back(std::find(columns.begin(), columns.end(), c) == columns.end() ? c : "ref_" + c);
+    return columns;
+}
+
+// D0 and H0: each result record carries what the device was told; a journal written before
+// the records carried them falls back on the reference CSV, then on the device's
+// settings.conf as it is now.
+struct Geometry {
+    bool fromReference = false, fromSettings = false;
+    std::map<std::string, std::string> settings;
+    int fromRecords = 0, fromElsewhere = 0;
+
+    // What the report says about where the records' D0 and H0 came from.
+    std::string note()
+    {
+        const std::string older = fromReference  ? "from the reference CSV"
+                                  : fromSettings ? "from the device's settings.conf as it is now (d0_mm " +
+                                                       settings["d0_mm"] + ", h0_mm " + settings["h0_mm"] + ")"
+                                                 : "not recorded: 10 and 15 mm assumed";
+        return fromElsewhere == 0
+                   ? "d0_mm and h0_mm as each record carries them"
+                   : "d0_mm and h0_mm as each record carries them; for " + std::to_string(fromElsewhere) + " of " +
+                         std::to_string(fromRecords + fromElsewhere) + " records " + older;
+    }
+};
+
+// One intact result line joined with its reference row: the manifest's row, or why the
+// result is left out.
+std::string joinResult(std::map<std::string, std::string> &f, const ManifestRow &reference, const std::string &idColumn,
+                       int line, Geometry *geometry, ManifestRow *row)
+{
+    if (f["image"].empty()) return "no saved frame (journal.images none, or an error before capture)";
+    if (!f["calibration"].empty()) {
+        // The frame's boundaries were mapped through a calibration file the loop does not read.
+        return "measured through calibration '" + f["calibration"] +
+               "'; the loop re-measures frames with mm_per_px only";
+    }
+    row->line = line;
+    row->cells["id"] = f["id"];
+    row->cells["image"] = f["image"];
+    for (const char *c : kConditions) row->cells[c] = f[c];
+    for (const char *c : kMeasured) row->cells[std::string("device_") + c] = f[c];
+    const bool recordGeometry = !f["d0_mm"].empty() && !f["h0_mm"].empty();
+    if (recordGeometry)
+        ++geometry->fromRecords;
+    else
+        ++geometry->fromElsewhere;
+    if (!recordGeometry && !geometry->fromReference && geometry->fromSettings)
+        row->cells["d0_mm"] = geometry->settings["d0_mm"], row->cells["h0_mm"] = geometry->settings["h0_mm"];
+    for (const auto &[k, v] : reference.cells) {
+        if (k == idColumn) continue;
+        const bool journalHas = row->cells.count(k) > 0;
+        const bool journalEmpty = journalHas && (row->cells[k].empty() || (k == "h_final_mm" && row->cells[k] == "0"));
+        if (!journalHas || journalEmpty)
+            row->cells[k] = v;
+        else
+            row->cells["ref_" + k] = v;
+    }
+    return "";
+}
+
+} // namespace
 
 bool readJournalManifest(const std::string &journalDir, const std::string &referenceCsv, Manifest *out,
                          JournalJoin *info, std::string *error)
@@ -141,29 +166,11 @@ bool readJournalManifest(const std::string &journalDir, const std::string &refer
         *error = "reference CSV '" + referenceCsv + "' has no id (or record_id) column";
         return false;
     }
-    std::map<std::string, const ManifestRow *> byId;
-    for (const ManifestRow &r : ref.rows) {
-        if (!r.error.empty()) {
-            info->skipped.push_back("reference line " + std::to_string(r.line) + ": " + r.error);
-            continue;
-        }
-        byId[joinKey(r.get(idColumn))] = &r;
-    }
-    // D0 and H0: each result record carries what the device was told; a journal written
-    // before the records carried them falls back on the reference CSV, then on the device's
-    // settings.conf as it is now.
-    std::map<std::string, std::string> settings;
-    {
-        std::ifstream conf(fs::path(journalDir) / "settings.conf");
-        std::string l;
-        while (std::getline(conf, l)) {
-            const size_t eq = l.find(" = ");
-            if (eq != std::string::npos) settings[l.substr(0, eq)] = l.substr(eq + 3);
-        }
-    }
-    const bool refGeometry = hasColumn("d0_mm") && hasColumn("h0_mm");
-    const bool savedGeometry = settings.count("d0_mm") && settings.count("h0_mm");
-    int fromRecords = 0, fromElsewhere = 0;
+    const std::map<std::string, const ManifestRow *> byId = referenceById(ref, idColumn, info);
+    Geometry geometry;
+    geometry.settings = readSettings(journalDir);
+    geometry.fromReference = hasColumn("d0_mm") && hasColumn("h0_mm");
+    geometry.fromSettings = geometry.settings.count("d0_mm") && geometry.settings.count("h0_mm");
     const fs::path journal = fs::path(journalDir) / "journal.jsonl";
     std::ifstream in(journal);
     if (!in) {
@@ -172,21 +179,14 @@ bool readJournalManifest(const std::string &journalDir, const std::string &refer
     }
     *out = {};
     out->baseDir = journalDir;
-    out->columns = {"id", "image"};
-    for (const char *c : kConditions) out->columns.push_back(c);
-    for (const char *c : kMeasured) out->columns.push_back(std::string("device_") + c);
-    for (const std::string &c : ref.columns)
-        if (c != "id")
-            out->columns.push_back(
-                std::find(out->columns.begin(), out->columns.end(), c) == out->columns.end() ? c : "ref_" + c);
+    out->columns = joinedColumns(ref);
     std::map<std::string, bool> used;
     std::string line;
     while (std::getline(in, line)) {
         ++info->lines;
-        const std::string where = "journal line " + std::to_string(info->lines);
         std::map<std::string, std::string> f;
-        if (!intact(line) || !parseFlat(line, &f)) {
-            info->skipped.push_back(where + ": damaged (CRC or JSON)");
+        if (!reading::recordLineIntact(line) || !parseFlat(line, &f)) {
+            info->skipped.push_back("journal line " + std::to_string(info->lines) + ": damaged (CRC or JSON)");
             continue;
         }
         if (f["type"] == "scalecheck") {
@@ -195,59 +195,24 @@ bool readJournalManifest(const std::string &journalDir, const std::string &refer
         }
         if (f["type"] != "result") continue;
         ++info->results;
-        const std::string id = f["id"], what = "journal record " + id;
-        const auto it = byId.find(joinKey(id));
+        const std::string what = "journal record " + f["id"];
+        const auto it = byId.find(joinKey(f["id"]));
         if (it == byId.end()) {
             info->skipped.push_back(what + ": no row in the reference CSV");
             continue;
         }
         used[it->first] = true;
-        if (f["image"].empty()) {
-            info->skipped.push_back(what + ": no saved frame (journal.images none, or an error before capture)");
-            continue;
-        }
-        if (!f["calibration"].empty()) {
-            // The frame's boundaries were mapped through a calibration file the loop does not read.
-            info->skipped.push_back(what + ": measured through calibration '" + f["calibration"] +
-                                    "'; the loop re-measures frames with mm_per_px only");
-            continue;
-        }
         ManifestRow row;
-        row.line = info->lines;
-        row.cells["id"] = id;
-        row.cells["image"] = f["image"];
-        for (const char *c : kConditions) row.cells[c] = f[c];
-        for (const char *c : kMeasured) row.cells[std::string("device_") + c] = f[c];
-        const bool recordGeometry = !f["d0_mm"].empty() && !f["h0_mm"].empty();
-        if (recordGeometry)
-            ++fromRecords;
-        else
-            ++fromElsewhere;
-        if (!recordGeometry && !refGeometry && savedGeometry)
-            row.cells["d0_mm"] = settings["d0_mm"], row.cells["h0_mm"] = settings["h0_mm"];
-        for (const auto &[k, v] : it->second->cells) {
-            if (k == idColumn) continue;
-            const bool journalHas = row.cells.count(k) > 0;
-            const bool journalEmpty =
-                journalHas && (row.cells[k].empty() || (k == "h_final_mm" && row.cells[k] == "0"));
-            if (!journalHas || journalEmpty)
-                row.cells[k] = v;
-            else
-                row.cells["ref_" + k] = v;
+        if (const std::string why = joinResult(f, *it->second, idColumn, info->lines, &geometry, &row); !why.empty()) {
+            info->skipped.push_back(what + ": " + why);
+            continue;
         }
         out->rows.push_back(std::move(row));
         ++info->joined;
     }
     for (const auto &[key, row] : byId)
         if (!used.count(key)) info->skipped.push_back("reference id " + row->get(idColumn) + ": not in the journal");
-    const std::string older = refGeometry     ? "from the reference CSV"
-                              : savedGeometry ? "from the device's settings.conf as it is now (d0_mm " +
-                                                    settings["d0_mm"] + ", h0_mm " + settings["h0_mm"] + ")"
-                                              : "not recorded: 10 and 15 mm assumed";
-    info->geometry = fromElsewhere == 0
-                         ? "d0_mm and h0_mm as each record carries them"
-                         : "d0_mm and h0_mm as each record carries them; for " + std::to_string(fromElsewhere) +
-                               " of " + std::to_string(fromRecords + fromElsewhere) + " records " + older;
+    info->geometry = geometry.note();
     return true;
 }
 

@@ -34,7 +34,4 @@ struct JournalJoin {
 bool readJournalManifest(const std::string &journalDir, const std::string &referenceCsv, Manifest *out,
                          JournalJoin *info, std::string *error);
 
-// CRC-32 (IEEE) as the journal closes its lines with it.
-uint32_t journalCrc32(const std::string &data);
-
 } // namespace icacam::host::loop

@@ -2,12 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <random>
 #include <set>
 
-#include "host_tools/loop/fe_base_data.h"
+#include "host_tools/linear_system.h"
 #include "host_tools/manifest.h"
 
 namespace icacam::host::loop {
@@ -15,34 +14,6 @@ namespace icacam::host::loop {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-// Solves A x = b (row-major, n×n) by Gaussian elimination with partial pivoting.
-bool solve(std::vector<double> a, std::vector<double> b, std::vector<double> *x)
-{
-    const size_t n = b.size();
-    for (size_t c = 0; c < n; ++c) {
-        size_t p = c;
-        for (size_t r = c + 1; r < n; ++r)
-            if (std::fabs(a[r * n + c]) > std::fabs(a[p * n + c])) p = r;
-        if (std::fabs(a[p * n + c]) < 1e-14) return false;
-        if (p != c) {
-            for (size_t k = 0; k < n; ++k) std::swap(a[p * n + k], a[c * n + k]);
-            std::swap(b[p], b[c]);
-        }
-        for (size_t r = c + 1; r < n; ++r) {
-            const double f = a[r * n + c] / a[c * n + c];
-            for (size_t k = c; k < n; ++k) a[r * n + k] -= f * a[c * n + k];
-            b[r] -= f * b[c];
-        }
-    }
-    x->assign(n, 0);
-    for (size_t c = n; c-- > 0;) {
-        double s = b[c];
-        for (size_t k = c + 1; k < n; ++k) s -= a[c * n + k] * (*x)[k];
-        (*x)[c] = s / a[c * n + c];
-    }
-    return true;
-}
 
 double normalUpperQuantile(double p) // x with P(Z > x) = p
 {
@@ -193,7 +164,7 @@ void fitPredict(const Candidate *c, const std::vector<double> &y, const std::vec
     double tr = 0;
     for (size_t r = 0; r < p; ++r) tr += a[r * p + r];
     for (size_t r = 0; r < p; ++r) a[r * p + r] += 1e-10 * tr / double(p) + 1e-300; // degenerate columns
-    const bool ok = solve(a, b, &q);
+    const bool ok = solveLinearSystem(a, b, &q);
     for (size_t i = 0; i < n; ++i) {
         if (k >= 0 && fold[i] != k) continue;
         if (!ok) {
@@ -292,6 +263,11 @@ bool isSymptom(const std::string &name)
     return false;
 }
 
+bool isReductionCandidate(const std::string &name)
+{
+    return name == "reduction" || name == "h_final_mm" || name == "diag_reduction_est";
+}
+
 double rms(const std::vector<double> &v)
 {
     double s = 0;
@@ -386,6 +362,200 @@ std::vector<double> cvPredict(const Candidate &c, const std::vector<double> &res
     return pred;
 }
 
+namespace {
+
+// The forms an effect can take, each with its baseline's held-out errors: an offset in μ, a
+// relative scale of u (optics), an additive shift of u (a process that widens the ring:
+// Δμ = dμ/du · Δu).
+struct Form {
+    const char *name;
+    const std::vector<double> *sens;
+    std::vector<double> e0;
+};
+
+std::vector<Form> linearForms(const std::vector<double> &y, const std::vector<int> &fold, int folds,
+                              const std::vector<double> *scaleSensitivity, const std::vector<double> *uSensitivity)
+{
+    std::vector<Form> formList;
+    formList.push_back({"mu", nullptr, cvErrors(nullptr, y, fold, folds)});
+    if (scaleSensitivity)
+        formList.push_back({"scale", scaleSensitivity, cvErrors(nullptr, y, fold, folds, scaleSensitivity)});
+    if (uSensitivity) formList.push_back({"u", uSensitivity, cvErrors(nullptr, y, fold, folds, uSensitivity)});
+    return formList;
+}
+
+// In-sample sum of squares and parameter count of a linear model (nullptr: the baseline).
+double inSample(const Candidate *c, const std::vector<double> &y, const std::vector<int> &fold,
+                const std::vector<double> *sens, int *params)
+{
+    std::vector<double> pred(y.size(), 0);
+    fitPredict(c, y, fold, -1, &pred, sens);
+    for (size_t i = 0; i < y.size(); ++i) pred[i] = y[i] - pred[i];
+    if (!c)
+        *params = sens ? 2 : 1;
+    else if (c->kind == "categorical")
+        *params = int(std::set<std::string>(c->levels.begin(), c->levels.end()).size()) + (sens ? 1 : 0);
+    else
+        *params = sens ? 3 : 2;
+    return sumSquares(pred);
+}
+
+// Pearson r of a numeric candidate with the residual (for reading only).
+double correlation(const Candidate &c, const std::vector<double> &y)
+{
+    double sx = 0, sy2 = 0, sxy = 0, mx = 0, myv = mean(y);
+    int cnt = 0;
+    for (size_t i = 0; i < y.size(); ++i)
+        if (std::isfinite(c.x[i])) {
+            mx += c.x[i];
+            ++cnt;
+        }
+    mx = cnt ? mx / cnt : 0;
+    for (size_t i = 0; i < y.size(); ++i) {
+        if (!std::isfinite(c.x[i])) continue;
+        sx += (c.x[i] - mx) * (c.x[i] - mx);
+        sy2 += (y[i] - myv) * (y[i] - myv);
+        sxy += (c.x[i] - mx) * (y[i] - myv);
+    }
+    return sx > 0 && sy2 > 0 ? sxy / std::sqrt(sx * sy2) : 0;
+}
+
+// What ranks one candidate: its held-out errors in its best form against that form's
+// baseline, and the in-sample fits of the nested test.
+struct FormScore {
+    std::vector<double> e1;                  // held-out errors with the candidate
+    const std::vector<double> *e0 = nullptr; // held-out errors of the form's baseline
+    std::string form = "mu";
+    double sse0 = 0, sse1 = 0;
+    int p0 = 0, p1 = 0;
+    bool better(const std::vector<double> &base, const std::vector<double> &with) const
+    {
+        return rms(base) - rms(with) > rms(*e0) - rms(e1);
+    }
+};
+
+// The candidate's best linear form (mu, scale or u): the regression patch.
+FormScore bestLinearForm(const Candidate &c, const std::vector<double> &y, const std::vector<int> &fold, int folds,
+                         const std::vector<Form> &formList)
+{
+    FormScore f;
+    f.e1 = cvErrors(&c, y, fold, folds);
+    f.e0 = &formList[0].e0;
+    const std::vector<double> *formSens = nullptr;
+    for (size_t fi = 1; fi < formList.size(); ++fi) {
+        std::vector<double> e2 = cvErrors(&c, y, fold, folds, formList[fi].sens);
+        if (f.better(formList[fi].e0, e2)) {
+            f.e1 = std::move(e2);
+            f.e0 = &formList[fi].e0;
+            f.form = formList[fi].name;
+            formSens = formList[fi].sens;
+        }
+    }
+    // The chosen form's nested test: the in-sample fit against the form's baseline.
+    f.sse0 = inSample(nullptr, y, fold, formSens, &f.p0);
+    f.sse1 = inSample(&c, y, fold, formSens, &f.p1);
+    return f;
+}
+
+// A physical form in place of the linear one where it explains more over its baseline: the
+// change in μ a physical model makes (form "fe"), or a form fitted elsewhere (a length factor
+// or an n per group).
+void tryPhysicalForms(const Candidate &c, const std::vector<double> &y, const std::vector<int> &fold, int folds,
+                      const std::vector<Form> &formList,
+                      const std::map<std::string, std::vector<double>> *physicalForms,
+                      const std::map<std::string, FittedForm> *fittedForms, FormScore *f)
+{
+    if (physicalForms) {
+        const auto it = physicalForms->find(c.name);
+        if (it != physicalForms->end() && it->second.size() == y.size()) {
+            std::vector<double> e2 = cvErrors(nullptr, y, fold, folds, &it->second);
+            if (f->better(formList[0].e0, e2)) {
+                f->e1 = std::move(e2);
+                f->e0 = &formList[0].e0;
+                f->form = "fe";
+                f->sse0 = inSample(nullptr, y, fold, nullptr, &f->p0);
+                f->sse1 = inSample(nullptr, y, fold, &it->second, &f->p1);
+            }
+        }
+    }
+    if (fittedForms) {
+        const auto it = fittedForms->find(c.name);
+        if (it != fittedForms->end() && it->second.errors.size() == y.size() &&
+            f->better(it->second.baseline, it->second.errors)) {
+            f->e1 = it->second.errors;
+            f->e0 = &it->second.baseline;
+            f->form = it->second.form;
+            f->sse0 = sumSquares(it->second.baselineFit), f->p0 = it->second.params0;
+            f->sse1 = sumSquares(it->second.errorsFit), f->p1 = it->second.params1;
+        }
+    }
+}
+
+// A symptom never outranks a cause it cannot be told from: each significant recorded
+// condition moves ahead of every symptom directly above it whose held-out |errors| are not
+// significantly smaller than its own (paired z < 2). It stops at a better cause or at a
+// symptom that is significantly better (that symptom sees something the cause does not).
+void putCausesBeforeSymptoms(std::vector<RankedCandidate> &out, const std::vector<std::vector<double>> &errors,
+                             std::vector<size_t> *order)
+{
+    std::vector<size_t> &o = *order;
+    for (size_t k = 1; k < o.size(); ++k) {
+        RankedCandidate &c = out[o[k]];
+        if (c.symptom || !c.significant) continue;
+        size_t pos = k;
+        while (pos > 0 && out[o[pos - 1]].symptom && pairedZ(errors[o[k]], errors[o[pos - 1]]) < 2.0) --pos;
+        if (pos == k) continue;
+        for (size_t j = pos; j < k; ++j) c.preferredOver.push_back(out[o[j]].name);
+        const size_t moved = o[k];
+        o.erase(o.begin() + long(k));
+        o.insert(o.begin() + long(pos), moved);
+    }
+}
+
+// A significant symptom still leads: it established that there is an effect, and the
+// question left is its name. A cause not significant on its own comes first when it
+// explains the residual as well as every symptom above it (paired z < 2), passes the test
+// of a single comparison (z above the one-sided α quantile, the same minimum gain), and
+// explains the leading symptom itself (the symptom's own values, F test at α): of such
+// causes, the one that explains the symptom best (R²). A chance correlate of the residual
+// rarely also explains the measurement; the cause that moved the geometry does.
+void nameTheLeadingSymptomsCause(const std::vector<Candidate> &candidates, std::vector<RankedCandidate> &out,
+                                 const std::vector<std::vector<double>> &errors, const RankingOptions &opt,
+                                 std::vector<size_t> *order)
+{
+    std::vector<size_t> &o = *order;
+    size_t lead = o.size(); // the first significant symptom, when no significant cause leads
+    if (!o.empty() && !(out[o[0]].significant && !out[o[0]].symptom))
+        for (size_t k = 0; k < o.size() && lead == o.size(); ++k)
+            if (out[o[k]].symptom && out[o[k]].significant && candidates[o[k]].kind != "categorical") lead = k;
+    if (lead == o.size()) return;
+    const double zSingle = normalUpperQuantile(opt.alpha);
+    size_t best = o.size();
+    double bestR2 = -1;
+    for (size_t k = 0; k < o.size(); ++k) {
+        const RankedCandidate &c = out[o[k]];
+        if (c.symptom || c.significant ||
+            !(c.gain > 0 && c.z > zSingle && c.gain >= opt.minRelativeGain * c.cvRmsBefore))
+            continue;
+        bool told = pairedZ(errors[o[k]], errors[o[lead]]) >= 2.0;
+        for (size_t j = 0; j < k && !told; ++j) told = out[o[j]].symptom && pairedZ(errors[o[k]], errors[o[j]]) >= 2.0;
+        double zAssoc = 0;
+        const double r2 = explainedShare(candidates[o[lead]], candidates[o[k]], &zAssoc);
+        if (!told && zAssoc > zSingle && r2 > bestR2) best = k, bestR2 = r2;
+    }
+    if (best == o.size()) return;
+    RankedCandidate &c = out[o[best]];
+    c.significant = c.viaSymptom = true;
+    for (size_t j = 0; j < best; ++j)
+        if (out[o[j]].symptom) c.preferredOver.push_back(out[o[j]].name);
+    if (best < lead) c.preferredOver.push_back(out[o[lead]].name);
+    const size_t moved = o[best];
+    o.erase(o.begin() + long(best));
+    o.insert(o.begin(), moved);
+}
+
+} // namespace
+
 std::vector<RankedCandidate> rankCandidates(const std::vector<Candidate> &candidates, const std::vector<double> &y,
                                             const RankingOptions &opt, const std::vector<double> *scaleSensitivity,
                                             const std::vector<double> *uSensitivity,
@@ -396,169 +566,36 @@ std::vector<RankedCandidate> rankCandidates(const std::vector<Candidate> &candid
     if (y.size() < 4) return out;
     const int folds = std::clamp(opt.folds, 2, int(y.size()));
     const std::vector<int> fold = foldAssignment(y.size(), folds, opt.seed);
-    // The forms an effect can take: an offset in μ, a relative scale of u (optics), an
-    // additive shift of u (a process that widens the ring: Δμ = dμ/du · Δu).
-    struct Form {
-        const char *name;
-        const std::vector<double> *sens;
-        std::vector<double> e0;
-    };
-    std::vector<Form> formList;
-    formList.push_back({"mu", nullptr, cvErrors(nullptr, y, fold, folds)});
-    if (scaleSensitivity)
-        formList.push_back({"scale", scaleSensitivity, cvErrors(nullptr, y, fold, folds, scaleSensitivity)});
-    if (uSensitivity) formList.push_back({"u", uSensitivity, cvErrors(nullptr, y, fold, folds, uSensitivity)});
-    const size_t forms = formList.size();
-    const size_t tries = candidates.size() * forms + (physicalForms ? physicalForms->size() : 0) +
+    const std::vector<Form> formList = linearForms(y, fold, folds, scaleSensitivity, uSensitivity);
+    const size_t tries = candidates.size() * formList.size() + (physicalForms ? physicalForms->size() : 0) +
                          (fittedForms ? fittedForms->size() : 0);
     const double zCrit = normalUpperQuantile(opt.alpha / double(std::max<size_t>(tries, 1)));
-    // In-sample sum of squares and parameter count of a linear model (nullptr: the baseline).
-    auto inSample = [&](const Candidate *c, const std::vector<double> *sens, int *params) {
-        std::vector<double> pred(y.size(), 0);
-        fitPredict(c, y, fold, -1, &pred, sens);
-        for (size_t i = 0; i < y.size(); ++i) pred[i] = y[i] - pred[i];
-        if (!c)
-            *params = sens ? 2 : 1;
-        else if (c->kind == "categorical")
-            *params = int(std::set<std::string>(c->levels.begin(), c->levels.end()).size()) + (sens ? 1 : 0);
-        else
-            *params = sens ? 3 : 2;
-        return sumSquares(pred);
-    };
     std::vector<std::vector<double>> errors; // held-out errors per candidate, as in out
     for (const Candidate &c : candidates) {
-        std::vector<double> e1 = cvErrors(&c, y, fold, folds);
-        const std::vector<double> *e0 = &formList[0].e0;
-        std::string form = "mu";
-        const std::vector<double> *formSens = nullptr;
-        for (size_t fi = 1; fi < formList.size(); ++fi) {
-            std::vector<double> e2 = cvErrors(&c, y, fold, folds, formList[fi].sens);
-            if (rms(formList[fi].e0) - rms(e2) > rms(*e0) - rms(e1)) {
-                e1 = std::move(e2);
-                e0 = &formList[fi].e0;
-                form = formList[fi].name;
-                formSens = formList[fi].sens;
-            }
-        }
-        const std::string patchForm = form;
-        const double cvRmsPatch = rms(e1);
-        // The chosen form's nested test: the in-sample fit against the form's baseline.
-        int p0 = 0, p1 = 0;
-        double sse0 = inSample(nullptr, formSens, &p0), sse1 = inSample(&c, formSens, &p1);
-        if (physicalForms) {
-            const auto it = physicalForms->find(c.name);
-            if (it != physicalForms->end() && it->second.size() == y.size()) {
-                std::vector<double> e2 = cvErrors(nullptr, y, fold, folds, &it->second);
-                if (rms(formList[0].e0) - rms(e2) > rms(*e0) - rms(e1)) {
-                    e1 = std::move(e2);
-                    e0 = &formList[0].e0;
-                    form = "fe";
-                    sse0 = inSample(nullptr, nullptr, &p0);
-                    sse1 = inSample(nullptr, &it->second, &p1);
-                }
-            }
-        }
-        if (fittedForms) {
-            const auto it = fittedForms->find(c.name);
-            if (it != fittedForms->end() && it->second.errors.size() == y.size() &&
-                rms(it->second.baseline) - rms(it->second.errors) > rms(*e0) - rms(e1)) {
-                e1 = it->second.errors;
-                e0 = &it->second.baseline;
-                form = it->second.form;
-                sse0 = sumSquares(it->second.baselineFit), p0 = it->second.params0;
-                sse1 = sumSquares(it->second.errorsFit), p1 = it->second.params1;
-            }
-        }
+        FormScore f = bestLinearForm(c, y, fold, folds, formList);
         RankedCandidate r;
+        r.patchForm = f.form;
+        r.cvRmsPatch = rms(f.e1);
+        tryPhysicalForms(c, y, fold, folds, formList, physicalForms, fittedForms, &f);
         r.name = c.name;
         r.kind = c.kind;
         r.symptom = c.symptom;
-        r.form = form;
-        r.patchForm = patchForm;
-        r.cvRmsPatch = cvRmsPatch;
-        r.cvRmsBefore = rms(*e0);
-        r.cvRmsAfter = rms(e1);
+        r.form = f.form;
+        r.cvRmsBefore = rms(*f.e0);
+        r.cvRmsAfter = rms(f.e1);
         r.gain = r.cvRmsBefore - r.cvRmsAfter;
-        r.z = nestedZ(sse0, p0, sse1, p1, y.size());
-        if (c.kind != "categorical") {
-            double sx = 0, sy2 = 0, sxy = 0, mx = 0, myv = mean(y);
-            int cnt = 0;
-            for (size_t i = 0; i < y.size(); ++i)
-                if (std::isfinite(c.x[i])) {
-                    mx += c.x[i];
-                    ++cnt;
-                }
-            mx = cnt ? mx / cnt : 0;
-            for (size_t i = 0; i < y.size(); ++i) {
-                if (!std::isfinite(c.x[i])) continue;
-                sx += (c.x[i] - mx) * (c.x[i] - mx);
-                sy2 += (y[i] - myv) * (y[i] - myv);
-                sxy += (c.x[i] - mx) * (y[i] - myv);
-            }
-            r.correlation = sx > 0 && sy2 > 0 ? sxy / std::sqrt(sx * sy2) : 0;
-        }
+        r.z = nestedZ(f.sse0, f.p0, f.sse1, f.p1, y.size());
+        if (c.kind != "categorical") r.correlation = correlation(c, y);
         r.significant = r.gain > 0 && r.z > zCrit && r.gain >= opt.minRelativeGain * r.cvRmsBefore;
         out.push_back(r);
-        errors.push_back(std::move(e1));
+        errors.push_back(std::move(f.e1));
     }
     std::vector<size_t> order(out.size());
     for (size_t i = 0; i < order.size(); ++i) order[i] = i;
     std::stable_sort(order.begin(), order.end(),
                      [&](size_t a, size_t b) { return out[a].cvRmsAfter < out[b].cvRmsAfter; });
-    // A symptom never outranks a cause it cannot be told from: each significant recorded
-    // condition moves ahead of every symptom directly above it whose held-out |errors| are not
-    // significantly smaller than its own (paired z < 2). It stops at a better cause or at a
-    // symptom that is significantly better (that symptom sees something the cause does not).
-    for (size_t k = 1; k < order.size(); ++k) {
-        RankedCandidate &c = out[order[k]];
-        if (c.symptom || !c.significant) continue;
-        size_t pos = k;
-        while (pos > 0 && out[order[pos - 1]].symptom && pairedZ(errors[order[k]], errors[order[pos - 1]]) < 2.0) --pos;
-        if (pos == k) continue;
-        for (size_t j = pos; j < k; ++j) c.preferredOver.push_back(out[order[j]].name);
-        const size_t moved = order[k];
-        order.erase(order.begin() + long(k));
-        order.insert(order.begin() + long(pos), moved);
-    }
-    // A significant symptom still leads: it established that there is an effect, and the
-    // question left is its name. A cause not significant on its own comes first when it
-    // explains the residual as well as every symptom above it (paired z < 2), passes the test
-    // of a single comparison (z above the one-sided α quantile, the same minimum gain), and
-    // explains the leading symptom itself (the symptom's own values, F test at α): of such
-    // causes, the one that explains the symptom best (R²). A chance correlate of the residual
-    // rarely also explains the measurement; the cause that moved the geometry does.
-    size_t lead = order.size(); // the first significant symptom, when no significant cause leads
-    if (!order.empty() && !(out[order[0]].significant && !out[order[0]].symptom))
-        for (size_t k = 0; k < order.size() && lead == order.size(); ++k)
-            if (out[order[k]].symptom && out[order[k]].significant && candidates[order[k]].kind != "categorical")
-                lead = k;
-    if (lead < order.size()) {
-        const double zSingle = normalUpperQuantile(opt.alpha);
-        size_t best = order.size();
-        double bestR2 = -1;
-        for (size_t k = 0; k < order.size(); ++k) {
-            const RankedCandidate &c = out[order[k]];
-            if (c.symptom || c.significant ||
-                !(c.gain > 0 && c.z > zSingle && c.gain >= opt.minRelativeGain * c.cvRmsBefore))
-                continue;
-            bool told = pairedZ(errors[order[k]], errors[order[lead]]) >= 2.0;
-            for (size_t j = 0; j < k && !told; ++j)
-                told = out[order[j]].symptom && pairedZ(errors[order[k]], errors[order[j]]) >= 2.0;
-            double zAssoc = 0;
-            const double r2 = explainedShare(candidates[order[lead]], candidates[order[k]], &zAssoc);
-            if (!told && zAssoc > zSingle && r2 > bestR2) best = k, bestR2 = r2;
-        }
-        if (best < order.size()) {
-            RankedCandidate &c = out[order[best]];
-            c.significant = c.viaSymptom = true;
-            for (size_t j = 0; j < best; ++j)
-                if (out[order[j]].symptom) c.preferredOver.push_back(out[order[j]].name);
-            if (best < lead) c.preferredOver.push_back(out[order[lead]].name);
-            const size_t moved = order[best];
-            order.erase(order.begin() + long(best));
-            order.insert(order.begin(), moved);
-        }
-    }
+    putCausesBeforeSymptoms(out, errors, &order);
+    nameTheLeadingSymptomsCause(candidates, out, errors, opt, &order);
     // The measurements that point to each significant cause: the significant symptoms, best
     // first (a symptom answers to the cause; alone it does not name it).
     for (size_t k = 0; k < order.size(); ++k) {
@@ -570,118 +607,6 @@ std::vector<RankedCandidate> rankCandidates(const std::vector<Candidate> &candid
     std::vector<RankedCandidate> ranked;
     for (size_t i : order) ranked.push_back(std::move(out[i]));
     return ranked;
-}
-
-bool ReductionSlope::load(const std::vector<std::string> &paths, std::string *error)
-{
-    FeBaseData base;
-    if (!readFeBaseData(paths, &base, error)) return false;
-    struct Case {
-        double n = 0, mu = 0;
-        std::vector<std::pair<double, double>> pts;
-    };
-    std::map<std::pair<long, long>, Case> cases; // by (n, μ): duplicates of a point average out in the fit
-    std::vector<double> snapshots;               // every reduction a base run reached
-    bool anyCase = false;
-    for (const FeSnapshot &row : base.rows) {
-        const double n = row.n, mu = row.mu, red = row.reduction, u = row.uMm;
-        if (!anyCase) nMin_ = nMax_ = n, muMin_ = muMax_ = mu, anyCase = true;
-        nMin_ = std::min(nMin_, n), nMax_ = std::max(nMax_, n);
-        muMin_ = std::min(muMin_, mu), muMax_ = std::max(muMax_, mu);
-        snapshots.push_back(red);
-        if (red < 0.349 || u <= kFeUFloorMm) continue; // before the ICA opens the slope is not u's
-        Case &c = cases[{std::lround(n * 1e4), std::lround(mu * 1e4)}];
-        c.n = n;
-        c.mu = mu;
-        c.pts.emplace_back(red, u);
-    }
-    std::vector<double> ata(36, 0), atb(6, 0);
-    cases_ = 0;
-    maxCurvature_ = 0;
-    double fitLo = 0.5;
-    for (const auto &[name, c] : cases) {
-        if (c.pts.size() < 3) continue;
-        // u = a + b (r − 0.5) + c (r − 0.5)²: b is du/dr at the model's 50 % (u accelerates).
-        std::vector<double> m3(9, 0), v3(3, 0), q;
-        for (auto [x, y] : c.pts) {
-            const double t[3] = {1, x - 0.5, (x - 0.5) * (x - 0.5)};
-            for (int i = 0; i < 3; ++i) {
-                v3[size_t(i)] += t[i] * y;
-                for (int j = 0; j < 3; ++j) m3[size_t(i * 3 + j)] += t[i] * t[j];
-            }
-        }
-        if (!solve(m3, v3, &q)) continue;
-        const double s = q[1];
-        maxCurvature_ = std::max(maxCurvature_, std::fabs(q[2]));
-        for (auto [x, y] : c.pts) fitLo = std::min(fitLo, x);
-        const double phi[6] = {1, c.n, c.mu, c.n * c.n, c.n * c.mu, c.mu * c.mu};
-        for (int i = 0; i < 6; ++i) {
-            atb[size_t(i)] += phi[i] * s;
-            for (int j = 0; j < 6; ++j) ata[size_t(i * 6 + j)] += phi[i] * phi[j];
-        }
-        ++cases_;
-    }
-    for (int i = 0; i < 6; ++i) ata[size_t(i * 6 + i)] += 1e-9; // keeps a thin grid solvable
-    if (cases_ < 6 || !solve(ata, atb, &coef_)) {
-        *error = "too few FE cases (" + std::to_string(cases_) +
-                 " of the 6 needed) with an open ICA over reductions >= 0.35 in the base data (" + base.mesh + ")";
-        return false;
-    }
-    // Coverage of the linear carry about 50 %: the snapshots' span plus half their spacing,
-    // cut where the largest curvature would make the neglected term exceed the u floor.
-    std::sort(snapshots.begin(), snapshots.end());
-    double spacing = 1;
-    for (size_t i = 1; i < snapshots.size(); ++i)
-        if (snapshots[i] - snapshots[i - 1] > 1e-3) spacing = std::min(spacing, snapshots[i] - snapshots[i - 1]);
-    const double halfWidth = maxCurvature_ > 0 ? std::sqrt(kFeUFloorMm / maxCurvature_) : 1.0;
-    reductionMin_ = std::max(fitLo, 0.5 - halfWidth);
-    reductionMax_ = std::min(snapshots.back() + 0.5 * spacing, 0.5 + halfWidth);
-    return true;
-}
-
-double ReductionSlope::slope(double n, double mu) const
-{
-    if (coef_.size() != 6) return 0;
-    // Evaluate inside the simulated box only: outside it the quadratic is not data.
-    n = std::clamp(n, nMin_, nMax_);
-    mu = std::clamp(mu, muMin_, muMax_);
-    return coef_[0] + coef_[1] * n + coef_[2] * mu + coef_[3] * n * n + coef_[4] * n * mu + coef_[5] * mu * mu;
-}
-
-double uAtModelReduction(const friction::FrictionModel &model, const ReductionSlope &slope,
-                         const friction::ModelInputs &in, double reduction, double scaleFactor)
-{
-    if (reduction < 0) return in.uMm;
-    const double geo = in.d0Mm > 0 ? in.d0Mm / 10.0 : 1.0;
-    friction::ModelInputs m = in;
-    double u50 = in.uMm;
-    for (int it = 0; it < 20; ++it) {
-        m.uMm = u50;
-        const double mu = model.estimate(m).mu;
-        const double next = in.uMm - scaleFactor * geo * slope.slope(in.n, mu) * (reduction - 0.5);
-        if (std::fabs(next - u50) < 1e-9) {
-            u50 = next;
-            break;
-        }
-        u50 = 0.5 * (u50 + next);
-    }
-    return u50;
-}
-
-double uForMu(const friction::FrictionModel &model, double mu, double n, double d0Mm)
-{
-    friction::ModelInputs in;
-    in.n = n;
-    in.d0Mm = d0Mm;
-    double lo = 0, hi = 1.25 * d0Mm / 10.0;
-    for (int i = 0; i < 100; ++i) {
-        in.uMm = 0.5 * (lo + hi);
-        if (model.estimate(in).mu < mu)
-            lo = in.uMm;
-        else
-            hi = in.uMm;
-    }
-    return 0.5 * (lo + hi);
 }
 
 } // namespace icacam::host::loop

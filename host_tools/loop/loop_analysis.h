@@ -1,7 +1,6 @@
 #pragma once
-// Closing the loop (PRODUCT.md §5, docs/loop.md): residuals of the μ model against measured
-// records, a cross-validated ranking of candidate explanations, and the physical correction
-// of the leading effect when it is the height reduction.
+// Closing the loop (PRODUCT.md §5, docs/loop-method.md): residuals of the μ model against
+// measured records and a cross-validated ranking of candidate explanations.
 //
 // Pure computation (no image I/O): the command (loop_command.cpp) measures the records and
 // fills LoopRecord; the tests build record sets directly.
@@ -9,8 +8,6 @@
 #include <map>
 #include <string>
 #include <vector>
-
-#include "friction/friction_model.h"
 
 namespace icacam::host::loop {
 
@@ -42,6 +39,10 @@ struct Candidate {
 // (r_inner_mm, r_outer_mm, r_bulge_mm), what a device measured (mu, u_mm, reduction_est, status, flags, ...), and any
 // column named after one of them (r_outer_px, u_over_r0, ...).
 bool isSymptom(const std::string &name);
+
+// The specimen's height reduction as a candidate: recorded (h_final_mm, the derived
+// reduction) or as the silhouette implies it (diag_reduction_est).
+bool isReductionCandidate(const std::string &name);
 
 struct RankedCandidate {
     std::string name, kind;
@@ -119,54 +120,6 @@ std::vector<RankedCandidate> rankCandidates(const std::vector<Candidate> &candid
 // Cross-validated predictions of the residual by one candidate (for before/after plots).
 std::vector<double> cvPredict(const Candidate &c, const std::vector<double> &residual, const std::vector<int> &fold,
                               int folds, const std::vector<double> *scaleSensitivity = nullptr);
-
-// du/dr (mm per unit height reduction, D0 = 10 mm) from FE snapshots: per (n, μ) case, the
-// slope at 50 % of a least-squares quadratic in r of u over the reductions 0.35–0.5; then a smooth quadratic surface in
-// (n, μ) through those slopes. Built from data/fe/sweep.csv.
-class ReductionSlope {
-public:
-    bool load(const std::string &sweepCsv, std::string *error)
-    {
-        return load(std::vector<std::string>{sweepCsv}, error);
-    }
-    // One or more sweep CSVs: the base data are chosen over all of them (fe_base_data.h).
-    bool load(const std::vector<std::string> &sweepCsvs, std::string *error);
-    // Direct construction (tests): slope = c0 + c1 n + c2 μ + c3 n² + c4 nμ + c5 μ².
-    void setCoefficients(const std::vector<double> &c) { coef_ = c; }
-    double slope(double n, double mu) const;
-    const std::vector<double> &coefficients() const { return coef_; }
-    int cases() const { return cases_; }
-    // The (n, μ) box the sweep spans (the surface is evaluated inside it only).
-    double nMin() const { return nMin_; }
-    double nMax() const { return nMax_; }
-    double muMin() const { return muMin_; }
-    double muMax() const { return muMax_; }
-    // The reductions over which the linear carry u50 = u − (du/dr)(r − 0.5) stands on data:
-    // within the snapshots (plus half their spacing), and where the largest per-case
-    // curvature of u(r) keeps the neglected quadratic term below the FE's u floor (0.02 mm).
-    double reductionMin() const { return reductionMin_; }
-    double reductionMax() const { return reductionMax_; }
-    double maxCurvature() const { return maxCurvature_; } // |d²u/dr²|/2, mm
-
-private:
-    std::vector<double> coef_;
-    int cases_ = 0;
-    double nMin_ = 0.05, nMax_ = 0.5, muMin_ = 0.05, muMax_ = 0.3;
-    double reductionMin_ = 0.5, reductionMax_ = 0.5, maxCurvature_ = 0;
-};
-
-// The FE u floor: below it the contact edge is not resolved (the slope fit ignores such
-// points); also the tolerance for the neglected curvature of the linear carry.
-constexpr double kFeUFloorMm = 0.02;
-
-// u at the model's 50 % reduction: u50 = u − (du/dr)(r − 0.5), du/dr at (n, μ(u50)) found by
-// fixed-point iteration, scaled with D0 by geometric similarity.
-double uAtModelReduction(const friction::FrictionModel &model, const ReductionSlope &slope,
-                         const friction::ModelInputs &in, double reduction, double scaleFactor = 1.0);
-
-// Inverse of the model in u at fixed n (bisection on [0, 1.25] mm at D0 = 10): for tests and
-// synthetic record sets.
-double uForMu(const friction::FrictionModel &model, double mu, double n, double d0Mm = 10);
 
 double rms(const std::vector<double> &v);
 

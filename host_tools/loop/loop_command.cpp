@@ -1,20 +1,23 @@
 // `icacam loop`: close the loop on measured records (PRODUCT.md §5, docs/loop.md).
 #include "host_tools/loop/loop_command.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
+#include <map>
 #include <stdexcept>
 
 #include "friction/friction_models.h"
 #include "host_tools/cli_options.h"
+#include "host_tools/fe/fe_table_sources.h"
+#include "host_tools/fe/reduction_slope.h"
 #include "host_tools/image_file.h"
 #include "host_tools/loop/journal_records.h"
 #include "host_tools/loop/loop_physics_report.h"
-#include "host_tools/loop/loop_plot.h"
-#include "host_tools/loop/reduction_table.h"
+#include "host_tools/loop/loop_records.h"
+#include "host_tools/loop/loop_report.h"
 #include "host_tools/manifest.h"
 #include "host_tools/number_text.h"
 #include "host_tools/record_measurer.h"
@@ -30,6 +33,7 @@ namespace icacam::host {
 
 namespace fs = std::filesystem;
 using namespace icacam::friction;
+using namespace icacam::reading;
 using namespace icacam::vision;
 
 namespace {
@@ -75,19 +79,6 @@ std::string repoFile(const std::string &name)
     return fs::exists(p) ? p.string() : name;
 }
 
-// Paths as the report names them: relative to the source tree when under it (a report
-// committed from one checkout reads the same in another).
-std::string joined(const std::vector<std::string> &v)
-{
-    const std::string root = fs::path(ICACAM_LOOP_SOURCE_DIR).lexically_normal().string() + "/";
-    std::string s;
-    for (const std::string &x : v) {
-        const std::string p = fs::path(x).lexically_normal().string();
-        s += (s.empty() ? "" : ", ") + (p.rfind(root, 0) == 0 ? p.substr(root.size()) : p);
-    }
-    return s;
-}
-
 std::string f4(double v, const char *fmt = "%.4f")
 {
     char b[48];
@@ -101,131 +92,158 @@ namespace loop {
 
 namespace {
 
-// The loop measures an image record (a manifest's, a journal's saved frame) as `icacam
-// measure` does (host_tools/record_measurer.h: the row's declared inputs, tolerances and
-// calibration), and keeps the pipeline's diagnostics.
-bool measureImage(const ManifestRow &row, const Manifest &manifest, host::RecordMeasurer &measurer, LoopRecord *r,
-                  std::string *why)
+// Every row read (readLoopRecord); the usable ones with their residual and μ's
+// sensitivities, the others listed with why.
+ResidualSet measureRecords(const Manifest &manifest, const FrictionModel &model,
+                           const std::vector<std::string> &skippedBefore)
 {
-    host::RecordReading reading;
-    measurer.measure(row, manifest, &reading);
-    if (!reading.measured) {
-        *why = reading.message;
-        return false;
+    ResidualSet set;
+    set.skipped = skippedBefore;
+    host::RecordMeasurer measurer(model, SpecimenSpec{});
+    for (const ManifestRow &row : manifest.rows) {
+        LoopRecord r;
+        r.id = row.get("id", "line" + std::to_string(row.line));
+        std::string why;
+        if (readLoopRecord(row, manifest, measurer, &r, &why))
+            set.usable.push_back(std::move(r));
+        else
+            set.skipped.push_back(r.id + ": " + why);
     }
-    const Measurement &m = reading.m;
-    if (!m.hasValue()) {
-        *why = errorMessage(m.error);
-        return false;
+    for (const LoopRecord &r : set.usable) {
+        set.residual.push_back(r.muModel - r.muRef);
+        set.scaleSens.push_back(r.scaleSens);
+        set.uSens.push_back(r.uSens);
     }
-    // u at the declared scale: the loop looks for what was not declared, so the reading's
-    // own silhouette correction (reading_interpreter.h) is taken back out.
-    const double k = m.scaleFactor;
-    r->uMm = m.uMm / k;
-    auto &d = r->diagnostics;
-    d["diag_u_mm"] = r->uMm;
-    d["diag_r_inner_mm"] = m.rInnerMm / k;
-    d["diag_r_outer_mm"] = m.rOuterMm / k;
-    if (m.rMaxMm > 0) d["diag_rmax_over_r0"] = m.rMaxMm / k / (0.5 * r->d0Mm);
-    if (m.reductionEst >= 0) d["diag_reduction_est"] = m.reductionEst; // from R_max and the FE
-    d["diag_inner_contrast"] = m.inner.contrast;
-    d["diag_outer_contrast"] = m.outer.contrast;
-    d["diag_inner_coverage"] = m.inner.coverage;
-    d["diag_outer_coverage"] = m.outer.coverage;
-    d["diag_inner_scatter_px"] = m.inner.scatterPx;
-    d["diag_outer_scatter_px"] = m.outer.scatterPx;
-    d["diag_inner_ellipticity"] = m.inner.ellipticity;
-    d["diag_outer_ellipticity"] = m.outer.ellipticity;
-    d["diag_outer_axis_deg"] = m.outer.axisDeg;
-    d["diag_centre_offset_px"] = m.centreOffsetPx;
-    d["diag_edge_width_px"] = m.edgeWidthPx;
-    d["diag_saturated_fraction"] = m.saturatedFraction;
-    d["diag_u_px"] = m.uPx;
-    d["diag_flag_count"] = double(__builtin_popcount(m.flags));
-    return true;
+    return set;
 }
 
-bool measureRecord(const ManifestRow &row, const Manifest &manifest, const FrictionModel &model,
-                   host::RecordMeasurer &measurer, LoopRecord *r, std::string *why)
+// The recorded reduction is also ranked by its physics: the change in μ when u is carried
+// to 50 % with the FE du/dr (form "fe"), not only by a linear patch. Loads *slope when a
+// reduction is recorded and the model does not carry it itself.
+std::map<std::string, std::vector<double>> reductionForms(const FrictionModel &model, const ResidualSet &set,
+                                                          const std::vector<std::string> &feSweeps,
+                                                          fe::ReductionSlope *slope, bool *slopeLoaded)
 {
-    auto num = [&](const char *key, double fallback, double *out) {
-        if (!row.has(key) || row.get(key).empty()) {
-            *out = fallback;
-            return true;
+    std::map<std::string, std::vector<double>> physicalForms;
+    bool anyRecorded = false;
+    for (const LoopRecord &r : set.usable) anyRecorded = anyRecorded || r.reduction >= 0;
+    if (!anyRecorded || model.correctsReduction()) return physicalForms;
+    std::string e;
+    *slopeLoaded = slope->load(feSweeps, &e);
+    if (!*slopeLoaded) {
+        std::cerr << "icacam loop: no physical correction: " << e << "\n";
+        return physicalForms;
+    }
+    std::vector<double> change(set.usable.size(), 0);
+    for (size_t i = 0; i < set.usable.size(); ++i) {
+        const LoopRecord &r = set.usable[i];
+        if (r.reduction < 0) continue;
+        ModelInputs in;
+        in.uMm = r.uMm, in.n = r.n, in.kMpa = r.kMpa, in.d0Mm = r.d0Mm, in.h0Mm = r.h0Mm;
+        in.uMm = fe::uAtModelReduction(model, *slope, in, r.reduction);
+        change[i] = r.muModel - model.estimate(in).mu;
+    }
+    physicalForms["reduction"] = std::move(change);
+    return physicalForms;
+}
+
+// A grouping (a camera, a lens, a material) is also ranked in its physical form: a length
+// factor per group, or an n per material (loop_physics.h).
+std::map<std::string, FittedForm> groupingForms(const FrictionModel &model, const ResidualSet &set)
+{
+    std::map<std::string, FittedForm> fittedForms;
+    for (const Candidate &c : set.candidates)
+        if (c.kind == "categorical" && !c.symptom)
+            fittedForms[c.name] = groupingForm(model, set.usable, c, set.fold, set.folds);
+    return fittedForms;
+}
+
+// k-fold RMS of the residual after a constant offset fitted on the other folds.
+double offsetCvRms(const std::vector<double> &res, const std::vector<int> &fold, int folds)
+{
+    std::vector<double> e(res.size());
+    for (int k = 0; k < folds; ++k) {
+        double sum = 0;
+        int cnt = 0;
+        for (size_t i = 0; i < res.size(); ++i)
+            if (fold[i] != k) {
+                sum += res[i];
+                ++cnt;
+            }
+        for (size_t i = 0; i < res.size(); ++i)
+            if (fold[i] == k) e[i] = res[i] - (cnt ? sum / cnt : 0);
+    }
+    return rms(e);
+}
+
+// The physical correction of the reduction: u carried to 50 % with the FE du/dr from the
+// recorded reduction, or from the silhouette's estimate where none was recorded.
+void correctReduction(const FrictionModel &model, const fe::ReductionSlope &slope, ResidualSet *set, LoopSummary *s)
+{
+    const std::vector<LoopRecord> &usable = set->usable;
+    const std::vector<double> &res = set->residual;
+    std::vector<double> after(usable.size()), delta(usable.size());
+    for (size_t i = 0; i < usable.size(); ++i) {
+        const LoopRecord &r = usable[i];
+        ModelInputs in;
+        in.uMm = r.uMm;
+        in.n = r.n;
+        in.kMpa = r.kMpa;
+        in.d0Mm = r.d0Mm;
+        in.h0Mm = r.h0Mm;
+        double red = r.reduction;
+        if (red < 0) {
+            auto est = r.diagnostics.find("diag_reduction_est");
+            if (est != r.diagnostics.end()) red = est->second;
         }
-        if (parseNumber(row.get(key), out)) return true;
-        *why = std::string("bad number in ") + key;
-        return false;
+        in.uMm = fe::uAtModelReduction(model, slope, in, red); // red < 0: left as measured
+        set->muPhysical[i] = model.estimate(in).mu;
+        after[i] = set->muPhysical[i] - r.muRef;
+        delta[i] = r.muModel - set->muPhysical[i]; // what the correction removed
+    }
+    s->rmsPhysical = rms(after);
+    // The FE slope's scale, fitted by least squares (all records and per fold): a check that
+    // the FE du/dr carries the data's effect, not a parameter of the correction.
+    auto fitScale = [&](int k) {
+        double sdd = 0, sdr = 0;
+        for (size_t i = 0; i < res.size(); ++i)
+            if (k < 0 || set->fold[i] != k) {
+                sdd += delta[i] * delta[i];
+                sdr += delta[i] * res[i];
+            }
+        return sdd > 0 ? sdr / sdd : 0.0;
     };
-    double hFinal = 0;
-    if (!row.error.empty()) {
-        *why = row.error;
-        return false;
+    s->slopeScale = fitScale(-1);
+    std::vector<double> cvErr(res.size());
+    for (int k = 0; k < set->folds; ++k) {
+        const double a = fitScale(k);
+        for (size_t i = 0; i < res.size(); ++i)
+            if (set->fold[i] == k) cvErr[i] = res[i] - a * delta[i];
     }
-    if (!num("n", -1, &r->n) || !num("k_mpa", 0, &r->kMpa) || !num("d0_mm", 10, &r->d0Mm) ||
-        !num("h0_mm", 15, &r->h0Mm) || !num("h_final_mm", 0, &hFinal) || !num("mu_ref", NAN, &r->muRef))
-        return false;
-    if (!(r->n > 0)) {
-        *why = "missing n";
-        return false;
-    }
-    if (!std::isfinite(r->muRef)) {
-        *why = "no mu_ref";
-        return false;
-    }
-    if (hFinal > 0 && r->h0Mm > 0) r->reduction = 1.0 - hFinal / r->h0Mm;
-    double ri = 0, ro = 0;
-    if (row.has("r_inner_mm") && row.has("r_outer_mm") && parseNumber(row.get("r_inner_mm"), &ri) &&
-        parseNumber(row.get("r_outer_mm"), &ro)) {
-        r->uMm = ro - ri;
-        r->diagnostics["diag_u_mm"] = r->uMm;
-        double rb;
-        if (row.has("r_bulge_mm") && parseNumber(row.get("r_bulge_mm"), &rb))
-            r->diagnostics["diag_rmax_over_r0"] = rb / (0.5 * r->d0Mm);
-    } else if (row.has("image")) {
-        if (!measureImage(row, manifest, measurer, r, why)) return false;
-    } else {
-        *why = "neither image nor r_inner_mm/r_outer_mm";
-        return false;
-    }
-    ModelInputs in;
-    in.uMm = r->uMm;
-    in.n = r->n;
-    in.kMpa = r->kMpa;
-    in.d0Mm = r->d0Mm;
-    in.h0Mm = r->h0Mm;
-    in.hFinalMm = hFinal; // a reduction-aware model (--model paper_reduction) uses it
-    const ModelEstimate est = model.estimate(in);
-    r->muModel = est.mu;
-    r->scaleSens = est.dMuDu * r->uMm;
-    r->uSens = est.dMuDu;
-    for (const std::string &c : manifest.columns) r->columns[c] = row.get(c);
-    r->usable = true;
-    return true;
+    s->cvRmsPhysicalScaled = rms(cvErr);
+    s->cvRmsAfter = s->rmsPhysical; // no parameter is fitted to these records: held out as is
 }
 
-void plotCandidate(const std::string &path, const Candidate &c, const std::vector<double> &res,
-                   const RankedCandidate &rc)
+// Any other chosen effect in its physical form, with the regression patch beside it.
+void readChosenEffect(const FrictionModel &model, const ResidualSet &set, LoopSummary *s)
 {
-    Series s;
-    s.y = res;
-    s.colour = 0x1f77b4;
-    std::vector<std::string> ticks;
-    if (c.kind == "categorical") {
-        std::map<std::string, int> idx;
-        for (const std::string &l : c.levels) idx.emplace(l, 0);
-        int k = 0;
-        for (auto &[l, i] : idx) {
-            i = k++;
-            ticks.push_back(l.empty() ? "(none)" : l);
-        }
-        for (size_t i = 0; i < c.levels.size(); ++i)
-            s.x.push_back(idx[c.levels[i]] + 0.25 * (double(i % 7) / 6.0 - 0.5));
-    } else {
-        s.x = c.x;
+    const Candidate *lead = nullptr;
+    for (const Candidate &c : set.candidates)
+        if (c.name == s->chosen) lead = &c;
+    if (lead) s->cvRmsPatch = s->ranking.front().cvRmsPatch;
+    if (s->physical)
+        s->reading = "fe_slope";
+    else if (lead && (isReductionCandidate(s->chosen) || lead->symptom))
+        s->reading = "patch";
+    else if (lead && lead->kind == "categorical") {
+        const GroupReading reading = readingOf(set.usable, *lead);
+        s->grouping = fitGrouping(model, set.usable, *lead, reading, set.fold, set.folds);
+        s->reading = reading == GroupReading::Scale ? "scale" : "n";
+        s->cvRmsAfter = rms(s->grouping.cvErrors);
+    } else if (lead) {
+        s->reading = "process";
+        s->linear = fitLinearEffect(*lead, set.residual, s->ranking.front().form, set.scaleSens, set.uSens);
     }
-    const std::string title = "residual vs " + c.name + "  (CV gain " + f4(rc.gain) + ", z " + f4(rc.z, "%.1f") + ")";
-    scatterPlot(path, title, c.name, "mu_model - mu_ref", {s}, ticks);
 }
 
 } // namespace
@@ -268,95 +286,37 @@ LoopSummary runLoopOn(const Manifest &manifest, const std::string &source,
     if (!model) throw std::runtime_error("unknown model '" + modelName + "' (known: " + cli::modelNames() + ")");
     fs::create_directories(reportDir);
 
-    host::RecordMeasurer measurer(*model, SpecimenSpec{});
-    std::vector<LoopRecord> usable;
-    std::vector<std::string> skipped = skippedBefore;
-    for (const ManifestRow &row : manifest.rows) {
-        LoopRecord r;
-        r.id = row.get("id", "line" + std::to_string(row.line));
-        std::string why;
-        if (measureRecord(row, manifest, *model, measurer, &r, &why))
-            usable.push_back(std::move(r));
-        else
-            skipped.push_back(r.id + ": " + why);
-    }
+    ResidualSet set = measureRecords(manifest, *model, skippedBefore);
     LoopSummary s;
     s.records = int(manifest.rows.size());
-    s.usable = int(usable.size());
-    if (usable.size() < 6) throw std::runtime_error("fewer than 6 usable records (measured, with mu_ref)");
+    s.usable = int(set.usable.size());
+    if (set.usable.size() < 6) throw std::runtime_error("fewer than 6 usable records (measured, with mu_ref)");
+    s.rmsBefore = rms(set.residual);
+    set.folds = std::clamp(opt.folds, 2, int(set.usable.size()));
+    set.fold = foldAssignment(set.usable.size(), set.folds, opt.seed);
+    set.candidates = buildCandidates(set.usable);
 
-    std::vector<double> res, sens, uSens;
-    for (const LoopRecord &r : usable) {
-        res.push_back(r.muModel - r.muRef);
-        sens.push_back(r.scaleSens);
-        uSens.push_back(r.uSens);
-    }
-    s.rmsBefore = rms(res);
-    const int folds = std::clamp(opt.folds, 2, int(usable.size()));
-    const std::vector<int> fold = foldAssignment(usable.size(), folds, opt.seed);
-    const std::vector<Candidate> cands = buildCandidates(usable);
-    // The recorded reduction is also ranked by its physics: the change in μ when u is carried
-    // to 50 % with the FE du/dr (form "fe"), not only by a linear patch.
-    ReductionSlope slope;
+    fe::ReductionSlope slope;
     bool slopeLoaded = false;
-    std::map<std::string, std::vector<double>> physicalForms;
-    bool anyRecorded = false;
-    for (const LoopRecord &r : usable) anyRecorded = anyRecorded || r.reduction >= 0;
-    if (anyRecorded && !model->correctsReduction()) {
-        std::string e;
-        slopeLoaded = slope.load(feSweeps, &e);
-        if (!slopeLoaded)
-            std::cerr << "icacam loop: no physical correction: " << e << "\n";
-        else {
-            std::vector<double> change(usable.size(), 0);
-            for (size_t i = 0; i < usable.size(); ++i) {
-                const LoopRecord &r = usable[i];
-                if (r.reduction < 0) continue;
-                ModelInputs in;
-                in.uMm = r.uMm, in.n = r.n, in.kMpa = r.kMpa, in.d0Mm = r.d0Mm, in.h0Mm = r.h0Mm;
-                in.uMm = uAtModelReduction(*model, slope, in, r.reduction);
-                change[i] = r.muModel - model->estimate(in).mu;
-            }
-            physicalForms["reduction"] = std::move(change);
-        }
-    }
-    // A grouping (a camera, a lens, a material) is also ranked in its physical form: a length
-    // factor per group, or an n per material (loop_physics.h).
-    std::map<std::string, FittedForm> fittedForms;
-    for (const Candidate &c : cands)
-        if (c.kind == "categorical" && !c.symptom) fittedForms[c.name] = groupingForm(*model, usable, c, fold, folds);
-    s.ranking = rankCandidates(cands, res, opt, &sens, &uSens, &physicalForms, &fittedForms);
-    {
-        std::vector<double> e(res.size());
-        for (int k = 0; k < folds; ++k) {
-            double sum = 0;
-            int cnt = 0;
-            for (size_t i = 0; i < res.size(); ++i)
-                if (fold[i] != k) {
-                    sum += res[i];
-                    ++cnt;
-                }
-            for (size_t i = 0; i < res.size(); ++i)
-                if (fold[i] == k) e[i] = res[i] - (cnt ? sum / cnt : 0);
-        }
-        s.cvRmsOffset = rms(e);
-    }
+    const std::map<std::string, std::vector<double>> physicalForms =
+        reductionForms(*model, set, feSweeps, &slope, &slopeLoaded);
+    const std::map<std::string, FittedForm> fittedForms = groupingForms(*model, set);
+    s.ranking =
+        rankCandidates(set.candidates, set.residual, opt, &set.scaleSens, &set.uSens, &physicalForms, &fittedForms);
+    s.cvRmsOffset = offsetCvRms(set.residual, set.fold, set.folds);
     s.cvRmsAfter = s.rmsBefore;
     if (!s.ranking.empty() && s.ranking.front().significant) {
         s.chosen = s.ranking.front().name;
         s.cvRmsAfter = s.ranking.front().cvRmsAfter;
     }
 
-    // The physical correction of the reduction (when it leads and is recorded).
-    std::vector<double> muPhys(usable.size(), NAN);
     // A model that carries u to 50 % itself (paper_reduction) must not be corrected twice: a
-    // reduction effect left in its residual is the FE slope's own error (reported below).
+    // reduction effect left in its residual is the FE slope's own error (reported as such).
     // The reduction leads when it is chosen as recorded or as the image measures it
     // (diag_reduction_est, from the silhouette): the recorded value is used when there is
     // one, the image's estimate otherwise.
-    const bool isReduction = s.chosen == "reduction" || s.chosen == "h_final_mm" || s.chosen == "diag_reduction_est";
-    const bool reductionLeads = isReduction && !model->correctsReduction();
-    if (reductionLeads) {
+    set.muPhysical.assign(set.usable.size(), NAN);
+    if (isReductionCandidate(s.chosen) && !model->correctsReduction()) {
         std::string e;
         if (!slopeLoaded && !slope.load(feSweeps, &e))
             std::cerr << "icacam loop: no physical correction: " << e << "\n";
@@ -364,236 +324,12 @@ LoopSummary runLoopOn(const Manifest &manifest, const std::string &source,
             s.physical = true;
     }
     if (s.physical) {
-        std::vector<double> after(usable.size()), delta(usable.size());
-        for (size_t i = 0; i < usable.size(); ++i) {
-            const LoopRecord &r = usable[i];
-            ModelInputs in;
-            in.uMm = r.uMm;
-            in.n = r.n;
-            in.kMpa = r.kMpa;
-            in.d0Mm = r.d0Mm;
-            in.h0Mm = r.h0Mm;
-            double red = r.reduction;
-            if (red < 0) {
-                auto est = r.diagnostics.find("diag_reduction_est");
-                if (est != r.diagnostics.end()) red = est->second;
-            }
-            in.uMm = uAtModelReduction(*model, slope, in, red); // red < 0: left as measured
-            muPhys[i] = model->estimate(in).mu;
-            after[i] = muPhys[i] - r.muRef;
-            delta[i] = r.muModel - muPhys[i]; // what the correction removed
-        }
-        s.rmsPhysical = rms(after);
-        // The FE slope's scale, fitted by least squares (all records and per fold): a check that
-        // the FE du/dr carries the data's effect, not a parameter of the correction.
-        auto fitScale = [&](int k) {
-            double sdd = 0, sdr = 0;
-            for (size_t i = 0; i < res.size(); ++i)
-                if (k < 0 || fold[i] != k) {
-                    sdd += delta[i] * delta[i];
-                    sdr += delta[i] * res[i];
-                }
-            return sdd > 0 ? sdr / sdd : 0.0;
-        };
-        s.slopeScale = fitScale(-1);
-        std::vector<double> cvErr(res.size());
-        for (int k = 0; k < folds; ++k) {
-            const double a = fitScale(k);
-            for (size_t i = 0; i < res.size(); ++i)
-                if (fold[i] == k) cvErr[i] = res[i] - a * delta[i];
-        }
-        s.cvRmsPhysicalScaled = rms(cvErr);
-        s.cvRmsAfter = s.rmsPhysical; // no parameter is fitted to these records: held out as is
+        set.slopeCases = slope.cases();
+        correctReduction(*model, slope, &set, &s);
     }
-
-    // Any other chosen effect in its physical form, with the regression patch beside it.
-    const Candidate *lead = nullptr;
-    for (const Candidate &c : cands)
-        if (c.name == s.chosen) lead = &c;
-    if (lead) s.cvRmsPatch = s.ranking.front().cvRmsPatch;
-    if (s.physical)
-        s.reading = "fe_slope";
-    else if (lead && (isReduction || lead->symptom))
-        s.reading = "patch";
-    else if (lead && lead->kind == "categorical") {
-        const GroupReading reading = readingOf(usable, *lead);
-        s.grouping = fitGrouping(*model, usable, *lead, reading, fold, folds);
-        s.reading = reading == GroupReading::Scale ? "scale" : "n";
-        s.cvRmsAfter = rms(s.grouping.cvErrors);
-    } else if (lead) {
-        s.reading = "process";
-        s.linear = fitLinearEffect(*lead, res, s.ranking.front().form, sens, uSens);
-    }
-    writePhysicalCsv((fs::path(reportDir) / "physical.csv").string(), s);
-
-    // ranking.csv
-    {
-        std::ofstream f(fs::path(reportDir) / "ranking.csv");
-        f << "rank,candidate,kind,form,cv_rms_before,cv_rms_after,gain,z,correlation,chosen,symptom\n";
-        int k = 0;
-        for (const RankedCandidate &r : s.ranking)
-            f << ++k << "," << r.name << "," << r.kind << "," << r.form << "," << f4(r.cvRmsBefore, "%.5f") << ","
-              << f4(r.cvRmsAfter, "%.5f") << "," << f4(r.gain, "%.5f") << "," << f4(r.z, "%.2f") << ","
-              << f4(r.correlation, "%.3f") << ","
-              << (r.name == s.chosen ? "yes"
-                  : r.significant    ? "significant"
-                                     : "no")
-              << "," << (r.symptom ? "yes" : "no") << "\n";
-    }
-    // records.csv (corrected: the physical form fitted on every record)
-    const bool corrected = s.physical || !s.grouping.muAfter.empty();
-    const std::vector<double> &muCorrected = s.physical ? muPhys : s.grouping.muAfter;
-    {
-        std::ofstream f(fs::path(reportDir) / "records.csv");
-        f << "id,n,u_mm,reduction,mu_ref,mu_model,residual,mu_corrected,residual_corrected\n";
-        for (size_t i = 0; i < usable.size(); ++i) {
-            const LoopRecord &r = usable[i];
-            f << r.id << "," << r.n << "," << f4(r.uMm, "%.5f") << "," << f4(r.reduction, "%.4f") << "," << r.muRef
-              << "," << f4(r.muModel, "%.5f") << "," << f4(res[i], "%.5f") << ","
-              << (corrected ? f4(muCorrected[i], "%.5f") : "") << ","
-              << (corrected ? f4(muCorrected[i] - r.muRef, "%.5f") : "") << "\n";
-        }
-    }
-    // Plots: residual against the three leading candidates; before/after.
-    std::vector<std::string> plots;
-    for (size_t k = 0; k < s.ranking.size() && k < 3; ++k) {
-        for (const Candidate &c : cands) {
-            if (c.name != s.ranking[k].name) continue;
-            const std::string name = "residual_vs_" + c.name + ".png";
-            plotCandidate((fs::path(reportDir) / name).string(), c, res, s.ranking[k]);
-            plots.push_back(name);
-        }
-    }
-    {
-        Series before, after;
-        before.label = modelName + " (before), RMS " + f4(s.rmsBefore);
-        before.colour = 0xb0b0b0;
-        after.colour = 0xd62728;
-        for (size_t i = 0; i < usable.size(); ++i) {
-            before.x.push_back(usable[i].muRef);
-            before.y.push_back(usable[i].muModel);
-        }
-        std::vector<Series> ser{before};
-        if (s.physical) {
-            after.label = "reduction-corrected (after), RMS " + f4(s.rmsPhysical);
-            for (size_t i = 0; i < usable.size(); ++i) {
-                after.x.push_back(usable[i].muRef);
-                after.y.push_back(muPhys[i]);
-            }
-            ser.push_back(after);
-        } else if (!s.grouping.cvErrors.empty()) {
-            after.label = "with " + s.chosen + " as " + (s.reading == "n" ? "n per material" : "a scale per group") +
-                          " (after, CV), RMS " + f4(s.cvRmsAfter);
-            for (size_t i = 0; i < usable.size(); ++i) {
-                after.x.push_back(usable[i].muRef);
-                after.y.push_back(usable[i].muRef + s.grouping.cvErrors[i]);
-            }
-            ser.push_back(after);
-        } else if (!s.chosen.empty()) {
-            after.label = "with " + s.chosen + " (after, CV), RMS " + f4(s.cvRmsAfter);
-            for (const Candidate &c : cands)
-                if (c.name == s.chosen) {
-                    const std::vector<double> p = cvPredict(c, res, fold, folds,
-                                                            s.ranking.front().form == "scale" ? &sens
-                                                            : s.ranking.front().form == "u"   ? &uSens
-                                                                                              : nullptr);
-                    for (size_t i = 0; i < usable.size(); ++i) {
-                        after.x.push_back(usable[i].muRef);
-                        after.y.push_back(usable[i].muModel - p[i]);
-                    }
-                }
-            ser.push_back(after);
-        }
-        scatterPlot((fs::path(reportDir) / "before_after.png").string(), "mu: model vs reference", "mu_ref",
-                    "mu (model)", ser, {}, true);
-        plots.push_back("before_after.png");
-    }
-    // report.md
-    {
-        std::ofstream f(fs::path(reportDir) / "report.md");
-        f << "# icacam loop report\n\n";
-        f << source << ", model `" << modelName << "`, " << folds << "-fold CV, seed " << opt.seed
-          << ". Records: " << s.records << ", usable " << s.usable << ".\n\n";
-        for (const std::string &k : skipped) f << "- skipped " << k << "\n";
-        f << "\n## Error in μ (μ_model − μ_ref)\n\n| | RMS |\n|---|---|\n";
-        f << "| before (model as is) | " << f4(s.rmsBefore) << " |\n";
-        f << "| constant offset only (k-fold) | " << f4(s.cvRmsOffset) << " |\n";
-        if (!s.ranking.empty())
-            f << "| regression patch: the best linear model of the residual in " << s.ranking.front().name << " (form `"
-              << s.ranking.front().patchForm << "`, k-fold) | " << f4(s.ranking.front().cvRmsPatch) << " |\n";
-        if (s.physical) {
-            f << "| **after: u carried to 50 % with FE du/dr, μ = model(u50, n)** (no parameter fitted here) | **"
-              << f4(s.rmsPhysical) << "** |\n";
-            f << "| same with the FE slope's scale fitted per fold (k-fold; scale on all records "
-              << f4(s.slopeScale, "%.3f") << ") | " << f4(s.cvRmsPhysicalScaled) << " |\n";
-        } else if (!s.grouping.cvErrors.empty()) {
-            f << "| **after: " << s.chosen << " in its physical form ("
-              << (s.reading == "n" ? "n per material" : "a length factor per group") << ", k-fold)** | **"
-              << f4(s.cvRmsAfter) << "** |\n";
-        } else if (!s.chosen.empty()) {
-            f << "| **after (" << s.chosen << ", regression, k-fold)** | **" << f4(s.cvRmsAfter) << "** |\n";
-        }
-        f << "\n## Chosen effect\n\n";
-        if (s.chosen.empty()) {
-            f << "None: no candidate has a significant positive cross-validated gain (Bonferroni over "
-              << s.ranking.size() << " candidates, α = " << opt.alpha << ", and ≥ " << opt.minRelativeGain * 100
-              << " % of the CV RMS). The model is left as it is.\n";
-        } else if (s.physical) {
-            f << "`" << s.chosen << "`: the "
-              << (s.chosen == "diag_reduction_est" ? "silhouette (R_max against the FE) says"
-                                                   : "recorded final height says")
-              << " the specimens were not upset to the model's "
-                 "50 % height reduction. The ICA width u grows with the reduction (the contact edge keeps moving "
-                 "out while the folded side becomes contact), so the model, which maps u to μ at 50 %, reads a "
-                 "deeper upset as more friction. Correction: u50 = u − (du/dr)(r − 0.5), du/dr from the FE sweep "
-                 "(`"
-              << joined(feSweeps) << "`, " << slope.cases()
-              << " cases, quadratic in n and μ), then μ = model(u50, n). "
-                 "Check of the FE slope: the least-squares scale of the FE du/dr on these records is "
-              << f4(s.slopeScale, "%.3f")
-              << (std::fabs(s.slopeScale - 1) <= 0.15
-                      ? " (the FE runs carry the effect found in the data).\n"
-                      : ": the data's effect differs from the FE slope by that factor. The FE du/dr is the weak "
-                        "part (the contact edge's resolution, docs/fe.md): better-converged FE runs past 50 %, "
-                        "not a factor fitted to these records, are the next step.\n");
-        } else if (isReduction && model->correctsReduction()) {
-            f << "`" << s.chosen << "`: the model `" << model->name()
-              << "` already carries u to 50 % with the FE "
-                 "du/dr (friction/reduction_table.h). A reduction effect left in its residual means the FE slope "
-                 "is off: the residual grows with the reduction when the FE du/dr is too small (run with "
-                 "`--model paper` for the least-squares scale of the FE slope). Reported here as its "
-                 "one-candidate k-fold model, not built into the product: better FE runs are the fix.\n";
-        } else {
-            writePhysicalSection(f, s);
-        }
-        writeSymptomNote(f, s);
-        f << "\n## Ranking (best first; full list in ranking.csv)\n\n| # | candidate | kind | form | CV RMS before | "
-             "CV RMS after | gain | z | r |\n|---|---|---|---|---|---|---|---|---|\n";
-        for (size_t k = 0; k < s.ranking.size() && k < 15; ++k) {
-            const RankedCandidate &r = s.ranking[k];
-            f << "| " << k + 1 << " | " << r.name << (r.significant ? " *" : "") << " | " << r.kind
-              << (r.symptom ? " (symptom)" : "") << " | " << r.form << " | " << f4(r.cvRmsBefore) << " | "
-              << f4(r.cvRmsAfter) << " | " << f4(r.gain, "%.5f") << " | " << f4(r.z, "%.1f") << " | "
-              << f4(r.correlation, "%.2f") << " |\n";
-        }
-        f << "\n(* significant; a symptom is a measured quantity, the rest are recorded conditions)\n\n## Plots\n\n";
-        for (const std::string &p : plots) f << "![" << p << "](" << p << ")\n\n";
-    }
+    readChosenEffect(*model, set, &s);
+    writeLoopReport({reportDir, source, modelName, model, opt, feSweeps}, set, s);
     return s;
-}
-
-std::vector<std::string> splitSources(const std::string &sources)
-{
-    std::vector<std::string> out;
-    size_t at = 0;
-    while (at < sources.size()) {
-        const size_t end = sources.find(' ', at);
-        const std::string part = sources.substr(at, end == std::string::npos ? std::string::npos : end - at);
-        if (!part.empty()) out.push_back(part);
-        if (end == std::string::npos) break;
-        at = end + 1;
-    }
-    return out;
 }
 
 } // namespace loop
@@ -643,7 +379,7 @@ int loopCommand(const std::vector<std::string> &args)
         throw cli::UsageError("--journal and --reference go together", usage());
     // By default the FE data the product's table was generated from (its kFeSources).
     if (feSweeps.empty())
-        for (const std::string &name : loop::splitSources(friction::reduction_table::kFeSources))
+        for (const std::string &name : fe::splitSources(friction::reduction_table::kFeSources))
             feSweeps.push_back(repoFile(name));
     const loop::LoopSummary s =
         journalDir.empty() ? loop::runLoop(manifestPath, reportDir, modelName, opt, feSweeps)

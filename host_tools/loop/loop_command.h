@@ -24,7 +24,7 @@ struct LoopSummary {
     double rmsPhysical = 0;         // RMS after the physical reduction correction (no fitted parameter)
     double slopeScale = 0;          // least-squares scale of the FE du/dr on all records (1: FE as is)
     double cvRmsPhysicalScaled = 0; // k-fold with that scale fitted per fold
-    // The chosen effect in its physical form (docs/loop.md): "fe_slope" (the reduction through
+    // The chosen effect in its physical form (docs/loop-method.md): "fe_slope" (the reduction through
     // the FE du/dr), "scale" (a length factor per group of images: a recalibration), "n" (an n
     // per material), "process" (a recorded variable the FE does not model: its best linear
     // form and size, the FE study that would add it), "patch" (a symptom with no recorded
@@ -37,7 +37,7 @@ struct LoopSummary {
 };
 
 // Runs the whole analysis on a manifest and writes the report folder. feSweeps: the FE sweep
-// CSV(s) for du/dr (base data chosen over all of them, fe_base_data.h).
+// CSV(s) for du/dr (base data chosen over all of them, host_tools/fe/fe_base_data.h).
 LoopSummary runLoop(const std::string &manifestPath, const std::string &reportDir, const std::string &modelName,
                     const RankingOptions &opt, const std::vector<std::string> &feSweeps);
 
@@ -53,8 +53,5 @@ LoopSummary runLoopOn(const Manifest &manifest, const std::string &source,
                       const std::vector<std::string> &skippedBefore, const std::string &reportDir,
                       const std::string &modelName, const RankingOptions &opt,
                       const std::vector<std::string> &feSweeps);
-
-// The space-separated repository paths of a table's kFeSources.
-std::vector<std::string> splitSources(const std::string &sources);
 
 } // namespace icacam::host::loop

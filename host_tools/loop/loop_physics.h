@@ -1,12 +1,13 @@
 #pragma once
-// The physical form of an effect the ranking found (docs/loop.md, "Each effect in its physical
-// form"): a grouping of images → a length scale per group (a camera's calibration), a
-// material → the strain-hardening exponent n that makes its records consistent, a process
-// variable the FE does not model → the size of its best form. The reduction's physical form
-// (the FE du/dr) is in loop_analysis.h.
+// The physical form of an effect the ranking found (docs/loop-method.md, "The chosen effect
+// in its physical form"): a grouping of images → a length scale per group (a camera's
+// calibration), a material → the strain-hardening exponent n that makes its records
+// consistent, a process variable the FE does not model → the size of its best form. The
+// reduction's physical form (the FE du/dr) is host_tools/fe/reduction_slope.h.
 #include <string>
 #include <vector>
 
+#include "friction/friction_model.h"
 #include "host_tools/loop/loop_analysis.h"
 
 namespace icacam::host::loop {

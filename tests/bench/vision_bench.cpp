@@ -6,8 +6,8 @@
 
 #include "friction/paper_model.h"
 #include "host_tools/end_face_renderer.h"
+#include "reading/instrument.h"
 #include "tests/bench/opencv_baseline.h"
-#include "vision/end_face_analyzer.h"
 
 namespace {
 const cv::Mat &frame()
@@ -24,12 +24,12 @@ const cv::Mat &frame()
 void BM_VisionPipeline(benchmark::State &state)
 {
     const cv::Mat &img = frame();
-    icacam::vision::EndFaceAnalyzer a;
-    a.configure(img.cols, img.rows);
+    icacam::reading::Instrument a;
     icacam::friction::PaperModel model;
+    a.configure(img.cols, img.rows, model);
     const icacam::vision::LumaView v{img.data, img.cols, img.rows, int(img.step[0]), 1};
-    const icacam::vision::SpecimenSpec spec{0.25, 500, 10, 15, 0.0135};
-    for (auto _ : state) benchmark::DoNotOptimize(a.measure(v, spec, model).mu);
+    const icacam::reading::SpecimenSpec spec{0.25, 500, 10, 15, 0.0135};
+    for (auto _ : state) benchmark::DoNotOptimize(a.read(v, spec).mu);
 }
 BENCHMARK(BM_VisionPipeline)->Unit(benchmark::kMicrosecond);
 

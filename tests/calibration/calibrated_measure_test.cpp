@@ -25,8 +25,8 @@
 #include "host_tools/calibration_renderer.h"
 #include "host_tools/manifest.h"
 #include "host_tools/measure_command.h"
-#include "host_tools/synth_command.h"
-#include "vision/end_face_analyzer.h"
+#include "host_tools/model_inverse.h"
+#include "reading/instrument.h"
 
 using namespace icacam;
 namespace fs = std::filesystem;
@@ -65,17 +65,17 @@ TEST(CalibratedMeasure, MuThroughATiltedDistortingCamera)
     const host::BoardPhotoRenderer r(cam);
     const calibration::CalibrationFile cal = calibrate(r);
     ASSERT_GT(cal.views, 5);
-    vision::EndFaceAnalyzer analyzer;
-    ASSERT_EQ(analyzer.configure(cam.width, cam.height), vision::ErrorCode::None);
+    reading::Instrument analyzer;
     friction::PaperModel model;
+    ASSERT_EQ(analyzer.configure(cam.width, cam.height, model), vision::ErrorCode::None);
     const double cxPx = 0.5 * (cam.width - 1), cyPx = 0.5 * (cam.height - 1);
 
     std::mt19937 rng(7001);
     std::uniform_real_distribution<double> U(0, 1);
     auto flagNames = [](uint32_t f) {
         std::string out;
-        for (int b = 0; b < vision::kFlagCount; ++b)
-            if (f & (1u << b)) out += std::string(out.empty() ? "" : "|") + vision::flagName(b);
+        for (int b = 0; b < reading::kFlagCount; ++b)
+            if (f & (1u << b)) out += std::string(out.empty() ? "" : "|") + reading::flagName(b);
         return out.empty() ? std::string("-") : out;
     };
     // Bounds of the devset acceptance (README): median and max |Δμ|.
@@ -88,7 +88,7 @@ TEST(CalibratedMeasure, MuThroughATiltedDistortingCamera)
         const double n = 0.08 + 0.35 * U(rng), mu = 0.08 + 0.2 * U(rng);
         const double hFinal = 7.5; // 50 % of H0 = 15
         host::EndFaceScene s;
-        const double u = host::uForMu(mu, n);
+        const double u = host::uForMu(friction::PaperModel(), mu, n);
         s.rOuterMm = 6.85 - 0.95 * u;
         s.rInnerMm = s.rOuterMm - u;
         s.rMaxMm = 5.0 * std::sqrt(2.0) * (1.008 + 0.034 * u);
@@ -103,50 +103,51 @@ TEST(CalibratedMeasure, MuThroughATiltedDistortingCamera)
         // Calibrated, as `icacam measure` does it: the end face at h_final above the fixture.
         vision::PlaneCalibration pc = cal.plane;
         pc.heightMm = hFinal;
-        vision::SpecimenSpec spec{n, 500, 10, 15, vision::planeScaleAt(pc, cxPx, cyPx), hFinal};
-        spec.calibration = &pc;
-        const vision::Measurement mc = analyzer.measure(v, spec, model);
+        reading::SpecimenSpec spec{n, 500, 10, 15, vision::planeScaleAt(pc, cxPx, cyPx), hFinal};
+        analyzer.setCalibration(&pc, img.cols, img.rows);
+        const reading::Reading mc = analyzer.read(v, spec);
+        analyzer.setCalibration(nullptr, 0, 0);
         // Uncalibrated: a ruler on the fixture at the image centre (what a lab does without
         // a calibration), and the best single number (the true scale at the end face's
         // height under its centre), which leaves only tilt and distortion.
         vision::PlaneCalibration fixture = host::toPlaneCalibration(cam), face = fixture;
         face.heightMm = hFinal;
-        vision::SpecimenSpec ruler{n, 500, 10, 15, vision::planeScaleAt(fixture, cxPx, cyPx), hFinal};
-        const vision::Measurement mr = analyzer.measure(v, ruler, model);
+        reading::SpecimenSpec ruler{n, 500, 10, 15, vision::planeScaleAt(fixture, cxPx, cyPx), hFinal};
+        const reading::Reading mr = analyzer.read(v, ruler);
         ASSERT_TRUE(mc.hasValue() && mr.hasValue())
             << "case " << i << ": " << vision::errorName(mc.error) << " / " << vision::errorName(mr.error);
-        vision::SpecimenSpec local = ruler;
-        local.mmPerPx = vision::planeScaleAt(face, mc.centreX, mc.centreY);
-        const vision::Measurement ml = analyzer.measure(v, local, model);
+        reading::SpecimenSpec local = ruler;
+        local.mmPerPx = vision::planeScaleAt(face, mc.geometry.centreX, mc.geometry.centreY);
+        const reading::Reading ml = analyzer.read(v, local);
         ASSERT_TRUE(ml.hasValue());
         const double eCal = std::fabs(mc.mu - muTrue), eRuler = std::fabs(mr.mu - muTrue),
                      eLocal = std::fabs(ml.mu - muTrue);
         std::printf("case %d: n %.3f mu_true %.4f u %.4f mm | calibrated mu %.4f (err %.4f, %s %s, ellipticity "
                     "%.4f/%.4f) | fixture ruler mu %.4f (err %.4f, %s %s) | local scale mu %.4f (err %.4f, %s %s, "
                     "ellipticity %.4f/%.4f)\n",
-                    i, n, muTrue, s.rOuterEqMm() - s.rInnerEqMm(), mc.mu, eCal, vision::statusName(mc.status),
-                    flagNames(mc.flags).c_str(), mc.inner.ellipticity, mc.outer.ellipticity, mr.mu, eRuler,
-                    vision::statusName(mr.status), flagNames(mr.flags).c_str(), ml.mu, eLocal,
-                    vision::statusName(ml.status), flagNames(ml.flags).c_str(), ml.inner.ellipticity,
-                    ml.outer.ellipticity);
+                    i, n, muTrue, s.rOuterEqMm() - s.rInnerEqMm(), mc.mu, eCal, reading::statusName(mc.status),
+                    flagNames(mc.flags).c_str(), mc.innerShape.ellipticity, mc.outerShape.ellipticity, mr.mu, eRuler,
+                    reading::statusName(mr.status), flagNames(mr.flags).c_str(), ml.mu, eLocal,
+                    reading::statusName(ml.status), flagNames(ml.flags).c_str(), ml.innerShape.ellipticity,
+                    ml.outerShape.ellipticity);
         // Calibrated: nothing left for the shape checks to see (the end face is round and
         // concentric in its plane) and the scale is the calibration's. Only a fit the
         // pipeline itself reports as degraded (edges found on too few rays, scattered) may
         // carry flags, and then a degraded fit's shape is no evidence of tilt.
-        const uint32_t degraded = vision::kFlagLowCoverage | vision::kFlagHighScatter;
+        const uint32_t degraded = reading::kFlagLowCoverage | reading::kFlagHighScatter;
         if (mc.flags & degraded) {
             ++degradedCases;
         } else {
             // The status may still be warn when the budget (the model's own error, mostly)
             // misses the tolerance: no check flag, and the truth within the budget.
-            EXPECT_EQ(mc.flags & ~vision::kBudgetFlags, 0u) << "case " << i << ": " << flagNames(mc.flags);
+            EXPECT_EQ(mc.flags & ~reading::kBudgetFlags, 0u) << "case " << i << ": " << flagNames(mc.flags);
             EXPECT_LE(eCal, 2 * mc.muSigma) << "case " << i;
-            EXPECT_LT(std::max(mc.inner.ellipticity, mc.outer.ellipticity), 0.006) << "case " << i;
+            EXPECT_LT(std::max(mc.innerShape.ellipticity, mc.outerShape.ellipticity), 0.006) << "case " << i;
         }
         // Uncalibrated: a μ outside the devset bound must carry a flag.
-        for (const vision::Measurement *plain : {&mr, &ml}) {
+        for (const reading::Reading *plain : {&mr, &ml}) {
             if (std::fabs(plain->mu - muTrue) > kMaxBound) {
-                EXPECT_NE(plain->status, vision::Status::Ok)
+                EXPECT_NE(plain->status, reading::Status::Ok)
                     << "case " << i << ": uncalibrated mu off by " << std::fabs(plain->mu - muTrue) << " reported ok";
             }
         }
@@ -179,7 +180,7 @@ TEST(CalibratedMeasure, ManifestCalibrationColumn)
     c.imageWidth = cam.width, c.imageHeight = cam.height;
     ASSERT_EQ(calibration::writeCalibrationFile((d / "cal" / "cam.cal").string(), c), "");
     host::EndFaceScene s;
-    const double n = 0.2, u = host::uForMu(0.15, n);
+    const double n = 0.2, u = host::uForMu(friction::PaperModel(), 0.15, n);
     s.rOuterMm = 6.85 - 0.95 * u, s.rInnerMm = s.rOuterMm - u;
     s.rMaxMm = 5.0 * std::sqrt(2.0) * (1.008 + 0.034 * u);
     cv::imwrite((d / "a.png").string(), r.endFace(s, 0.3, -0.2, 7.5, 0.9, 2.0, 5));

@@ -20,8 +20,8 @@
 #include "hal/file/file_trigger.h"
 #include "hal/file/folder_storage.h"
 #include "hal/file/image_decoder.h"
+#include "reading/instrument.h"
 #include "tests/support/recording_serial.h"
-#include "vision/end_face_analyzer.h"
 
 using namespace icacam;
 namespace fs = std::filesystem;
@@ -85,14 +85,15 @@ struct AimRig {
     }
     ~AimRig() { fs::remove_all(dir); }
     // All `aim` picture lines so far.
-    std::vector<fw::FlatObject> pictures() const
+    std::vector<reading::FlatObject> pictures() const
     {
-        std::vector<fw::FlatObject> out;
+        std::vector<reading::FlatObject> out;
         size_t at = 0;
         while (at < serial.out.size()) {
             const size_t nl = serial.out.find('\n', at);
-            fw::FlatObject o;
-            if (fw::parseFlatObject(serial.out.substr(at, nl - at), &o).empty() && o.find("picture")) out.push_back(o);
+            reading::FlatObject o;
+            if (reading::parseFlatObject(serial.out.substr(at, nl - at), &o).empty() && o.find("picture"))
+                out.push_back(o);
             at = nl == std::string::npos ? serial.out.size() : nl + 1;
         }
         return out;
@@ -118,7 +119,7 @@ TEST(Aim, LivePictureWithTheEndFaceFocusScoreAndHintUntilTimeRunsOut)
     }
     const auto pics = rig.pictures();
     ASSERT_GE(pics.size(), 4u) << rig.serial.out;
-    const fw::FlatObject &p = pics.front();
+    const reading::FlatObject &p = pics.front();
     EXPECT_TRUE(p.find("found")->boolean);
     EXPECT_GT(p.find("focus")->number, 1.0);
     EXPECT_EQ(p.find("hint")->text, "ok") << rig.serial.out; // the sample is centred and sharp
@@ -195,7 +196,7 @@ TEST(Snapshot, FullFramePngWithTheFittedBoundariesInTheJournal)
     ASSERT_TRUE(rig.device->start().ok());
     rig.serial.in = "{\"cmd\":\"snapshot\",\"id\":\"s1\"}\n";
     rig.device->tick();
-    const fw::FlatObject s = rig.serial.last("snapshot");
+    const reading::FlatObject s = rig.serial.last("snapshot");
     ASSERT_TRUE(s.find("image")) << rig.serial.out;
     EXPECT_EQ(s.find("tag")->text, "s1");
     EXPECT_TRUE(s.find("found")->boolean);
@@ -213,11 +214,11 @@ TEST(Snapshot, FullFramePngWithTheFittedBoundariesInTheJournal)
     std::vector<uint8_t> grey(1456u * 1088u);
     hal::DecodedImage g;
     ASSERT_TRUE(hal::decodeImage(kSample, grey.data(), grey.size(), 1456, 1088, 0, &g).ok());
-    vision::EndFaceAnalyzer analyzer;
-    ASSERT_EQ(analyzer.configure(1456, 1088), vision::ErrorCode::None);
     friction::PaperModel model;
-    const vision::Measurement m =
-        analyzer.measure({grey.data(), 1456, 1088, g.stride, 1}, {0.1742, 647, 10, 15, 0.0153924, 0}, model);
+    reading::Instrument analyzer;
+    ASSERT_EQ(analyzer.configure(1456, 1088, model), vision::ErrorCode::None);
+    const reading::Reading m =
+        analyzer.read({grey.data(), 1456, 1088, g.stride, 1}, reading::SpecimenSpec{0.1742, 647, 10, 15, 0.0153924, 0});
     ASSERT_TRUE(m.hasValue());
     auto meanRadius = [&](uint8_t r, uint8_t gr, uint8_t b, long *count) {
         double sum = 0;
@@ -225,13 +226,14 @@ TEST(Snapshot, FullFramePngWithTheFittedBoundariesInTheJournal)
         for (int y = 0; y < img.height; ++y)
             for (int x = 0; x < img.width; ++x) {
                 const uint8_t *p = &rgb[(size_t(y) * size_t(img.stride)) + size_t(x) * 3];
-                if (p[0] == r && p[1] == gr && p[2] == b) sum += std::hypot(x - m.centreX, y - m.centreY), ++*count;
+                if (p[0] == r && p[1] == gr && p[2] == b)
+                    sum += std::hypot(x - m.geometry.centreX, y - m.geometry.centreY), ++*count;
             }
         return *count ? sum / double(*count) : 0;
     };
     long green = 0, red = 0;
-    EXPECT_NEAR(meanRadius(40, 255, 40, &green), m.outer.rEqPx, 2.0);
-    EXPECT_NEAR(meanRadius(255, 40, 40, &red), m.inner.rEqPx, 2.0);
+    EXPECT_NEAR(meanRadius(40, 255, 40, &green), m.geometry.outer.rEqPx, 2.0);
+    EXPECT_NEAR(meanRadius(255, 40, 40, &red), m.geometry.inner.rEqPx, 2.0);
     EXPECT_GT(green, 1000);
     EXPECT_GT(red, 1000);
 }
@@ -253,24 +255,24 @@ TEST(AimView, FocusScoreFallsWithBlurAndHintPointsToTheCentre)
                 }
             blurred[size_t(y) * 1456 + size_t(x)] = uint8_t(sum / n);
         }
-    vision::EndFaceAnalyzer analyzer;
-    ASSERT_EQ(analyzer.configure(1456, 1088), vision::ErrorCode::None);
     friction::PaperModel model;
+    reading::Instrument analyzer;
+    ASSERT_EQ(analyzer.configure(1456, 1088, model), vision::ErrorCode::None);
     const vision::LumaView sharp{grey.data(), 1456, 1088, 1456, 1}, soft{blurred.data(), 1456, 1088, 1456, 1};
-    const vision::Measurement m = analyzer.measure(sharp, {0.1742, 647, 10, 15, 0.0153924, 0}, model);
+    const reading::Reading m = analyzer.read(sharp, reading::SpecimenSpec{0.1742, 647, 10, 15, 0.0153924, 0});
     const double fs1 = fw::focusScore(sharp, m), fs2 = fw::focusScore(soft, m);
     std::printf("focus score: sharp %.2f, 9 x 9 box blur %.2f\n", fs1, fs2);
     EXPECT_LT(fs2, 0.6 * fs1) << fs1 << " vs " << fs2;
-    vision::Measurement left = m;
-    left.centreX = 200; // the specimen far left in the frame
+    reading::Reading left = m;
+    left.geometry.centreX = 200; // the specimen far left in the frame
     EXPECT_STREQ(fw::aimReading(sharp, left).hint, "move right");
-    vision::Measurement low = m;
-    low.centreY = 1000;
+    reading::Reading low = m;
+    low.geometry.centreY = 1000;
     EXPECT_STREQ(fw::aimReading(sharp, low).hint, "move up");
-    vision::Measurement small = m;
-    small.rMaxPx = 80, small.outer.rEqPx = 70;
+    reading::Reading small = m;
+    small.geometry.rMaxPx = 80, small.geometry.outer.rEqPx = 70;
     EXPECT_STREQ(fw::aimReading(sharp, small).hint, "closer");
-    vision::Measurement none;
+    reading::Reading none;
     EXPECT_STREQ(fw::aimReading(sharp, none).hint, "no specimen: centre it");
 }
 

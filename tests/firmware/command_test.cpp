@@ -4,8 +4,9 @@
 #include <string>
 
 #include "firmware/command.h"
-#include "firmware/json_line.h"
+#include "reading/record_line.h"
 
+using namespace icacam;
 using namespace icacam::fw;
 
 TEST(Command, JsonAndWordsMeanTheSame)
@@ -130,10 +131,10 @@ TEST(LineAssembler, LinesSplitAcrossReads)
 TEST(Json, BuilderEscapesAndParserReadsBack)
 {
     std::string out;
-    JsonBuilder(&out).str("a", "q\"\\\n\x01").num("b", 0.125).integer("c", -3).boolean("d", true).end();
+    reading::JsonBuilder(&out).str("a", "q\"\\\n\x01").num("b", 0.125).integer("c", -3).boolean("d", true).end();
     EXPECT_EQ(out, "{\"a\":\"q\\\"\\\\\\n\\u0001\",\"b\":0.125,\"c\":-3,\"d\":true}\n");
-    FlatObject o;
-    ASSERT_EQ(parseFlatObject(out.substr(0, out.size() - 1), &o), "");
+    reading::FlatObject o;
+    ASSERT_EQ(reading::parseFlatObject(out.substr(0, out.size() - 1), &o), "");
     EXPECT_EQ(o.find("a")->text, "q\"\\\n\x01");
     EXPECT_DOUBLE_EQ(o.find("b")->number, 0.125);
     EXPECT_TRUE(o.find("d")->boolean);

@@ -12,7 +12,6 @@
 #include "calibration/calibration_file.h"
 #include "firmware/device.h"
 #include "firmware/device_calibration.h"
-#include "firmware/json_line.h"
 #include "friction/paper_model.h"
 #include "hal/file/clocks.h"
 #include "hal/file/file_camera.h"
@@ -20,7 +19,8 @@
 #include "hal/file/file_trigger.h"
 #include "hal/file/folder_storage.h"
 #include "host_tools/calibration_renderer.h"
-#include "host_tools/synth_command.h"
+#include "host_tools/model_inverse.h"
+#include "reading/record_line.h"
 #include "tests/support/recording_serial.h"
 
 using namespace icacam;
@@ -33,15 +33,15 @@ struct NullDisplay final : hal::Display {
     hal::Error show(const hal::MonoBitmap &) override { return {}; }
 };
 
-std::string text(const fw::FlatObject &o, const char *key)
+std::string text(const reading::FlatObject &o, const char *key)
 {
-    const fw::JsonField *f = o.find(key);
+    const reading::JsonField *f = o.find(key);
     return f ? f->text : "";
 }
-double number(const fw::FlatObject &o, const char *key)
+double number(const reading::FlatObject &o, const char *key)
 {
-    const fw::JsonField *f = o.find(key);
-    return f && f->type == fw::JsonField::Type::Number ? f->number : NAN;
+    const reading::JsonField *f = o.find(key);
+    return f && f->type == reading::JsonField::Type::Number ? f->number : NAN;
 }
 
 // A folder with frames, a calibration file and a journal; a device on them.
@@ -134,7 +134,7 @@ TEST(DeviceCalibration, MeasuresInTheEndFacePlaneAndJournalsWhichCalibration)
     const host::BoardPhotoRenderer r(cam);
     ASSERT_EQ(calibration::writeCalibrationFile((rig.dir / "cam.cal").string(), fileFor(cam)), "");
     host::EndFaceScene s;
-    const double n = 0.2, u = host::uForMu(0.15, n);
+    const double n = 0.2, u = host::uForMu(friction::PaperModel(), 0.15, n);
     s.rOuterMm = 6.85 - 0.95 * u, s.rInnerMm = s.rOuterMm - u;
     s.rMaxMm = 5.0 * std::sqrt(2.0) * (1.008 + 0.034 * u);
     rig.frame("a.png", r.endFace(s, 0.4, -0.3, 7.5, 0.9, 2.0, 5));
@@ -143,12 +143,12 @@ TEST(DeviceCalibration, MeasuresInTheEndFacePlaneAndJournalsWhichCalibration)
     rig.cfg.h0Mm = 15, rig.cfg.hFinalMm = 7.5;                    // end face 7.5 mm above the fixture
     ASSERT_TRUE(rig.start());
     rig.say("{\"cmd\":\"trigger\",\"id\":\"t1\"}"); // the longest record: a value, a calibration, a tag
-    const fw::FlatObject a = rig.serial.last("result");
+    const reading::FlatObject a = rig.serial.last("result");
     // No check flag; the status is the budget's (the paper's own 3 % error alone nears the tolerance).
     ASSERT_NE(text(a, "status"), "error") << rig.serial.out;
-    for (int bit = 0; bit < vision::kFlagCount; ++bit) {
-        if (vision::kBudgetFlags & (1u << bit)) continue;
-        EXPECT_EQ(text(a, "flags").find(vision::flagName(bit)), std::string::npos) << rig.serial.out;
+    for (int bit = 0; bit < reading::kFlagCount; ++bit) {
+        if (reading::kBudgetFlags & (1u << bit)) continue;
+        EXPECT_EQ(text(a, "flags").find(reading::flagName(bit)), std::string::npos) << rig.serial.out;
     }
     EXPECT_LE(std::fabs(number(a, "mu") - friction::PaperModel().estimate({s.rOuterEqMm() - s.rInnerEqMm(), n}).mu),
               2 * number(a, "mu_sigma"));
@@ -157,9 +157,10 @@ TEST(DeviceCalibration, MeasuresInTheEndFacePlaneAndJournalsWhichCalibration)
     EXPECT_EQ(text(a, "calibration"), "cam.cal");
     EXPECT_DOUBLE_EQ(number(a, "plane_height_mm"), 7.5);
     rig.say("trigger");
-    const fw::FlatObject b = rig.serial.last("result");
+    const reading::FlatObject b = rig.serial.last("result");
     EXPECT_EQ(text(b, "status"), "error");
-    EXPECT_EQ(text(b, "message"), "frame is 800x600 but calibration 'cam.cal' is for 1456x1088 images");
+    EXPECT_EQ(text(b, "message"),
+              "calibration 'cam.cal': frame is 800x600 but the calibration is for 1456x1088 images");
     // Both are in the journal with the calibration's name, and recovery can read them back.
     const std::string journal = rig.storage.read(fw::Journal::kFile).value;
     EXPECT_EQ(fw::Journal::checkLine(journal.substr(0, journal.find('\n'))), 1);
@@ -214,14 +215,14 @@ TEST(ScaleCheck, ReferenceDiscPassesAtTheRightScaleAndFailsAtAWrongOne)
         rig.cfg.calibrationFile = "cam.cal";
         ASSERT_TRUE(rig.start());
         rig.say("scalecheck 12");
-        const fw::FlatObject a = rig.serial.last("scalecheck");
+        const reading::FlatObject a = rig.serial.last("scalecheck");
         EXPECT_EQ(text(a, "status"), "pass") << rig.serial.out;
         std::printf("scale check, calibrated: ratio %.7f\n", number(a, "ratio"));
         EXPECT_NEAR(number(a, "ratio"), 1, 0.002);
         EXPECT_EQ(text(a, "calibration"), "cam.cal");
         rig.say("set calibration_file moved.cal");
         rig.say("{\"cmd\":\"scalecheck\",\"diameter_mm\":12,\"tolerance_pct\":0.5,\"id\":\"s2\"}");
-        const fw::FlatObject b = rig.serial.last("scalecheck");
+        const reading::FlatObject b = rig.serial.last("scalecheck");
         EXPECT_EQ(text(b, "status"), "fail");
         EXPECT_EQ(text(b, "tag"), "s2");
         std::printf("scale check, calibration 2 %% off: ratio %.7f: %s\n", number(b, "ratio"),
@@ -236,7 +237,7 @@ TEST(ScaleCheck, ReferenceDiscPassesAtTheRightScaleAndFailsAtAWrongOne)
         // A frame with no disc: a clear error, not a ratio.
         rig.frame("disc2.png", cv::Mat(cam.height, cam.width, CV_8U, cv::Scalar(200)));
         rig.say("scalecheck 12");
-        const fw::FlatObject c = rig.serial.last("scalecheck");
+        const reading::FlatObject c = rig.serial.last("scalecheck");
         EXPECT_EQ(text(c, "status"), "error");
         EXPECT_FALSE(c.find("ratio"));
         EXPECT_NE(text(c, "message").find("no reference disc in view"), std::string::npos) << text(c, "message");
@@ -254,10 +255,10 @@ TEST(ScaleCheck, ReferenceDiscPassesAtTheRightScaleAndFailsAtAWrongOne)
         rig.cfg.calibrationFile = "cam.cal";
         ASSERT_TRUE(rig.start());
         rig.say("scalecheck 10 0.5 1");
-        const fw::FlatObject a = rig.serial.last("scalecheck");
+        const reading::FlatObject a = rig.serial.last("scalecheck");
         EXPECT_EQ(text(a, "status"), "pass") << rig.serial.out;
         rig.say("scalecheck 10 0.5");
-        const fw::FlatObject b = rig.serial.last("scalecheck");
+        const reading::FlatObject b = rig.serial.last("scalecheck");
         std::printf("scale check, 1 mm disc: ratio %.7f with its thickness, %.7f without\n", number(a, "ratio"),
                     number(b, "ratio"));
         EXPECT_EQ(text(b, "status"), "fail");
@@ -272,12 +273,12 @@ TEST(ScaleCheck, ReferenceDiscPassesAtTheRightScaleAndFailsAtAWrongOne)
         rig.cfg.mmPerPx = 0.015;
         ASSERT_TRUE(rig.start());
         rig.say("scalecheck 10 0.5");
-        const fw::FlatObject a = rig.serial.last("scalecheck");
+        const reading::FlatObject a = rig.serial.last("scalecheck");
         EXPECT_EQ(text(a, "status"), "pass") << rig.serial.out;
         EXPECT_NEAR(number(a, "ratio"), 1, 0.002);
         rig.say("set mm_per_px 0.0153");
         rig.say("scalecheck 10 0.5");
-        const fw::FlatObject b = rig.serial.last("scalecheck");
+        const reading::FlatObject b = rig.serial.last("scalecheck");
         EXPECT_EQ(text(b, "status"), "fail");
         EXPECT_NE(text(b, "message").find("scale off by +2.0"), std::string::npos) << text(b, "message");
         EXPECT_NE(text(b, "message").find("check the mm_per_px setting"), std::string::npos);

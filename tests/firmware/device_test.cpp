@@ -167,7 +167,7 @@ TEST(Device, LongPressAimsASecondShowsSettingsAndBounceDoesNotMeasure)
 
 TEST(Device, FinalHeightIsALiveJournaledKeyCheckedAgainstTheInitialHeight)
 {
-    // specimen.h_final_mm feeds the reduction-aware model (docs/loop.md): settable over
+    // specimen.h_final_mm feeds the reduction-aware model (docs/loop-method.md): settable over
     // serial, kept across restarts, and never above the initial height.
     Rig rig("");
     writeGrey(rig.dir + "/a.pgm", 64, 64, 0);
@@ -212,7 +212,7 @@ TEST(Device, ConfiguredImagingControlsAreJournaledWithEachResult)
     ASSERT_TRUE(device.start().ok());
     rig.serial.in = "trigger\n";
     device.tick();
-    const fw::FlatObject r = rig.serial.last("result");
+    const reading::FlatObject r = rig.serial.last("result");
     ASSERT_TRUE(r.find("exposure_us")) << rig.serial.out;
     EXPECT_EQ(r.find("exposure_us")->number, 12000);
     EXPECT_EQ(r.find("gain")->number, 2.5);
@@ -225,7 +225,7 @@ TEST(Device, ConfiguredImagingControlsAreJournaledWithEachResult)
     EXPECT_NE(rig.storage.read(fw::Journal::kFile).value.find("\"exposure_us\":12000"), std::string::npos);
     rig.serial.in = "status\n";
     device.tick();
-    const fw::FlatObject st = rig.serial.last("status");
+    const reading::FlatObject st = rig.serial.last("status");
     ASSERT_TRUE(st.find("camera_controls"));
     EXPECT_EQ(st.find("camera_controls")->text,
               "exposure_us 12000 gain 2.500 red_gain 1.900 blue_gain 1.400 lens_position 3.500");
@@ -243,7 +243,7 @@ TEST(Device, MissingCameraIsShownAndMeasuringStartsWhenItAppears)
     rig.serial.out.clear();
     rig.serial.in = "status\n";
     rig.device->tick();
-    const fw::FlatObject st = rig.serial.last("status");
+    const reading::FlatObject st = rig.serial.last("status");
     ASSERT_TRUE(st.find("camera"));
     EXPECT_EQ(st.find("camera")->text, "missing");
     EXPECT_NE(st.find("camera_problem")->text.find("no images"), std::string::npos);
@@ -260,7 +260,7 @@ TEST(Device, MissingCameraIsShownAndMeasuringStartsWhenItAppears)
     EXPECT_EQ(rig.display.row(0), "icacam  ready");
     rig.serial.in = "trigger\n";
     rig.device->tick();
-    const fw::FlatObject r = rig.serial.last("result");
+    const reading::FlatObject r = rig.serial.last("result");
     ASSERT_TRUE(r.find("source")) << rig.serial.out;
     EXPECT_EQ(r.find("source")->text, "a.pgm");
 }

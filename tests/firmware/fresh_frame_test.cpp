@@ -87,7 +87,7 @@ public:
                 }
                 held_ = k;
                 std::fill(pixels_.begin(), pixels_.end(), uint8_t(k % 256));
-                out->view = {vision::PixelFormat::Grey8, pixels_.data(), 64, 48, 64, pixels_.size()};
+                out->view = {hal::PixelFormat::Grey8, pixels_.data(), 64, 48, 64, pixels_.size()};
                 out->timestampMs = hal::exposureStartNs(st) / 1000000;
                 out->latencyUs = (hal::exposureStartNs(st) - notBeforeNs) / 1000;
                 out->exposureUs = m_.exposureUs;
@@ -194,8 +194,8 @@ Outcome runModel(const DriverModel &m, int shots, uint32_t seed)
         serial.out.clear();
         serial.in = "trigger\n";
         device.tick();
-        const fw::FlatObject r = serial.last("result");
-        const fw::JsonField *seq = r.find("frame_seq"), *lat = r.find("latency_us");
+        const reading::FlatObject r = serial.last("result");
+        const reading::JsonField *seq = r.find("frame_seq"), *lat = r.find("latency_us");
         if (!seq || !lat) {
             ADD_FAILURE() << m.name << ": no capture fields in " << serial.out;
             break;

@@ -7,6 +7,7 @@
 #include "firmware/debouncer.h"
 #include "firmware/journal.h"
 #include "hal/file/folder_storage.h"
+#include "reading/record_line.h"
 #include "tests/support/temp_dir.h"
 
 using namespace icacam;
@@ -97,7 +98,7 @@ TEST(Journal, FullStorageIsAnErrorNotACrash)
 
 TEST(Journal, Crc32KnownValue)
 {
-    EXPECT_EQ(fw::crc32("123456789"), 0xCBF43926u);
+    EXPECT_EQ(icacam::reading::recordCrc32("123456789"), 0xCBF43926u);
 }
 
 TEST(Debouncer, BounceShortAndLong)

@@ -8,18 +8,19 @@
 #include <sstream>
 
 #include "firmware/device.h"
-#include "firmware/json_line.h"
 #include "friction/friction_models.h"
 #include "hal/file/clocks.h"
 #include "hal/file/file_camera.h"
 #include "hal/file/file_led.h"
 #include "hal/file/file_trigger.h"
 #include "hal/file/folder_storage.h"
+#include "host_tools/loop/loop_records.h"
 #include "host_tools/manifest.h"
 #include "host_tools/record_measurer.h"
 #include "host_tools/result_writer.h"
+#include "reading/reading_record.h"
+#include "reading/record_line.h"
 #include "tests/support/recording_serial.h"
-#include "vision/reading_record.h"
 
 using namespace icacam;
 namespace fs = std::filesystem;
@@ -33,7 +34,7 @@ struct NullDisplay final : hal::Display {
 const std::string kSample = std::string(ICACAM_SOURCE_DIR) + "/tests/data/sample";
 
 // The device's result line for one frame of the sample set.
-fw::FlatObject deviceResult(const std::string &image, const fw::Config &base, const friction::FrictionModel &model)
+reading::FlatObject deviceResult(const std::string &image, const fw::Config &base, const friction::FrictionModel &model)
 {
     char t[] = "/tmp/icacam-same-XXXXXX";
     const fs::path dir = ::mkdtemp(t);
@@ -53,18 +54,18 @@ fw::FlatObject deviceResult(const std::string &image, const fw::Config &base, co
     EXPECT_TRUE(device.start().ok());
     serial.in += "trigger\n";
     device.tick();
-    const fw::FlatObject r = serial.last("result");
+    const reading::FlatObject r = serial.last("result");
     fs::remove_all(dir);
     return r;
 }
 
-fw::FlatObject hostResult(const std::string &manifestText, const friction::FrictionModel &model)
+reading::FlatObject hostResult(const std::string &manifestText, const friction::FrictionModel &model)
 {
     host::Manifest manifest;
     std::string err;
     EXPECT_TRUE(host::parseManifest(manifestText, &manifest, &err)) << err;
     manifest.baseDir = kSample;
-    host::RecordMeasurer measurer(model, vision::SpecimenSpec{});
+    host::RecordMeasurer measurer(model, reading::SpecimenSpec{});
     host::RecordReading reading;
     measurer.measure(manifest.rows.at(0), manifest, &reading);
     std::ostringstream out;
@@ -73,22 +74,22 @@ fw::FlatObject hostResult(const std::string &manifestText, const friction::Frict
     row.id = "x";
     row.model = model.name();
     if (reading.measured)
-        row.m = &reading.m;
+        row.m = &reading.reading;
     else
         row.message = reading.message;
     writer.write(row);
     std::string line = out.str();
     line.pop_back();
-    fw::FlatObject o;
-    EXPECT_EQ(fw::parseFlatObject(line, &o), "");
+    reading::FlatObject o;
+    EXPECT_EQ(reading::parseFlatObject(line, &o), "");
     return o;
 }
 
-void expectSameReading(const fw::FlatObject &device, const fw::FlatObject &host)
+void expectSameReading(const reading::FlatObject &device, const reading::FlatObject &host)
 {
-    for (int i = 0; i < vision::readingFieldCount(); ++i) {
-        const char *name = vision::readingFieldName(i);
-        const fw::JsonField *d = device.find(name), *h = host.find(name);
+    for (int i = 0; i < reading::readingFieldCount(); ++i) {
+        const char *name = reading::readingFieldName(i);
+        const reading::JsonField *d = device.find(name), *h = host.find(name);
         ASSERT_TRUE(d) << "device record lacks " << name;
         ASSERT_TRUE(h) << "icacam measure record lacks " << name;
         EXPECT_EQ(int(d->type), int(h->type)) << name;
@@ -106,17 +107,17 @@ TEST(OneInstrument, DeviceAndMeasureGiveTheSameReading)
     cfg.n = 0.1742, cfg.kMpa = 647, cfg.mmPerPx = 0.0153924;
     cfg.cameraMaxWidth = 2048, cfg.cameraMaxHeight = 1536;
     // Nothing more declared: the reduction is inferred from the silhouette on both.
-    const fw::FlatObject d1 = deviceResult("synth-0002.jpg", cfg, *model);
-    const fw::FlatObject h1 =
+    const reading::FlatObject d1 = deviceResult("synth-0002.jpg", cfg, *model);
+    const reading::FlatObject h1 =
         hostResult("id,image,n,k_mpa,mm_per_px\na,images/synth-0002.jpg,0.1742,647,0.0153924\n", *model);
     ASSERT_NE(d1.find("mu"), nullptr);
-    EXPECT_EQ(d1.find("mu")->type, fw::JsonField::Type::Number);
+    EXPECT_EQ(d1.find("mu")->type, reading::JsonField::Type::Number);
     expectSameReading(d1, h1);
 
     // Declared final height and tolerances, set the device's way and the manifest's way.
     cfg.hFinalMm = 7.6, cfg.nTol = 0.02, cfg.toleranceMu = 0.02, cfg.toleranceRel = 0.04, cfg.mmPerPxTolRel = 0.01;
-    const fw::FlatObject d2 = deviceResult("synth-0002.jpg", cfg, *model);
-    const fw::FlatObject h2 =
+    const reading::FlatObject d2 = deviceResult("synth-0002.jpg", cfg, *model);
+    const reading::FlatObject h2 =
         hostResult("id,image,n,k_mpa,mm_per_px,h_final_mm,n_tol,tolerance_mu,tolerance_rel,mm_per_px_tol\n"
                    "a,images/synth-0002.jpg,0.1742,647,0.0153924,7.6,0.02,0.02,0.04,0.01\n",
                    *model);
@@ -136,14 +137,51 @@ TEST(OneInstrument, TheDeviceRunsAnyModelByName)
         ASSERT_EQ(fw::setConfigKey(&c, "reading.model", name, false), "") << name;
         const friction::FrictionModel *model = friction::frictionModel(c.model);
         ASSERT_NE(model, nullptr) << name;
-        const fw::FlatObject d = deviceResult("synth-0002.jpg", c, *model);
-        const fw::FlatObject h = hostResult("id,image,n,k_mpa,mm_per_px,h_final_mm\n"
-                                            "a,images/synth-0002.jpg,0.1742,647,0.0153924,7.5\n",
-                                            *model);
+        const reading::FlatObject d = deviceResult("synth-0002.jpg", c, *model);
+        const reading::FlatObject h = hostResult("id,image,n,k_mpa,mm_per_px,h_final_mm\n"
+                                                 "a,images/synth-0002.jpg,0.1742,647,0.0153924,7.5\n",
+                                                 *model);
         ASSERT_NE(d.find("model"), nullptr);
         EXPECT_EQ(d.find("model")->text, name);
         expectSameReading(d, h);
     }
     fw::Config bad = cfg;
     EXPECT_NE(fw::setConfigKey(&bad, "reading.model", "cubic", false), "");
+}
+
+// `icacam loop` holds the same instrument: an image row becomes the face at the declared
+// scale and the model's estimate there, as `icacam measure` reads it; a radii row with that
+// face's radii gives the same estimate.
+TEST(OneInstrument, TheLoopReadsImageAndRadiiRowsThroughIt)
+{
+    const friction::FrictionModel *model = friction::frictionModel(friction::kDefaultModel);
+    auto manifestOf = [](const std::string &text) {
+        host::Manifest m;
+        std::string err;
+        EXPECT_TRUE(host::parseManifest(text, &m, &err)) << err;
+        m.baseDir = kSample;
+        return m;
+    };
+    const host::Manifest images =
+        manifestOf("id,image,n,k_mpa,mm_per_px,mu_ref\na,images/synth-0002.jpg,0.1742,647,0.0153924,0.16\n");
+    host::RecordMeasurer measurer(*model, reading::SpecimenSpec{});
+    host::loop::LoopRecord fromImage;
+    std::string why;
+    ASSERT_TRUE(host::loop::readLoopRecord(images.rows.at(0), images, measurer, &fromImage, &why)) << why;
+    host::RecordReading measured;
+    measurer.measure(images.rows.at(0), images, &measured);
+    ASSERT_TRUE(measured.reading.hasValue());
+    EXPECT_EQ(fromImage.uMm, measured.reading.face.uMm);
+    EXPECT_EQ(fromImage.muModel, measured.reading.declared.mu);
+    EXPECT_GT(fromImage.diagnostics.count("diag_reduction_est"), 0u) << "the image's diagnostics are kept";
+
+    char row[256];
+    std::snprintf(row, sizeof row, "id,r_inner_mm,r_outer_mm,n,k_mpa,mu_ref\nb,%.17g,%.17g,0.1742,647,0.16\n",
+                  measured.reading.face.rInnerMm, measured.reading.face.rOuterMm);
+    const host::Manifest radii = manifestOf(row);
+    host::loop::LoopRecord fromRadii;
+    ASSERT_TRUE(host::loop::readLoopRecord(radii.rows.at(0), radii, measurer, &fromRadii, &why)) << why;
+    EXPECT_NEAR(fromRadii.uMm, fromImage.uMm, 1e-12);
+    EXPECT_NEAR(fromRadii.muModel, fromImage.muModel, 1e-9);
+    EXPECT_EQ(fromRadii.diagnostics.count("diag_reduction_est"), 0u);
 }

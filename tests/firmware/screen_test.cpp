@@ -31,17 +31,17 @@ TEST(Font, TextRoundTrips)
 TEST(Screen, ErrorsAreShownInWords)
 {
     hal::MonoBitmap bmp;
-    vision::Measurement m;
-    m.status = vision::Status::Error;
+    reading::Reading m;
+    m.status = reading::Status::Error;
     m.error = vision::ErrorCode::InnerEdgeNotFound;
     fw::drawResult(&bmp, 12, m, "");
     EXPECT_EQ(fw::readRow(bmp, 0), "#12 error");
     EXPECT_EQ(fw::readRow(bmp, 2), "inner edge not found");
-    m.status = vision::Status::Warn;
+    m.status = reading::Status::Warn;
     m.error = vision::ErrorCode::None;
     m.mu = 0.182;
     m.muSigma = 0.004;
-    m.flags = vision::kFlagNOutOfRange;
+    m.flags = reading::kFlagNOutOfRange;
     fw::drawResult(&bmp, 13, m, "");
     EXPECT_EQ(fw::readRow(bmp, 2), "\xCE\xBC=0.182\xC2\xB1"
                                    "0.004");

@@ -1,4 +1,4 @@
-// The silhouette check against the FE (friction/radii_consistency.h, docs/loop.md): consistent
+// The silhouette check against the FE (friction/radii_consistency.h, docs/loop-method.md): consistent
 // records stay quiet, a scale error of 4 % fires, with and without a declared final
 // height, and the reduction R_max implies is recovered. On rendered images through the whole
 // pipeline as well as on the relation itself.
@@ -11,8 +11,8 @@
 #include "friction/radii_consistency.h"
 #include "friction/reduction_corrected_model.h"
 #include "host_tools/end_face_renderer.h"
-#include "host_tools/loop/loop_analysis.h"
-#include "vision/end_face_analyzer.h"
+#include "host_tools/model_inverse.h"
+#include "reading/instrument.h"
 
 using namespace icacam;
 using friction::checkRadii;
@@ -91,7 +91,7 @@ struct Rendered {
 Rendered render(double n, double mu, double r)
 {
     friction::PaperModel paper;
-    const double u = host::loop::uForMu(paper, mu, n) + friction::ReductionCorrectedModel::slopeAt(n, mu) * (r - 0.5);
+    const double u = host::uForMu(paper, mu, n) + friction::ReductionCorrectedModel::slopeAt(n, mu) * (r - 0.5);
     Rendered out;
     out.scene = host::nominalScene(u);
     double fe = 0;
@@ -101,15 +101,15 @@ Rendered render(double n, double mu, double r)
     return out;
 }
 
-vision::Measurement measure(const Rendered &x, double n, double mmPerPx, double hFinal,
-                            const friction::FrictionModel &model)
+reading::Reading measure(const Rendered &x, double n, double mmPerPx, double hFinal,
+                         const friction::FrictionModel &model)
 {
-    static vision::EndFaceAnalyzer analyzer;
-    analyzer.configure(x.img.cols, x.img.rows);
+    static reading::Instrument analyzer;
+    analyzer.configure(x.img.cols, x.img.rows, model);
     const vision::LumaView v{x.img.data, x.img.cols, x.img.rows, int(x.img.step[0]), 1};
-    vision::SpecimenSpec spec{n, 500, 10, 15, mmPerPx};
+    reading::SpecimenSpec spec{n, 500, 10, 15, mmPerPx};
     spec.hFinalMm = hFinal;
-    return analyzer.measure(v, spec, model);
+    return analyzer.read(v, spec);
 }
 
 } // namespace
@@ -118,7 +118,7 @@ TEST(RadiiConsistency, ThroughThePipelineOnRenderedImages)
 {
     friction::PaperModel paper;
     friction::ReductionCorrectedModel model(paper, "paper_reduction");
-    const uint32_t kCheck = vision::kFlagScaleSuspect | vision::kFlagRadiiInconsistent;
+    const uint32_t kCheck = reading::kFlagScaleSuspect | reading::kFlagRadiiInconsistent;
     for (double r : {0.5, 0.515}) {
         const Rendered x = render(0.25, 0.15, r);
         const double s = x.scene.mmPerPx;
@@ -131,15 +131,15 @@ TEST(RadiiConsistency, ThroughThePipelineOnRenderedImages)
         for (double k : {1.04, 0.96}) {
             m = measure(x, 0.25, s * k, 15 * (1 - r), model);
             ASSERT_TRUE(m.hasValue());
-            EXPECT_TRUE(m.flags & vision::kFlagRadiiInconsistent) << "r " << r << " k " << k << " z " << m.rMaxZ;
+            EXPECT_TRUE(m.flags & reading::kFlagRadiiInconsistent) << "r " << r << " k " << k << " z " << m.rMaxZ;
         }
         // No final height given: the reduction is inferred from R_max.
         m = measure(x, 0.25, s, 0, model);
         ASSERT_TRUE(m.hasValue());
         EXPECT_NEAR(m.reductionEst, r, 0.008) << "r " << r;
-        EXPECT_FALSE(m.flags & vision::kFlagRadiiInconsistent);
+        EXPECT_FALSE(m.flags & reading::kFlagRadiiInconsistent);
         m = measure(x, 0.25, s * 1.04, 0, model);
-        EXPECT_TRUE(m.flags & vision::kFlagScaleSuspect) << "z " << m.rMaxZ;
+        EXPECT_TRUE(m.flags & reading::kFlagScaleSuspect) << "z " << m.rMaxZ;
         // The implied reduction moves up by ≈ 0.04, or past what the FE snapshots span (-1).
         EXPECT_TRUE(m.reductionEst < 0 || m.reductionEst > r + 0.025) << m.reductionEst;
     }
@@ -147,17 +147,17 @@ TEST(RadiiConsistency, ThroughThePipelineOnRenderedImages)
     const Rendered far = render(0.25, 0.15, 0.545);
     auto m = measure(far, 0.25, far.scene.mmPerPx, 0, model);
     ASSERT_TRUE(m.hasValue());
-    EXPECT_TRUE(m.flags & vision::kFlagScaleSuspect) << "z " << m.rMaxZ;
+    EXPECT_TRUE(m.flags & reading::kFlagScaleSuspect) << "z " << m.rMaxZ;
     EXPECT_NEAR(m.reductionEst, 0.545, 0.008);
     // Declared, inside or outside what the model's FE data cover: the model's range flag
     // reaches the measurement (never a silent value).
     m = measure(far, 0.25, far.scene.mmPerPx, 15 * (1 - 0.545), model);
     ASSERT_TRUE(m.hasValue());
-    EXPECT_EQ((m.flags & vision::kFlagReductionOutside) != 0,
+    EXPECT_EQ((m.flags & reading::kFlagReductionOutside) != 0,
               0.545 > friction::ReductionCorrectedModel::reductionMax());
-    EXPECT_FALSE(m.flags & vision::kFlagRadiiInconsistent) << "z " << m.rMaxZ;
-    if (m.flags & vision::kFlagReductionOutside) { EXPECT_EQ(m.status, vision::Status::Warn); }
+    EXPECT_FALSE(m.flags & reading::kFlagRadiiInconsistent) << "z " << m.rMaxZ;
+    if (m.flags & reading::kFlagReductionOutside) { EXPECT_EQ(m.status, reading::Status::Warn); }
     const Rendered mid = render(0.25, 0.15, 0.515);
     m = measure(mid, 0.25, mid.scene.mmPerPx, 15 * (1 - 0.515), model);
-    EXPECT_FALSE(m.flags & vision::kFlagReductionOutside);
+    EXPECT_FALSE(m.flags & reading::kFlagReductionOutside);
 }

@@ -1,4 +1,4 @@
-// The reduction-aware model in the product (friction/reduction_corrected_model.h, docs/loop.md):
+// The reduction-aware model in the product (friction/reduction_corrected_model.h, docs/loop-method.md):
 // its generator reads the FE sweep by column name, its slope is the loop tool's, it carries a
 // forward reduction effect back, it is the base model at 50 %, and it flags reductions the FE
 // snapshots do not cover.
@@ -16,14 +16,16 @@
 #include "friction/paper_model.h"
 #include "friction/reduction_corrected_model.h"
 #include "friction/reduction_table.h"
-#include "host_tools/loop/loop_analysis.h"
-#include "host_tools/loop/loop_command.h"
-#include "host_tools/loop/reduction_table.h"
+#include "host_tools/fe/fe_table_sources.h"
+#include "host_tools/fe/reduction_slope.h"
+#include "host_tools/fe/reduction_table.h"
+#include "host_tools/model_inverse.h"
 
-using namespace icacam::host::loop;
+using namespace icacam::host::fe;
 using icacam::friction::ModelInputs;
 using icacam::friction::PaperModel;
 using icacam::friction::ReductionCorrectedModel;
+using icacam::host::uForMu;
 
 namespace {
 
@@ -56,7 +58,7 @@ TEST(ReductionTable, GeneratorReadsColumnsByNameAndIgnoresAddedOnes)
     // A richer base sweep (columns moved and added, as the FE engineer's next runs will be)
     // gives the same table. The committed table's byte-for-byte check is tables_test.cpp.
     ASSERT_EQ(kNames.size(), 1u) << "one base";
-    icacam::host::fe::TableSources src;
+    TableSources src;
     src.command = "icacam fe tables --base " + kNames[0];
     src.base = kNames[0];
     const std::string dir = ::testing::TempDir() + "icacam_sweep_extra_" + std::to_string(::getpid()) + "/";
@@ -83,7 +85,7 @@ TEST(ReductionTable, GeneratorReadsColumnsByNameAndIgnoresAddedOnes)
 TEST(ReductionTable, MissingSweepIsAClearError)
 {
     std::string err;
-    icacam::host::fe::TableSources src;
+    TableSources src;
     src.base = "/nonexistent/sweep.csv";
     EXPECT_TRUE(reductionTableText(src, "", &err).empty());
     EXPECT_NE(err.find("cannot read"), std::string::npos) << err;

@@ -1,17 +1,17 @@
-// Arbitrary bytes as a frame of any size and any declared scale: measure() must return a
-// value or an error, never crash, read out of bounds or overflow.
+// Arbitrary bytes as a frame of any size and any declared scale: the instrument's read() must
+// return a value or an error, never crash, read out of bounds or overflow.
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
 
 #include "friction/paper_model.h"
-#include "vision/end_face_analyzer.h"
+#include "reading/instrument.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-    static icacam::vision::EndFaceAnalyzer analyzer;
-    static bool configured = analyzer.configure(4096, 4096) == icacam::vision::ErrorCode::None;
     static icacam::friction::PaperModel model;
+    static icacam::reading::Instrument instrument;
+    static bool configured = instrument.configure(4096, 4096, model) == icacam::vision::ErrorCode::None;
     if (!configured || size < 8) return 0;
     // Header: width, height (1…1024), scale byte, n byte; the rest are pixels (repeated).
     const int w = 1 + ((data[0] | data[1] << 8) % 1024);
@@ -24,8 +24,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     const size_t body = size - 8;
     for (size_t i = 0; i < need; ++i) frame[i] = body ? data[8 + i % body] : 0;
     const icacam::vision::LumaView v{frame, w, h, w * pixelStep, pixelStep};
-    const icacam::vision::SpecimenSpec spec{n, 500, 10, 15, mmPerPx};
-    const auto m = analyzer.measure(v, spec, model);
+    const icacam::reading::SpecimenSpec spec{n, 500, 10, 15, mmPerPx};
+    const auto m = instrument.read(v, spec);
     if (m.hasValue() && !(m.mu == m.mu)) __builtin_trap(); // a value must be a number
     return 0;
 }

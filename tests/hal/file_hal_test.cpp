@@ -42,7 +42,7 @@ TEST(FileCamera, DeliversFramesWithPaddedStrideThenTimesOut)
     }
     hal::ManualClock clock;
     hal::FileCamera cam(clock, {dir.path + "/frames.txt", 64, false, 0, {}});
-    ASSERT_TRUE(cam.configure({vision::PixelFormat::Grey8, 64, 64}).ok());
+    ASSERT_TRUE(cam.configure({hal::PixelFormat::Grey8, 64, 64}).ok());
     hal::CapturedFrame f;
     ASSERT_TRUE(cam.capture(500, &f).ok());
     EXPECT_EQ(f.view.width, 30);
@@ -62,11 +62,11 @@ TEST(FileCamera, RefusesFramesLargerThanConfigured)
     writePgm(dir.path + "/big.pgm", 100, 10);
     hal::ManualClock clock;
     hal::FileCamera cam(clock, {dir.path, 1, true, 0, {}});
-    ASSERT_TRUE(cam.configure({vision::PixelFormat::Grey8, 64, 64}).ok());
+    ASSERT_TRUE(cam.configure({hal::PixelFormat::Grey8, 64, 64}).ok());
     hal::CapturedFrame f;
     EXPECT_EQ(cam.capture(100, &f).code, hal::Errc::TooLarge);
     hal::FileCamera none(clock, {dir.path + "/missing", 1, false, 0, {}});
-    EXPECT_EQ(none.configure({vision::PixelFormat::Grey8, 64, 64}).code, hal::Errc::NotFound);
+    EXPECT_EQ(none.configure({hal::PixelFormat::Grey8, 64, 64}).code, hal::Errc::NotFound);
 }
 
 TEST(FileTrigger, ScriptEdgesArriveInTimeOrder)

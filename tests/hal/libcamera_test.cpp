@@ -17,7 +17,7 @@ TEST(LibcameraCamera, NoCameraIsNotFoundOrCapturesOnTheBoard)
     setenv("LIBCAMERA_LOG_LEVELS", "*:ERROR", 0);
     hal::SystemClock clock;
     hal::LibcameraCamera cam(clock, {});
-    hal::Error e = cam.configure({vision::PixelFormat::Grey8, 4056, 3040});
+    hal::Error e = cam.configure({hal::PixelFormat::Grey8, 4056, 3040});
     hal::CapturedFrame frame;
     if (e.code == hal::Errc::NotFound) {
         EXPECT_NE(e.message.find("no camera"), std::string::npos) << e.message;

@@ -21,6 +21,8 @@
 #include <filesystem>
 #include <map>
 #include <mutex>
+#include <thread>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -30,6 +32,7 @@
 #include "hal/file/clocks.h"
 #include "hal/file/folder_storage.h"
 #include "hal/v4l2/v4l2_camera.h"
+#include "tests/hal/c920_modes.h"
 #include "tests/support/recording_serial.h"
 #include "tests/support/umockdev_mock.h"
 
@@ -63,7 +66,14 @@ struct FakeVideo {
     // What a UVC camera lists: formats with their discrete sizes (empty: ENUM_FMT unsupported).
     std::vector<std::pair<uint32_t, std::vector<std::pair<uint32_t, uint32_t>>>> listed;
     std::map<uint32_t, int32_t> controls;      // supported controls and their values
-    uint32_t intervalNum = 0, intervalDen = 0; // G_PARM (0: unsupported)
+    uint32_t intervalNum = 0, intervalDen = 0; // G_PARM (0: unsupported); S_PARM sets it
+    // ENUM_FRAMEINTERVALS: frame rates (frames per second, discrete) per format and size.
+    std::map<std::tuple<uint32_t, uint32_t, uint32_t>, std::vector<uint32_t>> rates;
+    bool sParmSeen = false;
+    // What a buffer's flags say about its timestamp. uvcvideo's queue: MONOTONIC | SOE,
+    // set once in uvc_queue_init (drivers/media/usb/uvc/uvc_queue.c).
+    uint32_t stampFlags = V4L2_BUF_FLAG_TIMESTAMP_MONOTONIC | V4L2_BUF_FLAG_TSTAMP_SRC_SOE;
+    const char *driver = "uvcvideo";
     uint32_t sequence = 0;
     uint32_t pixfmt = 0;
     std::vector<unsigned long> seen; // request codes, in order
@@ -101,12 +111,31 @@ gboolean onIoctl(UMockdevIoctlBase *, UMockdevIoctlClient *client, gpointer user
             }
         return done(EINVAL);
     }
+    case VIDIOC_ENUM_FRAMEINTERVALS: {
+        auto *f = test::ioctlArg<v4l2_frmivalenum>(client);
+        if (!f) return done(EFAULT);
+        const auto it = v->rates.find({f->pixel_format, f->width, f->height});
+        if (it == v->rates.end() || f->index >= it->second.size()) return done(EINVAL);
+        f->type = V4L2_FRMIVAL_TYPE_DISCRETE;
+        f->discrete.numerator = 1;
+        f->discrete.denominator = it->second[f->index];
+        return done(0);
+    }
     case VIDIOC_G_PARM: {
         auto *p = test::ioctlArg<v4l2_streamparm>(client);
         if (!p) return done(EFAULT);
         if (!v->intervalDen) return done(ENOTTY);
         p->parm.capture.timeperframe.numerator = v->intervalNum;
         p->parm.capture.timeperframe.denominator = v->intervalDen;
+        return done(0);
+    }
+    case VIDIOC_S_PARM: {
+        auto *p = test::ioctlArg<v4l2_streamparm>(client);
+        if (!p) return done(EFAULT);
+        if (v->rates.empty()) return done(ENOTTY);
+        v->sParmSeen = true;
+        v->intervalNum = p->parm.capture.timeperframe.numerator;
+        v->intervalDen = p->parm.capture.timeperframe.denominator;
         return done(0);
     }
     case VIDIOC_S_EXT_CTRLS:
@@ -133,7 +162,7 @@ gboolean onIoctl(UMockdevIoctlBase *, UMockdevIoctlClient *client, gpointer user
         auto *c = test::ioctlArg<v4l2_capability>(client);
         if (!c) return done(EFAULT);
         *c = {};
-        std::snprintf(reinterpret_cast<char *>(c->driver), sizeof c->driver, "uvcvideo");
+        std::snprintf(reinterpret_cast<char *>(c->driver), sizeof c->driver, "%s", v->driver);
         c->capabilities = V4L2_CAP_VIDEO_CAPTURE | V4L2_CAP_STREAMING | V4L2_CAP_DEVICE_CAPS;
         c->device_caps = V4L2_CAP_VIDEO_CAPTURE | V4L2_CAP_STREAMING;
         return done(0);
@@ -169,6 +198,7 @@ gboolean onIoctl(UMockdevIoctlBase *, UMockdevIoctlClient *client, gpointer user
         if (req == VIDIOC_QUERYBUF) {
             b->length = uint32_t(v->memory[b->index].size());
             b->m.offset = b->index * kOffsetStep;
+            b->flags = v->stampFlags;
         } else {
             if (v->queued[b->index]) return done(EINVAL);
             v->queued[b->index] = true;
@@ -199,7 +229,7 @@ gboolean onIoctl(UMockdevIoctlBase *, UMockdevIoctlClient *client, gpointer user
             b->bytesused = v->width * v->height * 2;
         }
         b->sequence = v->sequence++;
-        b->flags = V4L2_BUF_FLAG_TIMESTAMP_MONOTONIC;
+        b->flags = v->stampFlags;
         b->timestamp.tv_sec = fr.ns / 1000000000;
         b->timestamp.tv_usec = (fr.ns % 1000000000) / 1000;
         return done(0);
@@ -305,10 +335,10 @@ protected:
 TEST_F(V4l2Mock, NegotiatesAFormatTheDriverHasAndStreams)
 {
     hal::V4l2Camera cam(clock_, opts("/dev/video0", 3), &mapper_);
-    hal::Error e = cam.configure({vision::PixelFormat::Grey8, 640, 480});
+    hal::Error e = cam.configure({hal::PixelFormat::Grey8, 640, 480});
     ASSERT_TRUE(e.ok()) << e.message;
     // GREY asked for, the driver only has YUYV: taken, luma viewed with a pixel step of 2.
-    EXPECT_EQ(cam.format(), vision::PixelFormat::YUYV);
+    EXPECT_EQ(cam.format(), hal::PixelFormat::YUYV);
     EXPECT_EQ(cam.width(), 64);
     EXPECT_EQ(cam.stride(), 128);
     EXPECT_EQ(mapper_.mapped, 3);
@@ -318,7 +348,8 @@ TEST_F(V4l2Mock, NegotiatesAFormatTheDriverHasAndStreams)
         // The streaming sequence (the enumeration and control queries between are optional).
         std::vector<unsigned long> seen;
         for (unsigned long r : video_.seen)
-            if (r != VIDIOC_ENUM_FMT && r != VIDIOC_G_PARM && r != VIDIOC_S_EXT_CTRLS && r != VIDIOC_G_EXT_CTRLS)
+            if (r != VIDIOC_ENUM_FMT && r != VIDIOC_G_PARM && r != VIDIOC_S_EXT_CTRLS && r != VIDIOC_G_EXT_CTRLS &&
+                r != VIDIOC_ENUM_FRAMESIZES && r != VIDIOC_ENUM_FRAMEINTERVALS && r != VIDIOC_S_PARM)
                 seen.push_back(r);
         const std::vector<unsigned long> start{VIDIOC_QUERYCAP, VIDIOC_S_FMT,    VIDIOC_REQBUFS, VIDIOC_QUERYBUF,
                                                VIDIOC_QBUF,     VIDIOC_QUERYBUF, VIDIOC_QBUF,    VIDIOC_QUERYBUF,
@@ -341,12 +372,12 @@ TEST_F(V4l2Mock, MjpegOnlyCameraIsDecodedToLumaAtTheLargestListedSizeThatFits)
         video_.jpeg = encodeJpeg(640, 480);
     }
     hal::V4l2Camera cam(clock_, opts("/dev/video0", 2), &mapper_);
-    hal::Error e = cam.configure({vision::PixelFormat::Grey8, 800, 600});
+    hal::Error e = cam.configure({hal::PixelFormat::Grey8, 800, 600});
     ASSERT_TRUE(e.ok()) << e.message;
     EXPECT_TRUE(cam.mjpeg());
     EXPECT_EQ(cam.width(), 640);
     EXPECT_EQ(cam.height(), 480);
-    EXPECT_EQ(cam.format(), vision::PixelFormat::Grey8);
+    EXPECT_EQ(cam.format(), hal::PixelFormat::Grey8);
     expose(nowNs() + 1000000000, 0);
     hal::CapturedFrame frame;
     e = cam.capture(500, &frame);
@@ -370,7 +401,7 @@ TEST_F(V4l2Mock, CorruptMjpegFrameIsSkippedNotMeasured)
         video_.jpeg.resize(video_.jpeg.size() / 3); // torn in transfer
     }
     hal::V4l2Camera cam(clock_, opts("/dev/video0", 2), &mapper_);
-    ASSERT_TRUE(cam.configure({vision::PixelFormat::Grey8, 640, 480}).ok());
+    ASSERT_TRUE(cam.configure({hal::PixelFormat::Grey8, 640, 480}).ok());
     expose(nowNs() + 1000000000, 0);
     hal::CapturedFrame frame;
     const hal::Error e = cam.capture(150, &frame);
@@ -397,7 +428,7 @@ TEST_F(V4l2Mock, ImagingControlsAreSetAndReadBack)
     o.controls.blueGain = 1.5;
     o.controls.lensPosition = 250;
     hal::V4l2Camera cam(clock_, o, &mapper_);
-    ASSERT_TRUE(cam.configure({vision::PixelFormat::YUYV, 640, 480}).ok());
+    ASSERT_TRUE(cam.configure({hal::PixelFormat::YUYV, 640, 480}).ok());
     {
         std::lock_guard<std::mutex> lock(video_.m);
         EXPECT_EQ(video_.controls[V4L2_CID_EXPOSURE_AUTO], V4L2_EXPOSURE_MANUAL);
@@ -421,14 +452,14 @@ TEST_F(V4l2Mock, ImagingControlsAreSetAndReadBack)
 TEST_F(V4l2Mock, SkipsFramesExposedBeforeTheTriggerAndRecyclesBuffers)
 {
     hal::V4l2Camera cam(clock_, opts("/dev/video0", 2), &mapper_);
-    ASSERT_TRUE(cam.configure({vision::PixelFormat::YUYV, 640, 480}).ok());
+    ASSERT_TRUE(cam.configure({hal::PixelFormat::YUYV, 640, 480}).ok());
     const int64_t t = nowNs();
     expose(t - 50000000, 11);   // stale: exposed 50 ms before capture() was called
     expose(t + 1000000000, 22); // after the trigger
     hal::CapturedFrame frame;
     hal::Error e = cam.capture(500, &frame);
     ASSERT_TRUE(e.ok()) << e.message;
-    EXPECT_EQ(frame.view.format, vision::PixelFormat::YUYV);
+    EXPECT_EQ(frame.view.format, hal::PixelFormat::YUYV);
     ASSERT_NE(frame.view.data, nullptr);
     EXPECT_EQ(frame.view.data[0], 22);
     EXPECT_EQ(frame.view.stride, 128);
@@ -455,7 +486,7 @@ TEST_F(V4l2Mock, OnlyAFrameExposedAfterTheLedSettledIsHandedOut)
     o.controls.exposureUs = 10000;
     o.stampDelayUs = 2000; // this camera's first packet: within 2 ms of the exposure's end
     hal::V4l2Camera cam(clock_, o, &mapper_);
-    ASSERT_TRUE(cam.configure({vision::PixelFormat::YUYV, 640, 480}).ok());
+    ASSERT_TRUE(cam.configure({hal::PixelFormat::YUYV, 640, 480}).ok());
     EXPECT_EQ(cam.frameIntervalUs(), 33333);
     const int64_t settleInMs = 40;
     const int64_t litMs = clock_.monotonicMs() + settleInMs;
@@ -476,10 +507,141 @@ TEST_F(V4l2Mock, OnlyAFrameExposedAfterTheLedSettledIsHandedOut)
     EXPECT_EQ(frame.controls.exposureUs, 10000);
 }
 
+// A C920-class webcam (tests/hal/c920_modes.h): the largest area is YUYV 2304x1536 at 2 fps,
+// which keeps the LED on for half a second a press. The choice is MJPEG 1920x1080 at 30 fps,
+// and the interval is asked for (S_PARM), not left at the camera's default.
+TEST_F(V4l2Mock, AWebcamStreamsItsLargestModeThatKeepsFifteenFramesASecond)
+{
+    {
+        std::lock_guard<std::mutex> lock(video_.m);
+        video_.formats = {V4L2_PIX_FMT_YUYV, V4L2_PIX_FMT_MJPEG};
+        video_.width = 2304;
+        video_.height = 1536;
+        video_.listed.clear();
+        for (uint32_t cc : {V4L2_PIX_FMT_YUYV, V4L2_PIX_FMT_MJPEG}) {
+            std::vector<std::pair<uint32_t, uint32_t>> sizes;
+            for (const hal::V4l2Mode &m : test::c920Modes())
+                if (m.fourcc == cc) {
+                    sizes.emplace_back(uint32_t(m.width), uint32_t(m.height));
+                    video_.rates[{cc, uint32_t(m.width), uint32_t(m.height)}] = {m.intervalDen, m.intervalDen / 2};
+                }
+            video_.listed.emplace_back(cc, sizes);
+        }
+        video_.intervalNum = 1; // the camera's default: its slowest
+        video_.intervalDen = 2;
+    }
+    hal::V4l2Camera cam(clock_, opts("/dev/video0", 2), &mapper_);
+    const hal::Error e = cam.configure({hal::PixelFormat::Grey8, 4096, 3072});
+    ASSERT_TRUE(e.ok()) << e.message;
+    EXPECT_TRUE(cam.mjpeg());
+    EXPECT_EQ(cam.width(), 1920);
+    EXPECT_EQ(cam.height(), 1080);
+    EXPECT_EQ(cam.frameIntervalUs(), 33333);
+    EXPECT_NE(cam.describe().find("30.0 fps"), std::string::npos) << cam.describe();
+    std::lock_guard<std::mutex> lock(video_.m);
+    EXPECT_TRUE(video_.sParmSeen);
+    EXPECT_EQ(video_.pixfmt, uint32_t(V4L2_PIX_FMT_MJPEG));
+}
+
+TEST_F(V4l2Mock, WhiteBalanceIsFixedAtAColourTemperature)
+{
+    {
+        std::lock_guard<std::mutex> lock(video_.m);
+        video_.controls = {{V4L2_CID_AUTO_WHITE_BALANCE, 1}, {V4L2_CID_WHITE_BALANCE_TEMPERATURE, 4000}};
+    }
+    hal::V4l2Options o = opts("/dev/video0", 2);
+    o.whiteBalanceK = 5200;
+    hal::V4l2Camera cam(clock_, o, &mapper_);
+    ASSERT_TRUE(cam.configure({hal::PixelFormat::YUYV, 640, 480}).ok());
+    EXPECT_EQ(cam.whiteBalanceK(), 5200);
+    EXPECT_NE(cam.describe().find("white balance 5200 K"), std::string::npos) << cam.describe();
+    std::lock_guard<std::mutex> lock(video_.m);
+    EXPECT_EQ(video_.controls[V4L2_CID_AUTO_WHITE_BALANCE], 0);
+    EXPECT_EQ(video_.controls[V4L2_CID_WHITE_BALANCE_TEMPERATURE], 5200);
+}
+
+// Timestamps that cannot be believed: a buffer that was already waiting when capture() was
+// called is refused, whatever its stamp says; one that arrives while it polls is bounded
+// by its dequeue time.
+TEST_F(V4l2Mock, ABufferWithoutAClockThatWasWaitingIsRefused)
+{
+    {
+        std::lock_guard<std::mutex> lock(video_.m);
+        video_.stampFlags = V4L2_BUF_FLAG_TIMESTAMP_COPY;
+        video_.driver = "vivid";
+    }
+    hal::V4l2Camera cam(clock_, opts("/dev/video0", 2), &mapper_);
+    ASSERT_TRUE(cam.configure({hal::PixelFormat::YUYV, 640, 480}).ok());
+    EXPECT_NE(cam.describe().find("dequeue time"), std::string::npos) << cam.describe();
+    expose(nowNs() + 1000000000, 11); // looks fresh, was waiting before the call
+    std::thread later([this] {
+        ::usleep(200000);
+        expose(0, 22);
+    });
+    hal::CapturedFrame frame;
+    const hal::Error e = cam.capture(1500, &frame);
+    later.join();
+    ASSERT_TRUE(e.ok()) << e.message;
+    EXPECT_EQ(frame.view.data[0], 22);
+    EXPECT_EQ(frame.staleFrames, 1);
+    EXPECT_GE(frame.latencyUs, 0);
+}
+
+// uvcvideo's `clock=realtime` module parameter: wall-clock stamps under the MONOTONIC flag.
+// Taken for monotonic, a frame exposed before the call would look decades fresh.
+TEST_F(V4l2Mock, WallClockStampsFromUvcvideoAreNotTakenForMonotonicOnes)
+{
+    hal::V4l2Camera cam(clock_, opts("/dev/video0", 2), &mapper_);
+    ASSERT_TRUE(cam.configure({hal::PixelFormat::YUYV, 640, 480}).ok());
+    timespec wall{};
+    clock_gettime(CLOCK_REALTIME, &wall);
+    const int64_t wallNs = int64_t(wall.tv_sec) * 1000000000 + wall.tv_nsec;
+    expose(wallNs - 50000000, 11); // exposed 50 ms before the call
+    std::thread later([this, wallNs] {
+        ::usleep(200000);
+        expose(wallNs + 200000000, 22);
+    });
+    hal::CapturedFrame frame;
+    const hal::Error e = cam.capture(1500, &frame);
+    later.join();
+    ASSERT_TRUE(e.ok()) << e.message;
+    EXPECT_EQ(frame.view.data[0], 22);
+    EXPECT_EQ(frame.staleFrames, 1);
+}
+
+// A driver that stamps at the end of the frame: the first row's exposure ended up to a whole
+// readout (one interval) earlier, whatever stamp delay is configured for first packets.
+TEST_F(V4l2Mock, AnEndOfFrameStampIsAllowedTheWholeReadout)
+{
+    {
+        std::lock_guard<std::mutex> lock(video_.m);
+        video_.stampFlags = V4L2_BUF_FLAG_TIMESTAMP_MONOTONIC | V4L2_BUF_FLAG_TSTAMP_SRC_EOF;
+        video_.driver = "some-csi-bridge";
+        video_.controls = {{V4L2_CID_EXPOSURE_AUTO, V4L2_EXPOSURE_MANUAL}, {V4L2_CID_EXPOSURE_ABSOLUTE, 100}};
+        video_.intervalNum = 1;
+        video_.intervalDen = 30;
+    }
+    hal::V4l2Options o = opts("/dev/video0", 4);
+    o.controls.exposureUs = 10000;
+    o.stampDelayUs = 2000;
+    hal::V4l2Camera cam(clock_, o, &mapper_);
+    ASSERT_TRUE(cam.configure({hal::PixelFormat::YUYV, 640, 480}).ok());
+    EXPECT_NE(cam.describe().find("end of frame"), std::string::npos) << cam.describe();
+    const int64_t litMs = clock_.monotonicMs() + 40;
+    const int64_t L = nowNs() + 40000000;
+    expose(L + 30000000, 1); // began at least 30 - 10 - 33 = -13 ms from L: maybe in the dark
+    expose(L + 45000000, 2); // began at least 2 ms after L
+    hal::CapturedFrame frame;
+    const hal::Error e = cam.capture({litMs, 500}, &frame);
+    ASSERT_TRUE(e.ok()) << e.message;
+    EXPECT_EQ(frame.view.data[0], 2);
+    EXPECT_EQ(frame.staleFrames, 1);
+}
+
 TEST_F(V4l2Mock, CaptureTimesOutWithoutBlocking)
 {
     hal::V4l2Camera cam(clock_, opts("/dev/video0", 2), &mapper_);
-    ASSERT_TRUE(cam.configure({vision::PixelFormat::YUYV, 640, 480}).ok());
+    ASSERT_TRUE(cam.configure({hal::PixelFormat::YUYV, 640, 480}).ok());
     hal::CapturedFrame frame;
     const int64_t t0 = clock_.monotonicMs();
     hal::Error e = cam.capture(150, &frame);
@@ -493,7 +655,7 @@ TEST_F(V4l2Mock, CaptureTimesOutEvenWithAManualClock)
 {
     hal::ManualClock manual(5000); // does not move while the camera waits
     hal::V4l2Camera cam(manual, opts("/dev/video0", 2), &mapper_);
-    ASSERT_TRUE(cam.configure({vision::PixelFormat::YUYV, 640, 480}).ok());
+    ASSERT_TRUE(cam.configure({hal::PixelFormat::YUYV, 640, 480}).ok());
     hal::CapturedFrame frame;
     EXPECT_EQ(cam.capture(100, &frame).code, hal::Errc::Timeout);
 }
@@ -501,7 +663,7 @@ TEST_F(V4l2Mock, CaptureTimesOutEvenWithAManualClock)
 TEST_F(V4l2Mock, UnplugIsAnErrorAndCaptureResumesAfterReplug)
 {
     hal::V4l2Camera cam(clock_, opts("/dev/video0", 2), &mapper_);
-    ASSERT_TRUE(cam.configure({vision::PixelFormat::YUYV, 640, 480}).ok());
+    ASSERT_TRUE(cam.configure({hal::PixelFormat::YUYV, 640, 480}).ok());
     hal::CapturedFrame frame;
     {
         std::lock_guard<std::mutex> lock(video_.m);
@@ -528,7 +690,7 @@ TEST_F(V4l2Mock, UnplugIsAnErrorAndCaptureResumesAfterReplug)
 TEST_F(V4l2Mock, NoCameraIsNotFound)
 {
     hal::V4l2Camera cam(clock_, opts("/dev/video5", 2), &mapper_);
-    hal::Error e = cam.configure({vision::PixelFormat::YUYV, 640, 480});
+    hal::Error e = cam.configure({hal::PixelFormat::YUYV, 640, 480});
     EXPECT_EQ(e.code, hal::Errc::NotFound) << e.message;
     hal::CapturedFrame frame;
     EXPECT_EQ(cam.capture(10, &frame).code, hal::Errc::NotFound);
@@ -633,7 +795,7 @@ TEST_F(V4l2Mock, FirmwareStartsWithoutItsCameraAndMeasuresOnceTheNodeAppears)
     friction::PaperModel model;
     fw::Device device({cam, trigger, led, display, serial, storage, clock_}, cfg, model);
     ASSERT_TRUE(device.start().ok());
-    const fw::FlatObject hello = serial.last("hello");
+    const reading::FlatObject hello = serial.last("hello");
     ASSERT_TRUE(hello.find("camera")) << serial.out;
     EXPECT_EQ(hello.find("camera")->text, "missing");
     EXPECT_NE(hello.find("camera_problem")->text.find("/dev/video1"), std::string::npos);
@@ -655,14 +817,14 @@ TEST_F(V4l2Mock, FirmwareStartsWithoutItsCameraAndMeasuresOnceTheNodeAppears)
     ::usleep(150000);
     serial.out.clear();
     device.tick();
-    const fw::FlatObject back = serial.last("camera");
+    const reading::FlatObject back = serial.last("camera");
     ASSERT_TRUE(back.find("camera")) << serial.out;
     EXPECT_EQ(back.find("camera")->text, "ok");
     EXPECT_EQ(fw::readRow(display.last, 0), "icacam  ready");
     expose(nowNs() + 1000000000, 90);
     serial.in = "trigger\n";
     device.tick();
-    const fw::FlatObject r = serial.last("result");
+    const reading::FlatObject r = serial.last("result");
     ASSERT_TRUE(r.find("source")) << serial.out;
     EXPECT_EQ(r.find("source")->text, "/dev/video1");
     ASSERT_TRUE(r.find("latency_us"));

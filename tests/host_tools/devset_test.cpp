@@ -1,6 +1,6 @@
 // The product's accuracy bar on the reference set (../shared/data/devset): every image
 // measured, median |μ − μ_true| ≤ 0.002, max ≤ 0.008 (PRODUCT.md §7), with the paper model;
-// no consistency flag on any of them (docs/loop.md).
+// no consistency flag on any of them (docs/loop-method.md, "Consistency of the radii").
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -32,7 +32,7 @@ TEST(Devset, AccuracyBar)
         EXPECT_LE(e, 0.008) << id;
         // Every devset image is consistent (exact scale, 50 %): the silhouette check against
         // the FE must stay quiet, and the reduction R_max implies must be near 50 % (it is
-        // good to about 0.01, 1 σ: docs/loop.md).
+        // good to about 0.01, 1 σ: docs/loop-method.md).
         EXPECT_EQ(r["flags"].find("scale_suspect"), std::string::npos) << id << " r_max_z " << r["r_max_z"];
         EXPECT_EQ(r["flags"].find("radii_inconsistent"), std::string::npos) << id;
         ASSERT_FALSE(r["reduction_est"].empty()) << id;

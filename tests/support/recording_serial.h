@@ -5,8 +5,8 @@
 #include <string>
 #include <string_view>
 
-#include "firmware/json_line.h"
 #include "hal/serial_port.h"
+#include "reading/record_line.h"
 
 namespace icacam::test {
 
@@ -25,16 +25,16 @@ struct RecordingSerial final : hal::SerialPort {
         return {};
     }
     // The last line of the given type, parsed (empty when none).
-    fw::FlatObject last(const std::string &type) const
+    reading::FlatObject last(const std::string &type) const
     {
-        fw::FlatObject found;
+        reading::FlatObject found;
         size_t at = 0;
         while (at < out.size()) {
             const size_t nl = out.find('\n', at);
             const std::string line = out.substr(at, nl - at);
             at = nl == std::string::npos ? out.size() : nl + 1;
-            fw::FlatObject o;
-            if (fw::parseFlatObject(line, &o).empty() && o.find("type") && o.find("type")->text == type) found = o;
+            reading::FlatObject o;
+            if (reading::parseFlatObject(line, &o).empty() && o.find("type") && o.find("type")->text == type) found = o;
         }
         return found;
     }

@@ -18,7 +18,7 @@
 
 #include "friction/paper_model.h"
 #include "hal/file/image_decoder.h"
-#include "vision/end_face_analyzer.h"
+#include "reading/instrument.h"
 
 namespace {
 
@@ -29,7 +29,7 @@ const std::string kExpected = kSample + "/reference-measurements.txt";
 
 struct SampleRow {
     std::string id, image;
-    vision::SpecimenSpec spec;
+    reading::SpecimenSpec spec;
 };
 
 // manifest.csv: id,image,n,k_mpa,d0_mm,h0_mm,mm_per_px (a fixed, tiny file: no CSV library).
@@ -97,15 +97,15 @@ void printPoints(std::string *out, const char *name, const vision::EdgeSample *p
 
 std::string measureAll(std::string *failure)
 {
-    vision::EndFaceAnalyzer analyzer;
+    reading::Instrument analyzer;
     constexpr int kMaxW = 2048, kMaxH = 2048;
-    if (analyzer.configure(kMaxW, kMaxH) != vision::ErrorCode::None) {
+    friction::PaperModel model;
+    if (analyzer.configure(kMaxW, kMaxH, model) != vision::ErrorCode::None) {
         *failure = "configure";
         return {};
     }
     const size_t cap = size_t(kMaxW) * kMaxH * 3;
     std::unique_ptr<uint8_t[]> buf(new uint8_t[cap]);
-    friction::PaperModel model;
     std::string out = "# Measurements of tests/data/sample, generated on x86-64 by tests/vision/reference_images_test\n"
                       "# with ICACAM_WRITE_REFERENCE set; aarch64 (qemu) must print the same, bit for bit.\n";
     for (const auto &row : readManifest()) {
@@ -120,23 +120,23 @@ std::string measureAll(std::string *failure)
             return {};
         }
         const vision::LumaView luma{buf.get(), img.width, img.height, img.stride, 1};
-        const vision::Measurement m = analyzer.measure(luma, row.spec, model);
+        const reading::Reading m = analyzer.read(luma, row.spec);
         put(&out, "image %s %dx%d luma-fnv1a %016llx\n", row.id.c_str(), img.width, img.height,
             static_cast<unsigned long long>(digest(buf.get(), img.width, img.height, img.stride)));
-        put(&out, "status %s error %d flags %08x\n", vision::statusName(m.status), int(m.error), unsigned(m.flags));
-        put(&out, "centre %a %a rMaxPx %a edgeWidthPx %a saturated %a\n", m.centreX, m.centreY, m.rMaxPx, m.edgeWidthPx,
-            m.saturatedFraction);
-        printFit(&out, "inner", m.inner);
-        printFit(&out, "outer", m.outer);
-        put(&out, "mm rInner %a rOuter %a rMax %a\n", m.rInnerMm, m.rOuterMm, m.rMaxMm);
+        put(&out, "status %s error %d flags %08x\n", reading::statusName(m.status), int(m.error), unsigned(m.flags));
+        put(&out, "centre %a %a rMaxPx %a edgeWidthPx %a saturated %a\n", m.geometry.centreX, m.geometry.centreY,
+            m.geometry.rMaxPx, m.geometry.edgeWidthPx, m.geometry.saturatedFraction);
+        printFit(&out, "inner", m.geometry.inner);
+        printFit(&out, "outer", m.geometry.outer);
+        put(&out, "mm rInner %a rOuter %a rMax %a\n", m.rInnerMm(), m.rOuterMm(), m.rMaxMm());
         put(&out, "u px %a mm %a sigma %a\n", m.uPx, m.uMm, m.uSigmaMm);
         put(&out, "mu %a sigma %a (%.6f)\n", m.mu, m.muSigma, m.mu);
         // std::hypot is not correctly rounded and glibc's x86-64 and aarch64 builds differ in
         // its last bit (seen: 0x1.dba7936758132p-6 vs ...133p-6). Values from it are printed
         // to 12 digits until vision/ computes them with sqrt (correctly rounded everywhere).
-        put(&out, "centreOffsetPx %.12g rays %d\n", m.centreOffsetPx, m.rayCount);
-        printPoints(&out, "innerPt", m.innerPoints, m.rayCount);
-        printPoints(&out, "outerPt", m.outerPoints, m.rayCount);
+        put(&out, "centreOffsetPx %.12g rays %d\n", m.centreOffsetPx, m.geometry.rayCount);
+        printPoints(&out, "innerPt", m.geometry.innerPoints, m.geometry.rayCount);
+        printPoints(&out, "outerPt", m.geometry.outerPoints, m.geometry.rayCount);
     }
     return out;
 }

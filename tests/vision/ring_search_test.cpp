@@ -22,28 +22,25 @@ namespace {
 // refinement leaves behind (64 rays at the coarse step from 0.88 R0: the mean profile the
 // search names its edges from).
 struct Search {
-    std::vector<uint16_t> coarse =
-        std::vector<uint16_t>(size_t(EndFaceAnalyzer::kCoarseRays) * EndFaceAnalyzer::kMaxCoarseSamples);
-    std::vector<uint16_t> fine =
-        std::vector<uint16_t>(size_t(EndFaceAnalyzer::kFineRays) * EndFaceAnalyzer::kMaxFineSamples);
-    std::vector<int16_t> deriv =
-        std::vector<int16_t>(size_t(EndFaceAnalyzer::kFineRays) * EndFaceAnalyzer::kMaxFineSamples);
-    std::vector<int32_t> meanProfile = std::vector<int32_t>(EndFaceAnalyzer::kMaxCoarseSamples);
-    std::vector<int32_t> meanDeriv = std::vector<int32_t>(EndFaceAnalyzer::kMaxCoarseSamples);
-    std::vector<EdgeSample> innerPts = std::vector<EdgeSample>(EndFaceAnalyzer::kFineRays);
-    std::vector<EdgeSample> outerPts = std::vector<EdgeSample>(EndFaceAnalyzer::kFineRays);
-    Measurement m;
+    std::vector<uint16_t> coarse = std::vector<uint16_t>(size_t(kCoarseRays) * kMaxCoarseSamples);
+    std::vector<uint16_t> fine = std::vector<uint16_t>(size_t(kFineRays) * kMaxFineSamples);
+    std::vector<int16_t> deriv = std::vector<int16_t>(size_t(kFineRays) * kMaxFineSamples);
+    std::vector<int32_t> meanProfile = std::vector<int32_t>(kMaxCoarseSamples);
+    std::vector<int32_t> meanDeriv = std::vector<int32_t>(kMaxCoarseSamples);
+    std::vector<EdgeSample> innerPts = std::vector<EdgeSample>(kFineRays);
+    std::vector<EdgeSample> outerPts = std::vector<EdgeSample>(kFineRays);
+    EndFaceGeometry m;
 
     ErrorCode run(const LumaView &v, double r0, double cx, double cy)
     {
-        const double rA = EndFaceAnalyzer::kCoarseStart * r0, rB = EndFaceAnalyzer::kCoarseEnd * r0;
-        const double step = EndFaceAnalyzer::coarseStep(r0);
-        const int count = std::min(EndFaceAnalyzer::kMaxCoarseSamples, int((rB - rA) / step));
-        for (int i = 0; i < EndFaceAnalyzer::kCoarseRays; ++i) {
+        const double rA = kCoarseStart * r0, rB = kCoarseEnd * r0;
+        const double step = coarseStep(r0);
+        const int count = std::min(kMaxCoarseSamples, int((rB - rA) / step));
+        for (int i = 0; i < kCoarseRays; ++i) {
             RaySpec ray{Q16_16::fromDouble(cx), Q16_16::fromDouble(cy),  {}, {},
                         Q16_16::fromDouble(rA), Q16_16::fromDouble(step)};
-            rayDirection(i, EndFaceAnalyzer::kCoarseRays, &ray.cosT, &ray.sinT);
-            sampleRay(v, ray, count, coarse.data() + size_t(i) * EndFaceAnalyzer::kMaxCoarseSamples);
+            rayDirection(i, kCoarseRays, &ray.cosT, &ray.sinT);
+            sampleRay(v, ray, count, coarse.data() + size_t(i) * kMaxCoarseSamples);
         }
         RingSearch s{&v,
                      r0,
@@ -56,7 +53,7 @@ struct Search {
                      meanDeriv.data(),
                      innerPts.data(),
                      outerPts.data()};
-        m = Measurement{};
+        m = EndFaceGeometry{};
         return s.run(&m);
     }
 };
@@ -79,7 +76,7 @@ TEST(RingSearch, FindsTheDrawnBoundariesAboutTheDrawnCentre)
     ASSERT_EQ(e, ErrorCode::None) << errorName(e);
     EXPECT_NEAR(s.m.outer.rEqPx, face.rOuter, kEdgeTolPx);
     EXPECT_NEAR(s.m.inner.rEqPx, face.rInner, kEdgeTolPx);
-    EXPECT_NEAR(s.m.rMaxPx, face.rMax, EndFaceAnalyzer::coarseStep(face.r0));
+    EXPECT_NEAR(s.m.rMaxPx, face.rMax, coarseStep(face.r0));
     EXPECT_GT(s.m.silhouetteCoverage, 0.9);
     EXPECT_GT(s.m.silhouetteScatterPx, 0);
     EXPECT_LT(s.m.silhouetteScatterPx, 0.5) << "every coarse ray's point on the drawn outline";
@@ -95,10 +92,10 @@ TEST(RingSearch, FindsTheDrawnBoundariesAboutTheDrawnCentre)
     EXPECT_NEAR(s.m.inner.contrast, face.ica - face.face, 2);
     EXPECT_NEAR(s.m.outer.contrast, face.barrel - face.ica, 3);
     EXPECT_NEAR(s.m.edgeWidthPx, face.blurSigma, 0.15);
-    EXPECT_EQ(s.m.flags & kFlagSpecimenClipped, 0u);
+    EXPECT_EQ(s.m.imageFlags & kImageSpecimenClipped, 0u);
     EXPECT_EQ(s.m.saturatedFraction, 0);
     // On a clean picture every ray's point is accepted, and each lies on its drawn circle.
-    ASSERT_EQ(s.m.rayCount, EndFaceAnalyzer::kFineRays);
+    ASSERT_EQ(s.m.rayCount, kFineRays);
     int valid = 0;
     for (int i = 0; i < s.m.rayCount; ++i) {
         for (const auto &[pts, r] :
@@ -109,7 +106,7 @@ TEST(RingSearch, FindsTheDrawnBoundariesAboutTheDrawnCentre)
                 << "ray " << i;
         }
     }
-    EXPECT_EQ(valid, 2 * EndFaceAnalyzer::kFineRays);
+    EXPECT_EQ(valid, 2 * kFineRays);
 }
 
 TEST(RingSearch, TheSilhouetteIsTheOutlineNotAHighlightInsideIt)
@@ -254,7 +251,7 @@ TEST(RingSearch, ASpecimenRunningOffTheFrameIsFlagged)
     const auto px = face.draw();
     Search s;
     ASSERT_EQ(s.run(face.view(px), face.r0, face.cx, face.cy), ErrorCode::None);
-    EXPECT_NE(s.m.flags & kFlagSpecimenClipped, 0u);
+    EXPECT_NE(s.m.imageFlags & kImageSpecimenClipped, 0u);
     EXPECT_NEAR(s.m.outer.rEqPx, face.rOuter, kEdgeTolPx);
     EXPECT_NEAR(s.m.inner.rEqPx, face.rInner, kEdgeTolPx);
 }

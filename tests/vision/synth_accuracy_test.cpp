@@ -7,8 +7,8 @@
 
 #include "friction/paper_model.h"
 #include "host_tools/end_face_renderer.h"
-#include "host_tools/synth_command.h"
-#include "vision/end_face_analyzer.h"
+#include "host_tools/model_inverse.h"
+#include "reading/instrument.h"
 
 using namespace icacam;
 
@@ -24,7 +24,7 @@ struct Rendered {
 
 Rendered renderRandom(std::mt19937 &rng, double n, double mu)
 {
-    const double u = host::uForMu(mu, n);
+    const double u = host::uForMu(friction::PaperModel(), mu, n);
     const double rOuter = 6.85 - 0.95 * u;
     const double rMax = 5.0 * std::sqrt(2.0) * (1.008 + 0.034 * u);
     Rendered r{host::randomScene(rng, u, rOuter, rMax, false), {}};
@@ -38,9 +38,9 @@ TEST(SynthAccuracy, RandomScenesWithNuisances)
 {
     std::mt19937 rng(20261121);
     std::uniform_real_distribution<double> U(0, 1);
-    vision::EndFaceAnalyzer analyzer;
-    ASSERT_EQ(analyzer.configure(2028, 1520), vision::ErrorCode::None);
+    reading::Instrument analyzer;
     friction::PaperModel model;
+    ASSERT_EQ(analyzer.configure(2028, 1520, model), vision::ErrorCode::None);
     std::vector<double> errs;
     int silentWrong = 0;
     const int cases = 30;
@@ -48,8 +48,8 @@ TEST(SynthAccuracy, RandomScenesWithNuisances)
         const double n = 0.05 + 0.45 * U(rng), mu = 0.06 + 0.23 * U(rng);
         const Rendered r = renderRandom(rng, n, mu);
         const host::EndFaceScene &s = r.scene;
-        const vision::SpecimenSpec spec{n, 500, 10, 15, s.mmPerPx};
-        const vision::Measurement m = analyzer.measure(r.view(), spec, model);
+        const reading::SpecimenSpec spec{n, 500, 10, 15, s.mmPerPx};
+        const reading::Reading m = analyzer.read(r.view(), spec);
         const double muTrue = model.estimate({s.rOuterEqMm() - s.rInnerEqMm(), n}).mu;
         if (!m.hasValue()) {
             errs.push_back(1);
@@ -58,9 +58,9 @@ TEST(SynthAccuracy, RandomScenesWithNuisances)
         const double e = std::fabs(m.mu - muTrue);
         errs.push_back(e);
         // Scenes at the exact scale and 50 %: the silhouette check stays quiet.
-        EXPECT_FALSE(m.flags & (vision::kFlagScaleSuspect | vision::kFlagRadiiInconsistent))
+        EXPECT_FALSE(m.flags & (reading::kFlagScaleSuspect | reading::kFlagRadiiInconsistent))
             << "case " << i << " r_max_z " << m.rMaxZ;
-        if (e > std::max(0.01, 0.05 * muTrue) && m.status == vision::Status::Ok) ++silentWrong;
+        if (e > std::max(0.01, 0.05 * muTrue) && m.status == reading::Status::Ok) ++silentWrong;
         RecordProperty("case" + std::to_string(i), std::to_string(e));
     }
     std::sort(errs.begin(), errs.end());
@@ -76,19 +76,19 @@ TEST(SynthAccuracy, RecordedReductionOutsideTheModelIsFlagged)
 {
     const host::EndFaceScene s = host::nominalScene(0.6);
     const cv::Mat img = host::renderEndFace(s);
-    vision::EndFaceAnalyzer analyzer;
-    ASSERT_EQ(analyzer.configure(img.cols, img.rows), vision::ErrorCode::None);
+    reading::Instrument analyzer;
     friction::PaperModel model;
+    ASSERT_EQ(analyzer.configure(img.cols, img.rows, model), vision::ErrorCode::None);
     const vision::LumaView v{img.data, img.cols, img.rows, int(img.step[0]), 1};
-    vision::SpecimenSpec spec{0.25, 500, 10, 15, s.mmPerPx};
+    reading::SpecimenSpec spec{0.25, 500, 10, 15, s.mmPerPx};
     spec.hFinalMm = 7.5; // exactly 50 %
-    auto m = analyzer.measure(v, spec, model);
+    auto m = analyzer.read(v, spec);
     ASSERT_TRUE(m.hasValue());
-    EXPECT_FALSE(m.flags & vision::kFlagReductionOutside);
+    EXPECT_FALSE(m.flags & reading::kFlagReductionOutside);
     spec.hFinalMm = 7.0; // 53 %
-    m = analyzer.measure(v, spec, model);
-    EXPECT_TRUE(m.flags & vision::kFlagReductionOutside);
-    EXPECT_EQ(m.status, vision::Status::Warn);
+    m = analyzer.read(v, spec);
+    EXPECT_TRUE(m.flags & reading::kFlagReductionOutside);
+    EXPECT_EQ(m.status, reading::Status::Warn);
 }
 
 // Well-lubricated specimens leave a ring a few pixels wide (μ 0.05–0.07: u 2–5 px at these
@@ -98,30 +98,30 @@ TEST(SynthAccuracy, NarrowRingsOfWellLubricatedSpecimens)
 {
     std::mt19937 rng(20261124);
     std::uniform_real_distribution<double> U(0, 1);
-    vision::EndFaceAnalyzer analyzer;
-    ASSERT_EQ(analyzer.configure(2028, 1520), vision::ErrorCode::None);
+    reading::Instrument analyzer;
     friction::PaperModel model;
+    ASSERT_EQ(analyzer.configure(2028, 1520, model), vision::ErrorCode::None);
     int measured = 0, narrow = 0, covered = 0;
     const int cases = 16;
     for (int i = 0; i < cases; ++i) {
         const double n = 0.3 + 0.2 * U(rng), mu = 0.05 + 0.02 * U(rng);
         const Rendered r = renderRandom(rng, n, mu);
         const host::EndFaceScene &s = r.scene;
-        vision::SpecimenSpec spec{n, 500, 10, 15, s.mmPerPx};
+        reading::SpecimenSpec spec{n, 500, 10, 15, s.mmPerPx};
         spec.hFinalMm = 7.5;
-        const vision::Measurement m = analyzer.measure(r.view(), spec, model);
+        const reading::Reading m = analyzer.read(r.view(), spec);
         const double uTrue = s.rOuterEqMm() - s.rInnerEqMm();
         std::printf("case %2d: u %.1f px  %s", i, uTrue / s.mmPerPx, m.hasValue() ? "" : "not measured\n");
         if (!m.hasValue()) continue;
         ++measured;
-        const bool fromProfile = m.inner.used == 0;
+        const bool fromProfile = m.geometry.inner.used == 0;
         narrow += fromProfile;
         const double muTrue = model.estimate({uTrue, n}).mu;
         const double sigma = std::sqrt(m.muSigma * m.muSigma - m.budget.model * m.budget.model);
         covered += std::fabs(m.mu - muTrue) <= 2 * sigma;
         std::printf("measured %.1f px, dmu %+.4f, sigma %.4f%s\n", m.uPx, m.mu - muTrue, sigma,
                     fromProfile ? ", from the profile" : "");
-        EXPECT_FALSE(m.status == vision::Status::Ok && std::fabs(m.mu - muTrue) > 0.01) << "case " << i;
+        EXPECT_FALSE(m.status == reading::Status::Ok && std::fabs(m.mu - muTrue) > 0.01) << "case " << i;
     }
     EXPECT_GE(measured, cases * 3 / 4);
     EXPECT_GE(narrow, 1) << "no scene needed the narrow-ring fit: the cases no longer test it";

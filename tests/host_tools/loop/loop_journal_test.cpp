@@ -25,6 +25,7 @@
 #include "host_tools/loop/loop_command.h"
 #include "host_tools/manifest.h"
 #include "host_tools/synth_loop_set.h"
+#include "reading/record_line.h"
 #include "tests/support/recording_serial.h"
 #include "tests/support/table_inputs.h"
 
@@ -180,7 +181,7 @@ TEST(LoopJournal, DeviceRecordsReMeasuredAndTheLensFound)
 TEST(LoopJournal, CrcIsTheJournalsCrc32)
 {
     // The IEEE CRC-32 check value.
-    EXPECT_EQ(journalCrc32("123456789"), 0xCBF43926u);
+    EXPECT_EQ(reading::recordCrc32("123456789"), 0xCBF43926u);
 }
 
 // A record written without D0 and H0 (an older journal) takes them from the device's saved
@@ -203,7 +204,7 @@ TEST(LoopJournal, ARecordWithoutGeometryTakesTheSavedSettings)
         }
         const size_t crc = line.rfind(",\"crc32\":\"");
         char hex[9];
-        std::snprintf(hex, sizeof hex, "%08x", journalCrc32(line.substr(0, crc)));
+        std::snprintf(hex, sizeof hex, "%08x", reading::recordCrc32(line.substr(0, crc)));
         line = line.substr(0, crc) + ",\"crc32\":\"" + hex + "\"}";
         text.replace(begin, end - begin, line);
     });

@@ -15,12 +15,17 @@
 
 #include "friction/paper_model.h"
 #include "friction/reduction_table.h"
+#include "host_tools/fe/reduction_slope.h"
 #include "host_tools/loop/loop_analysis.h"
 #include "host_tools/loop/loop_command.h"
+#include "host_tools/model_inverse.h"
 #include "tests/support/table_inputs.h"
 
 namespace fs = std::filesystem;
 using namespace icacam::host::loop;
+using icacam::host::uForMu;
+using icacam::host::fe::ReductionSlope;
+using icacam::host::fe::uAtModelReduction;
 
 namespace {
 

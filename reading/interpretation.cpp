@@ -1,0 +1,110 @@
+#include "reading/interpretation.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "friction/radii_consistency.h"
+#include "reading/interpretation_steps.h"
+
+namespace icacam::reading {
+
+using friction::ModelEstimate;
+using vision::EndFaceGeometry;
+
+namespace {
+
+// The silhouette measurement's own relative error, from its per-ray fit's scatter.
+double silhouetteMeasuredRelSigma(double coverage, double scatterPx, double rMaxPx)
+{
+    return friction::measuredRMaxRelSigma(coverage > 0 && rMaxPx > 0 ? scatterPx / rMaxPx : 0);
+}
+
+// The steps after the face is in millimetres, shared by images and radii.
+void readFace(const SpecimenSpec &spec, const friction::FrictionModel &model, const AssumedReduction &assumed,
+              double scaleRelSigma, double uSigmaEdgesMm, const SilhouetteObservation *silhouette,
+              double silhouetteSigma, uint32_t f, Reading *out)
+{
+    const MuFunction F(spec, model);
+    const double u = out->face.uMm, n = spec.n;
+    ScaleAndReduction sr;
+    sr.pk = scaleRelSigma * scaleRelSigma;
+    sr.pr = assumed.sigma * assumed.sigma;
+    if (silhouette) {
+        out->rMaxZ = silhouette->rMaxZ;
+        out->reductionEst = silhouette->reductionEst;
+        f |= silhouette->flags;
+        if (silhouette->usable) sr = silhouettePosterior(sr, *silhouette, silhouetteSigma, assumed.declared, &f);
+    }
+    const double uF = u * std::exp(-sr.dk), rF = assumed.r + sr.dr;
+    out->reduction = rF;
+    out->reductionSigma = std::sqrt(sr.pr);
+    out->scaleFactor = uF / u;
+    out->uMm = uF;
+
+    const MuReading read = readMu(F, model, spec, uF, rF, assumed.declared);
+    out->mu = read.estimate.mu;
+    out->budget = budgetOf(F, model, spec, uF, rF, sr, uSigmaEdgesMm, read.bias);
+    out->muSigma = combinedSigma(out->budget);
+    const ModelEstimate asDeclared = model.estimate({u, n, spec.kMpa, spec.d0Mm, spec.h0Mm, spec.hFinalMm});
+    out->declared = {asDeclared.mu, asDeclared.dMuDu};
+    decideStatus(spec, f | rangeChecks(model, read, assumed), out);
+}
+
+} // namespace
+
+double silhouetteRelSigma(const EndFaceGeometry &g)
+{
+    return std::hypot(friction::kFeRMaxRelSigma,
+                      silhouetteMeasuredRelSigma(g.silhouetteCoverage, g.silhouetteScatterPx, g.rMaxPx));
+}
+
+Reading interpret(const EndFaceGeometry &g, const SpecimenSpec &spec, const vision::PlaneCalibration *calibration,
+                  const friction::FrictionModel &model)
+{
+    Reading out;
+    out.geometry = g;
+    out.error = g.error;
+    if (g.error != ErrorCode::None) return out;
+    const AssumedReduction assumed = assumedReduction(spec);
+    const PlaneMapping p = mapFace(g, spec, calibration, assumed);
+    if (!p.valid) {
+        out.error = ErrorCode::BadSpecimen;
+        return out;
+    }
+    out.face = p.face;
+    out.innerShape = p.inner, out.outerShape = p.outer;
+    out.uPx = g.outer.rEqPx - g.inner.rEqPx;
+    const EdgeSigma e = edgeSigma(g, p, calibration != nullptr);
+    out.uSigmaMm = e.uSigmaMm;
+    const uint32_t f = imageChecks(g, p, e, spec.d0Mm, &out.centreOffsetPx);
+
+    SilhouetteObservation obs;
+    const SilhouetteObservation *silhouette = nullptr;
+    if (!calibration) {
+        // Calibrated: R_max is reported, not held against the model.
+        const double mu0 = MuFunction(spec, model).at(p.face.uMm, assumed.r, spec.n);
+        obs = observeSilhouette(p.face, g.silhouetteCoverage, g.silhouetteScatterPx, g.rMaxPx, spec, assumed, mu0);
+        silhouette = &obs;
+    }
+    readFace(spec, model, assumed, p.scaleRelSigma, e.uSigmaEdgesMm, silhouette, silhouetteRelSigma(g), f, &out);
+    return out;
+}
+
+Reading interpret(const FaceInMm &face, const SpecimenSpec &spec, const friction::FrictionModel &model)
+{
+    Reading out;
+    out.imaged = false;
+    out.error = ErrorCode::None;
+    out.geometry.error = ErrorCode::None;
+    out.face = face;
+    out.face.uMm = face.rOuterMm - face.rInnerMm;
+    const AssumedReduction assumed = assumedReduction(spec);
+    const MuFunction F(spec, model);
+    const double mu0 = F.at(out.face.uMm, assumed.r, spec.n);
+    const SilhouetteObservation obs = observeSilhouette(out.face, 1, 0, face.rMaxMm, spec, assumed, mu0);
+    const double silhouetteSigma = std::hypot(friction::kFeRMaxRelSigma, friction::measuredRMaxRelSigma(0));
+    readFace(spec, model, assumed, spec.tolerances.scaleRel, 0, &obs, silhouetteSigma, 0, &out);
+    return out;
+}
+
+} // namespace icacam::reading

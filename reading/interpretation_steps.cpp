@@ -1,0 +1,372 @@
+#include "reading/interpretation_steps.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "friction/radii_consistency.h"
+
+namespace icacam::reading {
+
+using friction::FrictionModel;
+using friction::ModelEstimate;
+using vision::BoundaryFit;
+using vision::EndFaceGeometry;
+using vision::PlaneCalibration;
+
+namespace {
+
+// A barrel's silhouette lies outside the contact edge, and not far: R_max/R_o spans
+// 1.02–1.15 over the FE's (n, μ) at 40–60 % reduction. Outside these bounds the edge taken
+// is a highlight's flank, the fixture or a second edge, not the barrel.
+constexpr double kSilhouetteOverContactMin = 1.005, kSilhouetteOverContactMax = 1.3;
+// The per-ray silhouette fit must see the barrel on half the rays at least.
+constexpr double kSilhouetteMinCoverage = 0.5;
+// Beyond 3 σ the silhouette contradicts a declared final height and scale outright.
+constexpr double kContradictionChi2 = 9.0;
+// Without a declared final height the silhouette weighs three explanations, equally likely
+// beforehand: the test's nominal half height (a press stopped at it: σ 0.003, 0.045 mm on
+// 15 mm) with the scale as declared; the specimen pressed to another height (the undeclared
+// reduction's prior, the scale within its tolerance); or the nominal height read through a
+// scale grossly off (one measured on the fixture rather than the end face, or on a wrong
+// edge, is 5–12 % off at 70–150 mm working distance: σ 8 %). Where the silhouette agrees with
+// half height the first dominates and the reduction is known to the press's tolerance; where
+// it does not, the others take over, and the mixture's spread covers the step between them.
+constexpr double kNominalReductionSigma = 0.003;
+constexpr double kGrossScaleSigma = 0.08;
+// A view the image shows to be oblique (the boundaries share an ellipse, or their centres
+// part) comes from a camera close and off-axis: it sees the barrel's widest section, half-way
+// down, from farther than the end face, and a short lens's barrel distortion shrinks it
+// further. There a fourth explanation joins: the nominal half height with the declared
+// scale and a silhouette read 5 % ± 4 % small (3.75 mm farther at 70–150 mm is 2.5–5 %,
+// distortion at the barrel's radius up to a few per cent more). It leaves u's scale alone.
+constexpr double kForeshortenMean = -0.05, kForeshortenSigma = 0.04;
+// Where the barrel is about as bright as the background, its outline is faint and a ridge or
+// reflection on the barrel, inside it, can be the clearest step on every ray: the silhouette
+// is then taken on a wrong edge, with little scatter, anywhere from just outside the contact
+// edge to a few per cent inside the outline (rendered straight views: 5 in about 800 readings,
+// 7–17 % short). Such a silhouette says nothing about scale or reduction; read as a scale
+// error it would rescale u by as much. A last explanation therefore keeps the priors, with a
+// likelihood uniform over those discrepancies and a prior probability of 2 %. Nearer the
+// outline than kMisreadMinInside the rays' scatter measures what a highlight does.
+constexpr double kMisreadPrior = 0.02;
+constexpr double kMisreadMinInside = 0.03;
+// The edge model's own error, beyond the fits' scatter: against the drawn boundaries of the
+// development set's photographs the pipeline's R_i lies 0.005 mm (1 σ) off the truth's
+// equivalent radius and R_o 0.001 mm (a ragged texture boundary, not a step, on the inside).
+constexpr double kInnerEdgeModelMm = 0.005, kOuterEdgeModelMm = 0.001;
+
+// The silhouette's observation d = δk + β·δr + o + e (e of variance se2: silhouetteRelSigma;
+// o an offset of the silhouette alone, with its mean and variance) applied to a prior on
+// (δk, δr): the posterior mean and covariance (a linear Gaussian update), widened by χ² where d
+// lies further out than the prior and e explain (as for a Birge ratio).
+ScaleAndReduction update(const ScaleAndReduction &prior, double d, double beta, double se2, double offset = 0,
+                         double offsetVar = 0)
+{
+    const double S = prior.pk + beta * beta * prior.pr + se2 + offsetVar;
+    const double v = d - offset;
+    const double w = std::max(1.0, v * v / S);
+    ScaleAndReduction p;
+    p.dk = prior.pk / S * v;
+    p.dr = beta * prior.pr / S * v;
+    p.pk = w * (prior.pk - prior.pk * prior.pk / S);
+    p.pr = w * (prior.pr - beta * beta * prior.pr * prior.pr / S);
+    p.pkr = -w * beta * prior.pk * prior.pr / S;
+    return p;
+}
+
+// With a declared final height: one update, or past 3 σ neither declared value corrected and
+// each widened to explain the whole discrepancy alone.
+ScaleAndReduction declaredPosterior(ScaleAndReduction sr, const SilhouetteObservation &o, double se2)
+{
+    const double S = sr.pk + o.beta * o.beta * sr.pr + se2;
+    if (o.d * o.d / S > kContradictionChi2) {
+        sr.pk = std::max(sr.pk, o.d * o.d);
+        sr.pr = std::max(sr.pr, o.d * o.d / (o.beta * o.beta));
+        return sr;
+    }
+    return update(sr, o.d, o.beta, se2);
+}
+
+// Without one: three explanations of the silhouette's discrepancy, four in an oblique view
+// (kNominalReductionSigma, kForeshortenMean), and a wrong edge (kMisreadPrior): each one's
+// posterior, weighted by its prior and how well it predicts d, and their mixture's moments.
+ScaleAndReduction mixturePosterior(const ScaleAndReduction &declared, const SilhouetteObservation &o, double se2,
+                                   uint32_t *flags)
+{
+    constexpr int kExplanations = 5;
+    constexpr int kMisread = 4;
+    const double d = o.d, beta = o.beta;
+    ScaleAndReduction prior[kExplanations];
+    prior[0] = declared;                               // pressed to another height
+    prior[1].pk = kGrossScaleSigma * kGrossScaleSigma; // half height, a scale off
+    prior[1].pr = kNominalReductionSigma * kNominalReductionSigma;
+    prior[2].pk = declared.pk; // half height, scale as declared
+    prior[2].pr = kNominalReductionSigma * kNominalReductionSigma;
+    prior[3] = prior[2];        // half height, scale as declared, the silhouette foreshortened
+    prior[kMisread] = declared; // a wrong edge: the silhouette tells nothing
+    const double offset[kExplanations] = {0, 0, 0, kForeshortenMean, 0};
+    const double offsetVar[kExplanations] = {0, 0, 0, kForeshortenSigma * kForeshortenSigma, 0};
+    const bool oblique = (*flags & (kFlagElliptical | kFlagCentreOffset)) != 0;
+    const double gaussianPrior = (1.0 - kMisreadPrior) / (oblique ? 4 : 3);
+    ScaleAndReduction post[kExplanations];
+    double w[kExplanations], wSum = 0;
+    for (int h = 0; h < kMisread; ++h) {
+        const double S = prior[h].pk + beta * beta * prior[h].pr + se2 + offsetVar[h];
+        const double v = d - offset[h];
+        // Densities up to the common 1/√(2π).
+        w[h] = h != 3 || oblique ? gaussianPrior * std::exp(-0.5 * v * v / S) / std::sqrt(S) : 0.0;
+        wSum += w[h];
+        post[h] = update(prior[h], d, beta, se2, offset[h], offsetVar[h]);
+    }
+    const double misreadSpan = -kMisreadMinInside - o.dContact;
+    const bool misreadPossible = misreadSpan > 0 && d >= o.dContact && d <= -kMisreadMinInside;
+    w[kMisread] = misreadPossible ? kMisreadPrior * std::sqrt(2 * std::numbers::pi) / misreadSpan : 0.0;
+    wSum += w[kMisread];
+    post[kMisread] = prior[kMisread];
+    ScaleAndReduction sr;
+    for (int h = 0; h < kExplanations; ++h) {
+        w[h] = wSum > 0 ? w[h] / wSum : 1.0 / kExplanations;
+        sr.dk += w[h] * post[h].dk;
+        sr.dr += w[h] * post[h].dr;
+    }
+    // A discrepancy the view's foreshortening explains best is not the scale's: the
+    // elliptical or centre_offset flag names its cause.
+    if (oblique && w[3] >= std::max({w[0], w[1], w[2]})) *flags &= ~uint32_t(kFlagScaleSuspect);
+    // A silhouette more likely a wrong edge than the barrel's outline is not relied on.
+    if (w[kMisread] >= std::max({w[0], w[1], w[2], w[3]})) *flags |= kFlagSilhouetteUnreliable;
+    for (int h = 0; h < kExplanations; ++h) {
+        const double gk = post[h].dk - sr.dk, gr = post[h].dr - sr.dr;
+        sr.pk += w[h] * (post[h].pk + gk * gk);
+        sr.pr += w[h] * (post[h].pr + gr * gr);
+        sr.pkr += w[h] * (post[h].pkr + gk * gr);
+    }
+    return sr;
+}
+
+} // namespace
+
+AssumedReduction assumedReduction(const SpecimenSpec &spec)
+{
+    AssumedReduction r;
+    r.declared = spec.hFinalMm > 0 && spec.hFinalMm < spec.h0Mm;
+    r.r = r.declared ? 1.0 - spec.hFinalMm / spec.h0Mm : kNominalReduction;
+    r.sigma = r.declared ? spec.tolerances.hFinalMm / spec.h0Mm : kUndeclaredReductionSigma;
+    return r;
+}
+
+PlaneMapping mapFace(const EndFaceGeometry &g, const SpecimenSpec &spec, const PlaneCalibration *calibration,
+                     const AssumedReduction &r)
+{
+    PlaneMapping p;
+    const double s = spec.mmPerPx;
+    p.mmPerPx = s;
+    p.face.rInnerMm = g.inner.rEqPx * s;
+    p.face.rOuterMm = g.outer.rEqPx * s;
+    p.face.rMaxMm = g.rMaxPx * s;
+    p.face.uMm = (g.outer.rEqPx - g.inner.rEqPx) * s;
+    p.inner = {g.inner.ellipticity, g.inner.axisDeg};
+    p.outer = {g.outer.ellipticity, g.outer.axisDeg};
+    p.scaleRelSigma = spec.tolerances.scaleRel;
+    if (!calibration) return p;
+
+    // Each boundary mapped point by point into the end-face plane (undistorted, tilt
+    // removed, at the specimen's height); the scale becomes the contact edge's effective one.
+    PlaneCalibration plane = *calibration;
+    plane.heightMm = spec.h0Mm * (1.0 - r.r);
+    const vision::PlaneOutline pi = planeOutline(g.inner, g.centreX, g.centreY, plane);
+    const vision::PlaneOutline po = planeOutline(g.outer, g.centreX, g.centreY, plane);
+    if (!(pi.valid && po.valid && g.outer.rEqPx > 0)) {
+        p.valid = false;
+        return p;
+    }
+    p.face.rInnerMm = pi.rEqMm, p.face.rOuterMm = po.rEqMm, p.face.uMm = po.rEqMm - pi.rEqMm;
+    p.mmPerPx = po.rEqMm / g.outer.rEqPx;
+    // The shape checks judge the end face itself, not the camera's view of it.
+    p.inner = {pi.ellipticity, pi.axisDeg};
+    p.outer = {po.ellipticity, po.axisDeg};
+    p.centreOffsetPx = std::hypot(pi.centroidX - po.centroidX, pi.centroidY - po.centroidY) / p.mmPerPx;
+    // The barrel is widest about half-way down: its silhouette maps at half the height.
+    BoundaryFit silhouette;
+    silhouette.a0 = g.rMaxPx;
+    PlaneCalibration mid = plane;
+    mid.heightMm *= 0.5;
+    p.face.rMaxMm = g.rMaxPx > 0 ? equivalentRadiusMm(silhouette, g.centreX, g.centreY, mid) : 0;
+    // The plane's height is as uncertain as the reduction: its part of the scale.
+    const double dh = spec.h0Mm * r.sigma;
+    PlaneCalibration up = plane, down = plane;
+    up.heightMm += dh, down.heightMm -= dh;
+    const double sUp = planeScaleAt(up, g.centreX, g.centreY);
+    const double sDown = planeScaleAt(down, g.centreX, g.centreY);
+    const double heightPart = sUp > 0 && sDown > 0 ? std::fabs(sUp - sDown) / (sUp + sDown) : 0.01;
+    p.scaleRelSigma = std::hypot(spec.tolerances.calibrationScaleRel, heightPart);
+    return p;
+}
+
+EdgeSigma edgeSigma(const EndFaceGeometry &g, const PlaneMapping &p, bool calibrated)
+{
+    // The fits' scatter and a 0.1 px location floor per boundary, and the edge model's error
+    // in millimetres; an uncalibrated camera's tilt shrinks the equal-area radii by up to e/2
+    // (e the shared ellipticity), which the declared scale may or may not have absorbed.
+    EdgeSigma e;
+    const double sigPx =
+        std::sqrt(g.inner.rEqSigmaPx * g.inner.rEqSigmaPx + g.outer.rEqSigmaPx * g.outer.rEqSigmaPx + 2 * 0.1 * 0.1);
+    e.uSigmaMm = sigPx * p.mmPerPx;
+    const double axisDiff = std::fabs(std::remainder(p.inner.axisDeg - p.outer.axisDeg, 180.0));
+    e.sharedEllipse = p.inner.ellipticity > 0.012 && p.outer.ellipticity > 0.012 && axisDiff < 20;
+    e.uSigmaEdgesMm = std::hypot(e.uSigmaMm, std::hypot(kInnerEdgeModelMm, kOuterEdgeModelMm));
+    if (!calibrated && e.sharedEllipse) {
+        const double ell = std::min(p.inner.ellipticity, p.outer.ellipticity);
+        e.uSigmaEdgesMm = std::hypot(e.uSigmaEdgesMm, p.face.uMm * ell / (2 * std::sqrt(3.0)));
+    }
+    return e;
+}
+
+uint32_t imageChecks(const EndFaceGeometry &g, const PlaneMapping &p, const EdgeSigma &e, double d0Mm,
+                     double *centreOffsetPx)
+{
+    uint32_t f = 0;
+    if (g.imageFlags & vision::kImageSpecimenClipped) f |= kFlagSpecimenClipped;
+    if (g.imageFlags & vision::kImageNarrowRingFit) f |= kFlagNarrowRing;
+    const double r0Px = 0.5 * d0Mm / p.mmPerPx;
+    if (std::min(g.inner.coverage, g.outer.coverage) < 0.6) f |= kFlagLowCoverage;
+    if (std::max(g.inner.scatterPx, g.outer.scatterPx) > std::max(1.5, 0.006 * r0Px)) f |= kFlagHighScatter;
+    if (std::fabs(g.inner.contrast) < 5.0) f |= kFlagLowContrast;
+    *centreOffsetPx = p.centreOffsetPx >= 0
+                          ? p.centreOffsetPx
+                          : std::hypot(g.inner.centreX - g.outer.centreX, g.inner.centreY - g.outer.centreY);
+    if (*centreOffsetPx > std::max(3.0, 0.012 * r0Px)) f |= kFlagCentreOffset;
+    if (e.sharedEllipse) f |= kFlagElliptical;
+    if (g.outer.rEqPx - g.inner.rEqPx < 3.0) f |= kFlagNarrowRing;
+    if (g.edgeWidthPx > 2.6) f |= kFlagBlurred;
+    if (g.saturatedFraction > 0.02) f |= kFlagSaturated;
+    return f;
+}
+
+MuFunction::MuFunction(const SpecimenSpec &spec, const FrictionModel &model)
+        : spec_(spec), model_(model), carry_(model, model.name())
+{}
+
+ModelEstimate MuFunction::estimate(double u, double r, double n) const
+{
+    const friction::ModelInputs in{u, n, spec_.kMpa, spec_.d0Mm, spec_.h0Mm, spec_.h0Mm * (1 - r)};
+    return model_.correctsReduction() ? model_.estimate(in) : carry_.estimate(in);
+}
+
+SilhouetteObservation observeSilhouette(const FaceInMm &face, double coverage, double scatterPx, double rMaxPx,
+                                        const SpecimenSpec &spec, const AssumedReduction &r, double mu0)
+{
+    SilhouetteObservation o;
+    if (!(rMaxPx > 0)) {
+        o.flags = kFlagNoSilhouette;
+        return o;
+    }
+    const double n = spec.n;
+    o.measuredRelSigma = friction::measuredRMaxRelSigma(coverage > 0 ? scatterPx / rMaxPx : 0);
+    const friction::RadiiCheck rc =
+        friction::checkRadii(face.rMaxMm, n, mu0, spec.d0Mm, r.r, spec.h0Mm, true, o.measuredRelSigma);
+    o.rMaxZ = rc.z;
+    o.reductionEst = rc.reductionEst;
+    if (rc.inconsistent()) o.flags |= r.declared ? kFlagRadiiInconsistent : kFlagScaleSuspect;
+    const friction::RadiiCheck up = friction::checkRadii(face.rMaxMm, n, mu0, spec.d0Mm, r.r + 0.01, spec.h0Mm, false);
+    const friction::RadiiCheck down =
+        friction::checkRadii(face.rMaxMm, n, mu0, spec.d0Mm, r.r - 0.01, spec.h0Mm, false);
+    const double overContact = face.rMaxMm / face.rOuterMm;
+    o.usable = rc.valid && up.valid && down.valid && coverage >= kSilhouetteMinCoverage &&
+               overContact > kSilhouetteOverContactMin && overContact < kSilhouetteOverContactMax;
+    if (o.usable) {
+        o.d = std::log(face.rMaxMm / rc.rMaxFeMm);
+        o.dContact = std::log(kSilhouetteOverContactMin * face.rOuterMm / rc.rMaxFeMm);
+        o.beta = std::log(up.rMaxFeMm / down.rMaxFeMm) / 0.02;
+        o.usable = o.beta > 0.1;
+    }
+    if (!o.usable) o.flags |= kFlagSilhouetteUnreliable;
+    return o;
+}
+
+ScaleAndReduction silhouettePosterior(const ScaleAndReduction &prior, const SilhouetteObservation &obs,
+                                      double silhouetteRelSigma, bool declared, uint32_t *flags)
+{
+    const double se2 = silhouetteRelSigma * silhouetteRelSigma;
+    return declared ? declaredPosterior(prior, obs, se2) : mixturePosterior(prior, obs, se2, flags);
+}
+
+MuReading readMu(const MuFunction &F, const FrictionModel &model, const SpecimenSpec &spec, double uMm, double r,
+                 bool declared)
+{
+    // A model that carries u to 50 % itself reads at r; one that does not (the paper's fit as
+    // published) reads as is, and the carry it leaves out is in the budget.
+    MuReading m;
+    if (model.correctsReduction()) {
+        m.estimate = F.estimate(uMm, r, spec.n);
+        // The inferred reduction is budgeted.
+        if (!declared) m.estimate.range &= ~uint32_t(friction::kModelReductionOutside);
+    } else {
+        m.estimate = model.estimate({uMm, spec.n, spec.kMpa, spec.d0Mm, spec.h0Mm, 0});
+        m.bias = F.at(uMm, r, spec.n) - m.estimate.mu;
+    }
+    return m;
+}
+
+UncertaintyBudget budgetOf(const MuFunction &F, const FrictionModel &model, const SpecimenSpec &spec, double uF,
+                           double rF, const ScaleAndReduction &sr, double uSigmaEdgesMm, double bias)
+{
+    const double n = spec.n;
+    const double hu = std::max(1e-4, 0.01 * uF), hr = 0.005, hn = std::max(1e-4, spec.tolerances.n);
+    const double gU = (F.at(uF + hu, rF, n) - F.at(std::max(0.0, uF - hu), rF, n)) / (uF + hu - std::max(0.0, uF - hu));
+    const double gR = (F.at(uF, rF + hr, n) - F.at(uF, rF - hr, n)) / (2 * hr);
+    const double gN = (F.at(uF, rF, n + hn) - F.at(uF, rF, n - hn)) / (2 * hn);
+    const double a = -uF * gU; // per unit relative scale error
+    // The carry's own error: a quarter of its effect (the FE slope is resolution-limited).
+    const double carry = 0.25 * std::fabs(F.at(uF, rF, n) - F.at(uF, kNominalReduction, n));
+    UncertaintyBudget b;
+    b.edges = std::fabs(gU) * uSigmaEdgesMm;
+    // Scale and reduction are correlated through the silhouette: their covariance term is
+    // shared between the two, so that the components add in quadrature to mu_sigma.
+    const double cross = a * gR * sr.pkr;
+    b.scale = std::sqrt(std::max(0.0, a * a * sr.pk + cross));
+    b.reduction = std::sqrt(std::max(0.0, gR * gR * sr.pr + cross) + carry * carry + bias * bias);
+    b.n = std::fabs(gN) * spec.tolerances.n;
+    b.model = model.estimate({uF, n, spec.kMpa, spec.d0Mm, spec.h0Mm, 0}).modelSigma;
+    return b;
+}
+
+double combinedSigma(const UncertaintyBudget &b)
+{
+    return std::sqrt(b.edges * b.edges + b.scale * b.scale + b.reduction * b.reduction + b.n * b.n + b.model * b.model);
+}
+
+uint32_t rangeChecks(const FrictionModel &model, const MuReading &m, const AssumedReduction &r)
+{
+    uint32_t f = 0;
+    const uint32_t range = m.estimate.range;
+    if (range & (friction::kModelNBelow | friction::kModelNAbove)) f |= kFlagNOutOfRange;
+    if (range & friction::kModelKOutside) f |= kFlagKOutOfRange;
+    if (range & friction::kModelMuBelow) f |= kFlagMuBelowRange;
+    if (range & friction::kModelMuAbove) f |= kFlagMuAboveRange;
+    if (range & friction::kModelUOutside) f |= kFlagUOutsideModel;
+    if (range & friction::kModelAspectOutside) f |= kFlagAspectOutside;
+    if (model.correctsReduction()) {
+        if (range & friction::kModelReductionOutside) f |= kFlagReductionOutside;
+    } else if (r.declared && std::fabs(r.r - kNominalReduction) > 0.01) {
+        f |= kFlagReductionOutside;
+    }
+    return f;
+}
+
+void decideStatus(const SpecimenSpec &spec, uint32_t f, Reading *out)
+{
+    out->toleranceMu = spec.tolerance.at(std::fabs(out->mu));
+    if (spec.tolerance.coverage * out->muSigma > out->toleranceMu) {
+        const UncertaintyBudget &b = out->budget;
+        const double parts[5] = {b.edges, b.scale, b.reduction, b.n, b.model};
+        const uint32_t names[5] = {kFlagEdgesUncertain, kFlagScaleUncertain, kFlagReductionUncertain, kFlagNUncertain,
+                                   kFlagModelUncertain};
+        f |= names[std::max_element(parts, parts + 5) - parts];
+    }
+    out->flags = f;
+    out->status = f ? Status::Warn : Status::Ok;
+    out->error = ErrorCode::None;
+}
+
+} // namespace icacam::reading

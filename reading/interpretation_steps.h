@@ -1,0 +1,117 @@
+#pragma once
+// The interpretation's steps (interpretation.h), each a function of its own so that each can
+// be tested alone: the final height assumed, the face in millimetres (the plane mapping),
+// u's edge uncertainty, the image's checks, the silhouette's observation and the posterior of
+// scale and reduction it gives, μ, the budget and the status.
+#include <cstdint>
+
+#include "friction/friction_model.h"
+#include "friction/reduction_corrected_model.h"
+#include "reading/reading.h"
+#include "reading/specimen_spec.h"
+#include "vision/end_face_geometry.h"
+#include "vision/plane_calibration.h"
+
+namespace icacam::reading {
+
+// The final height the reading assumes: declared (with its tolerance) or the test's nominal
+// half height with the undeclared prior.
+struct AssumedReduction {
+    bool declared = false;
+    double r = kNominalReduction;
+    double sigma = kUndeclaredReductionSigma;
+};
+AssumedReduction assumedReduction(const SpecimenSpec &spec);
+
+// The face in millimetres: each boundary scaled by the declared mm_per_px, or mapped point by
+// point into the end-face plane through a calibration (undistorted, tilt removed, at the
+// specimen's height). valid is false when a boundary does not map.
+struct PlaneMapping {
+    bool valid = true;
+    FaceInMm face;
+    double mmPerPx = 0; // the contact edge's effective scale
+    BoundaryShape inner, outer;
+    double centreOffsetPx = -1; // in the plane, in pixels at mmPerPx (-1: judged in the image)
+    double scaleRelSigma = 0;   // the scale's relative standard uncertainty
+};
+PlaneMapping mapFace(const vision::EndFaceGeometry &g, const SpecimenSpec &spec,
+                     const vision::PlaneCalibration *calibration, const AssumedReduction &r);
+
+// u's uncertainty from the edges: the fits' scatter and a location floor (uSigmaMm), and with
+// the edge model's error and an uncalibrated tilt (uSigmaEdgesMm).
+struct EdgeSigma {
+    double uSigmaMm = 0;
+    double uSigmaEdgesMm = 0;
+    bool sharedEllipse = false; // both boundaries elliptical along one axis
+};
+EdgeSigma edgeSigma(const vision::EndFaceGeometry &g, const PlaneMapping &p, bool calibrated);
+
+// The image's own checks: coverage, scatter, contrast, concentricity, ellipse, a narrow ring,
+// blur, saturation, and what the pipeline reported (ImageFlag).
+uint32_t imageChecks(const vision::EndFaceGeometry &g, const PlaneMapping &p, const EdgeSigma &e, double d0Mm,
+                     double *centreOffsetPx);
+
+// μ as a function of the inputs the budget varies: the ring u (mm) read at reduction r with
+// exponent n, carried to the model's 50 % (through the FE slope for a model that does not
+// carry itself).
+class MuFunction {
+public:
+    MuFunction(const SpecimenSpec &spec, const friction::FrictionModel &model);
+    double at(double u, double r, double n) const { return estimate(u, r, n).mu; }
+    friction::ModelEstimate estimate(double u, double r, double n) const;
+
+private:
+    const SpecimenSpec &spec_;
+    const friction::FrictionModel &model_;
+    friction::ReductionCorrectedModel carry_;
+};
+
+// The scale's relative error and the reduction's offset, with their (co)variances.
+struct ScaleAndReduction {
+    double dk = 0, dr = 0;          // corrections: relative scale error, reduction offset
+    double pk = 0, pr = 0, pkr = 0; // their (co)variances
+};
+
+// The silhouette held against the FE's shape: d = ln(R_max / R_max,FE) at the assumed
+// reduction, β = ∂ln R_max,FE/∂r, and whether it is usable as an observation of scale and
+// reduction. flags: scale_suspect, radii_inconsistent, silhouette_unreliable, no_silhouette.
+struct SilhouetteObservation {
+    bool usable = false;
+    double d = 0, beta = 0;
+    double dContact = 0; // d for a silhouette at the smallest accepted radius (just outside R_o)
+    double rMaxZ = 0;
+    double reductionEst = -1;
+    double measuredRelSigma = 0; // the measurement's own relative error
+    uint32_t flags = 0;
+};
+// coverage, scatterPx: the silhouette's per-ray fit (coverage 1 and scatter 0 for a radius
+// given as a number).
+SilhouetteObservation observeSilhouette(const FaceInMm &face, double coverage, double scatterPx, double rMaxPx,
+                                        const SpecimenSpec &spec, const AssumedReduction &r, double mu0);
+
+// The posterior of scale and reduction given the silhouette (interpretation.h): a linear
+// update where the final height is declared, the mixture of explanations where it is not.
+// *flags may lose scale_suspect (an oblique view explains it) or gain silhouette_unreliable.
+ScaleAndReduction silhouettePosterior(const ScaleAndReduction &prior, const SilhouetteObservation &obs,
+                                      double silhouetteRelSigma, bool declared, uint32_t *flags);
+
+// μ at the corrected u and reduction; bias: the carry to 50 % a model that does not carry
+// itself leaves out (budgeted).
+struct MuReading {
+    friction::ModelEstimate estimate;
+    double bias = 0;
+};
+MuReading readMu(const MuFunction &F, const friction::FrictionModel &model, const SpecimenSpec &spec, double uMm,
+                 double r, bool declared);
+
+// The budget's components at the reading's inputs (sensitivities by central differences).
+UncertaintyBudget budgetOf(const MuFunction &F, const friction::FrictionModel &model, const SpecimenSpec &spec,
+                           double uMm, double r, const ScaleAndReduction &sr, double uSigmaEdgesMm, double bias);
+double combinedSigma(const UncertaintyBudget &b);
+
+// The model's range flags, the reduction's, and the status: ok when no flag is raised and the
+// budget meets the tolerance, else warn with the leading component named.
+uint32_t rangeChecks(const friction::FrictionModel &model, const MuReading &m, const AssumedReduction &r);
+void decideStatus(const SpecimenSpec &spec, uint32_t flags, Reading *out);
+
+} // namespace icacam::reading

@@ -1,0 +1,45 @@
+// Stable names for statuses and flags: they appear in CSV, JSON and on serial.
+#include "reading/reading.h"
+
+namespace icacam::reading {
+
+const char *statusName(Status s)
+{
+    switch (s) {
+    case Status::Ok: return "ok";
+    case Status::Warn: return "warn";
+    default: return "error";
+    }
+}
+
+const char *flagName(int bit)
+{
+    static const char *const kNames[kFlagCount] = {"n_out_of_range",
+                                                   "k_out_of_range",
+                                                   "mu_below_model",
+                                                   "mu_above_model",
+                                                   "u_outside_model",
+                                                   "low_contrast",
+                                                   "low_coverage",
+                                                   "high_scatter",
+                                                   "blurred",
+                                                   "saturated",
+                                                   "specimen_clipped",
+                                                   "elliptical",
+                                                   "centre_offset",
+                                                   "scale_suspect",
+                                                   "narrow_ring",
+                                                   "no_silhouette",
+                                                   "reduction_outside_model",
+                                                   "radii_inconsistent",
+                                                   "aspect_outside_model",
+                                                   "edges_uncertain",
+                                                   "scale_uncertain",
+                                                   "reduction_uncertain",
+                                                   "n_uncertain",
+                                                   "model_uncertain",
+                                                   "silhouette_unreliable"};
+    return bit >= 0 && bit < kFlagCount ? kNames[bit] : "unknown";
+}
+
+} // namespace icacam::reading

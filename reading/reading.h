@@ -1,0 +1,120 @@
+#pragma once
+// A reading: the end face's geometry interpreted with what the instrument was told (the
+// specimen, the scale or calibration, the friction model): radii in mm, u, μ ± σ with its
+// budget, a status and named flags (PRODUCT.md §4 and §6).
+#include <cstdint>
+
+#include "vision/end_face_geometry.h"
+#include "vision/error.h"
+
+namespace icacam::reading {
+
+using vision::ErrorCode;
+
+enum class Status : uint8_t { Ok, Warn, Error };
+const char *statusName(Status s);
+
+// Conditions a value was produced under that lie outside the model or the checks.
+enum ReadingFlag : uint32_t {
+    kFlagNOutOfRange = 1u << 0,
+    kFlagKOutOfRange = 1u << 1,
+    kFlagMuBelowRange = 1u << 2,
+    kFlagMuAboveRange = 1u << 3,
+    kFlagUOutsideModel = 1u << 4,
+    kFlagLowContrast = 1u << 5,        // an edge has little contrast: scatter may hide a bias
+    kFlagLowCoverage = 1u << 6,        // an edge was found on too few rays
+    kFlagHighScatter = 1u << 7,        // boundary points scatter more than a clean edge does
+    kFlagBlurred = 1u << 8,            // edges wider than the ring resolves reliably
+    kFlagSaturated = 1u << 9,          // part of the ring is clipped at full scale
+    kFlagSpecimenClipped = 1u << 10,   // the specimen runs off the frame
+    kFlagElliptical = 1u << 11,        // both boundaries share an ellipticity: tilt or lens
+    kFlagCentreOffset = 1u << 12,      // the boundaries are not concentric
+    kFlagScaleSuspect = 1u << 13,      // no final height given: R_max contradicts the scale and 50 % reduction
+    kFlagNarrowRing = 1u << 14,        // the ICA is only a few pixels wide
+    kFlagNoSilhouette = 1u << 15,      // the barrel silhouette was not found: scale unchecked
+    kFlagReductionOutside = 1u << 16,  // recorded final height outside what the model covers
+    kFlagRadiiInconsistent = 1u << 17, // R_max contradicts the declared scale and final height
+    kFlagAspectOutside = 1u << 18,     // the specimen's H0/D0 lies outside what the model covers
+    // The budget misses the tolerance; the flag names its leading component (what to declare
+    // or improve to get an ok reading).
+    kFlagEdgesUncertain = 1u << 19,       // boundary scatter or the edge model
+    kFlagScaleUncertain = 1u << 20,       // mm_per_px or the calibration's plane
+    kFlagReductionUncertain = 1u << 21,   // the final height (declare h_final_mm)
+    kFlagNUncertain = 1u << 22,           // the declared n's tolerance
+    kFlagModelUncertain = 1u << 23,       // the friction model's own error
+    kFlagSilhouetteUnreliable = 1u << 24, // a silhouette was found but does not fit the FE shape: not used
+};
+constexpr int kFlagCount = 25;
+// The flags that say the budget misses the tolerance (the others are checks).
+constexpr uint32_t kBudgetFlags =
+    kFlagEdgesUncertain | kFlagScaleUncertain | kFlagReductionUncertain | kFlagNUncertain | kFlagModelUncertain;
+const char *flagName(int bit);
+
+// Standard uncertainties of μ, one per source (GUM, JCGM 100), each from the model's own
+// sensitivities (finite differences of the friction model). muSigma combines them with the
+// scale–reduction correlation the silhouette leaves (see interpretation.h).
+struct UncertaintyBudget {
+    double edges = 0;     // boundary scatter and the edge model (u's uncertainty)
+    double scale = 0;     // mm_per_px's tolerance, or the calibration and the plane's height
+    double reduction = 0; // the final height (declared or inferred) and the carry to 50 %
+    double n = 0;         // the declared n's tolerance
+    double model = 0;     // the 50 % model's own fit error
+};
+
+// A boundary's shape as the checks judge it: in the image, or with a calibration in the
+// end-face plane (the camera's view taken out).
+struct BoundaryShape {
+    double ellipticity = 0; // 1 - b/a
+    double axisDeg = 0;     // the long axis's direction
+};
+
+// The end face in millimetres at the declared scale (or through the calibration), before
+// the silhouette's correction of the scale: what the instrument was told, applied.
+struct FaceInMm {
+    double rInnerMm = 0, rOuterMm = 0;
+    double rMaxMm = 0; // the silhouette (0: none)
+    double uMm = 0;
+};
+
+// μ from the face as declared: the model at the declared u and final height, before the
+// silhouette's correction (the loop's residual is taken against this).
+struct DeclaredEstimate {
+    double mu = 0;
+    double dMuDu = 0; // per mm
+};
+
+struct Reading {
+    Status status = Status::Error;
+    ErrorCode error = ErrorCode::NotConfigured;
+    uint32_t flags = 0;
+
+    bool imaged = true;               // read from an image (false: from radii)
+    vision::EndFaceGeometry geometry; // as the image showed it, in pixels (none for radii)
+    FaceInMm face;                    // at the declared scale
+    double scaleFactor = 1;           // the silhouette's correction of the declared scale
+    BoundaryShape innerShape, outerShape;
+
+    double uPx = 0;
+    double uMm = 0;      // the ring the model read: face.uMm corrected by the scale factor
+    double uSigmaMm = 0; // u's scatter (the fits and the location floor), at the declared scale
+    double mu = 0, muSigma = 0;
+    UncertaintyBudget budget;
+    double reduction = 0.5;    // height reduction u was read at (declared, inferred or nominal)
+    double reductionSigma = 0; // its standard uncertainty
+    double toleranceMu = 0;    // the lab's tolerance for this reading (status ok: 2σ within it)
+    DeclaredEstimate declared;
+
+    double centreOffsetPx = 0; // between the boundaries' centres (in the plane, with a calibration)
+    // The silhouette against the FE (friction/radii_consistency.h): (R_max − FE R_max)/σ at
+    // the declared final height (or 50 % when none), and the reduction R_max implies (-1: none).
+    double rMaxZ = 0;
+    double reductionEst = -1;
+
+    // The radii as read (the silhouette's scale correction applied).
+    double rInnerMm() const { return face.rInnerMm * scaleFactor; }
+    double rOuterMm() const { return face.rOuterMm * scaleFactor; }
+    double rMaxMm() const { return face.rMaxMm * scaleFactor; }
+    bool hasValue() const { return status != Status::Error; }
+};
+
+} // namespace icacam::reading

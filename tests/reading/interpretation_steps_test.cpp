@@ -1,0 +1,222 @@
+// Each step of the interpretation alone (reading/interpretation_steps.h), on faces whose
+// answer is known without running the rest.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "friction/friction_models.h"
+#include "friction/paper_model.h"
+#include "reading/interpretation_steps.h"
+
+namespace icacam::reading {
+namespace {
+
+using vision::BoundaryFit;
+using vision::EndFaceGeometry;
+
+constexpr double kMmPerPx = 0.02;
+
+EndFaceGeometry circularFace(double riPx, double roPx)
+{
+    EndFaceGeometry g;
+    g.error = ErrorCode::None;
+    g.centreX = 700, g.centreY = 500;
+    for (BoundaryFit *b : {&g.inner, &g.outer}) {
+        b->coverage = 1, b->contrast = 40, b->rEqSigmaPx = 0.05, b->scatterPx = 0.3;
+        b->centreX = 700, b->centreY = 500;
+    }
+    g.inner.rEqPx = g.inner.a0 = riPx;
+    g.outer.rEqPx = g.outer.a0 = roPx;
+    g.rMaxPx = 1.08 * roPx;
+    g.silhouetteCoverage = 1;
+    g.edgeWidthPx = 1;
+    return g;
+}
+
+SpecimenSpec spec(double hFinalMm = 0)
+{
+    SpecimenSpec s;
+    s.n = 0.25, s.mmPerPx = kMmPerPx, s.hFinalMm = hFinalMm;
+    return s;
+}
+
+TEST(AssumedReduction, DeclaredHeightOrTheNominalHalfWithTheUndeclaredPrior)
+{
+    const AssumedReduction none = assumedReduction(spec());
+    EXPECT_FALSE(none.declared);
+    EXPECT_EQ(none.r, 0.5);
+    EXPECT_EQ(none.sigma, kUndeclaredReductionSigma);
+    const AssumedReduction d = assumedReduction(spec(7.2));
+    EXPECT_TRUE(d.declared);
+    EXPECT_NEAR(d.r, 1 - 7.2 / 15, 1e-12);
+    EXPECT_NEAR(d.sigma, 0.05 / 15, 1e-12);
+    EXPECT_FALSE(assumedReduction(spec(15.5)).declared) << "a final height above h0 is not a reduction";
+}
+
+TEST(PlaneMapping, WithoutCalibrationTheDeclaredScale)
+{
+    const EndFaceGeometry g = circularFace(250, 300);
+    const PlaneMapping p = mapFace(g, spec(), nullptr, assumedReduction(spec()));
+    ASSERT_TRUE(p.valid);
+    EXPECT_DOUBLE_EQ(p.face.rInnerMm, 250 * kMmPerPx);
+    EXPECT_DOUBLE_EQ(p.face.rOuterMm, 300 * kMmPerPx);
+    EXPECT_DOUBLE_EQ(p.face.uMm, 50 * kMmPerPx);
+    EXPECT_DOUBLE_EQ(p.face.rMaxMm, g.rMaxPx * kMmPerPx);
+    EXPECT_EQ(p.scaleRelSigma, spec().tolerances.scaleRel);
+    EXPECT_LT(p.centreOffsetPx, 0) << "concentricity is judged in the image";
+}
+
+TEST(PlaneMapping, ThroughACalibrationTheEndFacePlane)
+{
+    // A pinhole straight above the fixture 100 mm away: the end face 7.5 mm off it is mapped
+    // at about 0.05 mm per pixel, and the plane's height uncertainty enters the scale's σ.
+    vision::PlaneCalibration cal;
+    cal.fx = cal.fy = 2000, cal.cx = 700, cal.cy = 500;
+    cal.t[2] = 100;
+    const EndFaceGeometry g = circularFace(250, 300);
+    const PlaneMapping p = mapFace(g, spec(), &cal, assumedReduction(spec()));
+    ASSERT_TRUE(p.valid);
+    EXPECT_NEAR(p.mmPerPx, 0.05, 0.005);
+    EXPECT_NEAR(p.face.uMm, 50 * p.mmPerPx, 1e-3);
+    EXPECT_GT(p.scaleRelSigma, spec().tolerances.calibrationScaleRel);
+    EXPECT_GE(p.centreOffsetPx, 0) << "concentricity is judged in the plane";
+}
+
+TEST(EdgeSigma, TheFitsAFloorAndAnUncalibratedTilt)
+{
+    EndFaceGeometry g = circularFace(250, 300);
+    const PlaneMapping round = mapFace(g, spec(), nullptr, assumedReduction(spec()));
+    const EdgeSigma e = edgeSigma(g, round, false);
+    EXPECT_NEAR(e.uSigmaMm, std::sqrt(2 * 0.05 * 0.05 + 2 * 0.01) * kMmPerPx, 1e-12);
+    EXPECT_GT(e.uSigmaEdgesMm, e.uSigmaMm) << "the edge model's error is added";
+    EXPECT_FALSE(e.sharedEllipse);
+    g.inner.ellipticity = g.outer.ellipticity = 0.05, g.inner.axisDeg = g.outer.axisDeg = 30;
+    const PlaneMapping oval = mapFace(g, spec(), nullptr, assumedReduction(spec()));
+    const EdgeSigma tilted = edgeSigma(g, oval, false);
+    EXPECT_TRUE(tilted.sharedEllipse);
+    EXPECT_GT(tilted.uSigmaEdgesMm, e.uSigmaEdgesMm);
+    EXPECT_EQ(edgeSigma(g, oval, true).uSigmaEdgesMm, e.uSigmaEdgesMm) << "a calibration took the tilt out";
+}
+
+TEST(ImageChecks, EachConditionRaisesItsFlag)
+{
+    const AssumedReduction r = assumedReduction(spec());
+    auto flagsOf = [&](const EndFaceGeometry &g) {
+        const PlaneMapping p = mapFace(g, spec(), nullptr, r);
+        double offset = 0;
+        return imageChecks(g, p, edgeSigma(g, p, false), 10, &offset);
+    };
+    EndFaceGeometry g = circularFace(250, 300);
+    EXPECT_EQ(flagsOf(g), 0u);
+    g.inner.coverage = 0.4;
+    EXPECT_EQ(flagsOf(g), uint32_t(kFlagLowCoverage));
+    g = circularFace(250, 300), g.inner.contrast = -3;
+    EXPECT_EQ(flagsOf(g), uint32_t(kFlagLowContrast));
+    g = circularFace(250, 300), g.edgeWidthPx = 3;
+    EXPECT_EQ(flagsOf(g), uint32_t(kFlagBlurred));
+    g = circularFace(250, 300), g.inner.centreX += 6;
+    EXPECT_EQ(flagsOf(g), uint32_t(kFlagCentreOffset));
+    g = circularFace(250, 252);
+    EXPECT_EQ(flagsOf(g), uint32_t(kFlagNarrowRing));
+    g = circularFace(250, 300), g.imageFlags = vision::kImageSpecimenClipped;
+    EXPECT_EQ(flagsOf(g), uint32_t(kFlagSpecimenClipped));
+}
+
+TEST(SilhouetteObservation, NoneFoundAFittingOneAndOneOutsideTheBarrel)
+{
+    const SpecimenSpec s = spec();
+    const AssumedReduction r = assumedReduction(s);
+    FaceInMm face{5.0, 6.0, 0, 1.0};
+    EXPECT_EQ(observeSilhouette(face, 1, 0, 0, s, r, 0.15).flags, uint32_t(kFlagNoSilhouette));
+    face.rMaxMm = 6.6;
+    const SilhouetteObservation fits = observeSilhouette(face, 1, 0, 330, s, r, 0.15);
+    EXPECT_TRUE(fits.usable);
+    EXPECT_GT(fits.beta, 0.1) << "a further pressed barrel is wider";
+    face.rMaxMm = 6.01; // hugging the contact edge: a highlight's flank, not the barrel
+    const SilhouetteObservation flank = observeSilhouette(face, 1, 0, 300.5, s, r, 0.15);
+    EXPECT_FALSE(flank.usable);
+    EXPECT_TRUE(flank.flags & kFlagSilhouetteUnreliable);
+}
+
+TEST(SilhouettePosterior, DeclaredHeightCorrectsTheScaleAndAContradictionWidensBoth)
+{
+    ScaleAndReduction prior;
+    prior.pk = 0.005 * 0.005, prior.pr = 0.0033 * 0.0033;
+    SilhouetteObservation o;
+    o.usable = true, o.beta = 0.6, o.d = 0.004;
+    uint32_t flags = 0;
+    const ScaleAndReduction small = silhouettePosterior(prior, o, 0.003, true, &flags);
+    EXPECT_GT(small.dk, 0);
+    EXPECT_LT(small.pk, prior.pk) << "an agreeing silhouette narrows the scale";
+    o.d = 0.1; // far past 3 σ
+    const ScaleAndReduction far = silhouettePosterior(prior, o, 0.003, true, &flags);
+    EXPECT_EQ(far.dk, 0) << "neither declared value is corrected";
+    EXPECT_GE(far.pk, o.d * o.d);
+    EXPECT_EQ(flags, 0u);
+}
+
+TEST(SilhouettePosterior, WithoutHeightAnAgreeingSilhouettePinsTheNominalHalf)
+{
+    ScaleAndReduction prior;
+    prior.pk = 0.005 * 0.005, prior.pr = kUndeclaredReductionSigma * kUndeclaredReductionSigma;
+    SilhouetteObservation o;
+    o.usable = true, o.beta = 0.6, o.d = 0.0;
+    uint32_t flags = 0;
+    const ScaleAndReduction p = silhouettePosterior(prior, o, 0.004, false, &flags);
+    EXPECT_LT(std::sqrt(p.pr), 0.5 * kUndeclaredReductionSigma);
+    EXPECT_NEAR(p.dr, 0, 1e-3);
+}
+
+TEST(ReadMu, ACarryingModelReadsAtTheReductionAndThePaperCarriesInItsBudget)
+{
+    const friction::FrictionModel &carrying = *friction::frictionModel(friction::kDefaultModel);
+    const friction::PaperModel paper;
+    const SpecimenSpec s = spec();
+    const MuFunction fc(s, carrying), fp(s, paper);
+    const MuReading c = readMu(fc, carrying, s, 0.5, 0.5, false);
+    EXPECT_NEAR(c.estimate.mu, fc.at(0.5, 0.5, 0.25), 1e-12);
+    EXPECT_EQ(c.bias, 0);
+    const MuReading p = readMu(fp, paper, s, 0.5, 0.48, false);
+    EXPECT_NEAR(p.estimate.mu, paper.estimate({0.5, 0.25, 0, 10, 15, 0}).mu, 1e-12);
+    EXPECT_NE(p.bias, 0) << "the carry from 48 % to 50 % is the paper model's bias";
+}
+
+TEST(Budget, ComponentsFollowTheirInputsAndCombineInQuadrature)
+{
+    const friction::FrictionModel &model = *friction::frictionModel(friction::kDefaultModel);
+    SpecimenSpec s = spec(7.5);
+    const MuFunction F(s, model);
+    ScaleAndReduction sr;
+    sr.pk = 0.005 * 0.005, sr.pr = 0.0033 * 0.0033;
+    const UncertaintyBudget b = budgetOf(F, model, s, 0.5, 0.5, sr, 0.003, 0);
+    EXPECT_GT(b.edges, 0);
+    EXPECT_GT(b.scale, 0);
+    EXPECT_GT(b.n, 0);
+    EXPECT_NEAR(
+        combinedSigma(b),
+        std::sqrt(b.edges * b.edges + b.scale * b.scale + b.reduction * b.reduction + b.n * b.n + b.model * b.model),
+        1e-15);
+    s.tolerances.n = 0.02;
+    const MuFunction F2(s, model);
+    EXPECT_NEAR(budgetOf(F2, model, s, 0.5, 0.5, sr, 0.003, 0).n / b.n, 2.0, 0.2) << "n's part scales with its σ";
+}
+
+TEST(Status, OkWhenNothingIsFlaggedAndTheBudgetMeetsTheTolerance)
+{
+    SpecimenSpec s = spec();
+    Reading r;
+    r.mu = 0.15, r.muSigma = 0.002;
+    r.budget.edges = 0.002;
+    decideStatus(s, 0, &r);
+    EXPECT_EQ(r.status, Status::Ok);
+    EXPECT_NEAR(r.toleranceMu, 0.01, 1e-12);
+    decideStatus(s, kFlagBlurred, &r);
+    EXPECT_EQ(r.status, Status::Warn);
+    r.muSigma = 0.008, r.budget.model = 0.007;
+    decideStatus(s, 0, &r);
+    EXPECT_EQ(r.status, Status::Warn);
+    EXPECT_EQ(r.flags, uint32_t(kFlagModelUncertain)) << "the leading component is named";
+}
+
+} // namespace
+} // namespace icacam::reading

@@ -1,0 +1,118 @@
+// The interpretation on measured faces built from the FE's own radii: what a silhouette that
+// reads small is taken for, in a straight view and in an oblique one.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "friction/friction_models.h"
+#include "friction/radii_consistency.h"
+#include "reading/interpretation.h"
+
+namespace icacam::reading {
+using namespace icacam::friction;
+using vision::BoundaryFit;
+using vision::EndFaceGeometry;
+namespace {
+
+constexpr double kN = 0.25, kMu = 0.15, kMmPerPx = 0.02;
+
+// A face at 50 % reduction as the pipeline would hand it over, the silhouette scaled by
+// rMaxFactor; an oblique view gives both boundaries the same ellipse.
+EndFaceGeometry face(double rMaxFactor, bool oblique, double n = kN, double mu = kMu)
+{
+    double ri = 0, ro = 0, rm = 0;
+    EXPECT_TRUE(feRadiusAt(FeRadius::Inner, n, mu, 0.5, &ri));
+    EXPECT_TRUE(feRadiusAt(FeRadius::Outer, n, mu, 0.5, &ro));
+    EXPECT_TRUE(feRadiusAt(FeRadius::Max, n, mu, 0.5, &rm));
+    EndFaceGeometry m;
+    m.error = ErrorCode::None;
+    for (BoundaryFit *b : {&m.inner, &m.outer}) {
+        b->coverage = 1;
+        b->contrast = 40;
+        b->rEqSigmaPx = 0.05;
+        b->scatterPx = 0.3;
+        b->ellipticity = oblique ? 0.03 : 0;
+        b->axisDeg = 30;
+    }
+    m.inner.rEqPx = ri / kMmPerPx;
+    m.outer.rEqPx = ro / kMmPerPx;
+    m.rMaxPx = rm * rMaxFactor / kMmPerPx;
+    m.silhouetteCoverage = 1;
+    m.edgeWidthPx = 1;
+    return m;
+}
+
+Reading interpret(const EndFaceGeometry &g, double n = kN)
+{
+    SpecimenSpec spec;
+    spec.n = n;
+    spec.mmPerPx = kMmPerPx;
+    return reading::interpret(g, spec, nullptr, *frictionModel(kDefaultModel));
+}
+
+TEST(Interpretation, SilhouetteAtItsSizeKeepsTheNominalHalfHeight)
+{
+    const Reading m = interpret(face(1.0, false));
+    ASSERT_NE(m.status, Status::Error);
+    EXPECT_NEAR(m.reduction, 0.5, 0.003);
+    EXPECT_LT(m.reductionSigma, 0.01);
+}
+
+// Seen obliquely from a finite distance, the barrel's widest section (half-way down) reads
+// small against the end face's scale: the reading keeps the nominal height rather than
+// carrying u to a reduction the view alone explains. Seen straight on, the same silhouette
+// means another height (or scale) and moves the reduction.
+TEST(Interpretation, SmallSilhouetteInAnObliqueViewIsForeshortening)
+{
+    const Reading straight = interpret(face(0.95, false));
+    const Reading oblique = interpret(face(0.95, true));
+    ASSERT_TRUE(oblique.flags & kFlagElliptical);
+    ASSERT_FALSE(straight.flags & kFlagElliptical);
+    EXPECT_GT(std::fabs(straight.reduction - 0.5), 0.01);
+    EXPECT_LT(std::fabs(oblique.reduction - 0.5), 0.5 * std::fabs(straight.reduction - 0.5));
+    EXPECT_LT(std::fabs(oblique.scaleFactor - 1), 0.5 * std::fabs(straight.scaleFactor - 1))
+        << "foreshortening leaves u's scale alone";
+    EXPECT_TRUE(straight.flags & kFlagScaleSuspect);
+    EXPECT_FALSE(oblique.flags & kFlagScaleSuspect) << "the view, not the scale, is named";
+}
+
+// A silhouette is as good as its rays agree. Where a highlight band merges into the outline
+// on some rays, their points scatter about the fit by a few per cent and the radius may read
+// short by as much: such a silhouette tells the reduction less, and contradicts no scale.
+// The same radius from rays that agree to 0.1 % is a contradiction.
+TEST(Interpretation, ASilhouetteIsTrustedAsFarAsItsRaysAgree)
+{
+    EndFaceGeometry tight = face(0.975, false), scattered = face(0.975, false);
+    tight.silhouetteScatterPx = 0.001 * tight.rMaxPx;
+    scattered.silhouetteScatterPx = 0.02 * scattered.rMaxPx;
+    const Reading t = interpret(tight), s = interpret(scattered);
+    ASSERT_NE(t.status, Status::Error);
+    ASSERT_NE(s.status, Status::Error);
+    EXPECT_LT(t.reductionSigma, s.reductionSigma);
+    EXPECT_LT(std::fabs(s.reduction - 0.5), std::fabs(t.reduction - 0.5));
+    EXPECT_TRUE(t.flags & kFlagScaleSuspect);
+    EXPECT_FALSE(s.flags & kFlagScaleSuspect);
+    EXPECT_GT(std::fabs(t.rMaxZ), 2 * std::fabs(s.rMaxZ)) << "z is measured against each one's own σ";
+}
+
+// A silhouette taken on a wrong edge, a ridge on the barrel just outside the contact edge,
+// agrees along the rays like the outline itself. On a wide barrel band (n 0.1, μ 0.25: R_max
+// 19 % beyond R_o) it reads 15 % short; taken for a scale error alone it would rescale u by
+// as much, with a σ from the scale's prior that does not reach the truth. The wrong-edge
+// explanation keeps the reading's σ over what the right silhouette reads.
+TEST(Interpretation, ASilhouetteOnAWrongEdgeDoesNotRescaleTheRingUnseen)
+{
+    constexpr double n = 0.1, mu = 0.25;
+    EndFaceGeometry right = face(1.0, false, n, mu), wrong = face(1.0, false, n, mu);
+    wrong.rMaxPx = 1.03 * wrong.outer.rEqPx;
+    for (EndFaceGeometry *m : {&right, &wrong}) m->silhouetteScatterPx = 0.002 * m->rMaxPx;
+    const Reading r = interpret(right, n), w = interpret(wrong, n);
+    ASSERT_NE(w.status, Status::Error);
+    ASSERT_FALSE(r.flags & kFlagScaleSuspect);
+    EXPECT_EQ(w.status, Status::Warn);
+    EXPECT_TRUE(w.flags & kFlagScaleSuspect);
+    EXPECT_LT(std::fabs(w.mu - r.mu), 2 * w.muSigma) << "μ " << w.mu << " ± " << w.muSigma << " against " << r.mu;
+}
+
+} // namespace
+} // namespace icacam::reading

@@ -1,0 +1,82 @@
+#pragma once
+// What the image half of a measurement returns: the end face's boundaries and silhouette in
+// pixels, and the conditions the image shows (PRODUCT.md §4: the seam between measuring the
+// end face and interpreting it).
+#include <cstdint>
+
+#include "vision/error.h"
+#include "vision/fixed_point.h"
+
+namespace icacam::vision {
+
+// One located edge point on a ray, in pixel coordinates (Q16.16).
+struct EdgeSample {
+    Q16_16 x, y;
+    Q16_16 radius;    // from the pipeline's centre
+    int32_t strength; // |derivative| in 1/256 grey levels per px (scaled)
+    bool valid;
+};
+
+// A fitted closed boundary: r(θ) about the centre, a truncated Fourier series.
+struct BoundaryFit {
+    static constexpr int kMaxHarmonics = 8;
+    int harmonics = 0;
+    double a0 = 0;
+    double a[kMaxHarmonics + 1] = {};
+    double b[kMaxHarmonics + 1] = {};
+    double rEqPx = 0;      // sqrt(area / π) of the closed curve
+    double rEqSigmaPx = 0; // standard error of rEq from the residual scatter
+    double scatterPx = 0;  // robust RMS of the edge points about the curve
+    double coverage = 0;   // fraction of rays with an accepted edge point
+    double contrast = 0;   // median step height across the edge, grey levels (signed)
+    // 1 - b/a of the curve's second harmonic and the long axis's direction, in the image.
+    double ellipticity = 0;
+    double axisDeg = 0;
+    double centreX = 0, centreY = 0; // centre of the curve (first harmonic), pixels
+    int used = 0;                    // edge points kept by the robust fit
+
+    double radiusAt(double theta) const;
+    double radiusAt(double cosTheta, double sinTheta) const; // same, trig precomputed
+};
+
+// What the image alone says about the view, beyond the geometry: conditions a reading must
+// carry whatever it is interpreted with.
+enum ImageFlag : uint32_t {
+    kImageSpecimenClipped = 1u << 0, // the specimen runs off the frame
+    kImageNarrowRingFit = 1u << 1,   // the ring was measured by the narrow-ring profile fit
+};
+
+// Where the pipeline looks: the specimen's initial diameter and the scale at the end face
+// (a hint: it sizes the search, the reading's scale comes from the instrument).
+struct FaceSearch {
+    double d0Mm = 10;
+    double mmPerPx = 0;
+};
+
+// The end face as the image shows it, in pixels: the specimen's centre, the two boundaries'
+// fits, the barrel's silhouette, the contact edge's blur and the clipped share. No scale, no
+// specimen, no model: the reading interprets it (reading/interpretation.h).
+struct EndFaceGeometry {
+    ErrorCode error = ErrorCode::NotConfigured;
+    uint32_t imageFlags = 0; // ImageFlag bits
+
+    double centreX = 0, centreY = 0; // pipeline centre (pixels)
+    BoundaryFit inner, outer;
+    double rMaxPx = 0;      // barrel silhouette radius (equivalent circle); 0 if not found
+    double edgeWidthPx = 0; // blur of the contact edge (Gaussian σ estimate)
+    double saturatedFraction = 0;
+    // The silhouette's per-ray fit: coverage and the points' robust RMS about it (0 when only
+    // the mean profile named it).
+    double silhouetteCoverage = 0;
+    double silhouetteScatterPx = 0;
+
+    // Edge points of each boundary (one per ray, valid or not) for overlays and tests; they
+    // stay valid until the analyzer's next measure().
+    const EdgeSample *innerPoints = nullptr;
+    const EdgeSample *outerPoints = nullptr;
+    int rayCount = 0;
+
+    bool found() const { return error == ErrorCode::None; }
+};
+
+} // namespace icacam::vision
