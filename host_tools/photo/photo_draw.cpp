@@ -5,8 +5,10 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "friction/paper_model.h"
 #include "friction/radii_consistency.h"
 #include "friction/reduction_corrected_model.h"
+#include "host_tools/model_inverse.h"
 #include "host_tools/photo/photo_record.h"
 #include "host_tools/synth_command.h"
 
@@ -184,7 +186,7 @@ PhotoRecord drawRecord(PhotoCondition cond, FaceProfile profile, std::mt19937 &r
     for (;;) {
         rec.n = uniform(rng, 0.05, 0.5), rec.mu50 = uniform(rng, 0.06, 0.29), rec.kMpa = uniform(rng, 250, 1250);
         rec.reduction = cond == PhotoCondition::Reduction ? uniform(rng, 0.45, 0.55) : 0.5;
-        const double u50 = uForMu(rec.mu50, rec.n);
+        const double u50 = uForMu(friction::PaperModel(), rec.mu50, rec.n);
         rec.uMm = u50 + friction::ReductionCorrectedModel::slopeAt(rec.n, rec.mu50) * (rec.reduction - 0.5);
         if (!friction::feRadiusAt(friction::FeRadius::Outer, rec.n, rec.mu50, rec.reduction, &s.rOuterMm) ||
             !friction::feRMaxAt(rec.n, rec.mu50, rec.reduction, &s.rMaxMm) || rec.uMm < 0.02)
