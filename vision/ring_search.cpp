@@ -238,7 +238,9 @@ bool RingSearch::outlineRivalled(double rMaxPx) const
     // The fixture's shadow around the foot is a second step of the outline's sign outside
     // it (lit fixture beyond a dark shadow beyond a dark barrel): where the mean profile
     // shows one at least half as strong within a third of R0, the step taken for the
-    // outline could be either.
+    // outline could be either. The outline's own step is the strongest within the
+    // derivative's reach of it (which may be a highlight's flank just inside); a rival lies
+    // beyond that reach of the outline itself, so that the outline's own step is not one.
     const double rA = kCoarseStart * r0, step = coarseStep(r0);
     const int count = std::min(kMaxCoarse, int((kCoarseEnd * r0 - rA) / step));
     const int at = int((rMaxPx - rA) / step + 0.5);
@@ -249,7 +251,7 @@ bool RingSearch::outlineRivalled(double rMaxPx) const
     const int32_t outline = meanDeriv[k];
     if (outline == 0) return false;
     const int end = std::min(count - 3, int((rMaxPx + r0 / 3 - rA) / step));
-    for (int j = k + 3; j <= end; ++j)
+    for (int j = std::max(k, at) + 3; j <= end; ++j)
         if (isExtremum(meanDeriv, j) && (meanDeriv[j] > 0) == (outline > 0) &&
             2 * std::abs(meanDeriv[j]) >= std::abs(outline))
             return true;
