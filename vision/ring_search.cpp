@@ -213,9 +213,16 @@ RingSearch::MeanEdges RingSearch::meanProfileEdges()
     }
     if (!e.found) return e;
     // How far the contact edge may be searched for on either side before another of the
-    // profile's edges (the original face's, the barrel's) is nearer: half way to each.
+    // profile's edges of its sign (the original face's, the barrel's) is nearer: half way to
+    // each. An edge of the other sign cannot be taken for it, and a tilted view needs the
+    // room (the contact edge is not concentric with the coarse rays there); nor is an edge
+    // whose flank spans the contact edge another one (a tilted view smears the contact
+    // edge's step over many samples, with more than one extremum on it).
+    const double at = (e.rOuter - rA) / step;
     for (int k = 0; k < edges.count; ++k) {
-        const double r = radiusOf(edges.edge[k].index);
+        const ProfileEdge &o = edges.edge[k];
+        if (o.sign != e.signOuter || (o.flankLo <= at && at <= o.flankHi)) continue;
+        const double r = radiusOf(o.index);
         if (r < e.rOuter - 1.5 * step)
             e.reachInPx = 0.5 * (e.rOuter - r);
         else if (r > e.rOuter + 1.5 * step && e.reachOutPx == 0)
