@@ -237,13 +237,17 @@ int runDevice(const fw::Config &cfg)
         std::fprintf(stderr, "icacam-fw: systemd: %s\n", e.message.c_str());
     std::string missing = parts.missingNames() + (device.camera().ok() ? "" : " camera");
     (void)systemd.status(missing.empty() ? "idle" : "missing: " + missing);
+    int64_t nextStatusMs = 0;
     while (!gStop) {
         device.tick();
         systemd.keepAlive(clock.monotonicMs());
-        // `systemctl status` names what is missing, when that changes.
-        if (std::string now = parts.missingNames() + (device.camera().ok() ? "" : " camera"); now != missing) {
-            missing = now;
-            (void)systemd.status(missing.empty() ? "idle" : "missing: " + missing);
+        // `systemctl status` names what is missing, when that changes (looked at once a second).
+        if (const int64_t now = clock.monotonicMs(); now >= nextStatusMs) {
+            nextStatusMs = now + 1000;
+            if (std::string names = parts.missingNames() + (device.camera().ok() ? "" : " camera"); names != missing) {
+                missing = names;
+                (void)systemd.status(missing.empty() ? "idle" : "missing: " + missing);
+            }
         }
         clock.sleepMs(5);
     }

@@ -21,6 +21,7 @@
 #include "hal/file/file_led.h"
 #include "hal/file/file_trigger.h"
 #include "hal/file/folder_storage.h"
+#include "hal/file/scripted_light.h"
 #include "host_tools/loop/journal_records.h"
 #include "host_tools/loop/loop_command.h"
 #include "host_tools/manifest.h"
@@ -79,9 +80,10 @@ int labSession(const fs::path &dir, LoopEffect effect, uint32_t seed, int count)
     EXPECT_TRUE(readManifest(manifestPath, &set, &err)) << err;
 
     hal::ManualClock clock;
-    hal::FileCamera camera(clock, hal::FileCameraOptions{(dir / "set" / "images").string(), 1, false, 0});
+    hal::ScriptedLight light{clock}; // the file LED lights the file camera's frames
+    hal::FileCamera camera(clock, hal::FileCameraOptions{(dir / "set" / "images").string(), 1, false, 0, {}, &light});
     hal::FileTrigger trigger{clock};
-    hal::FileLed led{clock};
+    hal::FileLed led{clock, &light};
     NullDisplay display;
     test::RecordingSerial serial;
     hal::FolderStorage storage;
