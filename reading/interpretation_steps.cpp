@@ -51,6 +51,14 @@ constexpr double kForeshortenMean = -0.05, kForeshortenSigma = 0.04;
 // outline than kMisreadMinInside the rays' scatter measures what a highlight does.
 constexpr double kMisreadPrior = 0.02;
 constexpr double kMisreadMinInside = 0.03;
+// An explanation of the silhouette with less weight than this is not held against the
+// reading by the nominal conditions' check (one in twenty).
+constexpr double kPlausibleWeight = 0.05;
+// The undeclared reduction's range (the test to half height, 45–55 %).
+constexpr double kUndeclaredReductionLo = 0.45, kUndeclaredReductionHi = 0.55;
+// What the advice proposes: a final height measured with a micrometer, a scale measured on
+// the end-face plane with a reference disc, n fitted over the test's own strain range.
+constexpr double kAdvisedHFinalTolMm = 0.01, kAdvisedScaleRel = 0.001, kAdvisedNTol = 0.003;
 // The edge model's own error, beyond the fits' scatter: against the drawn boundaries of the
 // development set's photographs the pipeline's R_i lies 0.005 mm (1 σ) off the truth's
 // equivalent radius and R_o 0.001 mm (a ragged texture boundary, not a step, on the inside).
@@ -92,55 +100,54 @@ ScaleAndReduction declaredPosterior(ScaleAndReduction sr, const SilhouetteObserv
 // (kNominalReductionSigma, kForeshortenMean), and a wrong edge (kMisreadPrior): each one's
 // posterior, weighted by its prior and how well it predicts d, and their mixture's moments.
 ScaleAndReduction mixturePosterior(const ScaleAndReduction &declared, const SilhouetteObservation &o, double se2,
-                                   uint32_t *flags)
+                                   uint32_t *flags, Explanations *why)
 {
-    constexpr int kExplanations = 5;
-    constexpr int kMisread = 4;
+    using E = Explanations;
     const double d = o.d, beta = o.beta;
-    ScaleAndReduction prior[kExplanations];
-    prior[0] = declared;                               // pressed to another height
-    prior[1].pk = kGrossScaleSigma * kGrossScaleSigma; // half height, a scale off
-    prior[1].pr = kNominalReductionSigma * kNominalReductionSigma;
-    prior[2].pk = declared.pk; // half height, scale as declared
-    prior[2].pr = kNominalReductionSigma * kNominalReductionSigma;
-    prior[3] = prior[2];        // half height, scale as declared, the silhouette foreshortened
-    prior[kMisread] = declared; // a wrong edge: the silhouette tells nothing
-    const double offset[kExplanations] = {0, 0, 0, kForeshortenMean, 0};
-    const double offsetVar[kExplanations] = {0, 0, 0, kForeshortenSigma * kForeshortenSigma, 0};
+    ScaleAndReduction prior[E::kCount];
+    prior[E::OtherHeight] = declared;
+    prior[E::ScaleOff].pk = kGrossScaleSigma * kGrossScaleSigma;
+    prior[E::ScaleOff].pr = kNominalReductionSigma * kNominalReductionSigma;
+    prior[E::Nominal].pk = declared.pk;
+    prior[E::Nominal].pr = kNominalReductionSigma * kNominalReductionSigma;
+    prior[E::Foreshortened] = prior[E::Nominal];
+    prior[E::WrongEdge] = declared; // the silhouette tells nothing
+    const double offset[E::kCount] = {0, 0, 0, kForeshortenMean, 0};
+    const double offsetVar[E::kCount] = {0, 0, 0, kForeshortenSigma * kForeshortenSigma, 0};
     const bool oblique = (*flags & (kFlagElliptical | kFlagCentreOffset)) != 0;
     const double gaussianPrior = (1.0 - kMisreadPrior) / (oblique ? 4 : 3);
-    ScaleAndReduction post[kExplanations];
-    double w[kExplanations], wSum = 0;
-    for (int h = 0; h < kMisread; ++h) {
+    E e;
+    double wSum = 0;
+    for (int h = 0; h < E::WrongEdge; ++h) {
         const double S = prior[h].pk + beta * beta * prior[h].pr + se2 + offsetVar[h];
         const double v = d - offset[h];
         // Densities up to the common 1/√(2π).
-        w[h] = h != 3 || oblique ? gaussianPrior * std::exp(-0.5 * v * v / S) / std::sqrt(S) : 0.0;
-        wSum += w[h];
-        post[h] = update(prior[h], d, beta, se2, offset[h], offsetVar[h]);
+        e.weight[h] =
+            h != E::Foreshortened || oblique ? gaussianPrior * std::exp(-0.5 * v * v / S) / std::sqrt(S) : 0.0;
+        wSum += e.weight[h];
+        e.post[h] = update(prior[h], d, beta, se2, offset[h], offsetVar[h]);
     }
     const double misreadSpan = -kMisreadMinInside - o.dContact;
     const bool misreadPossible = misreadSpan > 0 && d >= o.dContact && d <= -kMisreadMinInside;
-    w[kMisread] = misreadPossible ? kMisreadPrior * std::sqrt(2 * std::numbers::pi) / misreadSpan : 0.0;
-    wSum += w[kMisread];
-    post[kMisread] = prior[kMisread];
+    e.weight[E::WrongEdge] = misreadPossible ? kMisreadPrior * std::sqrt(2 * std::numbers::pi) / misreadSpan : 0.0;
+    wSum += e.weight[E::WrongEdge];
+    e.post[E::WrongEdge] = prior[E::WrongEdge];
     ScaleAndReduction sr;
-    for (int h = 0; h < kExplanations; ++h) {
-        w[h] = wSum > 0 ? w[h] / wSum : 1.0 / kExplanations;
-        sr.dk += w[h] * post[h].dk;
-        sr.dr += w[h] * post[h].dr;
+    for (int h = 0; h < E::kCount; ++h) {
+        e.weight[h] = wSum > 0 ? e.weight[h] / wSum : 1.0 / int(E::kCount);
+        sr.dk += e.weight[h] * e.post[h].dk;
+        sr.dr += e.weight[h] * e.post[h].dr;
     }
-    // A discrepancy the view's foreshortening explains best is not the scale's: the
-    // elliptical or centre_offset flag names its cause.
-    if (oblique && w[3] >= std::max({w[0], w[1], w[2]})) *flags &= ~uint32_t(kFlagScaleSuspect);
     // A silhouette more likely a wrong edge than the barrel's outline is not relied on.
-    if (w[kMisread] >= std::max({w[0], w[1], w[2], w[3]})) *flags |= kFlagSilhouetteUnreliable;
-    for (int h = 0; h < kExplanations; ++h) {
-        const double gk = post[h].dk - sr.dk, gr = post[h].dr - sr.dr;
-        sr.pk += w[h] * (post[h].pk + gk * gk);
-        sr.pr += w[h] * (post[h].pr + gr * gr);
-        sr.pkr += w[h] * (post[h].pkr + gk * gr);
+    if (e.weight[E::WrongEdge] >= *std::max_element(e.weight, e.weight + E::WrongEdge))
+        *flags |= kFlagSilhouetteUnreliable;
+    for (int h = 0; h < E::kCount; ++h) {
+        const double gk = e.post[h].dk - sr.dk, gr = e.post[h].dr - sr.dr;
+        sr.pk += e.weight[h] * (e.post[h].pk + gk * gk);
+        sr.pr += e.weight[h] * (e.post[h].pr + gr * gr);
+        sr.pkr += e.weight[h] * (e.post[h].pkr + gk * gr);
     }
+    if (why) *why = e;
     return sr;
 }
 
@@ -267,7 +274,9 @@ SilhouetteObservation observeSilhouette(const FaceInMm &face, double coverage, d
         friction::checkRadii(face.rMaxMm, n, mu0, spec.d0Mm, r.r, spec.h0Mm, true, o.measuredRelSigma);
     o.rMaxZ = rc.z;
     o.reductionEst = rc.reductionEst;
-    if (rc.inconsistent()) o.flags |= r.declared ? kFlagRadiiInconsistent : kFlagScaleSuspect;
+    // Without a declared final height a discrepancy is weighed by its explanations, and
+    // judged by what they do to μ (nominalCheck).
+    if (rc.inconsistent() && r.declared) o.flags |= kFlagRadiiInconsistent;
     const friction::RadiiCheck up = friction::checkRadii(face.rMaxMm, n, mu0, spec.d0Mm, r.r + 0.01, spec.h0Mm, false);
     const friction::RadiiCheck down =
         friction::checkRadii(face.rMaxMm, n, mu0, spec.d0Mm, r.r - 0.01, spec.h0Mm, false);
@@ -285,10 +294,34 @@ SilhouetteObservation observeSilhouette(const FaceInMm &face, double coverage, d
 }
 
 ScaleAndReduction silhouettePosterior(const ScaleAndReduction &prior, const SilhouetteObservation &obs,
-                                      double silhouetteRelSigma, bool declared, uint32_t *flags)
+                                      double silhouetteRelSigma, bool declared, uint32_t *flags, Explanations *why)
 {
     const double se2 = silhouetteRelSigma * silhouetteRelSigma;
-    return declared ? declaredPosterior(prior, obs, se2) : mixturePosterior(prior, obs, se2, flags);
+    return declared ? declaredPosterior(prior, obs, se2) : mixturePosterior(prior, obs, se2, flags, why);
+}
+
+uint32_t nominalCheck(const MuFunction &F, const SpecimenSpec &spec, double u, double mu, const Explanations *why,
+                      double *nominalMu)
+{
+    using E = Explanations;
+    const double n = spec.n, tol = spec.tolerance.at(std::fabs(mu));
+    *nominalMu = F.at(u, kNominalReduction, n);
+    if (!why) {
+        // Nothing in the image speaks for the nominal height: the undeclared range is the finding.
+        const double lo = F.at(u, kUndeclaredReductionLo, n), hi = F.at(u, kUndeclaredReductionHi, n);
+        return std::max(std::fabs(lo - mu), std::fabs(hi - mu)) > tol ? uint32_t(kFlagReductionNotNominal) : 0u;
+    }
+    double worst = std::fabs(*nominalMu - mu);
+    int lead = -1; // the weightiest explanation other than the nominal height
+    for (int h = 0; h < E::kCount; ++h) {
+        if (why->weight[h] < kPlausibleWeight) continue;
+        const ScaleAndReduction &p = why->post[h];
+        worst = std::max(worst, std::fabs(F.at(u * std::exp(-p.dk), kNominalReduction + p.dr, n) - mu));
+        const bool nominal = h == E::Nominal || h == E::Foreshortened || h == E::WrongEdge;
+        if (!nominal && (lead < 0 || why->weight[h] > why->weight[lead])) lead = h;
+    }
+    if (worst <= tol) return 0;
+    return lead == E::ScaleOff ? uint32_t(kFlagScaleSuspect) : uint32_t(kFlagReductionNotNominal);
 }
 
 MuReading readMu(const MuFunction &F, const FrictionModel &model, const SpecimenSpec &spec, double uMm, double r,
@@ -354,16 +387,61 @@ uint32_t rangeChecks(const FrictionModel &model, const MuReading &m, const Assum
     return f;
 }
 
+Advice adviseInput(const MuFunction &F, const FrictionModel &model, const SpecimenSpec &spec, double uF, double rF,
+                   const ScaleAndReduction &sr, double uSigmaEdgesMm, double bias, bool declared, bool calibrated,
+                   double scaleRelSigma)
+{
+    const double k = spec.tolerance.coverage;
+    auto expandedWith = [&](const ScaleAndReduction &what) {
+        return k * combinedSigma(budgetOf(F, model, spec, uF, rF, what, uSigmaEdgesMm, bias));
+    };
+    const UncertaintyBudget now = budgetOf(F, model, spec, uF, rF, sr, uSigmaEdgesMm, bias);
+    Advice a;
+    a.uNow = a.uThen = k * combinedSigma(now);
+    auto consider = [&](AdviceInput input, double value, double u) {
+        if (u < a.uThen) a.input = input, a.value = value, a.uThen = u;
+    };
+    const double declaredScaleVar = scaleRelSigma * scaleRelSigma;
+    // A final height declared with the default tolerance: the reduction known to it, and the
+    // scale no longer weighed against the silhouette's other explanations.
+    ScaleAndReduction hFinal;
+    const double hTol = spec.tolerances.hFinalMm / spec.h0Mm;
+    hFinal.pk = declaredScaleVar, hFinal.pr = hTol * hTol;
+    if (!declared) consider(AdviceInput::HFinal, 0, expandedWith(hFinal));
+    // A final height measured to a micrometer's 0.01 mm.
+    if (declared && spec.tolerances.hFinalMm > kAdvisedHFinalTolMm) {
+        ScaleAndReduction closer = sr;
+        const double t = kAdvisedHFinalTolMm / spec.h0Mm;
+        closer.pr = std::min(sr.pr, t * t), closer.pkr = 0;
+        consider(AdviceInput::HFinalTol, kAdvisedHFinalTolMm, expandedWith(closer));
+    }
+    // A scale measured on the end-face plane to 0.1 %.
+    if (!calibrated && spec.tolerances.scaleRel > kAdvisedScaleRel) {
+        ScaleAndReduction closer = sr;
+        closer.pk = std::max(0.0, sr.pk - declaredScaleVar) + kAdvisedScaleRel * kAdvisedScaleRel;
+        consider(AdviceInput::ScaleTol, kAdvisedScaleRel, expandedWith(closer));
+    }
+    // n from a flow curve fitted over the test's own strain range.
+    if (spec.tolerances.n > kAdvisedNTol) {
+        SpecimenSpec closer = spec;
+        closer.tolerances.n = kAdvisedNTol;
+        const MuFunction G(closer, model);
+        const double u = k * combinedSigma(budgetOf(G, model, closer, uF, rF, sr, uSigmaEdgesMm, bias));
+        consider(AdviceInput::NTol, kAdvisedNTol, u);
+    }
+    // Worth a line only where it shrinks U by a tenth.
+    if (a.uThen > 0.9 * a.uNow) {
+        a.input = AdviceInput::None, a.value = 0, a.uThen = a.uNow;
+        a.modelLeads = now.model >= now.edges;
+    }
+    return a;
+}
+
 void decideStatus(const SpecimenSpec &spec, uint32_t f, Reading *out)
 {
     out->toleranceMu = spec.tolerance.at(std::fabs(out->mu));
-    if (spec.tolerance.coverage * out->muSigma > out->toleranceMu) {
-        const UncertaintyBudget &b = out->budget;
-        const double parts[5] = {b.edges, b.scale, b.reduction, b.n, b.model};
-        const uint32_t names[5] = {kFlagEdgesUncertain, kFlagScaleUncertain, kFlagReductionUncertain, kFlagNUncertain,
-                                   kFlagModelUncertain};
-        f |= names[std::max_element(parts, parts + 5) - parts];
-    }
+    out->coverage = spec.tolerance.coverage;
+    out->decision = out->expanded() <= out->toleranceMu ? Decision::Within : Decision::Beyond;
     out->flags = f;
     out->status = f ? Status::Warn : Status::Ok;
     out->error = ErrorCode::None;
