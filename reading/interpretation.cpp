@@ -55,7 +55,9 @@ void readFace(const SpecimenSpec &spec, const friction::FrictionModel &model, co
     const ModelEstimate asDeclared = model.estimate({u, n, spec.kMpa, spec.d0Mm, spec.h0Mm, spec.hFinalMm});
     out->declared = {asDeclared.mu, asDeclared.dMuDu};
     out->nominalMu = F.at(u, kNominalReduction, n);
-    if (!assumed.declared) f |= nominalCheck(F, spec, u, out->mu, explained ? &why : nullptr, &out->nominalMu);
+    // A silhouette found unusable is a finding of its own (silhouette_unreliable, no_silhouette).
+    if (!assumed.declared && (explained || !silhouette))
+        f |= nominalCheck(F, spec, u, out->mu, explained ? &why : nullptr, &out->nominalMu);
     decideStatus(spec, f | rangeChecks(model, read, assumed), out);
 }
 

@@ -51,8 +51,10 @@ constexpr double kForeshortenMean = -0.05, kForeshortenSigma = 0.04;
 // outline than kMisreadMinInside the rays' scatter measures what a highlight does.
 constexpr double kMisreadPrior = 0.02;
 constexpr double kMisreadMinInside = 0.03;
-// An explanation of the silhouette with less weight than this is not held against the
-// reading by the nominal conditions' check (one in twenty).
+// The nominal conditions' check: a reading is ok while the silhouette's explanations leave
+// less than a 15 % chance that μ lies beyond the tolerance (and the finding names the
+// weightiest explanation other than the nominal height with at least 5 % of the weight).
+constexpr double kWrongRisk = 0.15;
 constexpr double kPlausibleWeight = 0.05;
 // The undeclared reduction's range (the test to half height, 45–55 %).
 constexpr double kUndeclaredReductionLo = 0.45, kUndeclaredReductionHi = 0.55;
@@ -309,18 +311,32 @@ uint32_t nominalCheck(const MuFunction &F, const SpecimenSpec &spec, double u, d
     if (!why) {
         // Nothing in the image speaks for the nominal height: the undeclared range is the finding.
         const double lo = F.at(u, kUndeclaredReductionLo, n), hi = F.at(u, kUndeclaredReductionHi, n);
-        return std::max(std::fabs(lo - mu), std::fabs(hi - mu)) > tol ? uint32_t(kFlagReductionNotNominal) : 0u;
+        return std::max(std::fabs(lo - mu), std::fabs(hi - mu)) > tol ? uint32_t(kFlagReductionUnchecked) : 0u;
     }
-    double worst = std::fabs(*nominalMu - mu);
+    // The chance that μ lies beyond the tolerance from the reading: under each explanation μ
+    // is Gaussian about its own value, with the spread its posterior of scale and reduction
+    // leaves (the declared inputs' other parts are U's, not the check's).
+    double risk = 0;
     int lead = -1; // the weightiest explanation other than the nominal height
     for (int h = 0; h < E::kCount; ++h) {
-        if (why->weight[h] < kPlausibleWeight) continue;
+        if (why->weight[h] <= 0) continue;
         const ScaleAndReduction &p = why->post[h];
-        worst = std::max(worst, std::fabs(F.at(u * std::exp(-p.dk), kNominalReduction + p.dr, n) - mu));
+        const double uh = u * std::exp(-p.dk), rh = kNominalReduction + p.dr;
+        const double muH = F.at(uh, rh, n);
+        const double hu = std::max(1e-4, 0.01 * uh), hr = 0.005;
+        const double a = -uh * (F.at(uh + hu, rh, n) - F.at(uh - hu, rh, n)) / (2 * hu);
+        const double g = (F.at(uh, rh + hr, n) - F.at(uh, rh - hr, n)) / (2 * hr);
+        const double s = std::sqrt(std::max(1e-12, a * a * p.pk + g * g * p.pr + 2 * a * g * p.pkr));
+        const double off = std::fabs(muH - mu);
+        risk += why->weight[h] * 0.5 * (std::erfc((tol - off) / (s * std::numbers::sqrt2)) +
+                                        std::erfc((tol + off) / (s * std::numbers::sqrt2)));
         const bool nominal = h == E::Nominal || h == E::Foreshortened || h == E::WrongEdge;
-        if (!nominal && (lead < 0 || why->weight[h] > why->weight[lead])) lead = h;
+        if (!nominal && why->weight[h] >= kPlausibleWeight && (lead < 0 || why->weight[h] > why->weight[lead]))
+            lead = h;
     }
-    if (worst <= tol) return 0;
+    // The image says another height (or scale) than the nominal, by enough to move μ.
+    const bool moved = std::fabs(*nominalMu - mu) > tol;
+    if (!moved && risk <= kWrongRisk) return 0;
     return lead == E::ScaleOff ? uint32_t(kFlagScaleSuspect) : uint32_t(kFlagReductionNotNominal);
 }
 

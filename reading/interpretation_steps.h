@@ -109,8 +109,9 @@ ScaleAndReduction silhouettePosterior(const ScaleAndReduction &prior, const Silh
 // nominal half height with the declared scale, and under every explanation of the silhouette
 // that keeps some weight, against the reading's μ. Any of them beyond the tolerance is a
 // finding: reduction_not_nominal, or scale_suspect where a scale off explains the silhouette
-// best. why == nullptr (no usable silhouette): the undeclared reduction's whole range
-// (45–55 %) is what is held against the reading. *nominalMu: μ at the nominal conditions.
+// best. why == nullptr (no silhouette to observe, as through a calibration): the undeclared
+// reduction's whole range (45–55 %) is held against the reading (reduction_unchecked).
+// *nominalMu: μ at the nominal conditions.
 uint32_t nominalCheck(const MuFunction &F, const SpecimenSpec &spec, double uDeclaredMm, double mu,
                       const Explanations *why, double *nominalMu);
 

@@ -40,8 +40,11 @@ enum ReadingFlag : uint32_t {
     // No final height given, and the silhouette says the specimen was pressed to another
     // height than the test's nominal half by enough to move μ beyond the tolerance.
     kFlagReductionNotNominal = 1u << 20,
+    // No final height given, nothing in the image checks the nominal half height (a
+    // calibrated view), and 45–55 % moves μ beyond the tolerance.
+    kFlagReductionUnchecked = 1u << 21,
 };
-constexpr int kFlagCount = 21;
+constexpr int kFlagCount = 22;
 const char *flagName(int bit);
 
 // The expanded uncertainty U = k·σ_μ against the lab's tolerance on μ (a decision rule in the

@@ -105,6 +105,7 @@ const char *findingWords(int bit)
         "the specimen's H0/D0 lies outside what the model covers",
         "the silhouette does not fit the barrel's shape: declare h_final_mm",
         "the specimen was not pressed to half height: declare h_final_mm",
+        "no final height, and 45-55 % moves mu beyond the tolerance: declare h_final_mm",
     };
     return bit >= 0 && bit < kFlagCount ? kWords[bit] : "check";
 }
