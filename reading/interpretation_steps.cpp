@@ -317,7 +317,7 @@ uint32_t nominalCheck(const MuFunction &F, const SpecimenSpec &spec, double u, d
     // is Gaussian about its own value, with the spread its posterior of scale and reduction
     // leaves (the declared inputs' other parts are U's, not the check's).
     double risk = 0;
-    int lead = -1; // the weightiest explanation other than the nominal height
+    int lead = -1; // the weightiest explanation other than the nominal height as seen
     for (int h = 0; h < E::kCount; ++h) {
         if (why->weight[h] <= 0) continue;
         const ScaleAndReduction &p = why->post[h];
@@ -330,7 +330,8 @@ uint32_t nominalCheck(const MuFunction &F, const SpecimenSpec &spec, double u, d
         const double off = std::fabs(muH - mu);
         risk += why->weight[h] * 0.5 * (std::erfc((tol - off) / (s * std::numbers::sqrt2)) +
                                         std::erfc((tol + off) / (s * std::numbers::sqrt2)));
-        const bool nominal = h == E::Nominal || h == E::Foreshortened || h == E::WrongEdge;
+        // A foreshortened view leads the scale off: the finding then names no scale.
+        const bool nominal = h == E::Nominal || h == E::WrongEdge;
         if (!nominal && why->weight[h] >= kPlausibleWeight && (lead < 0 || why->weight[h] > why->weight[lead]))
             lead = h;
     }

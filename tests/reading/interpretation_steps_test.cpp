@@ -241,11 +241,13 @@ TEST(NominalCheck, AnExplanationBeyondTheToleranceIsAFinding)
     why.weight[Explanations::OtherHeight] = 0.7;
     why.post[Explanations::OtherHeight].dr = 0.05;
     EXPECT_EQ(nominalCheck(F, s, u, F.at(u, 0.55, s.n), &why, &nominal), uint32_t(kFlagReductionNotNominal));
-    // A scale 8 % off explains it best: the scale is named.
+    // A scale 20 % off explains it best: the scale is named.
     why.weight[Explanations::OtherHeight] = 0.1;
     why.weight[Explanations::ScaleOff] = 0.6;
-    why.post[Explanations::ScaleOff].dk = 0.08;
-    EXPECT_EQ(nominalCheck(F, s, u, F.at(u / 1.08, 0.5, s.n), &why, &nominal), uint32_t(kFlagScaleSuspect));
+    why.post[Explanations::ScaleOff].dk = 0.2;
+    const double rescaled = F.at(u * std::exp(-0.2), 0.5, s.n);
+    ASSERT_GT(std::fabs(rescaled - mu), s.tolerance.at(mu));
+    EXPECT_EQ(nominalCheck(F, s, u, rescaled, &why, &nominal), uint32_t(kFlagScaleSuspect));
     // An explanation that keeps almost no weight is not held against the reading.
     why = {};
     why.weight[Explanations::Nominal] = 0.99, why.weight[Explanations::OtherHeight] = 0.01;
