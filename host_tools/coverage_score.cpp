@@ -183,12 +183,11 @@ std::string formatScore(const ScoreReport &r, const ScoreOptions &opt, bool mark
         if (markdown)
             std::snprintf(line, sizeof line, "| %s | %s | %d | %s | %d | %s | %s | %s | %s | %s |\n",
                           c.condition.c_str(), measured, c.ok, okRight, c.silentWrong, c.measured ? within2 : "—",
-                          c.measured ? ratio : "—",
-                          c.measured ? med : "—", c.worstId.empty() ? "—" : worst, worstOk.c_str());
+                          c.measured ? ratio : "—", c.measured ? med : "—", c.worstId.empty() ? "—" : worst,
+                          worstOk.c_str());
         else
-            std::snprintf(line, sizeof line, "%-16s %9s %5d %14s %12d %14s %18s %12s %22s %12s\n",
-                          c.condition.c_str(), measured, c.ok, okRight, c.silentWrong, c.measured ? within2 : "-",
-                          c.measured ? ratio : "-",
+            std::snprintf(line, sizeof line, "%-16s %9s %5d %14s %12d %14s %18s %12s %22s %12s\n", c.condition.c_str(),
+                          measured, c.ok, okRight, c.silentWrong, c.measured ? within2 : "-", c.measured ? ratio : "-",
                           c.measured ? med : "-", c.worstId.empty() ? "-" : worst, worstOk.c_str());
         s += line;
     }

@@ -89,8 +89,8 @@ void drawOverlay(const cv::Mat &luma, const reading::Reading &reading, const std
     curve(m.outer, {0, 0, 255});
     if (m.rMaxPx > 0) cv::circle(bgr, {int(m.centreX), int(m.centreY)}, int(m.rMaxPx), {0, 255, 0}, 1, cv::LINE_AA);
     char text[160];
-    std::snprintf(text, sizeof text, "mu=%.4f +- %.4f (U)  u=%.4f mm  %s", reading.mu, reading.expanded(),
-                  reading.uMm, statusName(reading.status));
+    std::snprintf(text, sizeof text, "mu=%.4f +- %.4f (U)  u=%.4f mm  %s", reading.mu, reading.expanded(), reading.uMm,
+                  statusName(reading.status));
     cv::putText(bgr, text, {20, 40}, cv::FONT_HERSHEY_SIMPLEX, 1.0, {0, 255, 255}, 2);
     cv::imwrite(path, bgr);
 }
@@ -143,7 +143,7 @@ int measureCommand(const std::vector<std::string> &args)
     }
     std::ostream &out = outPath.empty() ? std::cout : file;
     if (format.empty()) format = outPath.empty() ? "table" : "csv";
-    ResultWriter writer(out, format == "table" ? ResultFormat::Table
+    ResultWriter writer(out, format == "table"   ? ResultFormat::Table
                              : format == "jsonl" ? ResultFormat::Jsonl
                                                  : ResultFormat::Csv);
     writer.header();
@@ -170,8 +170,8 @@ int measureCommand(const std::vector<std::string> &args)
     }
     writer.summary();
     if (format != "table")
-        std::cerr << "icacam measure: " << manifest.rows.size() << " records: " << nOk << " ok, " << nWarn
-                  << " warn, " << nErr << " error\n";
+        std::cerr << "icacam measure: " << manifest.rows.size() << " records: " << nOk << " ok, " << nWarn << " warn, "
+                  << nErr << " error\n";
     return 0;
 }
 

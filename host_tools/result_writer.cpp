@@ -84,7 +84,8 @@ void ResultWriter::header()
     if (format_ == ResultFormat::Jsonl) return;
     if (format_ == ResultFormat::Table) {
         char line[160];
-        std::snprintf(line, sizeof line, "%-16s %-18s %-6s %s\n", "id", "mu \xC2\xB1 U", "status", "finding, or advice");
+        std::snprintf(line, sizeof line, "%-16s %-18s %-6s %s\n", "id", "mu \xC2\xB1 U", "status",
+                      "finding, or advice");
         out_ << line;
         return;
     }

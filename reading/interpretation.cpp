@@ -50,8 +50,8 @@ void readFace(const SpecimenSpec &spec, const friction::FrictionModel &model, co
     out->mu = read.estimate.mu;
     out->budget = budgetOf(F, model, spec, uF, rF, sr, uSigmaEdgesMm, read.bias);
     out->muSigma = combinedSigma(out->budget);
-    out->advice = adviseInput(F, model, spec, uF, rF, sr, uSigmaEdgesMm, read.bias, assumed.declared, calibrated,
-                              scaleRelSigma);
+    out->advice =
+        adviseInput(F, model, spec, uF, rF, sr, uSigmaEdgesMm, read.bias, assumed.declared, calibrated, scaleRelSigma);
     const ModelEstimate asDeclared = model.estimate({u, n, spec.kMpa, spec.d0Mm, spec.h0Mm, spec.hFinalMm});
     out->declared = {asDeclared.mu, asDeclared.dMuDu};
     out->nominalMu = F.at(u, kNominalReduction, n);

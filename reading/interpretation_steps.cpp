@@ -328,8 +328,9 @@ uint32_t nominalCheck(const MuFunction &F, const SpecimenSpec &spec, double u, d
         const double g = (F.at(uh, rh + hr, n) - F.at(uh, rh - hr, n)) / (2 * hr);
         const double s = std::sqrt(std::max(1e-12, a * a * p.pk + g * g * p.pr + 2 * a * g * p.pkr));
         const double off = std::fabs(muH - mu);
-        risk += why->weight[h] * 0.5 * (std::erfc((tol - off) / (s * std::numbers::sqrt2)) +
-                                        std::erfc((tol + off) / (s * std::numbers::sqrt2)));
+        risk +=
+            why->weight[h] * 0.5 *
+            (std::erfc((tol - off) / (s * std::numbers::sqrt2)) + std::erfc((tol + off) / (s * std::numbers::sqrt2)));
         // A foreshortened view leads the scale off: the finding then names no scale.
         const bool nominal = h == E::Nominal || h == E::WrongEdge;
         if (!nominal && why->weight[h] >= kPlausibleWeight && (lead < 0 || why->weight[h] > why->weight[lead]))

@@ -123,9 +123,7 @@ void adviceText(const Advice &a, char *buf, size_t size)
         std::snprintf(buf, size, "%s %g: U %.4f \xE2\x86\x92 %.4f", adviceInputName(a.input), a.value, a.uNow, a.uThen);
 }
 
-namespace {
-
-} // namespace
+namespace {} // namespace
 
 int readingFieldCount()
 {
@@ -163,9 +161,10 @@ void readingMessage(const Reading &m, char *buf, size_t size)
     size_t n = 0;
     for (int bit = 0; bit < kFlagCount; ++bit) {
         if (!(m.flags & (1u << bit))) continue;
-        const int w = (1u << bit) == kFlagReductionNotNominal ? std::snprintf(buf + n, size - n, "%s%s (%.1f %%; mu %.4f at 50 %%)", n ? "; " : "",
-                                                findingWords(bit), 100 * m.reduction, m.nominalMu)
-                                : std::snprintf(buf + n, size - n, "%s%s", n ? "; " : "", findingWords(bit));
+        const int w = (1u << bit) == kFlagReductionNotNominal
+                          ? std::snprintf(buf + n, size - n, "%s%s (%.1f %%; mu %.4f at 50 %%)", n ? "; " : "",
+                                          findingWords(bit), 100 * m.reduction, m.nominalMu)
+                          : std::snprintf(buf + n, size - n, "%s%s", n ? "; " : "", findingWords(bit));
         if (w < 0 || size_t(w) >= size - n) {
             buf[n] = 0; // a finding that does not fit is left out whole
             break;

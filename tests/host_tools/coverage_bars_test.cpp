@@ -23,8 +23,7 @@ struct StatusLine {
     double okOnRightShare = 0; // of the right readings
 };
 
-void expectBars(const std::string &condition, uint32_t seed, bool nothingUndeclared, StatusLine line,
-                int scenes = 40)
+void expectBars(const std::string &condition, uint32_t seed, bool nothingUndeclared, StatusLine line, int scenes = 40)
 {
 #ifdef ICACAM_SANITIZED
     // Statistics, not memory: the sanitizer build runs the same code paths in the always-on
