@@ -28,12 +28,17 @@ constexpr double kContradictionChi2 = 9.0;
 // beforehand: the test's nominal half height (a press stopped at it: σ 0.003, 0.045 mm on
 // 15 mm) with the scale as declared; the specimen pressed to another height (the undeclared
 // reduction's prior, the scale within its tolerance); or the nominal height read through a
-// scale grossly off (one measured on the fixture rather than the end face, or on a wrong
-// edge, is 5–12 % off at 70–150 mm working distance: σ 8 %). Where the silhouette agrees with
-// half height the first dominates and the reduction is known to the press's tolerance; where
-// it does not, the others take over, and the mixture's spread covers the step between them.
+// scale measured on the fixture rather than the end face. The fixture lies the end face's
+// height h farther from the camera, so such a scale is always too large: by ln(WD / (WD − h)),
+// 5–18 % for h = 7.5 mm at 45–150 mm working distance (mean 0.115, σ 0.037 over that range).
+// The barrel's widest section lies h/2 below the end face, between the two planes: its
+// outline is read too large by about half as much (kSilhouetteScaleShare), not by the whole
+// scale error. Where the silhouette agrees with half height the first dominates and the
+// reduction is known to the press's tolerance; where it does not, the others take over, and
+// the mixture's spread covers the step between them.
 constexpr double kNominalReductionSigma = 0.003;
-constexpr double kGrossScaleSigma = 0.08;
+constexpr double kFixtureScaleMean = 0.115, kFixtureScaleSigma = 0.037;
+constexpr double kSilhouetteScaleShare = 0.5;
 // A view the image shows to be oblique (the boundaries share an ellipse, or their centres
 // part) comes from a camera close and off-axis: it sees the barrel's widest section, half-way
 // down, from farther than the end face, and a short lens's barrel distortion shrinks it
@@ -66,22 +71,23 @@ constexpr double kAdvisedHFinalTolMm = 0.01, kAdvisedScaleRel = 0.001, kAdvisedN
 // equivalent radius and R_o 0.001 mm (a ragged texture boundary, not a step, on the inside).
 constexpr double kInnerEdgeModelMm = 0.005, kOuterEdgeModelMm = 0.001;
 
-// The silhouette's observation d = δk + β·δr + o + e (e of variance se2: silhouetteRelSigma;
-// o an offset of the silhouette alone, with its mean and variance) applied to a prior on
-// (δk, δr): the posterior mean and covariance (a linear Gaussian update), widened by χ² where d
-// lies further out than the prior and e explain (as for a Birge ratio).
+// The silhouette's observation d = α·δk + β·δr + o + e (α the share of a scale error the
+// silhouette sees; e of variance se2: silhouetteRelSigma; o an offset of the silhouette alone,
+// with its mean and variance) applied to a prior on (δk, δr) with the means prior.dk, prior.dr:
+// the posterior mean and covariance (a linear Gaussian update), widened by χ² where d lies
+// further out than the prior and e explain (as for a Birge ratio).
 ScaleAndReduction update(const ScaleAndReduction &prior, double d, double beta, double se2, double offset = 0,
-                         double offsetVar = 0)
+                         double offsetVar = 0, double alpha = 1)
 {
-    const double S = prior.pk + beta * beta * prior.pr + se2 + offsetVar;
-    const double v = d - offset;
+    const double S = alpha * alpha * prior.pk + beta * beta * prior.pr + se2 + offsetVar;
+    const double v = d - offset - alpha * prior.dk - beta * prior.dr;
     const double w = std::max(1.0, v * v / S);
     ScaleAndReduction p;
-    p.dk = prior.pk / S * v;
-    p.dr = beta * prior.pr / S * v;
-    p.pk = w * (prior.pk - prior.pk * prior.pk / S);
+    p.dk = prior.dk + alpha * prior.pk / S * v;
+    p.dr = prior.dr + beta * prior.pr / S * v;
+    p.pk = w * (prior.pk - alpha * alpha * prior.pk * prior.pk / S);
     p.pr = w * (prior.pr - beta * beta * prior.pr * prior.pr / S);
-    p.pkr = -w * beta * prior.pk * prior.pr / S;
+    p.pkr = -w * alpha * beta * prior.pk * prior.pr / S;
     return p;
 }
 
@@ -108,7 +114,8 @@ ScaleAndReduction mixturePosterior(const ScaleAndReduction &declared, const Silh
     const double d = o.d, beta = o.beta;
     ScaleAndReduction prior[E::kCount];
     prior[E::OtherHeight] = declared;
-    prior[E::ScaleOff].pk = kGrossScaleSigma * kGrossScaleSigma;
+    prior[E::ScaleOff].dk = kFixtureScaleMean;
+    prior[E::ScaleOff].pk = kFixtureScaleSigma * kFixtureScaleSigma;
     prior[E::ScaleOff].pr = kNominalReductionSigma * kNominalReductionSigma;
     prior[E::Nominal].pk = declared.pk;
     prior[E::Nominal].pr = kNominalReductionSigma * kNominalReductionSigma;
@@ -116,18 +123,19 @@ ScaleAndReduction mixturePosterior(const ScaleAndReduction &declared, const Silh
     prior[E::WrongEdge] = declared; // the silhouette tells nothing
     const double offset[E::kCount] = {0, 0, 0, kForeshortenMean, 0};
     const double offsetVar[E::kCount] = {0, 0, 0, kForeshortenSigma * kForeshortenSigma, 0};
+    const double alpha[E::kCount] = {1, kSilhouetteScaleShare, 1, 1, 1};
     const bool oblique = (*flags & (kFlagElliptical | kFlagCentreOffset)) != 0;
     const double gaussianPrior = (1.0 - kMisreadPrior) / (oblique ? 4 : 3);
     E e;
     double wSum = 0;
     for (int h = 0; h < E::WrongEdge; ++h) {
-        const double S = prior[h].pk + beta * beta * prior[h].pr + se2 + offsetVar[h];
-        const double v = d - offset[h];
+        const double S = alpha[h] * alpha[h] * prior[h].pk + beta * beta * prior[h].pr + se2 + offsetVar[h];
+        const double v = d - offset[h] - alpha[h] * prior[h].dk;
         // Densities up to the common 1/√(2π).
         e.weight[h] =
             h != E::Foreshortened || oblique ? gaussianPrior * std::exp(-0.5 * v * v / S) / std::sqrt(S) : 0.0;
         wSum += e.weight[h];
-        e.post[h] = update(prior[h], d, beta, se2, offset[h], offsetVar[h]);
+        e.post[h] = update(prior[h], d, beta, se2, offset[h], offsetVar[h], alpha[h]);
     }
     const double misreadSpan = -kMisreadMinInside - o.dContact;
     const bool misreadPossible = misreadSpan > 0 && d >= o.dContact && d <= -kMisreadMinInside;
@@ -271,22 +279,23 @@ SilhouetteObservation observeSilhouette(const FaceInMm &face, double coverage, d
         return o;
     }
     const double n = spec.n;
+    // The silhouette on the FE's terms (friction::kFeRMaxOverSpecimen).
+    const double rMaxAsFe = face.rMaxMm * (1 + friction::kFeRMaxOverSpecimen);
     o.measuredRelSigma = friction::measuredRMaxRelSigma(coverage > 0 ? scatterPx / rMaxPx : 0);
     const friction::RadiiCheck rc =
-        friction::checkRadii(face.rMaxMm, n, mu0, spec.d0Mm, r.r, spec.h0Mm, true, o.measuredRelSigma);
+        friction::checkRadii(rMaxAsFe, n, mu0, spec.d0Mm, r.r, spec.h0Mm, true, o.measuredRelSigma);
     o.rMaxZ = rc.z;
     o.reductionEst = rc.reductionEst;
     // Without a declared final height a discrepancy is weighed by its explanations, and
     // judged by what they do to μ (nominalCheck).
     if (rc.inconsistent() && r.declared) o.flags |= kFlagRadiiInconsistent;
-    const friction::RadiiCheck up = friction::checkRadii(face.rMaxMm, n, mu0, spec.d0Mm, r.r + 0.01, spec.h0Mm, false);
-    const friction::RadiiCheck down =
-        friction::checkRadii(face.rMaxMm, n, mu0, spec.d0Mm, r.r - 0.01, spec.h0Mm, false);
+    const friction::RadiiCheck up = friction::checkRadii(rMaxAsFe, n, mu0, spec.d0Mm, r.r + 0.01, spec.h0Mm, false);
+    const friction::RadiiCheck down = friction::checkRadii(rMaxAsFe, n, mu0, spec.d0Mm, r.r - 0.01, spec.h0Mm, false);
     const double overContact = face.rMaxMm / face.rOuterMm;
     o.usable = rc.valid && up.valid && down.valid && coverage >= kSilhouetteMinCoverage &&
                overContact > kSilhouetteOverContactMin && overContact < kSilhouetteOverContactMax;
     if (o.usable) {
-        o.d = std::log(face.rMaxMm / rc.rMaxFeMm);
+        o.d = std::log(rMaxAsFe / rc.rMaxFeMm);
         o.dContact = std::log(kSilhouetteOverContactMin * face.rOuterMm / rc.rMaxFeMm);
         o.beta = std::log(up.rMaxFeMm / down.rMaxFeMm) / 0.02;
         o.usable = o.beta > 0.1;

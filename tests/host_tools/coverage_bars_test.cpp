@@ -77,19 +77,21 @@ TEST(CoverageBars, Declared)
 {
     expectBars("declared", 9101, true, {0.9, 0.9});
 }
-// Below the 90 % line: 83 % measured (seed 101); a coarse frame's silhouette tells the height less.
 TEST(CoverageBars, LowResolution)
 {
-    expectBars("lowres", 9102, true, {0.75, 0.75});
+    expectBars("lowres", 9102, true, {0.9, 0.9});
 }
+// Below the half line: 42 % measured. A reading the silhouette places at another height is
+// read there and right, but warned of (reduction_not_nominal), as the nominal conditions'
+// check asks.
 TEST(CoverageBars, ReductionNotDeclared)
 {
-    expectBars("reduction", 9103, false, {0, 0.5});
+    expectBars("reduction", 9103, false, {0, 0.4});
 }
-// Below the half line: a scale off and a lower height explain the silhouette alike (22 %).
+// Below the half line: a scale off and a higher height explain the silhouette alike (24 %).
 TEST(CoverageBars, ScaleMeasuredOnTheFixture)
 {
-    expectBars("fixture_scale", 9104, false, {0, 0.15});
+    expectBars("fixture_scale", 9104, false, {0, 0.2});
 }
 // Below the half line, at none: elliptical names every oblique view, and most lose the silhouette.
 TEST(CoverageBars, TiltedDistortingCamera)

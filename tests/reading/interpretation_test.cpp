@@ -16,8 +16,9 @@ namespace {
 
 constexpr double kN = 0.25, kMu = 0.15, kMmPerPx = 0.02;
 
-// A face at 50 % reduction as the pipeline would hand it over, the silhouette scaled by
-// rMaxFactor; an oblique view gives both boundaries the same ellipse.
+// A face at 50 % reduction as the pipeline would hand it over, the silhouette a specimen's
+// (kFeRMaxOverSpecimen inside the FE's) scaled by rMaxFactor; an oblique view gives both
+// boundaries the same ellipse.
 EndFaceGeometry face(double rMaxFactor, bool oblique, double n = kN, double mu = kMu)
 {
     double ri = 0, ro = 0, rm = 0;
@@ -36,7 +37,7 @@ EndFaceGeometry face(double rMaxFactor, bool oblique, double n = kN, double mu =
     }
     m.inner.rEqPx = ri / kMmPerPx;
     m.outer.rEqPx = ro / kMmPerPx;
-    m.rMaxPx = rm * rMaxFactor / kMmPerPx;
+    m.rMaxPx = rm / (1 + kFeRMaxOverSpecimen) * rMaxFactor / kMmPerPx;
     m.silhouetteCoverage = 1;
     m.edgeWidthPx = 1;
     return m;
@@ -112,7 +113,9 @@ TEST(Interpretation, ASilhouetteOnAWrongEdgeDoesNotRescaleTheRingUnseen)
     for (EndFaceGeometry *m : {&right, &wrong}) m->silhouetteScatterPx = 0.002 * m->rMaxPx;
     const Reading r = interpret(right, n), w = interpret(wrong, n);
     ASSERT_NE(w.status, Status::Error);
-    ASSERT_FALSE(r.flags & kNominalFinding);
+    // At n 0.1, μ 0.25 the silhouette's resolution (≈ 0.005 of reduction) moves μ by half the
+    // tolerance, so the right reading may itself be warned of; it is never taken for a wrong edge.
+    ASSERT_FALSE(r.flags & kFlagSilhouetteUnreliable);
     EXPECT_EQ(w.status, Status::Warn);
     EXPECT_TRUE(w.flags & kNominalFinding);
     EXPECT_LT(std::fabs(w.mu - r.mu), 2 * w.muSigma) << "μ " << w.mu << " ± " << w.muSigma << " against " << r.mu;
