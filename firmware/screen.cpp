@@ -31,11 +31,11 @@ const char *shortError(ErrorCode c)
 const char *shortFlag(int bit)
 {
     static const char *const kWords[reading::kFlagCount] = {
-        "n outside 0.05-0.5", "K outside model",   "mu below model",     "mu above model",  "u outside model",
-        "low contrast",       "edge coverage low", "edges scatter",      "image blurred",   "saturated",
-        "specimen clipped",   "elliptical",        "not concentric",     "check scale",     "narrow ring",
-        "no silhouette",      "reduction outside", "radii inconsistent", "H0/D0 outside",   "edges uncertain",
-        "scale uncertain",    "give final height", "n tolerance wide",   "model uncertain", "silhouette unusable"};
+        "n outside 0.05-0.5", "K outside model",   "mu below model",     "mu above model", "u outside model",
+        "low contrast",       "edge coverage low", "edges scatter",      "image blurred",  "saturated",
+        "specimen clipped",   "elliptical",        "not concentric",     "check scale",    "narrow ring",
+        "no silhouette",      "reduction outside", "radii inconsistent", "H0/D0 outside",  "silhouette unusable",
+        "not pressed to 50%", "give final height"};
     return bit >= 0 && bit < reading::kFlagCount ? kWords[bit] : "check";
 }
 
@@ -79,6 +79,22 @@ void drawBusy(hal::MonoBitmap *bmp, long id)
     drawText(bmp, 0, 3, "measuring...");
 }
 
+namespace {
+
+// The advice in the display's words: the input and U after, or what U mostly is.
+void adviceLine(const reading::Advice &a, char *line, size_t size)
+{
+    using reading::AdviceInput;
+    if (a.input == AdviceInput::None)
+        std::snprintf(line, size, "U: %s", a.modelLeads ? "model's own" : "edges'");
+    else if (a.input == AdviceInput::HFinal)
+        std::snprintf(line, size, "h_final_mm U->%.4f", a.uThen);
+    else
+        std::snprintf(line, size, "%s %g U->%.4f", reading::adviceInputName(a.input), a.value, a.uThen);
+}
+
+} // namespace
+
 void drawResult(hal::MonoBitmap *bmp, long id, const reading::Reading &m, std::string_view note)
 {
     bmp->clear();
@@ -88,15 +104,21 @@ void drawResult(hal::MonoBitmap *bmp, long id, const reading::Reading &m, std::s
     if (!m.hasValue()) {
         wrap(bmp, 2, 5, shortError(m.error));
     } else {
-        std::snprintf(line, sizeof line, "\xCE\xBC=%.3f\xC2\xB1%.3f", m.mu, m.muSigma);
+        // μ ± U (k = 2), the decision against the lab's tolerance, then the checks' findings
+        // (warn) or the advice (ok).
+        std::snprintf(line, sizeof line, "\xCE\xBC=%.3f\xC2\xB1%.3f U", m.mu, m.expanded());
         drawText(bmp, 0, 2, line);
         std::snprintf(line, sizeof line, "u=%.3f mm", m.uMm);
         drawText(bmp, 0, 3, line);
-        std::snprintf(line, sizeof line, "Ri=%.3f Ro=%.3f", m.rInnerMm(), m.rOuterMm());
+        std::snprintf(line, sizeof line, "U %s tol %.3f", reading::decisionName(m.decision), m.toleranceMu);
         drawText(bmp, 0, 4, line);
         int row = 5;
         for (int b = 0; b < reading::kFlagCount && row <= 6; ++b)
             if (m.flags & (1u << b)) drawText(bmp, 0, row++, shortFlag(b));
+        if (row <= 6) {
+            adviceLine(m.advice, line, sizeof line);
+            drawText(bmp, 0, row, line);
+        }
     }
     if (!note.empty()) drawText(bmp, 0, 7, note);
 }

@@ -43,6 +43,10 @@ double radiiReductionMax();
 // scatter. The measurement's σ is therefore the per-ray scatter (relative) with a 0.1 % floor;
 // 0.5 % (the set's 1 σ over all photographs) where no per-ray fit gave one.
 inline constexpr double kFeRMaxRelSigma = 0.005;
+// The mean of that offset: a specimen's silhouette, multiplied by 1 + kFeRMaxOverSpecimen, is
+// held against the FE on the FE's own terms (a known systematic effect corrected, its spread
+// kept in kFeRMaxRelSigma). Left uncorrected it reads every silhouette 0.004 of reduction low.
+inline constexpr double kFeRMaxOverSpecimen = 0.0047;
 inline constexpr double kMeasuredRMaxRelFloor = 0.001;
 inline constexpr double kMeasuredRMaxRelSigma = 0.005;
 inline double measuredRMaxRelSigma(double scatterRel)

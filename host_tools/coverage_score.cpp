@@ -42,9 +42,12 @@ struct Accumulator {
         ratios.push_back(sigma > 0 ? a / sigma : (a == 0 ? 0 : std::numeric_limits<double>::infinity()));
         if (a <= opt.k * sigma) ++s.withinK;
         if (a > std::fabs(s.worstDmu) || s.worstId.empty()) s.worstDmu = dmu, s.worstId = id, s.worstStatus = status;
+        const bool right = a <= std::max(opt.toleranceAbs, opt.toleranceRel * muTrue);
+        if (right) ++s.right;
         if (status == "ok") {
             ++s.ok;
-            if (a > std::max(opt.toleranceAbs, opt.toleranceRel * muTrue)) ++s.silentWrong;
+            if (right) ++s.okRight;
+            if (!right) ++s.silentWrong;
             if (a > std::fabs(s.worstOkDmu) || s.worstOkId.empty()) s.worstOkDmu = dmu, s.worstOkId = id;
         }
     }
@@ -157,19 +160,20 @@ std::string formatScore(const ScoreReport &r, const ScoreOptions &opt, bool mark
     char k[16];
     std::snprintf(k, sizeof k, "%g", opt.k);
     if (markdown) {
-        s += std::string("| condition | measured | ok | silent wrong | within ") + k +
+        s += std::string("| condition | measured | ok | ok on right | silent wrong | within ") + k +
              " σ | median \\|Δμ\\|/σ | median \\|Δμ\\| | worst Δμ | worst Δμ with ok |\n";
-        s += "|---|---|---|---|---|---|---|---|---|\n";
+        s += "|---|---|---|---|---|---|---|---|---|---|\n";
     } else {
         const std::string within = std::string("within ") + k + " sigma";
-        std::snprintf(line, sizeof line, "%-16s %9s %5s %12s %14s %18s %12s %22s %12s\n", "condition", "measured", "ok",
-                      "silent wrong", within.c_str(), "median |dmu|/sigma", "median |dmu|", "worst dmu",
-                      "worst ok dmu");
+        std::snprintf(line, sizeof line, "%-16s %9s %5s %14s %12s %14s %18s %12s %22s %12s\n", "condition", "measured",
+                      "ok", "ok on right", "silent wrong", within.c_str(), "median |dmu|/sigma", "median |dmu|",
+                      "worst dmu", "worst ok dmu");
         s += line;
     }
     for (const ConditionScore &c : r.conditions) {
-        char measured[32], within2[32], ratio[32], med[32], worst[96];
+        char measured[32], within2[32], ratio[32], med[32], worst[96], okRight[48];
         std::snprintf(measured, sizeof measured, "%d of %d", c.measured, c.total);
+        std::snprintf(okRight, sizeof okRight, "%d of %d", c.okRight, c.right);
         std::snprintf(within2, sizeof within2, "%.0f %%", 100 * c.withinFraction());
         std::snprintf(ratio, sizeof ratio, "%.2f", c.medianRatio);
         std::snprintf(med, sizeof med, "%.4f", c.medianAbs);
@@ -177,16 +181,19 @@ std::string formatScore(const ScoreReport &r, const ScoreOptions &opt, bool mark
                       c.worstId.empty() ? "" : c.worstStatus.c_str());
         const std::string worstOk = signedOrDash(c.worstOkDmu, c.worstOkId);
         if (markdown)
-            std::snprintf(line, sizeof line, "| %s | %s | %d | %d | %s | %s | %s | %s | %s |\n", c.condition.c_str(),
-                          measured, c.ok, c.silentWrong, c.measured ? within2 : "—", c.measured ? ratio : "—",
-                          c.measured ? med : "—", c.worstId.empty() ? "—" : worst, worstOk.c_str());
+            std::snprintf(line, sizeof line, "| %s | %s | %d | %s | %d | %s | %s | %s | %s | %s |\n",
+                          c.condition.c_str(), measured, c.ok, okRight, c.silentWrong, c.measured ? within2 : "—",
+                          c.measured ? ratio : "—", c.measured ? med : "—", c.worstId.empty() ? "—" : worst,
+                          worstOk.c_str());
         else
-            std::snprintf(line, sizeof line, "%-16s %9s %5d %12d %14s %18s %12s %22s %12s\n", c.condition.c_str(),
-                          measured, c.ok, c.silentWrong, c.measured ? within2 : "-", c.measured ? ratio : "-",
+            std::snprintf(line, sizeof line, "%-16s %9s %5d %14s %12d %14s %18s %12s %22s %12s\n", c.condition.c_str(),
+                          measured, c.ok, okRight, c.silentWrong, c.measured ? within2 : "-", c.measured ? ratio : "-",
                           c.measured ? med : "-", c.worstId.empty() ? "-" : worst, worstOk.c_str());
         s += line;
     }
-    std::snprintf(line, sizeof line, "%s; silent wrong: status ok with |Δμ| > max(%g, %g·μ); Δμ = measured − true.\n",
+    std::snprintf(line, sizeof line,
+                  "%s; right: |Δμ| ≤ max(%g, %g·μ), ok on right: the right readings that say ok; silent wrong: status "
+                  "ok and not right; Δμ = measured − true.\n",
                   r.sigmaSource.c_str(), opt.toleranceAbs, opt.toleranceRel);
     s += markdown ? "\n" + std::string(line) : std::string(line);
     return s;

@@ -1,6 +1,8 @@
 #pragma once
 // Judges `icacam measure` results against a truth file, per condition: how many were
-// measured, how many are silent wrong answers (status ok and |Δμ| beyond the tolerance),
+// measured, how many are right (|Δμ| within the tolerance) and of those how many say ok (a
+// status that warns on right readings is ignored), how many are silent wrong answers (status
+// ok and |Δμ| beyond the tolerance),
 // and whether the reported uncertainty is honest (the fraction within k σ, the median
 // |Δμ|/σ). PRODUCT.md §7; docs/uncertainty.md ("Coverage").
 //
@@ -31,6 +33,8 @@ struct ConditionScore {
     int total = 0;    // records in the truth
     int measured = 0; // with a μ (ok or warn)
     int ok = 0;
+    int right = 0;   // measured with |Δμ| within the tolerance
+    int okRight = 0; // right and status ok: the status means something when most of them are
     int silentWrong = 0;
     int withinK = 0;        // measured with |Δμ| ≤ k σ
     double medianRatio = 0; // median |Δμ| / σ over the measured
@@ -40,6 +44,8 @@ struct ConditionScore {
     double worstOkDmu = 0; // the largest |Δμ| among the ok, signed
     std::string worstOkId;
     double withinFraction() const { return measured ? double(withinK) / measured : 0; }
+    double okFraction() const { return measured ? double(ok) / measured : 0; }
+    double okOnRightFraction() const { return right ? double(okRight) / right : 0; }
 };
 
 struct ScoreReport {

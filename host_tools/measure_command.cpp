@@ -30,21 +30,25 @@ std::string usage()
 {
     const ReadingTolerance t;
     const DeclaredTolerances d;
-    return std::string("usage: icacam measure --manifest FILE [--out FILE] [--format csv|jsonl]\n"
+    return std::string("usage: icacam measure --manifest FILE [--out FILE] [--format table|csv|jsonl]\n"
                        "                      [--overlay DIR] [--repeat N] [--model NAME] [--tolerance ABS[,REL]]\n"
                        "  --manifest FILE  the records: columns id,image,n,mm_per_px; optional k_mpa, d0_mm,\n"
                        "                   h0_mm, h_final_mm\n"
-                       "  --out FILE       the results (default: standard output)\n"
-                       "  --format         csv (default) or jsonl\n"
+                       "  --out FILE       the records (default: standard output)\n"
+                       "  --format         table (a line per record and a summary: the default without --out),\n"
+                       "                   csv (the full record: the default with --out) or jsonl\n"
                        "  --overlay DIR    also draw each measured image's boundaries into DIR/<id>.png\n"
                        "  --repeat N       measure each image N times (default 1: timing and profiling)\n"
                        "  --model NAME     the friction model (default ") +
            friction::kDefaultModel + "; known: " + cli::modelNames() +
            ")\n"
-           "  --tolerance ABS[,REL]  status ok only when 2 mu_sigma is within max(ABS, REL * mu)\n"
-           "                   (default " +
+           "  --tolerance ABS[,REL]  the lab's tolerance on mu: the column decision says whether\n"
+           "                   U = 2 mu_sigma lies within max(ABS, REL * mu) (default " +
            numberText("%g", t.absMu) + "," + numberText("%g", t.relMu) +
-           "; the columns tolerance_mu, tolerance_rel per record)\n"
+           ";\n                   the columns tolerance_mu, tolerance_rel per record)\n"
+           "status: ok (every check passed: U covers the error), warn (a check found a condition U\n"
+           "may not cover; message names it and what to supply) or error (no value). advice: the\n"
+           "declared input that would shrink U the most, and to what (docs/measuring.md).\n"
            "One bad record never stops the batch: it gets status=error.\n"
            "Models: paper_reduction, the paper's fit with u carried to 50 % reduction by the FE du/dr\n"
            "(from h_final_mm or from the reduction the silhouette implies); paper, the published\n"
@@ -85,7 +89,7 @@ void drawOverlay(const cv::Mat &luma, const reading::Reading &reading, const std
     curve(m.outer, {0, 0, 255});
     if (m.rMaxPx > 0) cv::circle(bgr, {int(m.centreX), int(m.centreY)}, int(m.rMaxPx), {0, 255, 0}, 1, cv::LINE_AA);
     char text[160];
-    std::snprintf(text, sizeof text, "mu=%.4f +- %.4f  u=%.4f mm  %s", reading.mu, reading.muSigma, reading.uMm,
+    std::snprintf(text, sizeof text, "mu=%.4f +- %.4f (U)  u=%.4f mm  %s", reading.mu, reading.expanded(), reading.uMm,
                   statusName(reading.status));
     cv::putText(bgr, text, {20, 40}, cv::FONT_HERSHEY_SIMPLEX, 1.0, {0, 255, 255}, 2);
     cv::imwrite(path, bgr);
@@ -95,7 +99,7 @@ void drawOverlay(const cv::Mat &luma, const reading::Reading &reading, const std
 
 int measureCommand(const std::vector<std::string> &args)
 {
-    std::string manifestPath, outPath, format = "csv", overlayDir, modelName = kDefaultModel;
+    std::string manifestPath, outPath, format, overlayDir, modelName = kDefaultModel;
     long repeat = 1;
     SpecimenSpec defaults;
     cli::OptionReader opts(args, usage());
@@ -109,7 +113,8 @@ int measureCommand(const std::vector<std::string> &args)
             outPath = opts.value();
         else if (opts.is("--format")) {
             format = opts.value();
-            if (format != "csv" && format != "jsonl") opts.fail("csv or jsonl, not '" + format + "'");
+            if (format != "table" && format != "csv" && format != "jsonl")
+                opts.fail("table, csv or jsonl, not '" + format + "'");
         } else if (opts.is("--overlay"))
             overlayDir = opts.value();
         else if (opts.is("--model")) {
@@ -137,7 +142,10 @@ int measureCommand(const std::vector<std::string> &args)
         if (!file) throw std::runtime_error("cannot write '" + outPath + "'");
     }
     std::ostream &out = outPath.empty() ? std::cout : file;
-    ResultWriter writer(out, format == "jsonl");
+    if (format.empty()) format = outPath.empty() ? "table" : "csv";
+    ResultWriter writer(out, format == "table"   ? ResultFormat::Table
+                             : format == "jsonl" ? ResultFormat::Jsonl
+                                                 : ResultFormat::Csv);
     writer.header();
 
     RecordMeasurer measurer(*model, defaults);
@@ -160,8 +168,10 @@ int measureCommand(const std::vector<std::string> &args)
         (st == Status::Ok ? nOk : st == Status::Warn ? nWarn : nErr)++;
         writer.write(r);
     }
-    std::cerr << "icacam measure: " << manifest.rows.size() << " records: " << nOk << " ok, " << nWarn << " warn, "
-              << nErr << " error\n";
+    writer.summary();
+    if (format != "table")
+        std::cerr << "icacam measure: " << manifest.rows.size() << " records: " << nOk << " ok, " << nWarn << " warn, "
+                  << nErr << " error\n";
     return 0;
 }
 

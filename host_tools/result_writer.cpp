@@ -81,16 +81,51 @@ std::string ResultWriter::flagList(uint32_t flags)
 
 void ResultWriter::header()
 {
-    if (jsonl_) return;
+    if (format_ == ResultFormat::Jsonl) return;
+    if (format_ == ResultFormat::Table) {
+        char line[160];
+        std::snprintf(line, sizeof line, "%-16s %-18s %-6s %s\n", "id", "mu \xC2\xB1 U", "status",
+                      "finding, or advice");
+        out_ << line;
+        return;
+    }
     const auto cols = columns();
     for (size_t i = 0; i < cols.size(); ++i) out_ << (i ? "," : "") << cols[i];
     out_ << "\n";
 }
 
+std::string ResultWriter::tableLine(const ResultRow &r)
+{
+    char value[48] = "-", words[800];
+    const reading::Reading *m = r.m;
+    const bool hasValue = m && m->hasValue();
+    if (hasValue) std::snprintf(value, sizeof value, "%.4f \xC2\xB1 %.4f", m->mu, m->expanded());
+    if (!m)
+        std::snprintf(words, sizeof words, "%s", r.message.c_str());
+    else if (m->status == reading::Status::Ok)
+        reading::adviceText(m->advice, words, sizeof words);
+    else
+        reading::readingMessage(*m, words, sizeof words);
+    const char *status = m ? reading::statusName(m->status) : "error";
+    char line[1000];
+    // 18 bytes wide: "±" takes two, in the header and in each value alike.
+    std::snprintf(line, sizeof line, "%-16s %-18s %-6s %s", r.id.c_str(), value, status, words);
+    return line;
+}
+
 void ResultWriter::write(const ResultRow &r)
 {
+    const reading::Reading *m = r.m;
+    const reading::Status st = m ? m->status : reading::Status::Error;
+    (st == reading::Status::Ok ? ok_ : st == reading::Status::Warn ? warn_ : error_)++;
+    if (m && m->hasValue()) {
+        (m->decision == reading::Decision::Within ? within_ : beyond_)++;
+        ++advised_[reading::adviceInputName(m->advice.input)];
+    }
     std::string line;
-    if (jsonl_) {
+    if (format_ == ResultFormat::Table) {
+        line = tableLine(r) + "\n";
+    } else if (format_ == ResultFormat::Jsonl) {
         line = "{\"id\":" + jsonQuote(r.id);
         JsonSink sink(&line);
         reading::writeReading(r.m, r.message, r.model, sink);
@@ -102,6 +137,24 @@ void ResultWriter::write(const ResultRow &r)
         line += "\n";
     }
     out_ << line;
+    out_.flush();
+}
+
+void ResultWriter::summary()
+{
+    if (format_ != ResultFormat::Table) return;
+    const int total = ok_ + warn_ + error_;
+    out_ << "\n" << total << " records: " << ok_ << " ok, " << warn_ << " warn, " << error_ << " error";
+    if (within_ + beyond_ > 0) out_ << "; U within the tolerance on " << within_ << ", beyond it on " << beyond_;
+    out_ << "\n";
+    // The advice most readings share, where there is one.
+    std::string best;
+    int bestCount = 0;
+    for (const auto &[name, count] : advised_)
+        if (name != "none" && count > bestCount) best = name, bestCount = count;
+    if (bestCount > 0) out_ << "declaring " << best << " would shrink U on " << bestCount << " of them\n";
+    out_ << "ok: every check passed and U covers the error; warn: a check found a condition U may not cover "
+            "(what to supply is named); the full record: --out FILE or --format csv\n";
     out_.flush();
 }
 

@@ -22,18 +22,23 @@ double silhouetteMeasuredRelSigma(double coverage, double scatterPx, double rMax
 // The steps after the face is in millimetres, shared by images and radii.
 void readFace(const SpecimenSpec &spec, const friction::FrictionModel &model, const AssumedReduction &assumed,
               double scaleRelSigma, double uSigmaEdgesMm, const SilhouetteObservation *silhouette,
-              double silhouetteSigma, uint32_t f, Reading *out)
+              double silhouetteSigma, bool calibrated, uint32_t f, Reading *out)
 {
     const MuFunction F(spec, model);
     const double u = out->face.uMm, n = spec.n;
     ScaleAndReduction sr;
     sr.pk = scaleRelSigma * scaleRelSigma;
     sr.pr = assumed.sigma * assumed.sigma;
+    Explanations why;
+    bool explained = false;
     if (silhouette) {
         out->rMaxZ = silhouette->rMaxZ;
         out->reductionEst = silhouette->reductionEst;
         f |= silhouette->flags;
-        if (silhouette->usable) sr = silhouettePosterior(sr, *silhouette, silhouetteSigma, assumed.declared, &f);
+        if (silhouette->usable) {
+            sr = silhouettePosterior(sr, *silhouette, silhouetteSigma, assumed.declared, &f, &why);
+            explained = !assumed.declared;
+        }
     }
     const double uF = u * std::exp(-sr.dk), rF = assumed.r + sr.dr;
     out->reduction = rF;
@@ -45,8 +50,14 @@ void readFace(const SpecimenSpec &spec, const friction::FrictionModel &model, co
     out->mu = read.estimate.mu;
     out->budget = budgetOf(F, model, spec, uF, rF, sr, uSigmaEdgesMm, read.bias);
     out->muSigma = combinedSigma(out->budget);
+    out->advice =
+        adviseInput(F, model, spec, uF, rF, sr, uSigmaEdgesMm, read.bias, assumed.declared, calibrated, scaleRelSigma);
     const ModelEstimate asDeclared = model.estimate({u, n, spec.kMpa, spec.d0Mm, spec.h0Mm, spec.hFinalMm});
     out->declared = {asDeclared.mu, asDeclared.dMuDu};
+    out->nominalMu = F.at(u, kNominalReduction, n);
+    // A silhouette found unusable is a finding of its own (silhouette_unreliable, no_silhouette).
+    if (!assumed.declared && (explained || !silhouette))
+        f |= nominalCheck(F, spec, u, out->mu, explained ? &why : nullptr, &out->nominalMu);
     decideStatus(spec, f | rangeChecks(model, read, assumed), out);
 }
 
@@ -86,7 +97,8 @@ Reading interpret(const EndFaceGeometry &g, const SpecimenSpec &spec, const visi
         obs = observeSilhouette(p.face, g.silhouetteCoverage, g.silhouetteScatterPx, g.rMaxPx, spec, assumed, mu0);
         silhouette = &obs;
     }
-    readFace(spec, model, assumed, p.scaleRelSigma, e.uSigmaEdgesMm, silhouette, silhouetteRelSigma(g), f, &out);
+    readFace(spec, model, assumed, p.scaleRelSigma, e.uSigmaEdgesMm, silhouette, silhouetteRelSigma(g),
+             calibration != nullptr, f, &out);
     return out;
 }
 
@@ -103,7 +115,7 @@ Reading interpret(const FaceInMm &face, const SpecimenSpec &spec, const friction
     const double mu0 = F.at(out.face.uMm, assumed.r, spec.n);
     const SilhouetteObservation obs = observeSilhouette(out.face, 1, 0, face.rMaxMm, spec, assumed, mu0);
     const double silhouetteSigma = std::hypot(friction::kFeRMaxRelSigma, friction::measuredRMaxRelSigma(0));
-    readFace(spec, model, assumed, spec.tolerances.scaleRel, 0, &obs, silhouetteSigma, 0, &out);
+    readFace(spec, model, assumed, spec.tolerances.scaleRel, 0, &obs, silhouetteSigma, false, 0, &out);
     return out;
 }
 

@@ -28,12 +28,17 @@ constexpr double kContradictionChi2 = 9.0;
 // beforehand: the test's nominal half height (a press stopped at it: σ 0.003, 0.045 mm on
 // 15 mm) with the scale as declared; the specimen pressed to another height (the undeclared
 // reduction's prior, the scale within its tolerance); or the nominal height read through a
-// scale grossly off (one measured on the fixture rather than the end face, or on a wrong
-// edge, is 5–12 % off at 70–150 mm working distance: σ 8 %). Where the silhouette agrees with
-// half height the first dominates and the reduction is known to the press's tolerance; where
-// it does not, the others take over, and the mixture's spread covers the step between them.
+// scale measured on the fixture rather than the end face. The fixture lies the end face's
+// height h farther from the camera, so such a scale is always too large: by ln(WD / (WD − h)),
+// 5–18 % for h = 7.5 mm at 45–150 mm working distance (mean 0.115, σ 0.037 over that range).
+// The barrel's widest section lies h/2 below the end face, between the two planes: its
+// outline is read too large by about half as much (kSilhouetteScaleShare), not by the whole
+// scale error. Where the silhouette agrees with half height the first dominates and the
+// reduction is known to the press's tolerance; where it does not, the others take over, and
+// the mixture's spread covers the step between them.
 constexpr double kNominalReductionSigma = 0.003;
-constexpr double kGrossScaleSigma = 0.08;
+constexpr double kFixtureScaleMean = 0.115, kFixtureScaleSigma = 0.037;
+constexpr double kSilhouetteScaleShare = 0.5;
 // A view the image shows to be oblique (the boundaries share an ellipse, or their centres
 // part) comes from a camera close and off-axis: it sees the barrel's widest section, half-way
 // down, from farther than the end face, and a short lens's barrel distortion shrinks it
@@ -51,27 +56,38 @@ constexpr double kForeshortenMean = -0.05, kForeshortenSigma = 0.04;
 // outline than kMisreadMinInside the rays' scatter measures what a highlight does.
 constexpr double kMisreadPrior = 0.02;
 constexpr double kMisreadMinInside = 0.03;
+// The nominal conditions' check: a reading is ok while the silhouette's explanations leave
+// less than a 15 % chance that μ lies beyond the tolerance (and the finding names the
+// weightiest explanation other than the nominal height with at least 5 % of the weight).
+constexpr double kWrongRisk = 0.15;
+constexpr double kPlausibleWeight = 0.05;
+// The undeclared reduction's range (the test to half height, 45–55 %).
+constexpr double kUndeclaredReductionLo = 0.45, kUndeclaredReductionHi = 0.55;
+// What the advice proposes: a final height measured with a micrometer, a scale measured on
+// the end-face plane with a reference disc, n fitted over the test's own strain range.
+constexpr double kAdvisedHFinalTolMm = 0.01, kAdvisedScaleRel = 0.001, kAdvisedNTol = 0.003;
 // The edge model's own error, beyond the fits' scatter: against the drawn boundaries of the
 // development set's photographs the pipeline's R_i lies 0.005 mm (1 σ) off the truth's
 // equivalent radius and R_o 0.001 mm (a ragged texture boundary, not a step, on the inside).
 constexpr double kInnerEdgeModelMm = 0.005, kOuterEdgeModelMm = 0.001;
 
-// The silhouette's observation d = δk + β·δr + o + e (e of variance se2: silhouetteRelSigma;
-// o an offset of the silhouette alone, with its mean and variance) applied to a prior on
-// (δk, δr): the posterior mean and covariance (a linear Gaussian update), widened by χ² where d
-// lies further out than the prior and e explain (as for a Birge ratio).
+// The silhouette's observation d = α·δk + β·δr + o + e (α the share of a scale error the
+// silhouette sees; e of variance se2: silhouetteRelSigma; o an offset of the silhouette alone,
+// with its mean and variance) applied to a prior on (δk, δr) with the means prior.dk, prior.dr:
+// the posterior mean and covariance (a linear Gaussian update), widened by χ² where d lies
+// further out than the prior and e explain (as for a Birge ratio).
 ScaleAndReduction update(const ScaleAndReduction &prior, double d, double beta, double se2, double offset = 0,
-                         double offsetVar = 0)
+                         double offsetVar = 0, double alpha = 1)
 {
-    const double S = prior.pk + beta * beta * prior.pr + se2 + offsetVar;
-    const double v = d - offset;
+    const double S = alpha * alpha * prior.pk + beta * beta * prior.pr + se2 + offsetVar;
+    const double v = d - offset - alpha * prior.dk - beta * prior.dr;
     const double w = std::max(1.0, v * v / S);
     ScaleAndReduction p;
-    p.dk = prior.pk / S * v;
-    p.dr = beta * prior.pr / S * v;
-    p.pk = w * (prior.pk - prior.pk * prior.pk / S);
+    p.dk = prior.dk + alpha * prior.pk / S * v;
+    p.dr = prior.dr + beta * prior.pr / S * v;
+    p.pk = w * (prior.pk - alpha * alpha * prior.pk * prior.pk / S);
     p.pr = w * (prior.pr - beta * beta * prior.pr * prior.pr / S);
-    p.pkr = -w * beta * prior.pk * prior.pr / S;
+    p.pkr = -w * alpha * beta * prior.pk * prior.pr / S;
     return p;
 }
 
@@ -92,55 +108,56 @@ ScaleAndReduction declaredPosterior(ScaleAndReduction sr, const SilhouetteObserv
 // (kNominalReductionSigma, kForeshortenMean), and a wrong edge (kMisreadPrior): each one's
 // posterior, weighted by its prior and how well it predicts d, and their mixture's moments.
 ScaleAndReduction mixturePosterior(const ScaleAndReduction &declared, const SilhouetteObservation &o, double se2,
-                                   uint32_t *flags)
+                                   uint32_t *flags, Explanations *why)
 {
-    constexpr int kExplanations = 5;
-    constexpr int kMisread = 4;
+    using E = Explanations;
     const double d = o.d, beta = o.beta;
-    ScaleAndReduction prior[kExplanations];
-    prior[0] = declared;                               // pressed to another height
-    prior[1].pk = kGrossScaleSigma * kGrossScaleSigma; // half height, a scale off
-    prior[1].pr = kNominalReductionSigma * kNominalReductionSigma;
-    prior[2].pk = declared.pk; // half height, scale as declared
-    prior[2].pr = kNominalReductionSigma * kNominalReductionSigma;
-    prior[3] = prior[2];        // half height, scale as declared, the silhouette foreshortened
-    prior[kMisread] = declared; // a wrong edge: the silhouette tells nothing
-    const double offset[kExplanations] = {0, 0, 0, kForeshortenMean, 0};
-    const double offsetVar[kExplanations] = {0, 0, 0, kForeshortenSigma * kForeshortenSigma, 0};
+    ScaleAndReduction prior[E::kCount];
+    prior[E::OtherHeight] = declared;
+    prior[E::ScaleOff].dk = kFixtureScaleMean;
+    prior[E::ScaleOff].pk = kFixtureScaleSigma * kFixtureScaleSigma;
+    prior[E::ScaleOff].pr = kNominalReductionSigma * kNominalReductionSigma;
+    prior[E::Nominal].pk = declared.pk;
+    prior[E::Nominal].pr = kNominalReductionSigma * kNominalReductionSigma;
+    prior[E::Foreshortened] = prior[E::Nominal];
+    prior[E::WrongEdge] = declared; // the silhouette tells nothing
+    const double offset[E::kCount] = {0, 0, 0, kForeshortenMean, 0};
+    const double offsetVar[E::kCount] = {0, 0, 0, kForeshortenSigma * kForeshortenSigma, 0};
+    const double alpha[E::kCount] = {1, kSilhouetteScaleShare, 1, 1, 1};
     const bool oblique = (*flags & (kFlagElliptical | kFlagCentreOffset)) != 0;
     const double gaussianPrior = (1.0 - kMisreadPrior) / (oblique ? 4 : 3);
-    ScaleAndReduction post[kExplanations];
-    double w[kExplanations], wSum = 0;
-    for (int h = 0; h < kMisread; ++h) {
-        const double S = prior[h].pk + beta * beta * prior[h].pr + se2 + offsetVar[h];
-        const double v = d - offset[h];
+    E e;
+    double wSum = 0;
+    for (int h = 0; h < E::WrongEdge; ++h) {
+        const double S = alpha[h] * alpha[h] * prior[h].pk + beta * beta * prior[h].pr + se2 + offsetVar[h];
+        const double v = d - offset[h] - alpha[h] * prior[h].dk;
         // Densities up to the common 1/√(2π).
-        w[h] = h != 3 || oblique ? gaussianPrior * std::exp(-0.5 * v * v / S) / std::sqrt(S) : 0.0;
-        wSum += w[h];
-        post[h] = update(prior[h], d, beta, se2, offset[h], offsetVar[h]);
+        e.weight[h] =
+            h != E::Foreshortened || oblique ? gaussianPrior * std::exp(-0.5 * v * v / S) / std::sqrt(S) : 0.0;
+        wSum += e.weight[h];
+        e.post[h] = update(prior[h], d, beta, se2, offset[h], offsetVar[h], alpha[h]);
     }
     const double misreadSpan = -kMisreadMinInside - o.dContact;
     const bool misreadPossible = misreadSpan > 0 && d >= o.dContact && d <= -kMisreadMinInside;
-    w[kMisread] = misreadPossible ? kMisreadPrior * std::sqrt(2 * std::numbers::pi) / misreadSpan : 0.0;
-    wSum += w[kMisread];
-    post[kMisread] = prior[kMisread];
+    e.weight[E::WrongEdge] = misreadPossible ? kMisreadPrior * std::sqrt(2 * std::numbers::pi) / misreadSpan : 0.0;
+    wSum += e.weight[E::WrongEdge];
+    e.post[E::WrongEdge] = prior[E::WrongEdge];
     ScaleAndReduction sr;
-    for (int h = 0; h < kExplanations; ++h) {
-        w[h] = wSum > 0 ? w[h] / wSum : 1.0 / kExplanations;
-        sr.dk += w[h] * post[h].dk;
-        sr.dr += w[h] * post[h].dr;
+    for (int h = 0; h < E::kCount; ++h) {
+        e.weight[h] = wSum > 0 ? e.weight[h] / wSum : 1.0 / int(E::kCount);
+        sr.dk += e.weight[h] * e.post[h].dk;
+        sr.dr += e.weight[h] * e.post[h].dr;
     }
-    // A discrepancy the view's foreshortening explains best is not the scale's: the
-    // elliptical or centre_offset flag names its cause.
-    if (oblique && w[3] >= std::max({w[0], w[1], w[2]})) *flags &= ~uint32_t(kFlagScaleSuspect);
     // A silhouette more likely a wrong edge than the barrel's outline is not relied on.
-    if (w[kMisread] >= std::max({w[0], w[1], w[2], w[3]})) *flags |= kFlagSilhouetteUnreliable;
-    for (int h = 0; h < kExplanations; ++h) {
-        const double gk = post[h].dk - sr.dk, gr = post[h].dr - sr.dr;
-        sr.pk += w[h] * (post[h].pk + gk * gk);
-        sr.pr += w[h] * (post[h].pr + gr * gr);
-        sr.pkr += w[h] * (post[h].pkr + gk * gr);
+    if (e.weight[E::WrongEdge] >= *std::max_element(e.weight, e.weight + E::WrongEdge))
+        *flags |= kFlagSilhouetteUnreliable;
+    for (int h = 0; h < E::kCount; ++h) {
+        const double gk = e.post[h].dk - sr.dk, gr = e.post[h].dr - sr.dr;
+        sr.pk += e.weight[h] * (e.post[h].pk + gk * gk);
+        sr.pr += e.weight[h] * (e.post[h].pr + gr * gr);
+        sr.pkr += e.weight[h] * (e.post[h].pkr + gk * gr);
     }
+    if (why) *why = e;
     return sr;
 }
 
@@ -262,20 +279,23 @@ SilhouetteObservation observeSilhouette(const FaceInMm &face, double coverage, d
         return o;
     }
     const double n = spec.n;
+    // The silhouette on the FE's terms (friction::kFeRMaxOverSpecimen).
+    const double rMaxAsFe = face.rMaxMm * (1 + friction::kFeRMaxOverSpecimen);
     o.measuredRelSigma = friction::measuredRMaxRelSigma(coverage > 0 ? scatterPx / rMaxPx : 0);
     const friction::RadiiCheck rc =
-        friction::checkRadii(face.rMaxMm, n, mu0, spec.d0Mm, r.r, spec.h0Mm, true, o.measuredRelSigma);
+        friction::checkRadii(rMaxAsFe, n, mu0, spec.d0Mm, r.r, spec.h0Mm, true, o.measuredRelSigma);
     o.rMaxZ = rc.z;
     o.reductionEst = rc.reductionEst;
-    if (rc.inconsistent()) o.flags |= r.declared ? kFlagRadiiInconsistent : kFlagScaleSuspect;
-    const friction::RadiiCheck up = friction::checkRadii(face.rMaxMm, n, mu0, spec.d0Mm, r.r + 0.01, spec.h0Mm, false);
-    const friction::RadiiCheck down =
-        friction::checkRadii(face.rMaxMm, n, mu0, spec.d0Mm, r.r - 0.01, spec.h0Mm, false);
+    // Without a declared final height a discrepancy is weighed by its explanations, and
+    // judged by what they do to μ (nominalCheck).
+    if (rc.inconsistent() && r.declared) o.flags |= kFlagRadiiInconsistent;
+    const friction::RadiiCheck up = friction::checkRadii(rMaxAsFe, n, mu0, spec.d0Mm, r.r + 0.01, spec.h0Mm, false);
+    const friction::RadiiCheck down = friction::checkRadii(rMaxAsFe, n, mu0, spec.d0Mm, r.r - 0.01, spec.h0Mm, false);
     const double overContact = face.rMaxMm / face.rOuterMm;
     o.usable = rc.valid && up.valid && down.valid && coverage >= kSilhouetteMinCoverage &&
                overContact > kSilhouetteOverContactMin && overContact < kSilhouetteOverContactMax;
     if (o.usable) {
-        o.d = std::log(face.rMaxMm / rc.rMaxFeMm);
+        o.d = std::log(rMaxAsFe / rc.rMaxFeMm);
         o.dContact = std::log(kSilhouetteOverContactMin * face.rOuterMm / rc.rMaxFeMm);
         o.beta = std::log(up.rMaxFeMm / down.rMaxFeMm) / 0.02;
         o.usable = o.beta > 0.1;
@@ -285,10 +305,50 @@ SilhouetteObservation observeSilhouette(const FaceInMm &face, double coverage, d
 }
 
 ScaleAndReduction silhouettePosterior(const ScaleAndReduction &prior, const SilhouetteObservation &obs,
-                                      double silhouetteRelSigma, bool declared, uint32_t *flags)
+                                      double silhouetteRelSigma, bool declared, uint32_t *flags, Explanations *why)
 {
     const double se2 = silhouetteRelSigma * silhouetteRelSigma;
-    return declared ? declaredPosterior(prior, obs, se2) : mixturePosterior(prior, obs, se2, flags);
+    return declared ? declaredPosterior(prior, obs, se2) : mixturePosterior(prior, obs, se2, flags, why);
+}
+
+uint32_t nominalCheck(const MuFunction &F, const SpecimenSpec &spec, double u, double mu, const Explanations *why,
+                      double *nominalMu)
+{
+    using E = Explanations;
+    const double n = spec.n, tol = spec.tolerance.at(std::fabs(mu));
+    *nominalMu = F.at(u, kNominalReduction, n);
+    if (!why) {
+        // Nothing in the image speaks for the nominal height: the undeclared range is the finding.
+        const double lo = F.at(u, kUndeclaredReductionLo, n), hi = F.at(u, kUndeclaredReductionHi, n);
+        return std::max(std::fabs(lo - mu), std::fabs(hi - mu)) > tol ? uint32_t(kFlagReductionUnchecked) : 0u;
+    }
+    // The chance that μ lies beyond the tolerance from the reading: under each explanation μ
+    // is Gaussian about its own value, with the spread its posterior of scale and reduction
+    // leaves (the declared inputs' other parts are U's, not the check's).
+    double risk = 0;
+    int lead = -1; // the weightiest explanation other than the nominal height as seen
+    for (int h = 0; h < E::kCount; ++h) {
+        if (why->weight[h] <= 0) continue;
+        const ScaleAndReduction &p = why->post[h];
+        const double uh = u * std::exp(-p.dk), rh = kNominalReduction + p.dr;
+        const double muH = F.at(uh, rh, n);
+        const double hu = std::max(1e-4, 0.01 * uh), hr = 0.005;
+        const double a = -uh * (F.at(uh + hu, rh, n) - F.at(uh - hu, rh, n)) / (2 * hu);
+        const double g = (F.at(uh, rh + hr, n) - F.at(uh, rh - hr, n)) / (2 * hr);
+        const double s = std::sqrt(std::max(1e-12, a * a * p.pk + g * g * p.pr + 2 * a * g * p.pkr));
+        const double off = std::fabs(muH - mu);
+        risk +=
+            why->weight[h] * 0.5 *
+            (std::erfc((tol - off) / (s * std::numbers::sqrt2)) + std::erfc((tol + off) / (s * std::numbers::sqrt2)));
+        // A foreshortened view leads the scale off: the finding then names no scale.
+        const bool nominal = h == E::Nominal || h == E::WrongEdge;
+        if (!nominal && why->weight[h] >= kPlausibleWeight && (lead < 0 || why->weight[h] > why->weight[lead]))
+            lead = h;
+    }
+    // The image says another height (or scale) than the nominal, by enough to move μ.
+    const bool moved = std::fabs(*nominalMu - mu) > tol;
+    if (!moved && risk <= kWrongRisk) return 0;
+    return lead == E::ScaleOff ? uint32_t(kFlagScaleSuspect) : uint32_t(kFlagReductionNotNominal);
 }
 
 MuReading readMu(const MuFunction &F, const FrictionModel &model, const SpecimenSpec &spec, double uMm, double r,
@@ -354,16 +414,61 @@ uint32_t rangeChecks(const FrictionModel &model, const MuReading &m, const Assum
     return f;
 }
 
+Advice adviseInput(const MuFunction &F, const FrictionModel &model, const SpecimenSpec &spec, double uF, double rF,
+                   const ScaleAndReduction &sr, double uSigmaEdgesMm, double bias, bool declared, bool calibrated,
+                   double scaleRelSigma)
+{
+    const double k = spec.tolerance.coverage;
+    auto expandedWith = [&](const ScaleAndReduction &what) {
+        return k * combinedSigma(budgetOf(F, model, spec, uF, rF, what, uSigmaEdgesMm, bias));
+    };
+    const UncertaintyBudget now = budgetOf(F, model, spec, uF, rF, sr, uSigmaEdgesMm, bias);
+    Advice a;
+    a.uNow = a.uThen = k * combinedSigma(now);
+    auto consider = [&](AdviceInput input, double value, double u) {
+        if (u < a.uThen) a.input = input, a.value = value, a.uThen = u;
+    };
+    const double declaredScaleVar = scaleRelSigma * scaleRelSigma;
+    // A final height declared with the default tolerance: the reduction known to it, and the
+    // scale no longer weighed against the silhouette's other explanations.
+    ScaleAndReduction hFinal;
+    const double hTol = spec.tolerances.hFinalMm / spec.h0Mm;
+    hFinal.pk = declaredScaleVar, hFinal.pr = hTol * hTol;
+    if (!declared) consider(AdviceInput::HFinal, 0, expandedWith(hFinal));
+    // A final height measured to a micrometer's 0.01 mm.
+    if (declared && spec.tolerances.hFinalMm > kAdvisedHFinalTolMm) {
+        ScaleAndReduction closer = sr;
+        const double t = kAdvisedHFinalTolMm / spec.h0Mm;
+        closer.pr = std::min(sr.pr, t * t), closer.pkr = 0;
+        consider(AdviceInput::HFinalTol, kAdvisedHFinalTolMm, expandedWith(closer));
+    }
+    // A scale measured on the end-face plane to 0.1 %.
+    if (!calibrated && spec.tolerances.scaleRel > kAdvisedScaleRel) {
+        ScaleAndReduction closer = sr;
+        closer.pk = std::max(0.0, sr.pk - declaredScaleVar) + kAdvisedScaleRel * kAdvisedScaleRel;
+        consider(AdviceInput::ScaleTol, kAdvisedScaleRel, expandedWith(closer));
+    }
+    // n from a flow curve fitted over the test's own strain range.
+    if (spec.tolerances.n > kAdvisedNTol) {
+        SpecimenSpec closer = spec;
+        closer.tolerances.n = kAdvisedNTol;
+        const MuFunction G(closer, model);
+        const double u = k * combinedSigma(budgetOf(G, model, closer, uF, rF, sr, uSigmaEdgesMm, bias));
+        consider(AdviceInput::NTol, kAdvisedNTol, u);
+    }
+    // Worth a line only where it shrinks U by a tenth.
+    if (a.uThen > 0.9 * a.uNow) {
+        a.input = AdviceInput::None, a.value = 0, a.uThen = a.uNow;
+        a.modelLeads = now.model >= now.edges;
+    }
+    return a;
+}
+
 void decideStatus(const SpecimenSpec &spec, uint32_t f, Reading *out)
 {
     out->toleranceMu = spec.tolerance.at(std::fabs(out->mu));
-    if (spec.tolerance.coverage * out->muSigma > out->toleranceMu) {
-        const UncertaintyBudget &b = out->budget;
-        const double parts[5] = {b.edges, b.scale, b.reduction, b.n, b.model};
-        const uint32_t names[5] = {kFlagEdgesUncertain, kFlagScaleUncertain, kFlagReductionUncertain, kFlagNUncertain,
-                                   kFlagModelUncertain};
-        f |= names[std::max_element(parts, parts + 5) - parts];
-    }
+    out->coverage = spec.tolerance.coverage;
+    out->decision = out->expanded() <= out->toleranceMu ? Decision::Within : Decision::Beyond;
     out->flags = f;
     out->status = f ? Status::Warn : Status::Ok;
     out->error = ErrorCode::None;

@@ -2,7 +2,8 @@
 // The interpretation's steps (interpretation.h), each a function of its own so that each can
 // be tested alone: the final height assumed, the face in millimetres (the plane mapping),
 // u's edge uncertainty, the image's checks, the silhouette's observation and the posterior of
-// scale and reduction it gives, μ, the budget and the status.
+// scale and reduction it gives, the nominal conditions' check, μ, the budget, the advice, the
+// status and the tolerance decision.
 #include <cstdint>
 
 #include "friction/friction_model.h"
@@ -89,11 +90,30 @@ struct SilhouetteObservation {
 SilhouetteObservation observeSilhouette(const FaceInMm &face, double coverage, double scatterPx, double rMaxPx,
                                         const SpecimenSpec &spec, const AssumedReduction &r, double mu0);
 
+// The silhouette's explanations of its discrepancy where no final height is declared
+// (interpretation.h): each one's posterior of scale and reduction and its weight.
+struct Explanations {
+    enum Which { OtherHeight, ScaleOff, Nominal, Foreshortened, WrongEdge, kCount };
+    ScaleAndReduction post[kCount];
+    double weight[kCount] = {};
+};
+
 // The posterior of scale and reduction given the silhouette (interpretation.h): a linear
-// update where the final height is declared, the mixture of explanations where it is not.
-// *flags may lose scale_suspect (an oblique view explains it) or gain silhouette_unreliable.
+// update where the final height is declared, the mixture of explanations where it is not
+// (then *why, when given, receives them). *flags may gain silhouette_unreliable.
 ScaleAndReduction silhouettePosterior(const ScaleAndReduction &prior, const SilhouetteObservation &obs,
-                                      double silhouetteRelSigma, bool declared, uint32_t *flags);
+                                      double silhouetteRelSigma, bool declared, uint32_t *flags,
+                                      Explanations *why = nullptr);
+
+// The method's nominal conditions checked where no final height is declared: μ at the
+// nominal half height with the declared scale, and under every explanation of the silhouette
+// that keeps some weight, against the reading's μ. Any of them beyond the tolerance is a
+// finding: reduction_not_nominal, or scale_suspect where a scale off explains the silhouette
+// best. why == nullptr (no silhouette to observe, as through a calibration): the undeclared
+// reduction's whole range (45–55 %) is held against the reading (reduction_unchecked).
+// *nominalMu: μ at the nominal conditions.
+uint32_t nominalCheck(const MuFunction &F, const SpecimenSpec &spec, double uDeclaredMm, double mu,
+                      const Explanations *why, double *nominalMu);
 
 // μ at the corrected u and reduction; bias: the carry to 50 % a model that does not carry
 // itself leaves out (budgeted).
@@ -109,8 +129,16 @@ UncertaintyBudget budgetOf(const MuFunction &F, const friction::FrictionModel &m
                            double uMm, double r, const ScaleAndReduction &sr, double uSigmaEdgesMm, double bias);
 double combinedSigma(const UncertaintyBudget &b);
 
-// The model's range flags, the reduction's, and the status: ok when no flag is raised and the
-// budget meets the tolerance, else warn with the leading component named.
+// The declared input that would shrink U the most: the budget again with that input declared
+// or declared closer (h_final_mm where none is, h_final_tol_mm, mm_per_px_tol, n_tol).
+// scaleRelSigma: the declared scale's part of sr.pk; calibrated: the scale is the
+// calibration's (no mm_per_px_tol to advise).
+Advice adviseInput(const MuFunction &F, const friction::FrictionModel &model, const SpecimenSpec &spec, double uMm,
+                   double r, const ScaleAndReduction &sr, double uSigmaEdgesMm, double bias, bool declared,
+                   bool calibrated, double scaleRelSigma);
+
+// The model's range flags and the reduction's; the status from the checks' flags alone, and
+// the decision of U against the tolerance.
 uint32_t rangeChecks(const friction::FrictionModel &model, const MuReading &m, const AssumedReduction &r);
 void decideStatus(const SpecimenSpec &spec, uint32_t flags, Reading *out);
 

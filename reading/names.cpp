@@ -1,4 +1,4 @@
-// Stable names for statuses and flags: they appear in CSV, JSON and on serial.
+// Stable names for statuses, flags, decisions and advised inputs: they appear in CSV, JSON and on serial.
 #include "reading/reading.h"
 
 namespace icacam::reading {
@@ -33,13 +33,26 @@ const char *flagName(int bit)
                                                    "reduction_outside_model",
                                                    "radii_inconsistent",
                                                    "aspect_outside_model",
-                                                   "edges_uncertain",
-                                                   "scale_uncertain",
-                                                   "reduction_uncertain",
-                                                   "n_uncertain",
-                                                   "model_uncertain",
-                                                   "silhouette_unreliable"};
+                                                   "silhouette_unreliable",
+                                                   "reduction_not_nominal",
+                                                   "reduction_unchecked"};
     return bit >= 0 && bit < kFlagCount ? kNames[bit] : "unknown";
+}
+
+const char *decisionName(Decision d)
+{
+    return d == Decision::Within ? "within" : "beyond";
+}
+
+const char *adviceInputName(AdviceInput a)
+{
+    switch (a) {
+    case AdviceInput::HFinal: return "h_final_mm";
+    case AdviceInput::HFinalTol: return "h_final_tol_mm";
+    case AdviceInput::ScaleTol: return "mm_per_px_tol";
+    case AdviceInput::NTol: return "n_tol";
+    default: return "none";
+    }
 }
 
 } // namespace icacam::reading

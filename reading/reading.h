@@ -1,7 +1,8 @@
 #pragma once
 // A reading: the end face's geometry interpreted with what the instrument was told (the
 // specimen, the scale or calibration, the friction model): radii in mm, u, μ ± σ with its
-// budget, a status and named flags (PRODUCT.md §4 and §6).
+// budget, a status from the checks alone and their named flags, the decision against the
+// lab's tolerance and the advice (PRODUCT.md §2, §4 and §6).
 #include <cstdint>
 
 #include "vision/end_face_geometry.h"
@@ -21,34 +22,47 @@ enum ReadingFlag : uint32_t {
     kFlagMuBelowRange = 1u << 2,
     kFlagMuAboveRange = 1u << 3,
     kFlagUOutsideModel = 1u << 4,
-    kFlagLowContrast = 1u << 5,        // an edge has little contrast: scatter may hide a bias
-    kFlagLowCoverage = 1u << 6,        // an edge was found on too few rays
-    kFlagHighScatter = 1u << 7,        // boundary points scatter more than a clean edge does
-    kFlagBlurred = 1u << 8,            // edges wider than the ring resolves reliably
-    kFlagSaturated = 1u << 9,          // part of the ring is clipped at full scale
-    kFlagSpecimenClipped = 1u << 10,   // the specimen runs off the frame
-    kFlagElliptical = 1u << 11,        // both boundaries share an ellipticity: tilt or lens
-    kFlagCentreOffset = 1u << 12,      // the boundaries are not concentric
-    kFlagScaleSuspect = 1u << 13,      // no final height given: R_max contradicts the scale and 50 % reduction
-    kFlagNarrowRing = 1u << 14,        // the ICA is only a few pixels wide
-    kFlagNoSilhouette = 1u << 15,      // the barrel silhouette was not found: scale unchecked
-    kFlagReductionOutside = 1u << 16,  // recorded final height outside what the model covers
-    kFlagRadiiInconsistent = 1u << 17, // R_max contradicts the declared scale and final height
-    kFlagAspectOutside = 1u << 18,     // the specimen's H0/D0 lies outside what the model covers
-    // The budget misses the tolerance; the flag names its leading component (what to declare
-    // or improve to get an ok reading).
-    kFlagEdgesUncertain = 1u << 19,       // boundary scatter or the edge model
-    kFlagScaleUncertain = 1u << 20,       // mm_per_px or the calibration's plane
-    kFlagReductionUncertain = 1u << 21,   // the final height (declare h_final_mm)
-    kFlagNUncertain = 1u << 22,           // the declared n's tolerance
-    kFlagModelUncertain = 1u << 23,       // the friction model's own error
-    kFlagSilhouetteUnreliable = 1u << 24, // a silhouette was found but does not fit the FE shape: not used
+    kFlagLowContrast = 1u << 5,           // an edge has little contrast: scatter may hide a bias
+    kFlagLowCoverage = 1u << 6,           // an edge was found on too few rays
+    kFlagHighScatter = 1u << 7,           // boundary points scatter more than a clean edge does
+    kFlagBlurred = 1u << 8,               // edges wider than the ring resolves reliably
+    kFlagSaturated = 1u << 9,             // part of the ring is clipped at full scale
+    kFlagSpecimenClipped = 1u << 10,      // the specimen runs off the frame
+    kFlagElliptical = 1u << 11,           // both boundaries share an ellipticity: tilt or lens
+    kFlagCentreOffset = 1u << 12,         // the boundaries are not concentric
+    kFlagScaleSuspect = 1u << 13,         // no final height given: a scale off explains R_max best, and moves μ
+    kFlagNarrowRing = 1u << 14,           // the ICA is only a few pixels wide
+    kFlagNoSilhouette = 1u << 15,         // the barrel silhouette was not found: scale unchecked
+    kFlagReductionOutside = 1u << 16,     // recorded final height outside what the model covers
+    kFlagRadiiInconsistent = 1u << 17,    // R_max contradicts the declared scale and final height
+    kFlagAspectOutside = 1u << 18,        // the specimen's H0/D0 lies outside what the model covers
+    kFlagSilhouetteUnreliable = 1u << 19, // a silhouette was found but does not fit the FE shape: not used
+    // No final height given, and the silhouette says the specimen was pressed to another
+    // height than the test's nominal half by enough to move μ beyond the tolerance.
+    kFlagReductionNotNominal = 1u << 20,
+    // No final height given, nothing in the image checks the nominal half height (a
+    // calibrated view), and 45–55 % moves μ beyond the tolerance.
+    kFlagReductionUnchecked = 1u << 21,
 };
-constexpr int kFlagCount = 25;
-// The flags that say the budget misses the tolerance (the others are checks).
-constexpr uint32_t kBudgetFlags =
-    kFlagEdgesUncertain | kFlagScaleUncertain | kFlagReductionUncertain | kFlagNUncertain | kFlagModelUncertain;
+constexpr int kFlagCount = 22;
 const char *flagName(int bit);
+
+// The expanded uncertainty U = k·σ_μ against the lab's tolerance on μ (a decision rule in the
+// sense of ISO/IEC 17025 §7.8.6): a decision about the reading, not a check of it.
+enum class Decision : uint8_t { Within, Beyond };
+const char *decisionName(Decision d);
+
+// The one declared input that would shrink U the most, and U before and after. None: no
+// declared input shrinks U by a tenth; U is then mostly the model's own or the edges'.
+enum class AdviceInput : uint8_t { None, HFinal, HFinalTol, ScaleTol, NTol };
+struct Advice {
+    AdviceInput input = AdviceInput::None;
+    double value = 0; // the input's value to declare (a tolerance), 0 for h_final_mm itself
+    double uNow = 0, uThen = 0;
+    bool modelLeads = false; // for None: the model's own error leads the budget (else the edges)
+};
+// The manifest column (and the device config key's last part) the advice names.
+const char *adviceInputName(AdviceInput a);
 
 // Standard uncertainties of μ, one per source (GUM, JCGM 100), each from the model's own
 // sensitivities (finite differences of the friction model). muSigma combines them with the
@@ -101,7 +115,13 @@ struct Reading {
     UncertaintyBudget budget;
     double reduction = 0.5;    // height reduction u was read at (declared, inferred or nominal)
     double reductionSigma = 0; // its standard uncertainty
-    double toleranceMu = 0;    // the lab's tolerance for this reading (status ok: 2σ within it)
+    double toleranceMu = 0;    // the lab's tolerance for this reading
+    double coverage = 2;       // k of the expanded uncertainty U = k·σ_μ
+    Decision decision = Decision::Within;
+    Advice advice;
+    // μ at the test's nominal conditions (the declared scale, 50 %): what the silhouette's
+    // explanations are held against where no final height is declared.
+    double nominalMu = 0;
     DeclaredEstimate declared;
 
     double centreOffsetPx = 0; // between the boundaries' centres (in the plane, with a calibration)
@@ -115,6 +135,7 @@ struct Reading {
     double rOuterMm() const { return face.rOuterMm * scaleFactor; }
     double rMaxMm() const { return face.rMaxMm * scaleFactor; }
     bool hasValue() const { return status != Status::Error; }
+    double expanded() const { return coverage * muSigma; }
 };
 
 } // namespace icacam::reading

@@ -8,7 +8,7 @@ namespace icacam::reading {
 
 namespace {
 
-enum class Field : uint8_t { Status, Flags, Message, Model, Number };
+enum class Field : uint8_t { Status, Flags, Message, Decision, Advice, Model, Number };
 
 struct FieldSpec {
     const char *name;
@@ -39,6 +39,8 @@ const FieldSpec kFields[] = {
     {"mu_sigma", Field::Number, 5, [](const Reading &m) { return m.muSigma; }},
     {"flags", Field::Flags, 0, nullptr},
     {"message", Field::Message, 0, nullptr},
+    {"decision", Field::Decision, 0, nullptr},
+    {"advice", Field::Advice, 0, nullptr},
     {"sigma_edges", Field::Number, 5, [](const Reading &m) { return m.budget.edges; }},
     {"sigma_scale", Field::Number, 5, [](const Reading &m) { return m.budget.scale; }},
     {"sigma_reduction", Field::Number, 5, [](const Reading &m) { return m.budget.reduction; }},
@@ -78,18 +80,50 @@ const FieldSpec kFields[] = {
 };
 constexpr int kFieldCount = int(sizeof kFields / sizeof kFields[0]);
 
-// What to declare or improve when a budget component leads past the tolerance.
-const char *remedy(uint32_t flags)
+// What a check's finding means for the reading, and what to supply or do.
+const char *findingWords(int bit)
 {
-    if (flags & kFlagReductionUncertain) return "declare h_final_mm (the final height) for a reading within tolerance";
-    if (flags & kFlagScaleUncertain) return "check mm_per_px on the end-face plane, or calibrate the camera";
-    if (flags & kFlagEdgesUncertain) return "edges scatter: clean the end face, relight or refocus";
-    if (flags & kFlagNUncertain) return "n's tolerance dominates: a closer n is needed";
-    if (flags & kFlagModelUncertain) return "the friction model's own error exceeds the tolerance here";
-    return nullptr;
+    static const char *const kWords[kFlagCount] = {
+        "n outside the model's range: the value is extrapolated",
+        "K outside the model's range: the value is extrapolated",
+        "mu below the model's range: the value is extrapolated",
+        "mu above the model's range: the value is extrapolated",
+        "u outside what the model covers at this n: the value is extrapolated",
+        "an edge has little contrast: relight the end face",
+        "an edge was found on too few rays: clean the end face or relight",
+        "the boundary points scatter: clean the end face, relight or refocus",
+        "the edges are blurred: refocus",
+        "part of the ring is clipped: lower the exposure",
+        "the specimen runs off the frame: centre it",
+        "the end face looks elliptical: square the camera to the fixture or calibrate it",
+        "the boundaries are not concentric: square the camera or check the specimen",
+        "the silhouette says the scale is off: check mm_per_px on the end-face plane or declare h_final_mm",
+        "the ICA is only a few pixels wide: a finer scale is needed",
+        "no barrel silhouette: the scale and the final height are unchecked; declare h_final_mm",
+        "the final height lies outside what the model covers",
+        "the silhouette contradicts the declared scale and final height: check both",
+        "the specimen's H0/D0 lies outside what the model covers",
+        "the silhouette does not fit the barrel's shape: declare h_final_mm",
+        "the specimen was not pressed to half height: declare h_final_mm",
+        "no final height, and 45-55 % moves mu beyond the tolerance: declare h_final_mm",
+    };
+    return bit >= 0 && bit < kFlagCount ? kWords[bit] : "check";
 }
 
 } // namespace
+
+void adviceText(const Advice &a, char *buf, size_t size)
+{
+    if (size == 0) return;
+    if (a.input == AdviceInput::None)
+        std::snprintf(buf, size, "none: U %.4f is mostly the %s", a.uNow, a.modelLeads ? "model's own" : "edges'");
+    else if (a.input == AdviceInput::HFinal)
+        std::snprintf(buf, size, "h_final_mm: U %.4f \xE2\x86\x92 %.4f", a.uNow, a.uThen);
+    else
+        std::snprintf(buf, size, "%s %g: U %.4f \xE2\x86\x92 %.4f", adviceInputName(a.input), a.value, a.uNow, a.uThen);
+}
+
+namespace {} // namespace
 
 int readingFieldCount()
 {
@@ -124,23 +158,30 @@ void readingMessage(const Reading &m, char *buf, size_t size)
         std::snprintf(buf, size, "%s", vision::errorMessage(m.error));
         return;
     }
-    if (m.status == Status::Ok) return;
-    char flags[512];
-    flagList(m.flags, flags, sizeof flags);
-    const char *hint = remedy(m.flags);
-    if (hint)
-        std::snprintf(buf, size, "check flags: %s; 2 mu_sigma %.4f beyond the tolerance %.4f: %s", flags, 2 * m.muSigma,
-                      m.toleranceMu, hint);
-    else
-        std::snprintf(buf, size, "check flags: %s", flags);
+    size_t n = 0;
+    for (int bit = 0; bit < kFlagCount; ++bit) {
+        if (!(m.flags & (1u << bit))) continue;
+        const int w = (1u << bit) == kFlagReductionNotNominal
+                          ? std::snprintf(buf + n, size - n, "%s%s (%.1f %%; mu %.4f at 50 %%)", n ? "; " : "",
+                                          findingWords(bit), 100 * m.reduction, m.nominalMu)
+                          : std::snprintf(buf + n, size - n, "%s%s", n ? "; " : "", findingWords(bit));
+        if (w < 0 || size_t(w) >= size - n) {
+            buf[n] = 0; // a finding that does not fit is left out whole
+            break;
+        }
+        n += size_t(w);
+    }
 }
 
 void writeReading(const Reading *m, std::string_view message, std::string_view model, RecordSink &sink)
 {
     const bool value = m && m->hasValue();
-    char flags[512], words[768];
-    flags[0] = words[0] = 0;
-    if (value) flagList(m->flags, flags, sizeof flags);
+    char flags[512], words[768], advice[96];
+    flags[0] = words[0] = advice[0] = 0;
+    if (value) {
+        flagList(m->flags, flags, sizeof flags);
+        adviceText(m->advice, advice, sizeof advice);
+    }
     if (message.empty() && m) {
         readingMessage(*m, words, sizeof words);
         message = words;
@@ -150,6 +191,8 @@ void writeReading(const Reading *m, std::string_view message, std::string_view m
         case Field::Status: sink.text(f.name, m ? statusName(m->status) : "error"); break;
         case Field::Flags: sink.text(f.name, flags); break;
         case Field::Message: sink.text(f.name, message); break;
+        case Field::Decision: sink.text(f.name, value ? decisionName(m->decision) : ""); break;
+        case Field::Advice: sink.text(f.name, advice); break;
         case Field::Model: sink.text(f.name, model); break;
         case Field::Number:
             if (value && std::isfinite(f.value(*m)))

@@ -34,8 +34,11 @@ const char *readingFieldName(int i);
 
 // Flag names joined by ';' into buf (always terminated; cut at a whole name when full).
 void flagList(uint32_t flags, char *buf, size_t size);
-// What a reading's status means in words: the error, or the flags with the leading
-// budget component's remedy ("declare h_final_mm", …); "" for ok.
+// What a reading's status means in words: the error, or each check's finding with what to
+// supply or do ("… declare h_final_mm"); "" for ok.
 void readingMessage(const Reading &m, char *buf, size_t size);
+// The advice in words: "h_final_mm: U 0.0160 → 0.0060", "n_tol 0.003: U …", or "none: U … is
+// mostly the model's own".
+void adviceText(const Advice &a, char *buf, size_t size);
 
 } // namespace icacam::reading

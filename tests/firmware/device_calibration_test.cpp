@@ -146,12 +146,11 @@ TEST(DeviceCalibration, MeasuresInTheEndFacePlaneAndJournalsWhichCalibration)
     ASSERT_TRUE(rig.start());
     rig.say("{\"cmd\":\"trigger\",\"id\":\"t1\"}"); // the longest record: a value, a calibration, a tag
     const reading::FlatObject a = rig.serial.last("result");
-    // No check flag; the status is the budget's (the paper's own 3 % error alone nears the tolerance).
-    ASSERT_NE(text(a, "status"), "error") << rig.serial.out;
-    for (int bit = 0; bit < reading::kFlagCount; ++bit) {
-        if (reading::kBudgetFlags & (1u << bit)) continue;
-        EXPECT_EQ(text(a, "flags").find(reading::flagName(bit)), std::string::npos) << rig.serial.out;
-    }
+    // No check flag: ok, whatever the tolerance decision (the paper's own 3 % error alone nears it).
+    EXPECT_EQ(text(a, "status"), "ok") << rig.serial.out;
+    EXPECT_EQ(text(a, "flags"), "") << rig.serial.out;
+    EXPECT_FALSE(text(a, "decision").empty()) << rig.serial.out;
+    EXPECT_FALSE(text(a, "advice").empty()) << rig.serial.out;
     EXPECT_LE(std::fabs(number(a, "mu") - friction::PaperModel().estimate({s.rOuterEqMm() - s.rInnerEqMm(), n}).mu),
               2 * number(a, "mu_sigma"));
     const double muTrue = friction::PaperModel().estimate({s.rOuterEqMm() - s.rInnerEqMm(), n}).mu;

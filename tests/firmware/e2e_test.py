@@ -183,7 +183,8 @@ dir = journal
         if res["status"] == "error" or (abs(res["mu"] - true_mu) > MU_TOL and not honest):
             errors.append("%s: %s mu=%s truth=%.5f %s" % (r["id"], res["status"], res.get("mu"), true_mu, res["message"]))
             continue
-        want = "\u03bc=%.3f\u00b1%.3f" % (res["mu"], res["mu_sigma"])
+        # The screen shows μ ± U, U = 2 σ (the expanded uncertainty).
+        want = "\u03bc=%.3f\u00b1%.3f U" % (res["mu"], 2 * res["mu_sigma"])
         end = time.time() + 5
         shown = []
         while time.time() < end:
@@ -193,8 +194,8 @@ dir = journal
             time.sleep(0.05)
         # The display rounds the full-precision μ, serial carries 5 decimals: a tie at the
         # third decimal may round either way, so compare the numbers to one last digit.
-        m = re.match("\u03bc=([0-9.]+)\u00b1([0-9.]+)$", shown[2]) if len(shown) >= 3 else None
-        if not m or abs(float(m.group(1)) - res["mu"]) > 0.0006 or abs(float(m.group(2)) - res["mu_sigma"]) > 0.0006:
+        m = re.match("\u03bc=([0-9.]+)\u00b1([0-9.]+) U$", shown[2]) if len(shown) >= 3 else None
+        if not m or abs(float(m.group(1)) - res["mu"]) > 0.0006 or abs(float(m.group(2)) - 2 * res["mu_sigma"]) > 0.0006:
             fail("display for %s shows %r, want %r" % (r["id"], shown[:4], want))
         print("%s mu=%.5f truth=%.5f |d|=%.5f %s (%d ms)" % (r["id"], res["mu"], true_mu, abs(res["mu"] - true_mu), res["status"], res["ms"]))
     if errors:

@@ -71,7 +71,7 @@ reading::FlatObject hostResult(const std::string &manifestText, const friction::
     host::RecordReading reading;
     measurer.measure(manifest.rows.at(0), manifest, &reading);
     std::ostringstream out;
-    host::ResultWriter writer(out, true);
+    host::ResultWriter writer(out, host::ResultFormat::Jsonl);
     host::ResultRow row;
     row.id = "x";
     row.model = model.name();

@@ -42,10 +42,23 @@ TEST(Screen, ErrorsAreShownInWords)
     m.mu = 0.182;
     m.muSigma = 0.004;
     m.flags = reading::kFlagNOutOfRange;
+    m.toleranceMu = 0.0091;
+    m.decision = reading::Decision::Within;
     fw::drawResult(&bmp, 13, m, "");
     EXPECT_EQ(fw::readRow(bmp, 2), "\xCE\xBC=0.182\xC2\xB1"
-                                   "0.004");
+                                   "0.008 U");
+    EXPECT_EQ(fw::readRow(bmp, 4), "U within tol 0.009");
     EXPECT_EQ(fw::readRow(bmp, 5), "n outside 0.05-0.5");
+    EXPECT_EQ(fw::readRow(bmp, 6), "U: edges'") << "the advice follows the findings";
+    // An ok reading: the decision and the advice, with the value to declare.
+    m.status = reading::Status::Ok;
+    m.flags = 0;
+    m.decision = reading::Decision::Beyond;
+    m.advice = {reading::AdviceInput::HFinal, 0, 0.016, 0.006, false};
+    fw::drawResult(&bmp, 15, m, "");
+    EXPECT_EQ(fw::readRow(bmp, 0), "#15 ok");
+    EXPECT_EQ(fw::readRow(bmp, 4), "U beyond tol 0.009");
+    EXPECT_EQ(fw::readRow(bmp, 5), "h_final_mm U->0.0060");
     fw::drawProblem(&bmp, "#14 error", "camera timeout: no frame within 2000 ms");
     EXPECT_EQ(fw::readRow(bmp, 2), "camera timeout: no");
     EXPECT_EQ(fw::readRow(bmp, 3), "frame within 2000 ms");

@@ -14,7 +14,16 @@ using namespace icacam;
 
 namespace {
 
-void expectBars(const std::string &condition, uint32_t seed, bool nothingUndeclared, int scenes = 40)
+// The status's lines (PRODUCT.md §7): where nothing is undeclared at least 90 % of the measured
+// readings ok; under an undeclared condition ok on at least half of the right readings. A
+// condition the status does not yet reach keeps its measured floor here (docs/uncertainty.md,
+// "What is missing"), so that it cannot slip further unseen.
+struct StatusLine {
+    double okShare = 0;        // of the measured readings
+    double okOnRightShare = 0; // of the right readings
+};
+
+void expectBars(const std::string &condition, uint32_t seed, bool nothingUndeclared, StatusLine line, int scenes = 40)
 {
 #ifdef ICACAM_SANITIZED
     // Statistics, not memory: the sanitizer build runs the same code paths in the always-on
@@ -28,6 +37,9 @@ void expectBars(const std::string &condition, uint32_t seed, bool nothingUndecla
     EXPECT_EQ(c->silentWrong, 0) << condition << ": ok results beyond the tolerance (worst ok " << c->worstOkDmu << ", "
                                  << c->worstOkId << ")";
     EXPECT_GE(c->withinFraction(), 0.9) << condition << ": " << c->withinK << " of " << c->measured << " within 2 σ";
+    EXPECT_GE(c->okFraction(), line.okShare) << condition << ": " << c->ok << " of " << c->measured << " ok";
+    EXPECT_GE(c->okOnRightFraction(), line.okOnRightShare)
+        << condition << ": ok on " << c->okRight << " of " << c->right << " right readings";
 #ifdef ICACAM_COVERAGE_RATIO_BAR
     if (nothingUndeclared) {
         EXPECT_GE(c->medianRatio, 0.3) << condition << ": σ inflated";
@@ -63,25 +75,32 @@ TEST(CoverageBars, EverythingDeclaredExactly)
 
 TEST(CoverageBars, Declared)
 {
-    expectBars("declared", 9101, true);
+    expectBars("declared", 9101, true, {0.9, 0.9});
 }
 TEST(CoverageBars, LowResolution)
 {
-    expectBars("lowres", 9102, true);
+    expectBars("lowres", 9102, true, {0.9, 0.9});
 }
+// Below the half line: 42 % measured. A reading the silhouette places at another height is
+// read there and right, but warned of (reduction_not_nominal), as the nominal conditions'
+// check asks.
 TEST(CoverageBars, ReductionNotDeclared)
 {
-    expectBars("reduction", 9103, false);
+    expectBars("reduction", 9103, false, {0, 0.4});
 }
+// Below the half line: a scale off and a higher height explain the silhouette alike (24 %).
 TEST(CoverageBars, ScaleMeasuredOnTheFixture)
 {
-    expectBars("fixture_scale", 9104, false);
+    expectBars("fixture_scale", 9104, false, {0, 0.2});
 }
+// Below the half line, at none: elliptical names every oblique view, and most lose the silhouette.
 TEST(CoverageBars, TiltedDistortingCamera)
 {
-    expectBars("tilt", 9105, false, 30);
+    expectBars("tilt", 9105, false, {0, 0}, 30);
 }
+// Below the half line, at none: the calibrated silhouette is not used, so without a final
+// height every reading whose μ 45–55 % would move says reduction_unchecked.
 TEST(CoverageBars, CalibratedTiltedCamera)
 {
-    expectBars("calibrated_tilt", 9106, false, 30);
+    expectBars("calibrated_tilt", 9106, false, {0, 0}, 30);
 }

@@ -56,6 +56,8 @@ TEST(Score, CountsSilentWrongAnswersAndCoveragePerCondition)
     EXPECT_EQ(plain->measured, 3);
     EXPECT_EQ(plain->ok, 2);
     EXPECT_EQ(plain->silentWrong, 1);
+    EXPECT_EQ(plain->right, 1) << "a1 alone lies within the tolerance";
+    EXPECT_EQ(plain->okRight, 1);
     EXPECT_EQ(plain->withinK, 1);
     EXPECT_NEAR(plain->medianRatio, 4.0, 1e-9);
     EXPECT_NEAR(plain->worstDmu, 0.05, 1e-9);
@@ -65,6 +67,8 @@ TEST(Score, CountsSilentWrongAnswersAndCoveragePerCondition)
     EXPECT_EQ(odd->total, 3);
     EXPECT_EQ(odd->measured, 1);
     EXPECT_EQ(odd->silentWrong, 0);
+    EXPECT_EQ(odd->right, 1);
+    EXPECT_EQ(odd->okRight, 1);
     EXPECT_EQ(odd->withinK, 1);
     EXPECT_EQ(all->total, 6);
     EXPECT_EQ(all->measured, 4);
@@ -75,8 +79,9 @@ TEST(Score, CountsSilentWrongAnswersAndCoveragePerCondition)
     tight.toleranceRel = 0.04;
     ASSERT_TRUE(host::scoreResults(results, truth, tight, &r, &err));
     EXPECT_EQ(r.find("odd")->silentWrong, 1);
+    EXPECT_EQ(r.find("odd")->okRight, 0) << "b2 is no longer right";
     const std::string table = host::formatScore(r, tight, true);
-    EXPECT_NE(table.find("| plain | 3 of 3 | 2 | 1 | 33 % |"), std::string::npos) << table;
+    EXPECT_NE(table.find("| plain | 3 of 3 | 2 | 1 of 1 | 1 | 33 % |"), std::string::npos) << table;
 }
 
 // With the budget columns, σ drops the model's own fit error when the truth is the paper's

@@ -201,7 +201,7 @@ TEST(Budget, ComponentsFollowTheirInputsAndCombineInQuadrature)
     EXPECT_NEAR(budgetOf(F2, model, s, 0.5, 0.5, sr, 0.003, 0).n / b.n, 2.0, 0.2) << "n's part scales with its σ";
 }
 
-TEST(Status, OkWhenNothingIsFlaggedAndTheBudgetMeetsTheTolerance)
+TEST(Status, FromTheChecksAloneAndTheToleranceDecisionApart)
 {
     SpecimenSpec s = spec();
     Reading r;
@@ -209,13 +209,77 @@ TEST(Status, OkWhenNothingIsFlaggedAndTheBudgetMeetsTheTolerance)
     r.budget.edges = 0.002;
     decideStatus(s, 0, &r);
     EXPECT_EQ(r.status, Status::Ok);
+    EXPECT_EQ(r.decision, Decision::Within);
     EXPECT_NEAR(r.toleranceMu, 0.01, 1e-12);
     decideStatus(s, kFlagBlurred, &r);
     EXPECT_EQ(r.status, Status::Warn);
+    // The model's own error past the tolerance: U beyond it, and still ok.
     r.muSigma = 0.008, r.budget.model = 0.007;
     decideStatus(s, 0, &r);
-    EXPECT_EQ(r.status, Status::Warn);
-    EXPECT_EQ(r.flags, uint32_t(kFlagModelUncertain)) << "the leading component is named";
+    EXPECT_EQ(r.status, Status::Ok);
+    EXPECT_EQ(r.flags, 0u);
+    EXPECT_EQ(r.decision, Decision::Beyond);
+    EXPECT_NEAR(r.expanded(), 0.016, 1e-12);
+}
+
+// Without a final height, explanations of the silhouette are held against the reading's μ: one
+// that moves μ beyond the tolerance is named, an agreeing silhouette leaves the reading ok.
+TEST(NominalCheck, AnExplanationBeyondTheToleranceIsAFinding)
+{
+    const friction::FrictionModel &model = *friction::frictionModel(friction::kDefaultModel);
+    const SpecimenSpec s = spec();
+    const MuFunction F(s, model);
+    const double u = 0.5, mu = F.at(u, 0.5, s.n);
+    Explanations why;
+    why.weight[Explanations::Nominal] = 1;
+    double nominal = 0;
+    EXPECT_EQ(nominalCheck(F, s, u, mu, &why, &nominal), 0u);
+    EXPECT_NEAR(nominal, mu, 1e-12);
+    // Pressed to 55 %: the carry moves μ by more than the tolerance.
+    ASSERT_GT(std::fabs(F.at(u, 0.55, s.n) - mu), s.tolerance.at(mu)) << "the test needs a step beyond it";
+    why.weight[Explanations::Nominal] = 0.3;
+    why.weight[Explanations::OtherHeight] = 0.7;
+    why.post[Explanations::OtherHeight].dr = 0.05;
+    EXPECT_EQ(nominalCheck(F, s, u, F.at(u, 0.55, s.n), &why, &nominal), uint32_t(kFlagReductionNotNominal));
+    // A scale 20 % off explains it best: the scale is named.
+    why.weight[Explanations::OtherHeight] = 0.1;
+    why.weight[Explanations::ScaleOff] = 0.6;
+    why.post[Explanations::ScaleOff].dk = 0.2;
+    const double rescaled = F.at(u * std::exp(-0.2), 0.5, s.n);
+    ASSERT_GT(std::fabs(rescaled - mu), s.tolerance.at(mu));
+    EXPECT_EQ(nominalCheck(F, s, u, rescaled, &why, &nominal), uint32_t(kFlagScaleSuspect));
+    // An explanation that keeps almost no weight is not held against the reading.
+    why = {};
+    why.weight[Explanations::Nominal] = 0.99, why.weight[Explanations::OtherHeight] = 0.01;
+    why.post[Explanations::OtherHeight].dr = 0.05;
+    EXPECT_EQ(nominalCheck(F, s, u, mu, &why, &nominal), 0u);
+    // Nothing to check the height with: the undeclared range decides.
+    EXPECT_EQ(nominalCheck(F, s, u, mu, nullptr, &nominal), uint32_t(kFlagReductionUnchecked));
+}
+
+// The advice names the declared input that shrinks U the most: the final height where the
+// undeclared reduction leads, none where the model's own error does.
+TEST(Advice, NamesTheInputThatShrinksUTheMost)
+{
+    const friction::FrictionModel &model = *friction::frictionModel(friction::kDefaultModel);
+    const SpecimenSpec s = spec();
+    const MuFunction F(s, model);
+    ScaleAndReduction wide;
+    wide.pk = 0.005 * 0.005, wide.pr = kUndeclaredReductionSigma * kUndeclaredReductionSigma;
+    const Advice a = adviseInput(F, model, s, 0.5, 0.5, wide, 0.003, 0, false, false, 0.005);
+    EXPECT_EQ(a.input, AdviceInput::HFinal);
+    EXPECT_LT(a.uThen, 0.7 * a.uNow);
+    EXPECT_NEAR(a.uNow, 2 * combinedSigma(budgetOf(F, model, s, 0.5, 0.5, wide, 0.003, 0)), 1e-12);
+    // Declared to a micrometer, n and the scale close: nothing declared shrinks U by a tenth.
+    SpecimenSpec tight = spec(7.5);
+    tight.tolerances.hFinalMm = 0.01, tight.tolerances.n = 0.003, tight.tolerances.scaleRel = 0.001;
+    const MuFunction G(tight, model);
+    ScaleAndReduction known;
+    known.pk = 0.001 * 0.001, known.pr = (0.01 / 15) * (0.01 / 15);
+    const Advice none = adviseInput(G, model, tight, 0.5, 0.5, known, 0.001, 0, true, false, 0.001);
+    EXPECT_EQ(none.input, AdviceInput::None);
+    EXPECT_TRUE(none.modelLeads);
+    EXPECT_EQ(none.uThen, none.uNow);
 }
 
 } // namespace
