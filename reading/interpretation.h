@@ -35,9 +35,9 @@
 // silhouette (a camera close enough to need a calibration sees the barrel's widest section
 // partly hidden behind the end face's rim).
 //
-// Status: ok when no check flags the reading and coverage·σ_μ ≤ the tolerance
-// (SpecimenSpec::tolerance); else warn, with the budget's leading component named by a flag
-// (edges_uncertain, scale_uncertain, reduction_uncertain, n_uncertain, model_uncertain).
+// Status: from the checks alone: ok when none finds a condition the budget may not cover,
+// else warn with the finding named. The lab's tolerance is a decision on U = 2σ_μ (within or
+// beyond, its own field), and the advice names the declared input that would shrink U most.
 // Pure C++20: no heap, no OS calls, no exceptions. The steps are in interpretation_steps.h.
 #include "friction/friction_model.h"
 #include "reading/reading.h"
