@@ -76,7 +76,7 @@ private:
     std::atomic<bool> stop_{false};
     std::thread thread_;
     mosquitto *mosq_ = nullptr;
-    // Owned by the thread:
+    // Read and written on the publishing thread alone (mosquitto's callbacks run there too):
     bool connected_ = false;
     int refusedRc_ = 0;    // the broker's refusal, seen in onConnect
     long publishedId_ = 0; // the newest record handed to the client on this connection
