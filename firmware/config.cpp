@@ -291,6 +291,26 @@ std::string specimenIssue(const Config &cfg)
     return {};
 }
 
+std::vector<std::string> crossKeyIssues(const Config &cfg)
+{
+    std::vector<std::string> issues;
+    if (std::string e = specimenIssue(cfg); !e.empty()) issues.push_back(e);
+    if (cfg.cameraBackend == "file" && cfg.cameraFrames.empty())
+        issues.push_back("camera.frames is required with camera.backend = file");
+    if (cfg.displayBackend == "file" && cfg.displayDir.empty())
+        issues.push_back("display.dir is required with display.backend = file");
+    if (cfg.displayRotate != 0 && cfg.displayRotate != 180) issues.push_back("display.rotate must be 0 or 180");
+    if ((cfg.redGain < 0) != (cfg.blueGain < 0))
+        issues.push_back("camera.red_gain and camera.blue_gain are set together (both or neither)");
+    if (cfg.httpTlsCert.empty() != cfg.httpTlsKey.empty())
+        issues.push_back("http.tls_cert and http.tls_key are set together (both or neither)");
+    if (cfg.mqttTopic.find_first_of("+#") != std::string::npos)
+        issues.push_back("mqtt.topic must not contain the wildcards + or #");
+    if (cfg.serialBackend == "pty" && cfg.serialLink.empty())
+        issues.push_back("serial.link is required with serial.backend = pty");
+    return issues;
+}
+
 std::vector<std::string> configKeys(bool liveOnly)
 {
     std::vector<std::string> out;
@@ -390,22 +410,9 @@ std::vector<ConfigIssue> parseConfig(std::string_view text, Config *cfg)
         seenJournal |= key == "journal.dir";
     }
     if (!seenN) issues.push_back({0, "specimen.n is required (the strain-hardening exponent)"});
-    if (std::string e = specimenIssue(*cfg); !e.empty()) issues.push_back({0, e});
     if (!seenScale) issues.push_back({0, "calibration.mm_per_px or calibration.file is required (the camera's scale)"});
     if (!seenJournal) issues.push_back({0, "journal.dir is required (where results are kept)"});
-    if (cfg->cameraBackend == "file" && cfg->cameraFrames.empty())
-        issues.push_back({0, "camera.frames is required with camera.backend = file"});
-    if (cfg->displayBackend == "file" && cfg->displayDir.empty())
-        issues.push_back({0, "display.dir is required with display.backend = file"});
-    if (cfg->displayRotate != 0 && cfg->displayRotate != 180) issues.push_back({0, "display.rotate must be 0 or 180"});
-    if ((cfg->redGain < 0) != (cfg->blueGain < 0))
-        issues.push_back({0, "camera.red_gain and camera.blue_gain are set together (both or neither)"});
-    if (cfg->httpTlsCert.empty() != cfg->httpTlsKey.empty())
-        issues.push_back({0, "http.tls_cert and http.tls_key are set together (both or neither)"});
-    if (cfg->mqttTopic.find_first_of("+#") != std::string::npos)
-        issues.push_back({0, "mqtt.topic must not contain the wildcards + or #"});
-    if (cfg->serialBackend == "pty" && cfg->serialLink.empty())
-        issues.push_back({0, "serial.link is required with serial.backend = pty"});
+    for (std::string &e : crossKeyIssues(*cfg)) issues.push_back({0, std::move(e)});
     return issues;
 }
 

@@ -123,6 +123,10 @@ bool getConfigKey(const Config &cfg, std::string_view key, std::string *value, b
 std::vector<std::string> configKeys(bool liveOnly);
 // What no single key can check: the specimen's keys against each other ("" when consistent).
 std::string specimenIssue(const Config &cfg);
+// Every rule that ties keys together (the specimen's heights, colour gains set in pairs, a
+// backend's required paths, ...): what parseConfig checks after the keys, for any whole
+// config, e.g. one with a recipe applied. Empty when consistent.
+std::vector<std::string> crossKeyIssues(const Config &cfg);
 // The serial name of a live key given by its full name or serial name ("" if none).
 std::string liveKeyName(std::string_view key);
 std::string configHelp();

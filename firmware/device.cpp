@@ -6,6 +6,7 @@
 
 #include "firmware/capture_fields.h"
 #include "firmware/frame_luma.h"
+#include "firmware/recipe.h"
 #include "firmware/scale_check.h"
 #include "firmware/screen.h"
 #include "reading/reading_record.h"
@@ -56,7 +57,8 @@ Device::Device(DeviceHal hal, Config cfg, const friction::FrictionModel &model)
                         {cfg_.cameraFormat == "rgb24" ? hal::PixelFormat::RGB24 : hal::PixelFormat::Grey8,
                          cfg_.cameraMaxWidth, cfg_.cameraMaxHeight},
                         cfg_.cameraRetryMs, cfg_.cameraProbeMs, cfg_.captureTimeoutMs),
-          journal_(hal.storage, cfg_.journalMemory), debouncer_(cfg_.debounceMs, cfg_.longPressMs), lines_(kMaxLine)
+          journal_(hal.storage, cfg_.journalMemory), debouncer_(cfg_.debounceMs, cfg_.longPressMs), lines_(kMaxLine),
+          recipes_(hal.storage)
 {
     instrument_.setModel(model);
 }
@@ -108,6 +110,16 @@ hal::Error Device::start()
         }
         cfg_ = trial;
     }
+    // The recipe in effect: the newest version in the audit trail (the config file's keys
+    // the first time, and whenever they are edited); what is wrong with the trail is said
+    // after the greeting.
+    std::vector<std::string> recipeProblems;
+    if (hal::Error e = recipes_.start(configured, &cfg_, wallTime(), &recipeProblems); !e.ok())
+        return hal::Error::make(e.code, "audit trail: " + e.message);
+    if (hal_.recipeCamera)
+        if (hal::Error e = hal_.recipeCamera->setStartControls(cfg_); !e.ok())
+            recipeProblems.push_back("camera: the recipe's controls: " + e.message);
+    publishRecipe();
     // A lens position or camera delay saved over serial, which the camera was not built with
     // (it keeps them across reconfigures from then on).
     if (cfg_.lensPosition != configured.lensPosition) applyLens();
@@ -123,11 +135,14 @@ hal::Error Device::start()
         .integer("last_id", rec.lastId)
         .integer("recovered_cut_bytes", static_cast<long long>(rec.cutBytes))
         .integer("temp_files_removed", rec.tempFilesRemoved);
+    appendRecipe(j0);
     appendCameraStatus(j0);
     appendPartsStatus(j0);
     j0.end();
     send(out_);
     if (!ledOff.ok() && !hal_.parts) sendError("led_failed", ledOff.message, "");
+    for (const std::string &p : recipeProblems) sendError("audit", p, "");
+    if (!recipeProblems.empty()) note = "recipe/audit problem";
     // The parts missing at start-up, in the journal and the log as well (their later changes
     // come from the loop).
     if (hal_.parts)
@@ -144,6 +159,7 @@ void Device::tick()
     pollButton();
     pollSerial();
     pollInbox();
+    pollRecipeDesk();
     pollCamera();
     if (aimUntilMs_ >= 0) aimTick();
 }
@@ -291,6 +307,7 @@ void Device::handleCommand(const Command &c)
             .integer("free_bytes", free.ok() ? (long long)free.value : -1)
             .boolean("led", hal_.led.isOn())
             .str("model", instrument_.model().name());
+        appendRecipe(j);
         appendCameraStatus(j);
         appendPartsStatus(j);
         break;
@@ -355,6 +372,23 @@ bool Device::applySetting(const Command &c, reading::JsonBuilder &j)
     Config trial = cfg_;
     std::string err = setConfigKey(&trial, c.key, c.value, true);
     if (err.empty()) err = specimenIssue(trial);
+    // A recipe key: a new version of the recipe, its audit entry naming where it came from.
+    if (const std::string key = recipeKeyOf(c.key); err.empty() && !key.empty()) {
+        err = applyRecipe(trial, recipes_.active().id, lineOrigin_,
+                          "set " + key + " " + c.value + " (" + lineOrigin_ + " command)");
+        if (!err.empty()) {
+            sendError("bad_argument", err, c.tag);
+            return false;
+        }
+        std::string v;
+        bool num = false;
+        getConfigKey(cfg_, c.key, &v, &num);
+        j.str("type", "settings");
+        num ? j.raw(c.key, v) : j.str(c.key, v);
+        appendRecipe(j);
+        showIdle("");
+        return true;
+    }
     if (err.empty() && liveKeyName(c.key) == "calibration_file") err = setCalibrationFile(&trial);
     if (err.empty() && liveKeyName(c.key) == "stamp_delay_us" && trial.stampDelayUs >= 0)
         if (hal::Error e = hal_.camera.setStampDelayUs(trial.stampDelayUs); !e.ok()) err = e.message;
@@ -577,6 +611,7 @@ void Device::buildRecord(long id, const char *origin, const std::string &tag, co
     j.num("h_final_mm", cfg_.hFinalMm);
     // Which calibration mapped the boundaries, and the plane it mapped them into.
     j.str("calibration", cal_.present ? cal_.name : "");
+    appendRecipe(j);
     if (cal_.present && m.hasValue()) j.num("plane_height_mm", cfg_.h0Mm * (1 - m.reduction), 4);
     j.str("material", cfg_.material).str("trigger", origin).integer("ms", ms);
     if (frame) {

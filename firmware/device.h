@@ -18,6 +18,9 @@
 #include "firmware/net/command_inbox.h"
 #include "firmware/net/device_listener.h"
 #include "firmware/parts.h"
+#include "firmware/recipe_book.h"
+#include "firmware/recipe_camera.h"
+#include "firmware/recipe_desk.h"
 #include "hal/camera.h"
 #include "hal/clock.h"
 #include "hal/display.h"
@@ -44,6 +47,9 @@ struct DeviceHal {
     // The display, serial, trigger and LED as stand-ins that may be missing (firmware/parts.h):
     // their changes are reported and retried. nullptr: the parts are the backends themselves.
     Parts *parts = nullptr;
+    // The camera seen as the recipe sets it (firmware/recipe_camera.h): the same camera as
+    // above, made again when a recipe changes its start controls. nullptr: those are fixed.
+    RecipeCamera *recipeCamera = nullptr;
 };
 
 class Device {
@@ -69,11 +75,26 @@ public:
     static constexpr int kMaxListeners = 4;
     bool addListener(net::DeviceListener *l);
     void setInbox(net::CommandInbox *inbox) { inbox_ = inbox; }
+    // Recipe saves and aim's live controls from the web (device_recipe.cpp). Before start().
+    void setRecipeDesk(RecipeDesk *desk) { desk_ = desk; }
+    const RecipeVersion &recipe() const { return recipes_.active(); }
 
 private:
     void pollButton();
     void pollSerial();
     void pollInbox();
+    // Recipes (device_recipe.cpp). trial (a whole config) as the next version of id: the
+    // camera set as it says, the audit entry written, then in effect; "" or why not (nothing
+    // changed, the camera refused, the trail could not be written).
+    std::string applyRecipe(const Config &trial, std::string_view id, std::string_view who, std::string_view why);
+    void pollRecipeDesk();
+    void saveRecipe(const RecipeDesk::Request &r);
+    void liveControls(const RecipeDesk::Request &r);
+    // Aim's live controls back to the recipe's.
+    void endLiveControls();
+    void publishRecipe();
+    void appendRecipe(reading::JsonBuilder &j) const;
+    std::string wallTime() const; // UTC, ISO 8601
     void journaled(long id);
     void handleLine(std::string_view line);
     void handleCommand(const Command &c);
@@ -176,6 +197,11 @@ private:
     net::CommandInbox *inbox_ = nullptr;
     std::unique_ptr<char[]> inboxLine_;
     const char *lineOrigin_ = "serial"; // a record's "trigger": where the command line came from
+    RecipeBook recipes_;
+    RecipeDesk *desk_ = nullptr;
+    RecipeDesk::Request deskRequest_;
+    Config live_; // aim mode's live controls over cfg_ (liveOn_)
+    bool liveOn_ = false;
 };
 
 } // namespace icacam::fw

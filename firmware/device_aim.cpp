@@ -75,6 +75,7 @@ void Device::stopAim(const char *why)
     if (aimUntilMs_ < 0) return;
     aimUntilMs_ = -1;
     (void)hal_.led.set(false);
+    endLiveControls();
     out_.clear();
     reading::JsonBuilder j(&out_);
     j.str("type", "aim").str("state", "off").str("by", why).integer("pictures", aimFrames_);

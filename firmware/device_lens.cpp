@@ -40,12 +40,14 @@ void Device::setLens(const Command &c)
         sendError("lens_failed", std::string("camera ") + CameraHealth::stateName(cameraHealth_.state()), c.tag);
         return;
     }
-    if (hal::Error e = hal_.camera.setLensPosition(c.lensPosition); !e.ok()) {
-        sendError("lens_failed", e.message, c.tag);
+    Config trial = cfg_;
+    trial.lensPosition = c.lensPosition;
+    char why[64];
+    std::snprintf(why, sizeof why, "lens %.5g (%s command)", c.lensPosition, lineOrigin_);
+    if (std::string e = applyRecipe(trial, recipes_.active().id, lineOrigin_, why); !e.empty()) {
+        sendError("lens_failed", e, c.tag);
         return;
     }
-    cfg_.lensPosition = c.lensPosition;
-    persistSettings();
     sendLens("set", c.tag);
 }
 
@@ -72,8 +74,15 @@ void Device::focus(const Command &c)
         showOrLog(screen_);
         return;
     }
-    cfg_.lensPosition = r.value;
-    persistSettings();
+    // The lens is where the sweep left it: the recipe's version follows it.
+    Config trial = cfg_;
+    trial.lensPosition = r.value;
+    char why[64];
+    std::snprintf(why, sizeof why, "autofocus to %.5g (%s command)", r.value, lineOrigin_);
+    if (std::string e = applyRecipe(trial, recipes_.active().id, lineOrigin_, why); !e.empty()) {
+        sendError("focus_failed", e, c.tag);
+        return;
+    }
     sendLens("autofocus", c.tag);
 }
 

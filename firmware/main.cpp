@@ -16,6 +16,7 @@
 #include <optional>
 #include <string>
 
+#include "firmware/audit_log.h"
 #include "firmware/backends/backend_config.h"
 #include "firmware/backends/camera_backend.h"
 #include "firmware/backends/display_backend.h"
@@ -24,6 +25,7 @@
 #include "firmware/config.h"
 #include "firmware/device.h"
 #include "firmware/device_calibration.h"
+#include "firmware/recipe_camera.h"
 #ifdef ICACAM_HAVE_NET
 #include "firmware/net/network.h"
 #endif
@@ -51,11 +53,14 @@ std::string usage()
     return std::string("usage: icacam-fw --config FILE [--check]\n"
                        "       icacam-fw --help-config\n"
                        "       icacam-fw --hash-password < password\n"
+                       "       icacam-fw --check-audit DIR\n"
                        "Runs the icacam device program on the backends the config names.\n"
                        "  --config FILE  the device configuration (key = value lines; no default)\n"
                        "  --check        validate the config (and the calibration file it names) and exit\n"
                        "  --help-config  every config key with its default\n"
                        "  --hash-password  the web login's password file line for the password on stdin\n"
+                       "  --check-audit DIR  check the recipe audit trail in the journal folder DIR (exit 0 intact,\n"
+                       "                 1 damaged: each finding printed, 66 unreadable)\n"
                        "The friction model is the config's reading.model (default ") +
            friction::kDefaultModel + "; known: " + models +
            ").\n"
@@ -80,6 +85,22 @@ void logLine(std::string_view line)
 bool configMistake(const fw::Part &p)
 {
     return p.state() == fw::Part::State::Missing && p.problemCode() == hal::Errc::Invalid;
+}
+
+// `--check-audit DIR`: the audit trail's chain and head checked, each finding on stdout.
+int checkAuditCommand(const std::string &dir)
+{
+    hal::FolderStorage storage;
+    if (hal::Error e = storage.open(dir, 0); !e.ok()) return failed("--check-audit", e, 66);
+    hal::Result<std::string> log = storage.read(fw::kAuditFile), head = storage.read(fw::kAuditHead);
+    if (!log.ok() && !head.ok()) return failed("--check-audit", log.error, 66);
+    std::vector<fw::AuditEntry> entries;
+    const fw::AuditCheck c = fw::checkAudit(log.ok() ? std::string_view(log.value) : std::string_view(),
+                                            head.ok() ? std::string_view(head.value) : std::string_view(), &entries);
+    if (!log.ok()) std::printf("%s: missing (its head is there)\n", fw::kAuditFile);
+    for (const std::string &p : c.problems) std::printf("%s\n", p.c_str());
+    std::printf("%s: %ld entries, %s\n", dir.c_str(), c.entries, c.ok() && log.ok() ? "intact" : "DAMAGED");
+    return c.ok() && log.ok() ? 0 : 1;
 }
 
 struct Arguments {
@@ -114,6 +135,9 @@ std::optional<int> parseArguments(int argc, char **argv, Arguments *args)
         } else if (a == "--hash-password") {
             return fw::net::hashPasswordCommand();
 #endif
+        } else if (a == "--check-audit") {
+            if (i + 1 >= argc) return usageError("--check-audit needs the journal folder");
+            return checkAuditCommand(argv[i + 1]);
         } else if (a == "-h" || a == "--help") {
             std::printf("%s", usage().c_str());
             return 0;
@@ -180,8 +204,13 @@ int runDevice(const fw::Config &cfg)
     const bool fileLight = cfg.cameraBackend == "file" && cfg.ledBackend == "file";
     if (hal::Error e = light.open(fw::pathFromConfig(cfg, cfg.ledScript)); !e.ok())
         return failed("led.script", e, kExitConfig);
-    auto camera = fw::makeCamera(cfg, clock, fileLight ? &light : nullptr);
+    auto makeCamera = [&clock, &light, fileLight](const fw::Config &c) {
+        return fw::makeCamera(c, clock, fileLight ? &light : nullptr);
+    };
+    auto camera = makeCamera(cfg);
     if (!camera.ok()) return failed("camera", camera.error, kExitConfig);
+    // The same backend, made again when a recipe changes the controls it takes at start.
+    fw::RecipeCamera recipeCamera(makeCamera, std::move(camera.value), cfg);
     // The parts besides the camera: opened now, and while one is missing the device runs
     // without it and opens it again every camera.retry_ms.
     std::string serialName;
@@ -211,7 +240,8 @@ int runDevice(const fw::Config &cfg)
     const friction::FrictionModel *model = friction::frictionModel(cfg.model);
     if (!model)
         return failed("model", hal::Error::make(hal::Errc::Invalid, "unknown reading.model " + cfg.model), kExitConfig);
-    fw::Device device({*camera.value, trigger, led, display, serial, storage, clock, &parts}, cfg, *model);
+    fw::Device device({recipeCamera, trigger, led, display, serial, storage, clock, &parts, &recipeCamera}, cfg,
+                      *model);
 #ifdef ICACAM_HAVE_NET
     // The network is configured, not a part that may be absent: an address it cannot bind or a
     // certificate it cannot read is a configuration mistake, said once, not a restart loop.

@@ -34,6 +34,7 @@ struct Network::Parts {
     std::unique_ptr<MqttPublisher> mqtt;
     std::unique_ptr<JournalTail> journal;
     CommandInbox inbox;
+    RecipeDesk recipes;
     LineExchange lines;
     AimExchange aim;
     std::unique_ptr<WebAuth> auth;
@@ -86,12 +87,13 @@ hal::Error Network::attach(const Config &cfg, const Paths &paths, Device &device
                 return hal::Error::make(hal::Errc::NotFound, "http.tls_key: cannot read " + paths.tlsKey);
         }
         p.api = std::make_unique<WebApi>(WebContext{*p.journal, paths.journalDir, p.inbox, p.lines, p.aim, *p.auth,
-                                                    cfg.httpPublicRead == 1, !paths.tlsCert.empty()});
+                                                    cfg.httpPublicRead == 1, !paths.tlsCert.empty(), &p.recipes});
         p.server = std::make_unique<WebServer>(*p.api);
         if (hal::Error e = p.server->start(s); !e.ok()) return e;
         device.addListener(&p.lines);
         device.addListener(&p.aim);
         device.setInbox(&p.inbox);
+        device.setRecipeDesk(&p.recipes);
         std::fprintf(stderr, "icacam-fw: web page on %s://%s:%d/\n", paths.tlsCert.empty() ? "http" : "https",
                      cfg.httpAddress.c_str(), p.server->port());
     }

@@ -16,8 +16,6 @@
 
 namespace icacam::fw::net {
 
-namespace {
-
 HttpResponse error(int status, const char *code, std::string_view message)
 {
     HttpResponse r;
@@ -28,13 +26,15 @@ HttpResponse error(int status, const char *code, std::string_view message)
     return r;
 }
 
-HttpResponse json(std::string body, int status = 200)
+HttpResponse json(std::string body, int status)
 {
     HttpResponse r;
     r.status = status;
     r.body = std::move(body);
     return r;
 }
+
+namespace {
 
 // Commands that measure or change the device: never without a login.
 bool changes(CommandKind k)
@@ -101,7 +101,8 @@ HttpResponse WebApi::handle(const HttpRequest &r)
         page.body = kWebPage;
         return page;
     }
-    const bool loggedIn = c_.auth.valid(r.session, r.nowMs);
+    std::string user;
+    const bool loggedIn = c_.auth.valid(r.session, r.nowMs, &user);
     if (r.path == "/api/session" && get) {
         std::string body;
         reading::JsonBuilder j(&body);
@@ -118,7 +119,15 @@ HttpResponse WebApi::handle(const HttpRequest &r)
     }
     if (!loggedIn && !c_.publicRead) return error(401, "login", "log in first");
     if (r.path == "/api/command") return post ? command(r, loggedIn) : error(405, "method", "POST only");
+    if (post && (r.path == "/api/recipe" || r.path == "/api/live")) {
+        if (!loggedIn) return error(401, "login", "log in to change the recipe");
+        return postRecipe(r, user, r.path == "/api/live");
+    }
     if (!get) return error(405, "method", "GET only");
+    if (r.path == "/api/recipe") return recipe();
+    if (r.path == "/api/recipe/versions") return versions(r, false);
+    if (r.path == "/api/recipe/version") return versions(r, true);
+    if (r.path == "/api/audit") return audit();
     if (r.path == "/api/answer") {
         std::string_view tag;
         if (!queryValue(r.query, "tag", &tag) || tag.size() > 32) return error(400, "bad_argument", "tag=TAG");
@@ -163,8 +172,17 @@ HttpResponse WebApi::login(const HttpRequest &r)
     const reading::JsonField *pw = obj.find("password");
     if (!pw || pw->type != reading::JsonField::Type::String)
         return error(400, "bad_argument", "{\"password\":\"...\"}");
+    // Who is logging in, for the audit trail: a name, as the person gives it.
+    std::string_view user;
+    if (const reading::JsonField *u = obj.find("user"); u && u->type == reading::JsonField::Type::String) {
+        user = u->text;
+        if (user.size() > WebAuth::kMaxUser) return error(400, "bad_argument", "user: at most 32 characters");
+        for (char ch : user)
+            if (uint8_t(ch) < 0x20 || ch == '"' || ch == '\\')
+                return error(400, "bad_argument", "user: no control characters, quotes or backslashes");
+    }
     std::string token;
-    switch (c_.auth.login(pw->text, r.nowMs, &token)) {
+    switch (c_.auth.login(pw->text, r.nowMs, &token, user)) {
     case WebAuth::Login::Ok: break;
     case WebAuth::Login::Wrong: return error(401, "wrong_password", "wrong password");
     case WebAuth::Login::HeldOff: return error(429, "held_off", "a wrong password holds logins off for a second");
@@ -189,8 +207,7 @@ HttpResponse WebApi::command(const HttpRequest &r, bool loggedIn)
     // The same line as on serial, its id replaced by a tag the answers are found by.
     reading::FlatObject obj;
     if (std::string e = reading::parseFlatObject(r.body, &obj); !e.empty()) return error(400, "malformed", e);
-    char tag[32];
-    std::snprintf(tag, sizeof tag, "web-%ld", nextTag_.fetch_add(1));
+    const std::string tag = nextTag();
     std::string line;
     reading::JsonBuilder j(&line);
     for (int i = 0; i < obj.count; ++i) {
@@ -212,6 +229,13 @@ HttpResponse WebApi::command(const HttpRequest &r, bool loggedIn)
     a.str("type", "queued").str("tag", tag);
     a.end();
     return json(std::move(body), 202);
+}
+
+std::string WebApi::nextTag()
+{
+    char tag[32];
+    std::snprintf(tag, sizeof tag, "web-%ld", nextTag_.fetch_add(1));
+    return tag;
 }
 
 HttpResponse WebApi::results(const HttpRequest &r)

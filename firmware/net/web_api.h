@@ -12,12 +12,22 @@
 //   GET  /api/result?id=ID     one record;  GET /api/image?id=ID&step=S  its frame as PNG
 //   GET  /api/journal.jsonl    the journal;  GET /api/results.csv  the results as CSV
 //   GET  /api/aim              aim mode's newest "aim" line; GET /api/aim.png its picture
+//   GET  /api/recipe           the version in effect (its keys and values), aim's live controls
+//   POST /api/recipe           {"reason":"...","recipe":"ID","KEY":value,...}: a new version,
+//                              queued for the device: 202 {"tag"}, answered at /api/answer
+//   POST /api/live             {"camera.exposure_us":8000,...}: aim mode's live controls
+//   GET  /api/recipe/versions  every version (newest first); /api/recipe/version?recipe=ID&version=N
+//   GET  /api/audit            the audit trail, checked: {"intact","problems","entries"}
 // Reading needs a session unless http.public_read; commands that change or measure
-// (trigger, set, aim, snapshot, scalecheck) always need one.
+// (trigger, set, aim, snapshot, scalecheck), recipe saves and live controls always need one.
 #include <atomic>
 #include <cstdint>
 #include <string>
 #include <string_view>
+
+namespace icacam::fw {
+class RecipeDesk;
+}
 
 namespace icacam::fw::net {
 
@@ -49,7 +59,8 @@ struct WebContext {
     AimExchange &aim;
     WebAuth &auth;
     bool publicRead = false;
-    bool secureCookie = false; // served over TLS
+    bool secureCookie = false;     // served over TLS
+    RecipeDesk *recipes = nullptr; // the device's recipe (nullptr: the recipe routes answer 503)
 };
 
 class WebApi {
@@ -67,11 +78,20 @@ private:
     HttpResponse result(const HttpRequest &r);
     HttpResponse image(const HttpRequest &r);
     HttpResponse csv();
+    // Recipes (web_recipe.cpp).
+    HttpResponse recipe();
+    HttpResponse postRecipe(const HttpRequest &r, std::string_view user, bool live);
+    HttpResponse versions(const HttpRequest &r, bool one);
+    HttpResponse audit();
+    std::string nextTag();
 
     WebContext c_;
     std::atomic<long> nextTag_{1};
 };
 
+// {"type":"error","code","message"} with an HTTP status; a JSON body.
+HttpResponse error(int status, const char *code, std::string_view message);
+HttpResponse json(std::string body, int status = 200);
 // The value of key in a query string ("a=1&b=2"); false when absent.
 bool queryValue(std::string_view query, std::string_view key, std::string_view *value);
 // A whole number in [lo, hi]; false otherwise.

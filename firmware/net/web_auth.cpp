@@ -31,7 +31,7 @@ std::string WebAuth::hash(std::string_view password)
     return out;
 }
 
-WebAuth::Login WebAuth::login(std::string_view password, int64_t nowMs, std::string *token)
+WebAuth::Login WebAuth::login(std::string_view password, int64_t nowMs, std::string *token, std::string_view user)
 {
     {
         std::lock_guard<std::mutex> lock(mutex_);
@@ -53,12 +53,14 @@ WebAuth::Login WebAuth::login(std::string_view password, int64_t nowMs, std::str
     for (Session &s : sessions_)
         if (s.lastMs < slot->lastMs) slot = &s; // the longest idle (or a free one) makes room
     std::memcpy(slot->token.data(), hex, sizeof hex);
+    slot->user = {};
+    user.substr(0, kMaxUser).copy(slot->user.data(), kMaxUser);
     slot->lastMs = nowMs;
     *token = hex;
     return Login::Ok;
 }
 
-bool WebAuth::valid(std::string_view token, int64_t nowMs)
+bool WebAuth::valid(std::string_view token, int64_t nowMs, std::string *user)
 {
     if (token.size() != 64) return false;
     std::lock_guard<std::mutex> lock(mutex_);
@@ -66,6 +68,7 @@ bool WebAuth::valid(std::string_view token, int64_t nowMs)
         if (s.lastMs == 0 || nowMs - s.lastMs > kIdleMs) continue;
         if (sodium_memcmp(s.token.data(), token.data(), 64) == 0) {
             s.lastMs = nowMs;
+            if (user) *user = s.user.data();
             return true;
         }
     }

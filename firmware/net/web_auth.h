@@ -20,9 +20,12 @@ public:
 
     // storedHash: the password file's first line ("" = no password set: nobody logs in).
     explicit WebAuth(std::string storedHash);
-    Login login(std::string_view password, int64_t nowMs, std::string *token);
-    // True for a live session (its idle time restarts).
-    bool valid(std::string_view token, int64_t nowMs);
+    // user: the name the person gave at login (there is one password, not one per person):
+    // the audit trail's "who" for what the session changes. Up to kMaxUser characters.
+    static constexpr size_t kMaxUser = 32;
+    Login login(std::string_view password, int64_t nowMs, std::string *token, std::string_view user = {});
+    // True for a live session (its idle time restarts); its user's name into *user.
+    bool valid(std::string_view token, int64_t nowMs, std::string *user = nullptr);
     void logout(std::string_view token);
 
     // The stored form of a password, "" when libsodium fails (out of memory).
@@ -31,6 +34,7 @@ public:
 private:
     struct Session {
         std::array<char, 65> token{};
+        std::array<char, kMaxUser + 1> user{};
         int64_t lastMs = 0;
     };
     std::string hash_;

@@ -15,6 +15,8 @@
 #include "firmware/net/rate_limiter.h"
 #include "firmware/net/web_api.h"
 #include "firmware/net/web_auth.h"
+#include "firmware/recipe_book.h"
+#include "firmware/recipe_desk.h"
 #include "hal/file/folder_storage.h"
 #include "reading/record_line.h"
 #include "tests/support/temp_dir.h"
@@ -227,6 +229,69 @@ TEST_F(WebApiTest, PathsAndArgumentsAreChecked)
     const HttpResponse csv = call("GET", "/api/results.csv", "", "", token);
     EXPECT_EQ(csv.status, 200);
     EXPECT_EQ(csv.body.substr(0, 8), "id,time,");
+}
+
+TEST_F(WebApiTest, RecipeSavesNeedALoginAReasonAndRecipeKeys)
+{
+    RecipeDesk desk;
+    WebApi withRecipes{WebContext{tail, dir.path, inbox, lines, aim, auth, false, false, &desk}};
+    // The device's recipe as published, and its trail as written.
+    hal::FolderStorage storage;
+    ASSERT_TRUE(storage.open(dir.path, 0).ok());
+    RecipeBook book(storage);
+    Config cfg;
+    cfg.n = 0.2;
+    cfg.mmPerPx = 0.01;
+    std::vector<std::string> problems;
+    ASSERT_TRUE(book.start(cfg, &cfg, "2026-01-01T00:00:00Z", &problems).ok());
+    desk.publish(book.active(), "");
+    auto call2 = [&](const char *method, const char *path, std::string body, const std::string &session,
+                     std::string query = "") {
+        HttpRequest r;
+        r.method = method;
+        r.path = path;
+        r.query = query;
+        r.body = body;
+        r.contentType = "application/json";
+        r.session = session;
+        r.nowMs = now += 2000;
+        return withRecipes.handle(r);
+    };
+    const HttpResponse in = call2("POST", "/api/login", "{\"password\":\"pw\",\"user\":\"alice\"}", "");
+    ASSERT_EQ(in.status, 200);
+    const std::string token = in.setCookie.substr(in.setCookie.find('=') + 1, 64);
+    EXPECT_EQ(call2("POST", "/api/recipe", "{\"reason\":\"x\",\"specimen.n\":0.3}", "").status, 401);
+    EXPECT_EQ(call2("POST", "/api/recipe", "{\"specimen.n\":0.3}", token).status, 400); // no reason
+    EXPECT_EQ(call2("POST", "/api/recipe", "{\"reason\":\"x\",\"journal.dir\":\"/\"}", token).status, 400);
+    // A value with a line break would smuggle in another key: refused.
+    EXPECT_EQ(
+        call2("POST", "/api/recipe", "{\"reason\":\"x\",\"specimen.material\":\"a\\nspecimen.n = 9\"}", token).status,
+        400);
+    EXPECT_EQ(call2("POST", "/api/live", "{\"specimen.n\":0.3}", token).status, 400); // live: camera keys only
+    const HttpResponse q = call2("POST", "/api/recipe", "{\"reason\":\"new batch\",\"specimen.n\":0.3}", token);
+    EXPECT_EQ(q.status, 202) << q.body;
+    EXPECT_EQ(call2("POST", "/api/recipe", "{\"reason\":\"again\",\"specimen.n\":0.3}", token).status, 503);
+    RecipeDesk::Request got;
+    ASSERT_TRUE(desk.take(&got));
+    EXPECT_EQ(got.who, "alice (web)");
+    EXPECT_EQ(got.why, "new batch");
+    EXPECT_EQ(got.text, "specimen.n = 0.3\n");
+
+    const HttpResponse r = call2("GET", "/api/recipe", "", token);
+    EXPECT_NE(r.body.find("\"version\":1"), std::string::npos) << r.body;
+    EXPECT_NE(r.body.find("\"specimen.n\":\"0.2\""), std::string::npos) << r.body;
+    EXPECT_NE(call2("GET", "/api/recipe/versions", "", token).body.find("\"who\":\"config file\""), std::string::npos);
+    EXPECT_EQ(call2("GET", "/api/recipe/version", "", token, "recipe=default&version=1").status, 200);
+    EXPECT_EQ(call2("GET", "/api/recipe/version", "", token, "recipe=default&version=2").status, 404);
+    EXPECT_NE(call2("GET", "/api/audit", "", token).body.find("\"intact\":true"), std::string::npos);
+    // One byte of the trail changed: the API says so.
+    hal::Result<std::string> log = storage.read(kAuditFile);
+    ASSERT_TRUE(log.ok());
+    log.value[log.value.find("first version")] = 'F';
+    ASSERT_TRUE(storage.writeAtomic(kAuditFile, log.value).ok());
+    const HttpResponse damaged = call2("GET", "/api/audit", "", token);
+    EXPECT_NE(damaged.body.find("\"intact\":false"), std::string::npos) << damaged.body;
+    EXPECT_NE(damaged.body.find("altered"), std::string::npos) << damaged.body;
 }
 
 } // namespace
