@@ -64,7 +64,7 @@ hal::Error RecipeBook::record(const Config &trial, std::string_view id, std::str
     e.time = std::string(now);
     e.who = std::string(who);
     e.why = std::string(why);
-    e.changes = recipeChanges(active_.text, text);
+    e.changes = active_.text.empty() ? "" : recipeChanges(active_.text, text); // the first: no "old"
     e.recipe = std::string(id);
     e.version = log_.lastVersion(id) + 1;
     e.hash = recipeHash(text);

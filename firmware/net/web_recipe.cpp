@@ -160,9 +160,7 @@ HttpResponse WebApi::audit()
     std::string problems = "[", trail = "[";
     for (const std::string &p : c.problems) {
         if (problems.size() > 1) problems += ',';
-        problems += '"';
-        reading::JsonBuilder::escape(&problems, p);
-        problems += '"';
+        reading::JsonBuilder::escape(&problems, p); // quoted
     }
     for (auto e = entries.rbegin(); e != entries.rend(); ++e) {
         if (trail.size() > 1) trail += ",\n";

@@ -5,7 +5,10 @@ DevTools protocol (python3-websocket), against icacam-fw on the file HAL.
 It opens the page (the login form shows), logs in with the device's password, presses
 Measure, and sees the new reading: the μ shown is the journal's, the frame shows (decoded,
 not blank) with the fitted boundaries drawn over it; Aim shows the live picture with the
-found end face and a focus score; History lists the reading. Screenshots of
+found end face and a focus score, its exposure changed live and saved to the recipe with a
+reason; History lists the reading; the Recipe tab saves a new version, lists the versions and
+shows the audit trail intact, and the next reading names that version; one byte of the trail
+changed on the card, the tab says DAMAGED and `icacam-fw --check-audit` exits 1. Screenshots of
 each step go to ARTEFACT_DIR. A wrong password is refused on the page. Exit 77 without
 chromium or python3-websocket.
 usage: browser_test.py ICACAM_FW ARTEFACT_DIR
@@ -114,7 +117,8 @@ def main():
     browser.wait("document.getElementById('login-message').textContent.includes('wrong password')", 30,
                  "the wrong password refused")
     time.sleep(1.1)  # a wrong password holds logins off for a second
-    browser.js("document.getElementById('password').value = %s;"
+    browser.js("document.getElementById('user').value = 'alice';"
+               "document.getElementById('password').value = %s;"
                "document.getElementById('login-button').click()" % json.dumps(PASSWORD))
     browser.wait("(%s)('reading') && !document.getElementById('trigger').disabled" % visible, 30,
                  "the Reading page with Measure enabled after logging in")
@@ -160,6 +164,17 @@ def main():
                  "/^[0-9.]+$/.test(document.getElementById('aim-focus').textContent)", 30,
                  "an aim picture with the end face found and a focus score")
     browser.screenshot(os.path.join(artefacts, "3-aim.png"))
+    # The exposure live, then saved to the recipe with a reason: version 2, made by alice.
+    browser.js("location.hash = '#recipe'")
+    browser.wait("document.querySelectorAll('#recipe-keys input').length >= 20", 20, "the recipe form")
+    browser.js("location.hash = '#aim'; document.getElementById('live-exposure').value = '7000';"
+               "document.getElementById('live-apply').click()")
+    browser.wait("document.getElementById('live-message').textContent.includes('camera.exposure_us')", 20,
+                 "the live exposure applied")
+    browser.js("document.getElementById('live-reason').value = 'darker specimens';"
+               "document.getElementById('live-save').click()")
+    browser.wait("document.getElementById('live-message').textContent === 'saved: default version 2'", 20,
+                 "the live controls saved as version 2")
     browser.js("document.getElementById('aim-stop').click()")
     browser.wait("document.getElementById('aim-left').textContent === 'stopped'", 20, "aiming stopped")
 
@@ -167,6 +182,49 @@ def main():
     browser.wait("document.querySelectorAll('#table tbody tr').length === 1 && "
                  "document.querySelectorAll('#plot circle').length === 1", 20, "History with result #1")
     browser.screenshot(os.path.join(artefacts, "4-history.png"))
+
+    # The Recipe tab: a new material saved with a reason is version 3; the next reading names it.
+    browser.js("location.hash = '#recipe'")
+    browser.wait("document.getElementById('recipe-name').textContent === 'default version 2'", 20,
+                 "version 2 in effect")
+    browser.js("""(() => {
+        document.querySelector('#recipe-keys input[name="specimen.material"]').value = 'S355';
+        document.getElementById('recipe-reason').value = 'new batch of S355';
+        document.getElementById('recipe-save').click();
+    })()""")
+    browser.wait("document.getElementById('recipe-message').textContent === 'saved: default version 3' && "
+                 "document.querySelectorAll('#versions tbody tr').length === 3 && "
+                 "document.getElementById('audit-state').textContent === 'intact (3 entries)'", 30,
+                 "version 3 saved, three versions, the trail intact")
+    who = browser.js("document.querySelector('#audit tbody tr').cells[2].textContent")
+    if who != "alice (web)":
+        fail("the newest audit entry's who is %r, not the name logged in with" % who)
+    browser.screenshot(os.path.join(artefacts, "5-recipe.png"))
+    browser.js("location.hash = '#reading'; document.getElementById('trigger').click()")
+    browser.wait("document.getElementById('last-id').textContent === '#2'", 60, "result #2")
+    with open(os.path.join(dev.journal, "journal.jsonl")) as f:
+        second = [json.loads(line) for line in f if line.strip()][-1]
+    if (second.get("recipe_version"), second.get("material"), second.get("exposure_us")) != (3, "S355", 7000):
+        fail("result #2 has recipe version %r, material %r, exposure %r, not 3, S355, 7000" %
+             (second.get("recipe_version"), second.get("material"), second.get("exposure_us")))
+    if second["recipe_hash"] not in browser.js("document.getElementById('last-recipe').textContent"):
+        fail("the Reading page does not name the record's recipe hash")
+
+    # One byte of the trail changed on the card: the page and the check both say so.
+    trail = os.path.join(dev.journal, "audit.jsonl")
+    with open(trail, "rb") as f:
+        data = bytearray(f.read())
+    data[data.index(b"new batch of S355")] = ord("N")
+    with open(trail, "wb") as f:
+        f.write(data)
+    browser.js("location.hash = '#recipe'")  # the tab reads the trail again when opened
+    browser.wait("document.getElementById('audit-state').textContent === 'DAMAGED' && "
+                 "document.getElementById('audit-problems').textContent.includes('altered')", 20,
+                 "the damaged trail reported")
+    browser.screenshot(os.path.join(artefacts, "6-audit-damaged.png"))
+    check = subprocess.run(EMULATOR + [fw, "--check-audit", dev.journal], capture_output=True, text=True)
+    if check.returncode != 1 or "entry 3): altered" not in check.stdout:
+        fail("icacam-fw --check-audit on a changed trail: exit %d, %r" % (check.returncode, check.stdout))
     browser.close()
     dev.kill()
     Procs.kill_all()
