@@ -611,8 +611,8 @@ void Device::buildRecord(long id, const char *origin, const std::string &tag, co
     j.num("h_final_mm", cfg_.hFinalMm);
     // Which calibration mapped the boundaries, and the plane it mapped them into.
     j.str("calibration", cal_.present ? cal_.name : "");
-    appendRecipe(j);
     if (cal_.present && m.hasValue()) j.num("plane_height_mm", cfg_.h0Mm * (1 - m.reduction), 4);
+    appendRecipe(j); // the version in effect: what the fields above and the camera's were set by
     j.str("material", cfg_.material).str("trigger", origin).integer("ms", ms);
     if (frame) {
         appendCaptureFields(j, *frame, triggerMs_);
