@@ -27,7 +27,7 @@ double muWith(const friction::FrictionModel &model, const LoopRecord &r, GroupRe
         in.uMm = r.uMm / p;
     else
         in.n = std::clamp(r.n + p, kNMin, kNMax);
-    return model.estimate(in).mu;
+    return model.estimate(in).mu + r.muOffset;
 }
 
 double neutral(GroupReading reading)
@@ -185,6 +185,22 @@ void silhouetteCheck(const std::vector<LoopRecord> &usable, const Candidate &g, 
 
 } // namespace
 
+void applyGrouping(const friction::FrictionModel &model, std::vector<LoopRecord> *records, const Candidate &g,
+                   GroupReading reading, const std::vector<bool> &train)
+{
+    double scatter = 0;
+    const std::map<std::string, GroupFit> fit = fitLevels(model, *records, g, reading, train, &scatter);
+    for (size_t i = 0; i < records->size(); ++i) {
+        LoopRecord &r = (*records)[i];
+        const auto it = fit.find(g.levels[i]);
+        const double p = it != fit.end() ? it->second.value : neutral(reading);
+        if (reading == GroupReading::Scale)
+            r.uMm /= p;
+        else
+            r.n = std::clamp(r.n + p, kNMin, kNMax);
+    }
+}
+
 const char *formName(GroupReading reading)
 {
     return reading == GroupReading::Scale ? "factor" : "n";
@@ -226,22 +242,7 @@ friction::ModelInputs inputsOf(const LoopRecord &r)
 
 GroupReading readingOf(const std::vector<LoopRecord> &usable, const Candidate &g)
 {
-    if (g.kind != "categorical" || g.levels.size() != usable.size()) return GroupReading::Scale;
-    // Named as a material: its records may declare n per batch, the shift is per material.
-    std::string name = g.name;
-    for (char &ch : name) ch = char(std::tolower(static_cast<unsigned char>(ch)));
-    for (const char *word : {"material", "alloy", "grade"})
-        if (name.find(word) != std::string::npos) return GroupReading::N;
-    std::map<std::string, std::set<long>> nPerLevel;
-    std::set<long> all;
-    for (size_t i = 0; i < usable.size(); ++i) {
-        const long n = std::lround(usable[i].n * 1e4);
-        nPerLevel[g.levels[i]].insert(n);
-        all.insert(n);
-    }
-    for (const auto &[level, ns] : nPerLevel)
-        if (ns.size() != 1) return GroupReading::Scale;
-    return all.size() >= 2 ? GroupReading::N : GroupReading::Scale;
+    return isMaterialGrouping(usable, g) ? GroupReading::N : GroupReading::Scale;
 }
 
 PhysicalFit fitGrouping(const friction::FrictionModel &model, const std::vector<LoopRecord> &usable, const Candidate &g,

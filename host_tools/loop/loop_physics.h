@@ -50,6 +50,12 @@ struct PhysicalFit {
 PhysicalFit fitGrouping(const friction::FrictionModel &model, const std::vector<LoopRecord> &usable,
                         const Candidate &grouping, GroupReading reading, const std::vector<int> &fold, int folds);
 
+// Fits the grouping's parameter per level on the records where `train` holds and applies it
+// to every record (u/s, or n + Δn): the effect taken out before the loop looks for the next.
+// A level the training records never saw stays as declared.
+void applyGrouping(const friction::FrictionModel &model, std::vector<LoopRecord> *records, const Candidate &grouping,
+                   GroupReading reading, const std::vector<bool> &train);
+
 // The grouping's physical form for the ranking: its held-out errors, and those of its baseline,
 // the same form with one parameter for every record (a global scale, a global Δn), so that a
 // grouping is credited only for what telling its groups apart adds.
