@@ -362,7 +362,7 @@ std::vector<double> heldOut(const std::vector<std::vector<LoopRecord>> &perFold,
 // is left, and add the leader while it is significant (family-wise, as the first) and the
 // held-out RMS with every effect refitted per fold drops.
 void addFurtherEffects(const FrictionModel &model, const fe::ReductionSlope *slope, const ResidualSet &first,
-                       const RankingOptions &opt, LoopSummary *s)
+                       const RankingOptions &opt, LoopSummary *s, std::vector<EffectShare> *shares)
 {
     constexpr size_t kMaxEffects = 5;
     std::vector<LoopRecord> all = first.usable;
@@ -372,6 +372,7 @@ void addFurtherEffects(const FrictionModel &model, const fe::ReductionSlope *slo
     const Candidate *c = candidateNamed(first, lead.name);
     if (!c) return;
     applyEffect(model, slope, lead, *c, &all, first.fold, -1);
+    shares->push_back(shareOf(first.usable, all));
     for (int k = 0; k < first.folds; ++k) applyEffect(model, slope, lead, *c, &perFold[size_t(k)], first.fold, k);
     markTaken(lead, &taken);
     bool carried = lead.reading == "fe_slope";
@@ -411,7 +412,9 @@ void addFurtherEffects(const FrictionModel &model, const fe::ReductionSlope *slo
             return;
         }
         perFold = std::move(trial);
+        const std::vector<LoopRecord> before = all;
         applyEffect(model, slope, step, *cand, &all, first.fold, -1);
+        shares->push_back(shareOf(before, all));
         markTaken(step, &taken);
         carried = carried || step.reading == "fe_slope";
         cvNow = step.cvRmsAfter;
@@ -419,6 +422,48 @@ void addFurtherEffects(const FrictionModel &model, const fe::ReductionSlope *slo
         s->effects.push_back(std::move(step));
     }
     s->stopped = "the most effects one run adds (" + std::to_string(kMaxEffects) + ")";
+}
+
+// The estimates of several effects, each fitted with every other one taken out (backfitting:
+// a few rounds of refitting each on the records the others leave). An effect fitted while
+// another was still in the records carries part of it; these are the estimates stated.
+void refitTogether(const FrictionModel &model, const fe::ReductionSlope *slope, const ResidualSet &first,
+                   std::vector<EffectShare> shares, LoopSummary *s)
+{
+    if (s->effects.size() < 2) return;
+    constexpr int kRounds = 4;
+    for (int round = 0; round < kRounds; ++round)
+        for (size_t j = 0; j < s->effects.size(); ++j) {
+            LoopEffectStep &e = s->effects[j];
+            const Candidate *c = candidateNamed(first, e.name);
+            if (!c || e.reading == "fe_slope") continue;
+            std::vector<LoopRecord> others = withShares(model, slope, first.usable, shares, j, false);
+            const std::vector<LoopRecord> before = others;
+            applyEffect(model, slope, e, *c, &others, first.fold, -1, true);
+            shares[j] = shareOf(before, others);
+            if (round + 1 < kRounds) continue;
+            ResidualSet set;
+            set.folds = first.folds, set.fold = first.fold;
+            set.usable = before;
+            for (const LoopRecord &r : before) {
+                set.residual.push_back(r.muModel - r.muRef);
+                set.scaleSens.push_back(r.scaleSens);
+                set.uSens.push_back(r.uSens);
+            }
+            if (e.reading == "scale" || e.reading == "n") {
+                e.grouping = fitGrouping(model, before, *c, e.reading == "n" ? GroupReading::N : GroupReading::Scale,
+                                         first.fold, first.folds);
+                relativeToTypical(&e.grouping);
+            } else if (e.reading == "drift")
+                e.drift = fitDrift(model, before, *c, first.fold, first.folds);
+            else if (e.reading == "process" && c->kind == "interaction") {
+                e.slopeLevels.clear(), e.levelSlopes.clear();
+                readLevelSlopes(*c, set, e.form, &e);
+            } else if (e.reading == "process")
+                e.linear = fitLinearEffect(*c, set.residual, e.form, set.scaleSens, set.uSens);
+        }
+    const LoopEffectStep &lead = s->effects.front();
+    s->grouping = lead.grouping, s->linear = lead.linear, s->drift = lead.drift;
 }
 
 } // namespace
@@ -513,7 +558,9 @@ LoopSummary runLoopOn(const Manifest &manifest, const std::string &source,
         s.reading = first.reading, s.cvRmsPatch = first.cvRmsPatch;
         s.grouping = first.grouping, s.linear = first.linear, s.drift = first.drift;
         s.effects.push_back(first);
-        addFurtherEffects(*model, slopeLoaded ? &slope : nullptr, set, opt, &s);
+        std::vector<EffectShare> shares;
+        addFurtherEffects(*model, slopeLoaded ? &slope : nullptr, set, opt, &s, &shares);
+        refitTogether(*model, slopeLoaded ? &slope : nullptr, set, shares, &s);
     }
     writeLoopReport({reportDir, source, modelName, model, opt, feSweeps}, set, s);
     return s;

@@ -28,7 +28,8 @@ std::vector<double> sensitivityOf(const std::vector<LoopRecord> &records, const 
 }
 
 void applyEffect(const friction::FrictionModel &model, const fe::ReductionSlope *slope, const LoopEffectStep &step,
-                 const Candidate &candidate, std::vector<LoopRecord> *records, const std::vector<int> &fold, int k)
+                 const Candidate &candidate, std::vector<LoopRecord> *records, const std::vector<int> &fold, int k,
+                 bool onlyDiffering)
 {
     std::vector<bool> train(records->size());
     for (size_t i = 0; i < records->size(); ++i) train[i] = k < 0 || fold[i] != k;
@@ -40,8 +41,8 @@ void applyEffect(const friction::FrictionModel &model, const fe::ReductionSlope 
                 r.uMm = fe::uAtModelReduction(model, *slope, in, carriedReduction(r));
             }
     } else if (step.reading == "scale" || step.reading == "n") {
-        applyGrouping(model, records, candidate, step.reading == "scale" ? GroupReading::Scale : GroupReading::N,
-                      train);
+        applyGrouping(model, records, candidate, step.reading == "scale" ? GroupReading::Scale : GroupReading::N, train,
+                      onlyDiffering);
     } else if (step.reading == "drift") {
         applyDrift(model, records, candidate, train);
     } else {
@@ -53,6 +54,40 @@ void applyEffect(const friction::FrictionModel &model, const fe::ReductionSlope 
         for (size_t i = 0; i < records->size(); ++i) (*records)[i].muOffset -= pred[i];
     }
     refreshRecords(model, records);
+}
+
+EffectShare shareOf(const std::vector<LoopRecord> &before, const std::vector<LoopRecord> &after)
+{
+    EffectShare e;
+    for (size_t i = 0; i < before.size(); ++i) {
+        e.uFactor.push_back(after[i].uMm > 0 ? before[i].uMm / after[i].uMm : 1.0);
+        e.nShift.push_back(after[i].n - before[i].n);
+        e.muShift.push_back(after[i].muOffset - before[i].muOffset);
+    }
+    return e;
+}
+
+std::vector<LoopRecord> withShares(const friction::FrictionModel &model, const fe::ReductionSlope *slope,
+                                   const std::vector<LoopRecord> &original, const std::vector<EffectShare> &shares,
+                                   size_t skip, bool carry)
+{
+    std::vector<LoopRecord> out = original;
+    for (size_t j = 0; j < shares.size(); ++j) {
+        if (j == skip) continue;
+        for (size_t i = 0; i < out.size(); ++i) {
+            out[i].uMm /= shares[j].uFactor[i];
+            out[i].n += shares[j].nShift[i];
+            out[i].muOffset += shares[j].muShift[i];
+        }
+    }
+    if (carry && slope)
+        for (LoopRecord &r : out) {
+            friction::ModelInputs in = inputsOf(r);
+            in.hFinalMm = 0;
+            r.uMm = fe::uAtModelReduction(model, *slope, in, carriedReduction(r));
+        }
+    refreshRecords(model, &out);
+    return out;
 }
 
 } // namespace icacam::host::loop

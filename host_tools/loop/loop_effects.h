@@ -48,8 +48,27 @@ double carriedReduction(const LoopRecord &r);
 // applies it to every record: u carried to 50 % (fe_slope: nothing fitted), u/s per group
 // (scale), n + Δn per material (n), u/s(x) (drift), the regression taken off μ (process,
 // patch). slope: the FE du/dr, for fe_slope.
+// onlyDiffering: a grouping's levels are taken relative to its typical level, and those
+// consistent with the declared value stay declared (the anchor when several effects are
+// fitted together: a scale common to every camera, a shift common to every material and a
+// regression's global scale move μ alike).
 void applyEffect(const friction::FrictionModel &model, const fe::ReductionSlope *slope, const LoopEffectStep &step,
-                 const Candidate &candidate, std::vector<LoopRecord> *records, const std::vector<int> &fold, int k);
+                 const Candidate &candidate, std::vector<LoopRecord> *records, const std::vector<int> &fold, int k,
+                 bool onlyDiffering = false);
+
+// What one effect does to each record, fitted once: u divided by a factor (a length factor, a
+// drift), n shifted, μ offset (a regression); the reduction's carry is no share (nothing
+// fitted).
+struct EffectShare {
+    std::vector<double> uFactor, nShift, muShift;
+};
+// The share an effect took: records before and after applyEffect.
+EffectShare shareOf(const std::vector<LoopRecord> &before, const std::vector<LoopRecord> &after);
+// The records with every share but `skip` applied to the originals (skip ≥ shares.size():
+// all), then u carried to 50 % with the FE du/dr where `carry`.
+std::vector<LoopRecord> withShares(const friction::FrictionModel &model, const fe::ReductionSlope *slope,
+                                   const std::vector<LoopRecord> &original, const std::vector<EffectShare> &shares,
+                                   size_t skip, bool carry);
 
 // The sensitivity vector of a linear form ("scale": dμ/du·u, "u": dμ/du, else none).
 std::vector<double> sensitivityOf(const std::vector<LoopRecord> &records, const std::string &form);

@@ -183,13 +183,45 @@ void silhouetteCheck(const std::vector<LoopRecord> &usable, const Candidate &g, 
     }
 }
 
+// The levels relative to the typical one (the median of three or more, else the one nearest
+// the declared value): most cameras calibrated right, most materials declared right. A
+// level within 2σ of the declared value then stays declared.
+// The typical level's parameter: the median of three or more, else the one nearest `declared`.
+double typical(std::vector<double> values, double declared)
+{
+    double anchor = values.front();
+    if (values.size() >= 3) {
+        std::nth_element(values.begin(), values.begin() + long(values.size() / 2), values.end());
+        return values[values.size() / 2];
+    }
+    for (double v : values)
+        if (std::fabs(v - declared) < std::fabs(anchor - declared)) anchor = v;
+    return anchor;
+}
+
+void anchorLevels(GroupReading reading, std::map<std::string, GroupFit> *fit)
+{
+    std::vector<double> values;
+    for (const auto &[level, f] : *fit)
+        if (f.fitted) values.push_back(f.value);
+    if (values.empty()) return;
+    const double declared = neutral(reading);
+    const double anchor = typical(values, declared);
+    for (auto &[level, f] : *fit) {
+        if (!f.fitted) continue;
+        f.value = reading == GroupReading::Scale ? f.value / anchor : f.value - anchor;
+        if (std::fabs(f.value - declared) <= 2 * f.sigma) f.value = declared;
+    }
+}
+
 } // namespace
 
 void applyGrouping(const friction::FrictionModel &model, std::vector<LoopRecord> *records, const Candidate &g,
-                   GroupReading reading, const std::vector<bool> &train)
+                   GroupReading reading, const std::vector<bool> &train, bool onlyDiffering)
 {
     double scatter = 0;
-    const std::map<std::string, GroupFit> fit = fitLevels(model, *records, g, reading, train, &scatter);
+    std::map<std::string, GroupFit> fit = fitLevels(model, *records, g, reading, train, &scatter);
+    if (onlyDiffering) anchorLevels(reading, &fit);
     for (size_t i = 0; i < records->size(); ++i) {
         LoopRecord &r = (*records)[i];
         const auto it = fit.find(g.levels[i]);
@@ -198,6 +230,26 @@ void applyGrouping(const friction::FrictionModel &model, std::vector<LoopRecord>
             r.uMm /= p;
         else
             r.n = std::clamp(r.n + p, kNMin, kNMax);
+    }
+}
+
+void relativeToTypical(PhysicalFit *fit)
+{
+    std::vector<double> values;
+    for (const GroupFit &g : fit->groups)
+        if (g.fitted) values.push_back(fit->reading == GroupReading::Scale ? g.value : g.value - g.declared);
+    if (values.empty()) return;
+    const double anchor = typical(values, neutral(fit->reading));
+    // The typical level's own uncertainty enters every other level's relative estimate.
+    double anchorSigma = 0;
+    for (const GroupFit &g : fit->groups)
+        if (g.fitted && (fit->reading == GroupReading::Scale ? g.value : g.value - g.declared) == anchor)
+            anchorSigma = g.sigma;
+    for (GroupFit &g : fit->groups) {
+        if (!g.fitted) continue;
+        const bool isAnchor = (fit->reading == GroupReading::Scale ? g.value : g.value - g.declared) == anchor;
+        g.value = fit->reading == GroupReading::Scale ? g.value / anchor : g.value - anchor;
+        if (!isAnchor) g.sigma = std::hypot(g.sigma, anchorSigma);
     }
 }
 
