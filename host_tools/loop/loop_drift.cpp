@@ -88,9 +88,32 @@ DriftFit fitDrift(const friction::FrictionModel &model, const std::vector<LoopRe
                   const std::vector<int> &fold, int folds)
 {
     DriftFit d;
-    const Params p = fit(model, usable, x, std::vector<bool>(usable.size(), true));
+    std::vector<bool> every(usable.size(), true);
+    const Params p = fit(model, usable, x, every);
     d.xMean = p.xMean, d.level = p.a, d.slope = p.b;
     d.levelSigma = std::sqrt(p.cov00), d.slopeSigma = std::sqrt(p.cov11), d.scatter = p.scatter;
+    // As for a grouping's factor (loop_physics.h): the pooled scatter assumes every record's
+    // μ error alike; the jackknife over the records carries whatever acts. The larger is stated.
+    if (usable.size() >= 4) {
+        std::vector<double> a, b;
+        for (size_t leave = 0; leave < usable.size(); ++leave) {
+            every[leave] = false;
+            const Params q = fit(model, usable, x, every);
+            every[leave] = true;
+            a.push_back(q.a + q.b * (p.xMean - q.xMean)); // the level at the full fit's x̄
+            b.push_back(q.b);
+        }
+        const double m = double(usable.size());
+        auto spread = [m](const std::vector<double> &v) {
+            double mean = 0, var = 0;
+            for (double t : v) mean += t;
+            mean /= m;
+            for (double t : v) var += (t - mean) * (t - mean);
+            return std::sqrt((m - 1) / m * var);
+        };
+        d.levelSigma = std::max(d.levelSigma, spread(a));
+        d.slopeSigma = std::max(d.slopeSigma, spread(b));
+    }
     d.xMin = INFINITY, d.xMax = -INFINITY;
     for (double v : x.x)
         if (std::isfinite(v)) d.xMin = std::min(d.xMin, v), d.xMax = std::max(d.xMax, v);
