@@ -44,7 +44,8 @@ std::string usage()
     const loop::RankingOptions d;
     return std::string("usage: icacam loop --manifest FILE --report DIR [--model NAME] [--folds N] [--seed S]\n"
                        "                   [--fe-sweep CSV]... [--alpha A]\n"
-                       "       icacam loop --journal DIR --reference CSV --report DIR [options as above]\n"
+                       "       icacam loop --journal DIR --reference CSV --report DIR [--calibrations DIR]\n"
+                       "                   [options as above]\n"
                        "  --model NAME   the friction model (default ") +
            friction::kDefaultModel + "; known: " + cli::modelNames() +
            ")\n"
@@ -57,6 +58,9 @@ std::string usage()
            "  --alpha A      family-wise significance of a chosen effect (default " +
            numberText("%g", d.alpha) +
            ")\n"
+           "  --calibrations DIR  where the calibration files the journal names are (default the\n"
+           "                 journal folder): frames the device measured through one are re-measured\n"
+           "                 through it\n"
            "  --fe-sweep CSV the FE runs of the physical reduction correction (default the base the\n"
            "                 models' tables came from: " +
            friction::reduction_table::kFeSources +
@@ -479,17 +483,19 @@ LoopSummary runLoop(const std::string &manifestPath, const std::string &reportDi
 
 LoopSummary runJournalLoop(const std::string &journalDir, const std::string &referenceCsv, const std::string &reportDir,
                            const std::string &modelName, const RankingOptions &opt,
-                           const std::vector<std::string> &feSweeps)
+                           const std::vector<std::string> &feSweeps, const std::string &calibrationDir)
 {
     Manifest manifest;
     JournalJoin join;
     std::string err;
-    if (!readJournalManifest(journalDir, referenceCsv, &manifest, &join, &err)) throw std::runtime_error(err);
+    if (!readJournalManifest(journalDir, referenceCsv, &manifest, &join, &err, calibrationDir))
+        throw std::runtime_error(err);
     const std::string source = "Journal: `" + journalDir + "` (" + std::to_string(join.lines) + " lines, " +
                                std::to_string(join.results) + " results, " + std::to_string(join.scaleChecks) +
                                " scale checks), joined by record id with `" + referenceCsv +
                                "`: " + std::to_string(join.joined) +
-                               " records with a reference value and a saved frame, "
+                               " records with a reference value and a saved frame (" + std::to_string(join.calibrated) +
+                               " measured through the calibration file the device used, and re-measured through it), "
                                "re-measured with the current pipeline (the device's own results are the device_* "
                                "columns); " +
                                join.geometry;
@@ -575,7 +581,7 @@ int loopCommand(const std::vector<std::string> &args)
                                           "by `icacam fe tables`, as: ") +
                                   friction::reduction_table::kProvenance,
                               usage());
-    std::string manifestPath, journalDir, referenceCsv, reportDir, modelName = friction::kDefaultModel;
+    std::string manifestPath, journalDir, referenceCsv, calibrationDir, reportDir, modelName = friction::kDefaultModel;
     std::vector<std::string> feSweeps;
     loop::RankingOptions opt;
     cli::OptionReader opts(args, usage());
@@ -589,6 +595,8 @@ int loopCommand(const std::vector<std::string> &args)
             journalDir = opts.value();
         else if (opts.is("--reference"))
             referenceCsv = opts.value();
+        else if (opts.is("--calibrations"))
+            calibrationDir = opts.value();
         else if (opts.is("--report"))
             reportDir = opts.value();
         else if (opts.is("--model")) {
@@ -611,13 +619,15 @@ int loopCommand(const std::vector<std::string> &args)
         opts.missing("--report and one of --manifest or --journal");
     if (journalDir.empty() != referenceCsv.empty())
         throw cli::UsageError("--journal and --reference go together", usage());
+    if (!calibrationDir.empty() && journalDir.empty())
+        throw cli::UsageError("--calibrations applies to --journal", usage());
     // By default the FE data the product's table was generated from (its kFeSources).
     if (feSweeps.empty())
         for (const std::string &name : fe::splitSources(friction::reduction_table::kFeSources))
             feSweeps.push_back(repoFile(name));
-    const loop::LoopSummary s =
-        journalDir.empty() ? loop::runLoop(manifestPath, reportDir, modelName, opt, feSweeps)
-                           : loop::runJournalLoop(journalDir, referenceCsv, reportDir, modelName, opt, feSweeps);
+    const loop::LoopSummary s = journalDir.empty() ? loop::runLoop(manifestPath, reportDir, modelName, opt, feSweeps)
+                                                   : loop::runJournalLoop(journalDir, referenceCsv, reportDir,
+                                                                          modelName, opt, feSweeps, calibrationDir);
     std::cout << "records " << s.records << " usable " << s.usable << "\n"
               << "rms_before " << f4(s.rmsBefore) << "\ncv_rms_offset " << f4(s.cvRmsOffset) << "\n"
               << "top " << (s.ranking.empty() ? "-" : s.ranking.front().name) << "\n"

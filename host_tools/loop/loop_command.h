@@ -51,9 +51,10 @@ LoopSummary runLoop(const std::string &manifestPath, const std::string &reportDi
 
 // The same on an icacam-fw journal folder joined with a CSV of reference values by record id
 // (journal_records.h): the saved frames are re-measured with the current pipeline.
+// calibrationDir: where the calibration files the journal names are (empty: the journal folder).
 LoopSummary runJournalLoop(const std::string &journalDir, const std::string &referenceCsv, const std::string &reportDir,
                            const std::string &modelName, const RankingOptions &opt,
-                           const std::vector<std::string> &feSweeps);
+                           const std::vector<std::string> &feSweeps, const std::string &calibrationDir = "");
 
 // On records already read; source: the report's first words about where they come from;
 // skippedBefore: records left out before measuring, with why.
