@@ -280,7 +280,10 @@ LoopEffectStep readEffect(const FrictionModel &model, const ResidualSet &set, co
     step.name = lead.name, step.kind = lead.kind, step.form = lead.form, step.patchForm = lead.patchForm;
     step.z = lead.z, step.cvRmsPatch = lead.cvRmsPatch, step.cvRmsAfter = lead.cvRmsAfter;
     step.symptom = lead.symptom, step.viaSymptom = lead.viaSymptom;
-    step.preferredOver = lead.preferredOver, step.pointedBy = lead.pointedBy, step.inseparable = lead.inseparable;
+    step.preferredOver = lead.preferredOver, step.pointedBy = lead.pointedBy;
+    // The reduction's names (h_final_mm, reduction) are one cause, not two that cannot be told apart.
+    for (const std::string &other : lead.inseparable)
+        if (!(isReductionCandidate(lead.name) && isReductionCandidate(other))) step.inseparable.push_back(other);
     const Candidate *c = nullptr;
     for (const Candidate &cand : set.candidates)
         if (cand.name == lead.name) c = &cand;
