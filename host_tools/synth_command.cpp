@@ -29,7 +29,8 @@ std::string usage()
 {
     return "usage: icacam synth --out DIR [--count N] [--seed S] [--hard]\n"
            "       icacam synth --out DIR --condition all|NAME[,NAME...] [--count N] [--seed S] [--hard]\n"
-           "       icacam synth --out DIR --effect process|optical|camera|material|speed|null\n"
+           "       icacam synth --out DIR --effect "
+           "process|optical|camera|material|speed|drift|speed_material|null[,...]\n"
            "                    [--radii] [--count N] [--seed S]\n"
            "  --out DIR     where DIR/images/*, DIR/manifest.csv and DIR/truth.csv are written\n"
            "  --count N     records (default " +
@@ -38,7 +39,8 @@ std::string usage()
            "  --seed S      the random seed (default 1): the same seed, the same set\n"
            "  --hard        the rendering nuisances (blur, noise, contrast …) at their limits\n"
            "  --effect E    a record set for `icacam loop` (mu_ref and recorded columns) carrying that\n"
-           "                hidden effect, as images or (--radii) as measured radii (docs/loop.md)\n"
+           "                hidden effect (or several: camera,material), as images or (--radii) as\n"
+           "                measured radii (docs/loop.md)\n"
            "  --condition   records under conditions a manifest does not declare (" +
            conditionNames() +
            "),\n"
@@ -81,7 +83,10 @@ int synthCommand(const std::vector<std::string> &args)
     if (!effect.empty()) {
         LoopSetOptions opt;
         if (!parseLoopEffect(effect, &opt.effect))
-            throw cli::UsageError("--effect: process, optical, camera, material, speed or null, not '" + effect + "'",
+            throw cli::UsageError("--effect: process, optical, camera, material, speed, drift, speed_material or null, "
+                                  "or a comma list of "
+                                  "them, not '" +
+                                      effect + "'",
                                   usage());
         if (hard) throw cli::UsageError("--hard does not apply to --effect sets", usage());
         opt.count = int(count);

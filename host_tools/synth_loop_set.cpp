@@ -1,5 +1,6 @@
 #include "host_tools/synth_loop_set.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -33,23 +34,43 @@ const char *const kCameras[] = {"cam-1", "cam-2", "cam-3"};
 
 } // namespace
 
-bool parseLoopEffect(const std::string &name, LoopEffect *out)
+namespace {
+
+struct EffectName {
+    const char *name;
+    LoopEffect effect;
+};
+constexpr EffectName kEffectNames[] = {
+    {"null", LoopEffect::Null},         {"process", LoopEffect::Process},
+    {"optical", LoopEffect::Optical},   {"camera", LoopEffect::Camera},
+    {"material", LoopEffect::Material}, {"speed", LoopEffect::Speed},
+    {"drift", LoopEffect::Drift},       {"speed_material", LoopEffect::SpeedInMaterial}};
+
+} // namespace
+
+bool parseLoopEffect(const std::string &names, LoopEffect *out)
 {
-    if (name == "null")
-        *out = LoopEffect::Null;
-    else if (name == "process")
-        *out = LoopEffect::Process;
-    else if (name == "optical")
-        *out = LoopEffect::Optical;
-    else if (name == "camera")
-        *out = LoopEffect::Camera;
-    else if (name == "material")
-        *out = LoopEffect::Material;
-    else if (name == "speed")
-        *out = LoopEffect::Speed;
-    else
-        return false;
+    LoopEffect set = LoopEffect::Null;
+    size_t begin = 0;
+    while (begin <= names.size()) {
+        const size_t end = std::min(names.find(',', begin), names.size());
+        const std::string name = names.substr(begin, end - begin);
+        bool known = false;
+        for (const EffectName &e : kEffectNames)
+            if (name == e.name) set = set | e.effect, known = true;
+        if (!known) return false;
+        begin = end + 1;
+    }
+    *out = set;
     return true;
+}
+
+std::string loopEffectNames(LoopEffect set)
+{
+    std::string s;
+    for (const EffectName &e : kEffectNames)
+        if (has(set, e.effect)) s += (s.empty() ? "" : "+") + std::string(e.name);
+    return s.empty() ? "null" : s;
 }
 
 std::string writeLoopSet(const std::string &dir, const LoopSetOptions &opt)
@@ -62,7 +83,8 @@ std::string writeLoopSet(const std::string &dir, const LoopSetOptions &opt)
         << ",n,k_mpa,d0_mm,h0_mm,mu_ref,h_final_mm,material,camera_id,lens,operator,press_speed_mm_s,ambient_c,"
            "sequence\n";
     truth << "id,mu,n_true,n_declared,reduction,scale_error,speed_factor,u_mm,r_inner_mm,r_outer_mm,r_bulge_mm,"
-             "material,camera_id\n";
+             "material,camera_id,effects,camera_error,drift_error\n";
+    const std::string effects = loopEffectNames(opt.effect);
     std::mt19937 rng(opt.seed);
     auto U = [&](double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); };
     std::normal_distribution<double> refNoise(0, opt.muRefSigma), radiusNoise(0, opt.radiusSigmaMm);
@@ -77,18 +99,21 @@ std::string writeLoopSet(const std::string &dir, const LoopSetOptions &opt)
         const int m = int(rng() % uint32_t(kMaterialCount)), cam = int(rng() % 3);
         const Material &mat = kMaterials[m];
         const double n = mat.n, mu = U(0.08, 0.22);
-        const double nDeclared = opt.effect == LoopEffect::Material && m == badMaterial ? wrongN : n;
+        const double nDeclared = has(opt.effect, LoopEffect::Material) && m == badMaterial ? wrongN : n;
         const std::string op = ops[rng() % 3], lens = lenses[rng() % 2];
         const double speed = U(0.5, 5), ambient = U(18, 28);
         // The press holds 50 % unless the process effect is on; the recorded final height
         // carries the height gauge's ±0.015 mm either way.
-        const double r = opt.effect == LoopEffect::Process ? U(0.46, 0.54) : 0.5;
+        const double r = has(opt.effect, LoopEffect::Process) ? U(0.46, 0.54) : 0.5;
         const double hFinalRecorded = 15 * (1 - r) + U(-0.015, 0.015);
         // Geometry from the FE: the ring's width from the paper's model at 50 % carried by the
         // FE du/dr (the physics the model lacks), the contact edge and the silhouette from the
         // FE snapshots at (n, μ, r). A rate-sensitive material's ring widens with the speed.
-        const double speedFactor =
-            opt.effect == LoopEffect::Speed ? 1 + kSpeedLogSlope * std::log(speed / kSpeedReferenceMmS) : 1.0;
+        double speedFactor = 1.0;
+        if (has(opt.effect, LoopEffect::Speed))
+            speedFactor *= 1 + kSpeedLogSlope * std::log(speed / kSpeedReferenceMmS);
+        if (has(opt.effect, LoopEffect::SpeedInMaterial) && m == badMaterial)
+            speedFactor *= 1 + kMaterialSpeedLogSlope * std::log(speed / kMaterialSpeedReferenceMmS);
         const double u =
             (uForMu(paper, mu, n) + friction::ReductionCorrectedModel::slopeAt(n, mu) * (r - 0.5)) * speedFactor;
         double ro = 0, rMax = 0;
@@ -98,9 +123,13 @@ std::string writeLoopSet(const std::string &dir, const LoopSetOptions &opt)
         // A stale calibration: the lab's mm_per_px is too large, so every length comes out
         // large by the same factor (L25 was fitted later and kept L16's scale; one camera
         // was moved after it was calibrated).
-        double scaleError = 0;
-        if (opt.effect == LoopEffect::Optical && lens == std::string("L25")) scaleError = 0.08;
-        if (opt.effect == LoopEffect::Camera && cam == badCamera) scaleError = kCameraScaleError;
+        // The drift: the camera creeping away over the run, a little more with every specimen.
+        double scaleError = 0, cameraError = 0, driftError = 0;
+        if (has(opt.effect, LoopEffect::Camera) && cam == badCamera) cameraError = kCameraScaleError;
+        if (has(opt.effect, LoopEffect::Drift) && opt.count > 1) driftError = kDriftScaleError * i / (opt.count - 1);
+        scaleError = (1 + cameraError) * (1 + driftError) - 1;
+        if (has(opt.effect, LoopEffect::Optical) && lens == std::string("L25"))
+            scaleError = (1 + scaleError) * 1.08 - 1;
         char id[32];
         std::snprintf(id, sizeof id, "loop-%03d", i + 1);
         std::string measured;
@@ -135,8 +164,9 @@ std::string writeLoopSet(const std::string &dir, const LoopSetOptions &opt)
                       measured.c_str(), nDeclared, mat.kMpa, mu + refNoise(rng), hFinalRecorded, mat.name,
                       kCameras[cam], lens.c_str(), op.c_str(), speed, ambient, i + 1);
         man << line;
-        std::snprintf(line, sizeof line, "%s,%.5f,%.4f,%.4f,%.4f,%.3f,%.5f,%.5f,%.5f,%.5f,%.5f,%s,%s\n", id, mu, n,
-                      nDeclared, r, scaleError, speedFactor, roEq - ri, ri, roEq, rMax, mat.name, kCameras[cam]);
+        std::snprintf(line, sizeof line, "%s,%.5f,%.4f,%.4f,%.4f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%s,%s,%s,%.5f,%.5f\n",
+                      id, mu, n, nDeclared, r, scaleError, speedFactor, roEq - ri, ri, roEq, rMax, mat.name,
+                      kCameras[cam], effects.c_str(), cameraError, driftError);
         truth << line;
     }
     return manifestPath;

@@ -8,20 +8,35 @@
 
 namespace icacam::host {
 
-enum class LoopEffect {
-    Null,     // every specimen at 50 % (the recorded final height carries the gauge's ±0.015 mm),
-              // every camera calibrated, every n right: nothing to find
-    Process,  // the press stops at 46–54 % reduction (recorded in h_final_mm): u follows the FE
-    Optical,  // lens L25's images carry an 8 % scale error (the lab kept L16's mm_per_px)
-    Camera,   // one of three cameras measures every length 4 % large (a stale calibration)
-    Material, // one material's declared n is off by 0.06–0.10 (its flow curve fitted over the
-              // wrong strain range); its specimens deformed with the true n
-    Speed,    // a rate-sensitive material: u grows with the press speed, u·(1 + 0.06 ln(v/1.6))
+// The hidden effects, as bits: a set may carry several at once (Camera | Material).
+enum class LoopEffect : unsigned {
+    Null = 0,                 // every specimen at 50 % (the recorded final height carries the gauge's ±0.015 mm),
+                              // every camera calibrated, every n right: nothing to find
+    Process = 1 << 0,         // the press stops at 46–54 % reduction (recorded in h_final_mm): u follows the FE
+    Optical = 1 << 1,         // lens L25's images carry an 8 % scale error (the lab kept L16's mm_per_px)
+    Camera = 1 << 2,          // one of three cameras measures every length 4 % large (a stale calibration)
+    Material = 1 << 3,        // one material's declared n is off by 0.06–0.10 (its flow curve fitted over the
+                              // wrong strain range); its specimens deformed with the true n
+    Speed = 1 << 4,           // a rate-sensitive material: u grows with the press speed, u·(1 + 0.06 ln(v/1.6))
+    Drift = 1 << 5,           // the scale drifts along the run: 0 at the first record to +8 % at the last
+    SpeedInMaterial = 1 << 6, // one material only is rate-sensitive: its u·(1 + 0.10 ln(v/2.4))
 };
-bool parseLoopEffect(const std::string &name, LoopEffect *out);
+constexpr LoopEffect operator|(LoopEffect a, LoopEffect b)
+{
+    return LoopEffect(unsigned(a) | unsigned(b));
+}
+constexpr bool has(LoopEffect set, LoopEffect e)
+{
+    return (unsigned(set) & unsigned(e)) != 0;
+}
+// One name (null, process, optical, camera, material, speed, drift, speed_material) or a
+// comma-separated list of them.
+bool parseLoopEffect(const std::string &names, LoopEffect *out);
+// The set's effects as the names above, joined by '+' ("null" for none).
+std::string loopEffectNames(LoopEffect set);
 
 struct LoopSetOptions {
-    LoopEffect effect = LoopEffect::Null;
+    LoopEffect effect = LoopEffect::Null; // one effect or several (Camera | Material)
     int count = 48;
     uint32_t seed = 1;
     double muRefSigma = 0.003; // the reference method's scatter (../shared/data/README.md)
@@ -36,12 +51,18 @@ struct LoopSetOptions {
 // The hidden effects' sizes (truth.csv carries them per record).
 constexpr double kCameraScaleError = 0.04;
 constexpr double kSpeedLogSlope = 0.06, kSpeedReferenceMmS = 1.6;
+// SpeedInMaterial: the one rate-sensitive material, about the run's typical speed (the
+// geometric mean of the speeds drawn), so that the effect is a slope and not a shift of that
+// material's u (which would read as its n).
+constexpr double kMaterialSpeedLogSlope = 0.10, kMaterialSpeedReferenceMmS = 2.4;
+constexpr double kDriftScaleError = 0.08; // Drift: the last record's scale error
 
 // Writes DIR/manifest.csv (what the lab recorded: id, image + mm_per_px or the three radii, n,
 // k_mpa, d0_mm, h0_mm, mu_ref, h_final_mm, material, camera_id, lens, operator,
 // press_speed_mm_s, ambient_c, sequence), DIR/images/* (images only) and DIR/truth.csv (per
 // record: the true μ, n and reduction, the declared n, the length scale error, the speed
-// factor of u, the true radii). Returns the manifest's path.
+// factor of u, the true radii, the set's effects, the camera's and the drift's share of the
+// scale error). Returns the manifest's path.
 std::string writeLoopSet(const std::string &dir, const LoopSetOptions &opt);
 
 } // namespace icacam::host

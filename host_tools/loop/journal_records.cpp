@@ -41,9 +41,9 @@ std::string joinKey(const std::string &id)
 // The device's principal results (vision/reading_record.h): renamed device_* so that they
 // are symptoms and not taken for a radii record. Its per-edge diagnostics are left out: the
 // re-measurement's diag_* carry the current pipeline's.
-const char *const kMeasured[] = {"mu",        "mu_sigma",      "u_mm",         "r_inner_mm", "r_outer_mm", "r_max_mm",
-                                 "reduction", "reduction_est", "scale_factor", "status",     "flags",      "message",
-                                 "ms"};
+const char *const kMeasured[] = {"mu",        "mu_sigma",       "u_mm",         "r_inner_mm", "r_outer_mm", "r_max_mm",
+                                 "reduction", "reduction_est",  "scale_factor", "status",     "flags",      "message",
+                                 "ms",        "plane_height_mm"};
 // Settings and conditions the device recorded with each result.
 const char *const kConditions[] = {"n",          "k_mpa",    "d0_mm",       "h0_mm",  "mm_per_px",
                                    "h_final_mm", "material", "calibration", "trigger"};
@@ -118,18 +118,23 @@ struct Geometry {
 // One intact result line joined with its reference row: the manifest's row, or why the
 // result is left out.
 std::string joinResult(std::map<std::string, std::string> &f, const ManifestRow &reference, const std::string &idColumn,
-                       int line, Geometry *geometry, ManifestRow *row)
+                       int line, const std::string &calibrationDir, Geometry *geometry, ManifestRow *row)
 {
     if (f["image"].empty()) return "no saved frame (journal.images none, or an error before capture)";
+    std::string calibration;
     if (!f["calibration"].empty()) {
-        // The frame's boundaries were mapped through a calibration file the loop does not read.
-        return "measured through calibration '" + f["calibration"] +
-               "'; the loop re-measures frames with mm_per_px only";
+        // The journal names the file; the device read it beside its config.
+        const fs::path file = fs::path(calibrationDir) / fs::path(f["calibration"]).filename();
+        if (!fs::exists(file))
+            return "measured through calibration '" + f["calibration"] + "', which is not in '" + calibrationDir +
+                   "' (name its folder with --calibrations)";
+        calibration = fs::absolute(file).string();
     }
     row->line = line;
     row->cells["id"] = f["id"];
     row->cells["image"] = f["image"];
     for (const char *c : kConditions) row->cells[c] = f[c];
+    row->cells["calibration"] = calibration;
     for (const char *c : kMeasured) row->cells[std::string("device_") + c] = f[c];
     const bool recordGeometry = !f["d0_mm"].empty() && !f["h0_mm"].empty();
     if (recordGeometry)
@@ -153,8 +158,9 @@ std::string joinResult(std::map<std::string, std::string> &f, const ManifestRow 
 } // namespace
 
 bool readJournalManifest(const std::string &journalDir, const std::string &referenceCsv, Manifest *out,
-                         JournalJoin *info, std::string *error)
+                         JournalJoin *info, std::string *error, const std::string &calibrationDir)
 {
+    const std::string calibrations = calibrationDir.empty() ? journalDir : calibrationDir;
     *info = {};
     Manifest ref;
     if (!readManifest(referenceCsv, &ref, error)) return false;
@@ -203,10 +209,12 @@ bool readJournalManifest(const std::string &journalDir, const std::string &refer
         }
         used[it->first] = true;
         ManifestRow row;
-        if (const std::string why = joinResult(f, *it->second, idColumn, info->lines, &geometry, &row); !why.empty()) {
+        if (const std::string why = joinResult(f, *it->second, idColumn, info->lines, calibrations, &geometry, &row);
+            !why.empty()) {
             info->skipped.push_back(what + ": " + why);
             continue;
         }
+        info->calibrated += row.get("calibration").empty() ? 0 : 1;
         out->rows.push_back(std::move(row));
         ++info->joined;
     }

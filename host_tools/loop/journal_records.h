@@ -16,6 +16,7 @@ struct JournalJoin {
     int results = 0;                  // intact result lines
     int joined = 0;                   // results with a reference row and a saved frame: the manifest's rows
     int scaleChecks = 0;              // scale-check lines (not measurements)
+    int calibrated = 0;               // joined results the device measured through a calibration file
     std::vector<std::string> skipped; // "what: why", one per line or reference row left out
     // Where D0 and H0 came from: the result records do not carry them (the reference CSV's
     // d0_mm/h0_mm, else the device's settings.conf as it is now, else 10 and 15 mm).
@@ -31,7 +32,13 @@ struct JournalJoin {
 // empty (an undeclared h_final_mm of 0 counts as empty) and is kept as ref_<name> otherwise.
 // Ids join by number (12 = 000012) or else as text. False only when the journal or the CSV
 // cannot be read. The reference's id column is `id` (or `record_id`).
+//
+// A result the device measured through a calibration file (its `calibration`, the file's
+// name) is re-measured through that file, as the device did (the boundaries mapped into the
+// end-face plane at h_final_mm, else h0_mm / 2): the file is looked for in calibrationDir
+// (empty: the journal folder); a record whose file is not there is left out, with why. The
+// plane the device mapped at is kept as device_plane_height_mm.
 bool readJournalManifest(const std::string &journalDir, const std::string &referenceCsv, Manifest *out,
-                         JournalJoin *info, std::string *error);
+                         JournalJoin *info, std::string *error, const std::string &calibrationDir = "");
 
 } // namespace icacam::host::loop

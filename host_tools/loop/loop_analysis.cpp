@@ -1,8 +1,11 @@
 #include "host_tools/loop/loop_analysis.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <limits>
+#include <map>
 #include <random>
 #include <set>
 
@@ -94,11 +97,22 @@ struct Design {
     {
         if (!c) return g ? 2 : 1;
         if (c->kind == "categorical") return g ? 1 + levels.size() : levels.size();
+        if (c->kind == "interaction") return (g ? 2 : 1) + levels.size();
         return g ? 3 : 2;
     }
     void row(size_t i, std::vector<double> *f) const
     {
         f->assign(size(), 0);
+        if (c && c->kind == "interaction") {
+            // A slope per level: [1, (g,) (g·)x·one-hot].
+            (*f)[0] = 1;
+            if (g) (*f)[1] = (*g)[i];
+            const auto it = std::lower_bound(levels.begin(), levels.end(), c->levels[i]);
+            if (it == levels.end() || *it != c->levels[i]) return;
+            const double x = std::isfinite(c->x[i]) ? c->x[i] - xMean[0] : 0;
+            (*f)[(g ? 2 : 1) + size_t(it - levels.begin())] = g ? (*g)[i] * x : x;
+            return;
+        }
         if (c && c->kind == "categorical") {
             const auto it = std::lower_bound(levels.begin(), levels.end(), c->levels[i]);
             const bool seen = it != levels.end() && *it == c->levels[i];
@@ -121,9 +135,10 @@ struct Design {
 };
 
 // Fits the candidate (nullptr: the baseline) on the records with fold != k and predicts those
-// with fold == k. k < 0: fit on all and predict all. sens: the scale form.
+// with fold == k (every record with predictAll). k < 0: fit on all and predict all. sens: the
+// scale form.
 void fitPredict(const Candidate *c, const std::vector<double> &y, const std::vector<int> &fold, int k,
-                std::vector<double> *pred, const std::vector<double> *sens = nullptr)
+                std::vector<double> *pred, const std::vector<double> *sens = nullptr, bool predictAll = false)
 {
     const size_t n = y.size();
     auto train = [&](size_t i) { return k < 0 || fold[i] != k; };
@@ -136,12 +151,13 @@ void fitPredict(const Candidate *c, const std::vector<double> &y, const std::vec
             ++cnt;
         }
     const double my = cnt ? sy / cnt : 0;
-    if (c && c->kind == "categorical") {
+    if (c && (c->kind == "categorical" || c->kind == "interaction")) {
         std::set<std::string> lv;
         for (size_t i = 0; i < n; ++i)
             if (train(i)) lv.insert(c->levels[i]);
         d.levels.assign(lv.begin(), lv.end());
-    } else if (c) {
+    }
+    if (c && c->kind != "categorical") {
         double sx = 0;
         int nx = 0;
         for (size_t i = 0; i < n; ++i)
@@ -166,7 +182,7 @@ void fitPredict(const Candidate *c, const std::vector<double> &y, const std::vec
     for (size_t r = 0; r < p; ++r) a[r * p + r] += 1e-10 * tr / double(p) + 1e-300; // degenerate columns
     const bool ok = solveLinearSystem(a, b, &q);
     for (size_t i = 0; i < n; ++i) {
-        if (k >= 0 && fold[i] != k) continue;
+        if (k >= 0 && fold[i] != k && !predictAll) continue;
         if (!ok) {
             (*pred)[i] = my;
             continue;
@@ -250,6 +266,81 @@ double explainedShare(const Candidate &symptom, const Candidate &cause, double *
 
 } // namespace
 
+namespace {
+
+// A record's value of a candidate as a key (a level, or a number as written).
+std::string keyOf(const Candidate &c, size_t i)
+{
+    if (c.kind == "categorical") return c.levels[i];
+    if (c.kind == "interaction") return c.levels[i] + "|" + std::to_string(c.x[i]);
+    return std::isfinite(c.x[i]) ? std::to_string(c.x[i]) : "";
+}
+
+size_t keyCount(const Candidate &c)
+{
+    return c.kind == "categorical" ? c.levels.size() : c.x.size();
+}
+
+// The share of records on which a's value follows from b's (the most common a per value of b).
+double functionShare(const Candidate &a, const Candidate &b)
+{
+    const size_t n = std::min(keyCount(a), keyCount(b));
+    std::map<std::string, std::map<std::string, int>> counts;
+    for (size_t i = 0; i < n; ++i) ++counts[keyOf(b, i)][keyOf(a, i)];
+    int agree = 0;
+    for (const auto &[kb, as] : counts) {
+        int most = 0;
+        for (const auto &[ka, k] : as) most = std::max(most, k);
+        agree += most;
+    }
+    return n ? double(agree) / double(n) : 0;
+}
+
+// A recorded numeric condition that varies within a material (press speed, temperature) as
+// a slope per material: an effect confined to one material (a rate-sensitive material among
+// others) is not read as that material. Rate and temperature sensitivity are properties of
+// a material, so only material groupings get one. Declared properties of a level (n, K of a
+// material: a function of some grouping) and the reduction are left out.
+void addInteractions(const std::vector<LoopRecord> &usable, std::vector<Candidate> *out)
+{
+    std::vector<Candidate> added;
+    for (const Candidate &x : *out) {
+        if (x.kind != "numeric" || x.symptom || isReductionCandidate(x.name)) continue;
+        bool declaredProperty = false;
+        for (const Candidate &g : *out)
+            if (g.kind == "categorical" && !g.symptom && functionShare(x, g) >= 0.95) declaredProperty = true;
+        if (declaredProperty) continue;
+        for (const Candidate &g : *out) {
+            if (g.kind != "categorical" || g.symptom || !isMaterialGrouping(usable, g)) continue;
+            Candidate c{x.name + "_by_" + g.name, "interaction", x.x, g.levels, false};
+            added.push_back(std::move(c));
+        }
+    }
+    out->insert(out->end(), added.begin(), added.end());
+}
+
+} // namespace
+
+bool isMaterialGrouping(const std::vector<LoopRecord> &usable, const Candidate &g)
+{
+    if (g.kind != "categorical" || g.levels.size() != usable.size()) return false;
+    // Named as a material: its records may declare n per batch, the shift is per material.
+    std::string name = g.name;
+    for (char &ch : name) ch = char(std::tolower(static_cast<unsigned char>(ch)));
+    for (const char *word : {"material", "alloy", "grade"})
+        if (name.find(word) != std::string::npos) return true;
+    std::map<std::string, std::set<long>> nPerLevel;
+    std::set<long> all;
+    for (size_t i = 0; i < usable.size(); ++i) {
+        const long n = std::lround(usable[i].n * 1e4);
+        nPerLevel[g.levels[i]].insert(n);
+        all.insert(n);
+    }
+    for (const auto &[level, ns] : nPerLevel)
+        if (ns.size() != 1) return false;
+    return all.size() >= 2;
+}
+
 bool isSymptom(const std::string &name)
 {
     if (name.rfind("diag_", 0) == 0 || name.rfind("device_", 0) == 0) return true;
@@ -314,12 +405,18 @@ std::vector<Candidate> buildCandidates(const std::vector<LoopRecord> &usable)
         Candidate c;
         c.name = name;
         c.symptom = isSymptom(name);
-        if (numeric) {
+        bool dates = !numeric;
+        for (const std::string &v : distinct) dates = dates && (v.empty() || std::isfinite(dayNumber(v)));
+        if (numeric || dates) {
+            // A date enters as its day number: a drift along the calendar is a line in it.
             c.kind = "numeric";
             for (const LoopRecord &r : usable) {
                 auto it = r.columns.find(name);
                 double d;
-                c.x.push_back(it != r.columns.end() && parseNumber(it->second, &d) ? d : kNaN);
+                c.x.push_back(it == r.columns.end()         ? kNaN
+                              : dates                       ? dayNumber(it->second)
+                              : parseNumber(it->second, &d) ? d
+                                                            : kNaN);
             }
         } else {
             if (distinct.size() * 2 > usable.size()) continue; // an identifier, not a factor
@@ -338,6 +435,7 @@ std::vector<Candidate> buildCandidates(const std::vector<LoopRecord> &usable)
         for (const LoopRecord &r : usable) c.x.push_back(r.reduction >= 0 ? r.reduction : kNaN);
         out.push_back(std::move(c));
     }
+    addInteractions(usable, &out);
     std::set<std::string> diag;
     for (const LoopRecord &r : usable)
         for (const auto &[k, v] : r.diagnostics) diag.insert(k);
@@ -354,11 +452,42 @@ std::vector<Candidate> buildCandidates(const std::vector<LoopRecord> &usable)
     return out;
 }
 
+double dayNumber(const std::string &text)
+{
+    int y = 0, m = 0, d = 0;
+    char tail = 0;
+    if (std::sscanf(text.c_str(), "%4d-%2d-%2d%c", &y, &m, &d, &tail) < 3 || m < 1 || m > 12 || d < 1 || d > 31 ||
+        y < 1900)
+        return kNaN;
+    if (text.size() > 10 && tail != 'T' && tail != ' ') return kNaN;
+    // Days since 1970-01-01 (civil calendar, Howard Hinnant's days_from_civil).
+    y -= m <= 2;
+    const int era = y / 400, yoe = y - era * 400;
+    const int doy = (153 * (m + (m > 2 ? -3 : 9)) + 2) / 5 + d - 1;
+    const int doe = yoe * 365 + yoe / 4 - yoe / 100 + doy;
+    return double(era * 146097 + doe - 719468);
+}
+
+bool sameRecords(const Candidate &a, const Candidate &b)
+{
+    const size_t n = std::min(keyCount(a), keyCount(b));
+    if (n == 0) return false;
+    return functionShare(a, b) >= 0.95 && functionShare(b, a) >= 0.95;
+}
+
 std::vector<double> cvPredict(const Candidate &c, const std::vector<double> &residual, const std::vector<int> &fold,
                               int folds, const std::vector<double> *scaleSensitivity)
 {
     std::vector<double> pred(residual.size(), 0);
     for (int k = 0; k < folds; ++k) fitPredict(&c, residual, fold, k, &pred, scaleSensitivity);
+    return pred;
+}
+
+std::vector<double> predictFrom(const Candidate &c, const std::vector<double> &residual, const std::vector<int> &fold,
+                                int k, const std::vector<double> *sensitivity)
+{
+    std::vector<double> pred(residual.size(), 0);
+    fitPredict(&c, residual, fold, k, &pred, sensitivity, true);
     return pred;
 }
 
@@ -395,6 +524,8 @@ double inSample(const Candidate *c, const std::vector<double> &y, const std::vec
         *params = sens ? 2 : 1;
     else if (c->kind == "categorical")
         *params = int(std::set<std::string>(c->levels.begin(), c->levels.end()).size()) + (sens ? 1 : 0);
+    else if (c->kind == "interaction")
+        *params = int(std::set<std::string>(c->levels.begin(), c->levels.end()).size()) + (sens ? 2 : 1);
     else
         *params = sens ? 3 : 2;
     return sumSquares(pred);
@@ -534,7 +665,7 @@ void nameTheLeadingSymptomsCause(const std::vector<Candidate> &candidates, std::
     double bestR2 = -1;
     for (size_t k = 0; k < o.size(); ++k) {
         const RankedCandidate &c = out[o[k]];
-        if (c.symptom || c.significant ||
+        if (c.symptom || c.significant || c.kind == "interaction" ||
             !(c.gain > 0 && c.z > zSingle && c.gain >= opt.minRelativeGain * c.cvRmsBefore))
             continue;
         bool told = pairedZ(errors[o[k]], errors[o[lead]]) >= 2.0;
@@ -552,6 +683,60 @@ void nameTheLeadingSymptomsCause(const std::vector<Candidate> &candidates, std::
     const size_t moved = o[best];
     o.erase(o.begin() + long(best));
     o.insert(o.begin(), moved);
+}
+
+// The effect added leads: the first significant recorded condition, else the first
+// significant symptom. A symptom that explains the residual significantly better than that
+// condition still sees more than it, and the next round looks at what the condition leaves;
+// a candidate with a lower CV RMS that is not significant (a slope per level whose slopes do
+// not differ) does not block it.
+void putTheAddedEffectFirst(std::vector<RankedCandidate> &out, std::vector<size_t> *order)
+{
+    std::vector<size_t> &o = *order;
+    size_t k = 0;
+    while (k < o.size() && !(out[o[k]].significant && !out[o[k]].symptom)) ++k;
+    if (k == o.size())
+        for (k = 0; k < o.size() && !out[o[k]].significant;) ++k;
+    if (k == 0 || k == o.size()) return;
+    RankedCandidate &c = out[o[k]];
+    for (size_t j = 0; j < k; ++j)
+        if (out[o[j]].symptom && out[o[j]].significant && !c.symptom) c.aheadOfBetter.push_back(out[o[j]].name);
+    const size_t moved = o[k];
+    o.erase(o.begin() + long(k));
+    o.insert(o.begin(), moved);
+}
+
+// A slope per level counts only where the slopes differ: the per-level model against one
+// common slope in the same form, F test at the family's critical z.
+bool slopesDiffer(const Candidate &c, const std::vector<double> &y, const std::vector<int> &fold,
+                  const std::vector<Form> &formList, const FormScore &f, double zCrit)
+{
+    const std::vector<double> *sens = nullptr;
+    for (const Form &form : formList)
+        if (f.form == form.name) sens = form.sens;
+    const Candidate common{c.name, "numeric", c.x, {}, false};
+    int p0 = 0, p1 = 0;
+    const double sse0 = inSample(&common, y, fold, sens, &p0), sse1 = inSample(&c, y, fold, sens, &p1);
+    return nestedZ(sse0, p0, sse1, p1, y.size()) > zCrit;
+}
+
+// The significant recorded conditions the leading one cannot be told from: they group the
+// records the same way (each a function of the other on 95 % of them) and their held-out
+// errors are not significantly larger (paired z < 2). Two columns that say the same thing
+// (a camera always fitted with one lens) cannot be separated by these records.
+void nameInseparable(const std::vector<Candidate> &candidates, const std::vector<std::vector<double>> &errors,
+                     const std::vector<size_t> &order, std::vector<RankedCandidate> *out)
+{
+    if (order.empty()) return;
+    RankedCandidate &lead = (*out)[order[0]];
+    if (!lead.significant || lead.symptom) return;
+    for (size_t k = 1; k < order.size(); ++k) {
+        const size_t j = order[k];
+        const RankedCandidate &other = (*out)[j];
+        if (other.symptom || !other.significant) continue;
+        if (pairedZ(errors[j], errors[order[0]]) < 2.0 && sameRecords(candidates[order[0]], candidates[j]))
+            lead.inseparable.push_back(other.name);
+    }
 }
 
 } // namespace
@@ -587,6 +772,7 @@ std::vector<RankedCandidate> rankCandidates(const std::vector<Candidate> &candid
         r.z = nestedZ(f.sse0, f.p0, f.sse1, f.p1, y.size());
         if (c.kind != "categorical") r.correlation = correlation(c, y);
         r.significant = r.gain > 0 && r.z > zCrit && r.gain >= opt.minRelativeGain * r.cvRmsBefore;
+        if (c.kind == "interaction" && r.significant) r.significant = slopesDiffer(c, y, fold, formList, f, zCrit);
         out.push_back(r);
         errors.push_back(std::move(f.e1));
     }
@@ -596,6 +782,7 @@ std::vector<RankedCandidate> rankCandidates(const std::vector<Candidate> &candid
                      [&](size_t a, size_t b) { return out[a].cvRmsAfter < out[b].cvRmsAfter; });
     putCausesBeforeSymptoms(out, errors, &order);
     nameTheLeadingSymptomsCause(candidates, out, errors, opt, &order);
+    putTheAddedEffectFirst(out, &order);
     // The measurements that point to each significant cause: the significant symptoms, best
     // first (a symptom answers to the cause; alone it does not name it).
     for (size_t k = 0; k < order.size(); ++k) {
@@ -604,6 +791,7 @@ std::vector<RankedCandidate> rankCandidates(const std::vector<Candidate> &candid
         for (size_t j : order)
             if (out[j].symptom && out[j].significant) c.pointedBy.push_back(out[j].name);
     }
+    nameInseparable(candidates, errors, order, &out);
     std::vector<RankedCandidate> ranked;
     for (size_t i : order) ranked.push_back(std::move(out[i]));
     return ranked;

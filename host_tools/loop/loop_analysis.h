@@ -22,13 +22,16 @@ struct LoopRecord {
     double scaleSens = 0;  // dμ/du · u: μ's change per unit relative scale error of u
     double uSens = 0;      // dμ/du: μ's change per mm of u
     double reduction = -1; // 1 - h_final/h0 when recorded, else -1
+    double muOffset = 0;   // a correction in μ the loop applied (a process variable's regression)
     bool usable = false;   // measured and with a reference
 };
 
 // Candidate explanation of the residual: one recorded column or one diagnostic.
 struct Candidate {
     std::string name;
-    std::string kind;                // "numeric", "categorical" or "diagnostic"
+    // "numeric", "categorical", "diagnostic", or "interaction": a numeric condition with a
+    // slope per level of a grouping (x and levels both set; named <x>_by_<grouping>).
+    std::string kind;
     std::vector<double> x;           // numeric value per usable record (NaN: missing)
     std::vector<std::string> levels; // categorical level per usable record
     bool symptom = false;            // a measured quantity (isSymptom), not a recorded condition
@@ -43,6 +46,10 @@ bool isSymptom(const std::string &name);
 // The specimen's height reduction as a candidate: recorded (h_final_mm, the derived
 // reduction) or as the silhouette implies it (diag_reduction_est).
 bool isReductionCandidate(const std::string &name);
+
+// A grouping of materials: named so (material, alloy, grade), or every level declaring one n
+// (and at least two levels differing).
+bool isMaterialGrouping(const std::vector<LoopRecord> &usable, const Candidate &grouping);
 
 struct RankedCandidate {
     std::string name, kind;
@@ -70,6 +77,13 @@ struct RankedCandidate {
     // On a significant recorded condition: the significant symptoms, best first: the
     // measurements that point to a cause.
     std::vector<std::string> pointedBy;
+    // On a significant leading recorded condition: the significant recorded conditions that
+    // group the records the same way and explain them as well (paired z < 2): these records
+    // cannot tell them apart.
+    std::vector<std::string> inseparable;
+    // On a significant recorded condition put first although symptoms explain the residual
+    // significantly better: those symptoms (they see more than it; the next round looks again).
+    std::vector<std::string> aheadOfBetter;
 };
 
 // A candidate's physical form fitted outside the ranking: held-out errors per record under it
@@ -116,6 +130,19 @@ std::vector<RankedCandidate> rankCandidates(const std::vector<Candidate> &candid
 // "fe": residual = a + b·change, a and b fitted per fold (b = 1: the physics as it is).
 // fittedForms: per candidate name, a physical form fitted elsewhere (loop_physics.h: a length
 // factor or an n per group), tried against its own baseline like the other forms.
+
+// A date (YYYY-MM-DD, optionally with a time after it) as its day number; NaN otherwise.
+double dayNumber(const std::string &text);
+
+// Two candidates that group the records the same way: each one's value follows from the
+// other's on at least 95 % of the records (a camera always used with one lens; a material
+// and its declared n).
+bool sameRecords(const Candidate &a, const Candidate &b);
+
+// The residual predicted for every record by one candidate fitted on the records with
+// fold != k (k < 0: on all): sensitivity nullptr for the mu form, dμ/du·u for scale, dμ/du for u.
+std::vector<double> predictFrom(const Candidate &c, const std::vector<double> &residual, const std::vector<int> &fold,
+                                int k, const std::vector<double> *sensitivity);
 
 // Cross-validated predictions of the residual by one candidate (for before/after plots).
 std::vector<double> cvPredict(const Candidate &c, const std::vector<double> &residual, const std::vector<int> &fold,

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <set>
 #include <stdexcept>
 
 #include "friction/friction_models.h"
@@ -43,7 +44,8 @@ std::string usage()
     const loop::RankingOptions d;
     return std::string("usage: icacam loop --manifest FILE --report DIR [--model NAME] [--folds N] [--seed S]\n"
                        "                   [--fe-sweep CSV]... [--alpha A]\n"
-                       "       icacam loop --journal DIR --reference CSV --report DIR [options as above]\n"
+                       "       icacam loop --journal DIR --reference CSV --report DIR [--calibrations DIR]\n"
+                       "                   [options as above]\n"
                        "  --model NAME   the friction model (default ") +
            friction::kDefaultModel + "; known: " + cli::modelNames() +
            ")\n"
@@ -56,6 +58,9 @@ std::string usage()
            "  --alpha A      family-wise significance of a chosen effect (default " +
            numberText("%g", d.alpha) +
            ")\n"
+           "  --calibrations DIR  where the calibration files the journal names are (default the\n"
+           "                 journal folder): frames the device measured through one are re-measured\n"
+           "                 through it\n"
            "  --fe-sweep CSV the FE runs of the physical reduction correction (default the base the\n"
            "                 models' tables came from: " +
            friction::reduction_table::kFeSources +
@@ -117,6 +122,9 @@ ResidualSet measureRecords(const Manifest &manifest, const FrictionModel &model,
     return set;
 }
 
+std::map<std::string, std::vector<double>> reductionChange(const FrictionModel &model, const ResidualSet &set,
+                                                           const fe::ReductionSlope &slope);
+
 // The recorded reduction is also ranked by its physics: the change in μ when u is carried
 // to 50 % with the FE du/dr (form "fe"), not only by a linear patch. Loads *slope when a
 // reduction is recorded and the model does not carry it itself.
@@ -134,27 +142,41 @@ std::map<std::string, std::vector<double>> reductionForms(const FrictionModel &m
         std::cerr << "icacam loop: no physical correction: " << e << "\n";
         return physicalForms;
     }
+    return reductionChange(model, set, *slope);
+}
+
+// The change in μ when each record's u is carried to 50 % with the FE du/dr, as the form "fe"
+// of the recorded reduction.
+std::map<std::string, std::vector<double>> reductionChange(const FrictionModel &model, const ResidualSet &set,
+                                                           const fe::ReductionSlope &slope)
+{
+    std::map<std::string, std::vector<double>> physicalForms;
     std::vector<double> change(set.usable.size(), 0);
     for (size_t i = 0; i < set.usable.size(); ++i) {
         const LoopRecord &r = set.usable[i];
         if (r.reduction < 0) continue;
         ModelInputs in;
         in.uMm = r.uMm, in.n = r.n, in.kMpa = r.kMpa, in.d0Mm = r.d0Mm, in.h0Mm = r.h0Mm;
-        in.uMm = fe::uAtModelReduction(model, *slope, in, r.reduction);
-        change[i] = r.muModel - model.estimate(in).mu;
+        in.uMm = fe::uAtModelReduction(model, slope, in, r.reduction);
+        change[i] = r.muModel - (model.estimate(in).mu + r.muOffset);
     }
     physicalForms["reduction"] = std::move(change);
     return physicalForms;
 }
 
 // A grouping (a camera, a lens, a material) is also ranked in its physical form: a length
-// factor per group, or an n per material (loop_physics.h).
+// factor per group, or an n per material (loop_physics.h); a condition that orders the
+// records in time as a drift of the scale along it (loop_drift.h).
 std::map<std::string, FittedForm> groupingForms(const FrictionModel &model, const ResidualSet &set)
 {
     std::map<std::string, FittedForm> fittedForms;
-    for (const Candidate &c : set.candidates)
-        if (c.kind == "categorical" && !c.symptom)
+    for (const Candidate &c : set.candidates) {
+        if (c.symptom) continue;
+        if (c.kind == "categorical")
             fittedForms[c.name] = groupingForm(model, set.usable, c, set.fold, set.folds);
+        else if (c.kind == "numeric" && ordersInTime(c.name))
+            fittedForms[c.name] = driftForm(model, set.usable, c, set.fold, set.folds);
+    }
     return fittedForms;
 }
 
@@ -191,13 +213,8 @@ void correctReduction(const FrictionModel &model, const fe::ReductionSlope &slop
         in.kMpa = r.kMpa;
         in.d0Mm = r.d0Mm;
         in.h0Mm = r.h0Mm;
-        double red = r.reduction;
-        if (red < 0) {
-            auto est = r.diagnostics.find("diag_reduction_est");
-            if (est != r.diagnostics.end()) red = est->second;
-        }
-        in.uMm = fe::uAtModelReduction(model, slope, in, red); // red < 0: left as measured
-        set->muPhysical[i] = model.estimate(in).mu;
+        in.uMm = fe::uAtModelReduction(model, slope, in, carriedReduction(r)); // < 0: left as measured
+        set->muPhysical[i] = model.estimate(in).mu + r.muOffset;
         after[i] = set->muPhysical[i] - r.muRef;
         delta[i] = r.muModel - set->muPhysical[i]; // what the correction removed
     }
@@ -224,26 +241,236 @@ void correctReduction(const FrictionModel &model, const fe::ReductionSlope &slop
     s->cvRmsAfter = s->rmsPhysical; // no parameter is fitted to these records: held out as is
 }
 
-// Any other chosen effect in its physical form, with the regression patch beside it.
-void readChosenEffect(const FrictionModel &model, const ResidualSet &set, LoopSummary *s)
+// A slope per level of the grouping: each level's own line in the condition.
+void readLevelSlopes(const Candidate &c, const ResidualSet &set, const std::string &form, LoopEffectStep *step)
 {
-    const Candidate *lead = nullptr;
-    for (const Candidate &c : set.candidates)
-        if (c.name == s->chosen) lead = &c;
-    if (lead) s->cvRmsPatch = s->ranking.front().cvRmsPatch;
-    if (s->physical)
-        s->reading = "fe_slope";
-    else if (lead && (isReductionCandidate(s->chosen) || lead->symptom))
-        s->reading = "patch";
-    else if (lead && lead->kind == "categorical") {
-        const GroupReading reading = readingOf(set.usable, *lead);
-        s->grouping = fitGrouping(model, set.usable, *lead, reading, set.fold, set.folds);
-        s->reading = reading == GroupReading::Scale ? "scale" : "n";
-        s->cvRmsAfter = rms(s->grouping.cvErrors);
-    } else if (lead) {
-        s->reading = "process";
-        s->linear = fitLinearEffect(*lead, set.residual, s->ranking.front().form, set.scaleSens, set.uSens);
+    std::map<std::string, std::vector<size_t>> members;
+    for (size_t i = 0; i < c.levels.size(); ++i) members[c.levels[i]].push_back(i);
+    for (const auto &[level, idx] : members) {
+        Candidate part{c.name, "numeric", {}, {}, false};
+        std::vector<double> y, scale, u;
+        for (size_t i : idx) {
+            part.x.push_back(c.x[i]);
+            y.push_back(set.residual[i]);
+            scale.push_back(set.scaleSens[i]);
+            u.push_back(set.uSens[i]);
+        }
+        step->slopeLevels.push_back(level);
+        step->levelSlopes.push_back(fitLinearEffect(part, y, form, scale, u));
     }
+}
+
+// The material grouping a numeric recorded condition is a declared property of (constant
+// within each material: its n, its K), if any.
+const Candidate *materialDeclaring(const ResidualSet &set, const Candidate &c)
+{
+    if (c.kind != "numeric" || c.symptom) return nullptr;
+    for (const Candidate &g : set.candidates)
+        if (isMaterialGrouping(set.usable, g) && !g.symptom && sameRecords(c, g)) return &g;
+    return nullptr;
+}
+
+// The leading candidate of a round as an effect in its physical form (fitted on every record),
+// with the regression patch beside it. held: the held-out errors of its physical form where
+// the ranking computed them for this round alone.
+LoopEffectStep readEffect(const FrictionModel &model, const ResidualSet &set, const RankedCandidate &lead,
+                          bool physicalReduction)
+{
+    LoopEffectStep step;
+    step.name = lead.name, step.kind = lead.kind, step.form = lead.form, step.patchForm = lead.patchForm;
+    step.z = lead.z, step.cvRmsPatch = lead.cvRmsPatch, step.cvRmsAfter = lead.cvRmsAfter;
+    step.symptom = lead.symptom, step.viaSymptom = lead.viaSymptom;
+    step.preferredOver = lead.preferredOver, step.pointedBy = lead.pointedBy;
+    // The reduction's names (h_final_mm, reduction) are one cause, not two that cannot be told apart.
+    for (const std::string &other : lead.inseparable)
+        if (!(isReductionCandidate(lead.name) && isReductionCandidate(other))) step.inseparable.push_back(other);
+    const Candidate *c = nullptr;
+    for (const Candidate &cand : set.candidates)
+        if (cand.name == lead.name) c = &cand;
+    // A declared property of each material (its n, its K) is the material's: read as an n
+    // per material.
+    if (const Candidate *g = c ? materialDeclaring(set, *c) : nullptr) {
+        step.via = c->name;
+        step.name = g->name, step.kind = g->kind;
+        c = g;
+    }
+    if (physicalReduction)
+        step.reading = "fe_slope";
+    else if (!c || isReductionCandidate(lead.name) || lead.symptom)
+        step.reading = "patch";
+    else if (c->kind == "categorical") {
+        const GroupReading reading = readingOf(set.usable, *c);
+        step.grouping = fitGrouping(model, set.usable, *c, reading, set.fold, set.folds);
+        step.reading = reading == GroupReading::Scale ? "scale" : "n";
+        step.cvRmsAfter = rms(step.grouping.cvErrors);
+    } else if (ordersInTime(c->name) && lead.form != "mu") {
+        step.drift = fitDrift(model, set.usable, *c, set.fold, set.folds);
+        step.reading = "drift";
+        step.cvRmsAfter = rms(step.drift.cvErrors);
+    } else {
+        step.reading = "process";
+        if (c->kind == "interaction")
+            readLevelSlopes(*c, set, lead.form, &step);
+        else
+            step.linear = fitLinearEffect(*c, set.residual, lead.form, set.scaleSens, set.uSens);
+    }
+    return step;
+}
+
+// The records of one round: residual, sensitivities and the candidates left.
+void setRound(ResidualSet *set, const std::vector<LoopRecord> &records, const std::set<std::string> &taken)
+{
+    set->usable = records;
+    set->residual.clear(), set->scaleSens.clear(), set->uSens.clear();
+    for (const LoopRecord &r : records) {
+        set->residual.push_back(r.muModel - r.muRef);
+        set->scaleSens.push_back(r.scaleSens);
+        set->uSens.push_back(r.uSens);
+    }
+    set->candidates.clear();
+    for (Candidate &c : buildCandidates(records))
+        if (!taken.count(c.name)) set->candidates.push_back(std::move(c));
+}
+
+const Candidate *candidateNamed(const ResidualSet &set, const std::string &name)
+{
+    for (const Candidate &c : set.candidates)
+        if (c.name == name) return &c;
+    return nullptr;
+}
+
+// What an added effect takes out of later rounds: itself, every name of the reduction when
+// it is the reduction (one cause), and the conditions it cannot be told from; the
+// reduction carried physically stays (below).
+void markTaken(const LoopEffectStep &step, std::set<std::string> *taken)
+{
+    // Carried with the FE du/dr, the reduction stays a candidate: what it explains after the
+    // carry is the FE slope's own error.
+    if (step.reading == "fe_slope") return;
+    taken->insert(step.name);
+    if (!step.via.empty()) taken->insert(step.via);
+    if (isReductionCandidate(step.name))
+        for (const char *name : {"reduction", "h_final_mm", "diag_reduction_est"}) taken->insert(name);
+    taken->insert(step.inseparable.begin(), step.inseparable.end());
+}
+
+// Held-out errors with every effect fitted on each fold's training records: record i as the
+// records of its fold's state give it.
+std::vector<double> heldOut(const std::vector<std::vector<LoopRecord>> &perFold, const std::vector<int> &fold)
+{
+    std::vector<double> e(fold.size());
+    for (size_t i = 0; i < fold.size(); ++i)
+        e[i] = perFold[size_t(fold[i])][i].muModel - perFold[size_t(fold[i])][i].muRef;
+    return e;
+}
+
+// After the first effect: take it out of the records (fitted on all of them for the next
+// ranking, and on each fold's training records for the held-out error), rank again on what
+// is left, and add the leader while it is significant (family-wise, as the first) and the
+// held-out RMS with every effect refitted per fold drops.
+void addFurtherEffects(const FrictionModel &model, const fe::ReductionSlope *slope, const ResidualSet &first,
+                       const RankingOptions &opt, LoopSummary *s, std::vector<EffectShare> *shares)
+{
+    constexpr size_t kMaxEffects = 5;
+    std::vector<LoopRecord> all = first.usable;
+    std::vector<std::vector<LoopRecord>> perFold(size_t(first.folds), first.usable);
+    std::set<std::string> taken;
+    const LoopEffectStep &lead = s->effects.front();
+    const Candidate *c = candidateNamed(first, lead.name);
+    if (!c) return;
+    applyEffect(model, slope, lead, *c, &all, first.fold, -1);
+    shares->push_back(shareOf(first.usable, all));
+    for (int k = 0; k < first.folds; ++k) applyEffect(model, slope, lead, *c, &perFold[size_t(k)], first.fold, k);
+    markTaken(lead, &taken);
+    bool carried = lead.reading == "fe_slope";
+    double cvNow = rms(heldOut(perFold, first.fold));
+    while (s->effects.size() < kMaxEffects) {
+        ResidualSet round;
+        round.folds = first.folds, round.fold = first.fold;
+        setRound(&round, all, taken);
+        std::map<std::string, std::vector<double>> physicalForms;
+        if (slope && !carried && !model.correctsReduction()) physicalForms = reductionChange(model, round, *slope);
+        const std::map<std::string, FittedForm> fittedForms = groupingForms(model, round);
+        const std::vector<RankedCandidate> ranking = rankCandidates(
+            round.candidates, round.residual, opt, &round.scaleSens, &round.uSens, &physicalForms, &fittedForms);
+        if (ranking.empty() || !ranking.front().significant) {
+            s->lastRanking = ranking;
+            s->stopped = "no further candidate is significant" +
+                         (ranking.empty()
+                              ? std::string()
+                              : " (best left: " + ranking.front().name + ", z " + f4(ranking.front().z, "%.1f") + ")");
+            return;
+        }
+        const RankedCandidate &next = ranking.front();
+        const bool physicalReduction =
+            isReductionCandidate(next.name) && !model.correctsReduction() && slope && !carried;
+        LoopEffectStep step = readEffect(model, round, next, physicalReduction);
+        step.ranking = ranking;
+        const Candidate *cand = candidateNamed(round, step.name);
+        if (!cand) return;
+        std::vector<std::vector<LoopRecord>> trial = perFold;
+        for (int k = 0; k < first.folds; ++k) applyEffect(model, slope, step, *cand, &trial[size_t(k)], first.fold, k);
+        step.cvRmsBefore = cvNow;
+        step.cvRmsAfter = rms(heldOut(trial, first.fold));
+        s->lastRanking = ranking;
+        if (!(step.cvRmsAfter < cvNow)) {
+            s->stopped = "`" + next.name + "` is significant on the residual left, but the held-out RMS with it (" +
+                         f4(step.cvRmsAfter) + ") does not drop below " + f4(cvNow);
+            return;
+        }
+        perFold = std::move(trial);
+        const std::vector<LoopRecord> before = all;
+        applyEffect(model, slope, step, *cand, &all, first.fold, -1);
+        shares->push_back(shareOf(before, all));
+        markTaken(step, &taken);
+        carried = carried || step.reading == "fe_slope";
+        cvNow = step.cvRmsAfter;
+        s->cvRmsAfter = cvNow;
+        s->effects.push_back(std::move(step));
+    }
+    s->stopped = "the most effects one run adds (" + std::to_string(kMaxEffects) + ")";
+}
+
+// The estimates of several effects, each fitted with every other one taken out (backfitting:
+// a few rounds of refitting each on the records the others leave). An effect fitted while
+// another was still in the records carries part of it; these are the estimates stated.
+void refitTogether(const FrictionModel &model, const fe::ReductionSlope *slope, const ResidualSet &first,
+                   std::vector<EffectShare> shares, LoopSummary *s)
+{
+    if (s->effects.size() < 2) return;
+    constexpr int kRounds = 4;
+    for (int round = 0; round < kRounds; ++round)
+        for (size_t j = 0; j < s->effects.size(); ++j) {
+            LoopEffectStep &e = s->effects[j];
+            const Candidate *c = candidateNamed(first, e.name);
+            if (!c || e.reading == "fe_slope") continue;
+            std::vector<LoopRecord> others = withShares(model, slope, first.usable, shares, j, false);
+            const std::vector<LoopRecord> before = others;
+            applyEffect(model, slope, e, *c, &others, first.fold, -1, true);
+            shares[j] = shareOf(before, others);
+            if (round + 1 < kRounds) continue;
+            ResidualSet set;
+            set.folds = first.folds, set.fold = first.fold;
+            set.usable = before;
+            for (const LoopRecord &r : before) {
+                set.residual.push_back(r.muModel - r.muRef);
+                set.scaleSens.push_back(r.scaleSens);
+                set.uSens.push_back(r.uSens);
+            }
+            if (e.reading == "scale" || e.reading == "n") {
+                e.grouping = fitGrouping(model, before, *c, e.reading == "n" ? GroupReading::N : GroupReading::Scale,
+                                         first.fold, first.folds);
+                relativeToTypical(&e.grouping);
+            } else if (e.reading == "drift")
+                e.drift = fitDrift(model, before, *c, first.fold, first.folds);
+            else if (e.reading == "process" && c->kind == "interaction") {
+                e.slopeLevels.clear(), e.levelSlopes.clear();
+                readLevelSlopes(*c, set, e.form, &e);
+            } else if (e.reading == "process")
+                e.linear = fitLinearEffect(*c, set.residual, e.form, set.scaleSens, set.uSens);
+        }
+    const LoopEffectStep &lead = s->effects.front();
+    s->grouping = lead.grouping, s->linear = lead.linear, s->drift = lead.drift;
 }
 
 } // namespace
@@ -259,17 +486,19 @@ LoopSummary runLoop(const std::string &manifestPath, const std::string &reportDi
 
 LoopSummary runJournalLoop(const std::string &journalDir, const std::string &referenceCsv, const std::string &reportDir,
                            const std::string &modelName, const RankingOptions &opt,
-                           const std::vector<std::string> &feSweeps)
+                           const std::vector<std::string> &feSweeps, const std::string &calibrationDir)
 {
     Manifest manifest;
     JournalJoin join;
     std::string err;
-    if (!readJournalManifest(journalDir, referenceCsv, &manifest, &join, &err)) throw std::runtime_error(err);
+    if (!readJournalManifest(journalDir, referenceCsv, &manifest, &join, &err, calibrationDir))
+        throw std::runtime_error(err);
     const std::string source = "Journal: `" + journalDir + "` (" + std::to_string(join.lines) + " lines, " +
                                std::to_string(join.results) + " results, " + std::to_string(join.scaleChecks) +
                                " scale checks), joined by record id with `" + referenceCsv +
                                "`: " + std::to_string(join.joined) +
-                               " records with a reference value and a saved frame, "
+                               " records with a reference value and a saved frame (" + std::to_string(join.calibrated) +
+                               " measured through the calibration file the device used, and re-measured through it), "
                                "re-measured with the current pipeline (the device's own results are the device_* "
                                "columns); " +
                                join.geometry;
@@ -321,13 +550,27 @@ LoopSummary runLoopOn(const Manifest &manifest, const std::string &source,
         if (!slopeLoaded && !slope.load(feSweeps, &e))
             std::cerr << "icacam loop: no physical correction: " << e << "\n";
         else
-            s.physical = true;
+            s.physical = slopeLoaded = true;
     }
     if (s.physical) {
         set.slopeCases = slope.cases();
         correctReduction(*model, slope, &set, &s);
     }
-    readChosenEffect(*model, set, &s);
+    if (s.chosen.empty()) {
+        s.stopped = "no candidate is significant";
+    } else {
+        LoopEffectStep first = readEffect(*model, set, s.ranking.front(), s.physical);
+        first.cvRmsBefore = s.rmsBefore;
+        if (s.physical) first.cvRmsAfter = s.rmsPhysical;
+        s.cvRmsAfter = first.cvRmsAfter;
+        s.chosen = first.name;
+        s.reading = first.reading, s.cvRmsPatch = first.cvRmsPatch;
+        s.grouping = first.grouping, s.linear = first.linear, s.drift = first.drift;
+        s.effects.push_back(first);
+        std::vector<EffectShare> shares;
+        addFurtherEffects(*model, slopeLoaded ? &slope : nullptr, set, opt, &s, &shares);
+        refitTogether(*model, slopeLoaded ? &slope : nullptr, set, shares, &s);
+    }
     writeLoopReport({reportDir, source, modelName, model, opt, feSweeps}, set, s);
     return s;
 }
@@ -341,7 +584,7 @@ int loopCommand(const std::vector<std::string> &args)
                                           "by `icacam fe tables`, as: ") +
                                   friction::reduction_table::kProvenance,
                               usage());
-    std::string manifestPath, journalDir, referenceCsv, reportDir, modelName = friction::kDefaultModel;
+    std::string manifestPath, journalDir, referenceCsv, calibrationDir, reportDir, modelName = friction::kDefaultModel;
     std::vector<std::string> feSweeps;
     loop::RankingOptions opt;
     cli::OptionReader opts(args, usage());
@@ -355,6 +598,8 @@ int loopCommand(const std::vector<std::string> &args)
             journalDir = opts.value();
         else if (opts.is("--reference"))
             referenceCsv = opts.value();
+        else if (opts.is("--calibrations"))
+            calibrationDir = opts.value();
         else if (opts.is("--report"))
             reportDir = opts.value();
         else if (opts.is("--model")) {
@@ -377,13 +622,15 @@ int loopCommand(const std::vector<std::string> &args)
         opts.missing("--report and one of --manifest or --journal");
     if (journalDir.empty() != referenceCsv.empty())
         throw cli::UsageError("--journal and --reference go together", usage());
+    if (!calibrationDir.empty() && journalDir.empty())
+        throw cli::UsageError("--calibrations applies to --journal", usage());
     // By default the FE data the product's table was generated from (its kFeSources).
     if (feSweeps.empty())
         for (const std::string &name : fe::splitSources(friction::reduction_table::kFeSources))
             feSweeps.push_back(repoFile(name));
-    const loop::LoopSummary s =
-        journalDir.empty() ? loop::runLoop(manifestPath, reportDir, modelName, opt, feSweeps)
-                           : loop::runJournalLoop(journalDir, referenceCsv, reportDir, modelName, opt, feSweeps);
+    const loop::LoopSummary s = journalDir.empty() ? loop::runLoop(manifestPath, reportDir, modelName, opt, feSweeps)
+                                                   : loop::runJournalLoop(journalDir, referenceCsv, reportDir,
+                                                                          modelName, opt, feSweeps, calibrationDir);
     std::cout << "records " << s.records << " usable " << s.usable << "\n"
               << "rms_before " << f4(s.rmsBefore) << "\ncv_rms_offset " << f4(s.cvRmsOffset) << "\n"
               << "top " << (s.ranking.empty() ? "-" : s.ranking.front().name) << "\n"

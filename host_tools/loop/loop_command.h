@@ -4,6 +4,7 @@
 
 #include "host_tools/loop/journal_records.h"
 #include "host_tools/loop/loop_analysis.h"
+#include "host_tools/loop/loop_effects.h"
 #include "host_tools/loop/loop_physics.h"
 
 namespace icacam::host {
@@ -15,11 +16,17 @@ namespace icacam::host::loop {
 
 struct LoopSummary {
     int records = 0, usable = 0;
-    std::vector<RankedCandidate> ranking;
-    std::string chosen;             // empty: nothing significant, the model is left as it is
+    std::vector<RankedCandidate> ranking; // the first round's: on the residual as the model reads it
+    // The effects added, in order, each chosen on the residual the ones before it left
+    // (loop_effects.h); the loop stops when no candidate is significant or the held-out
+    // error would not drop. The fields below describe the first.
+    std::vector<LoopEffectStep> effects;
+    std::string stopped;                      // why no further effect was added
+    std::vector<RankedCandidate> lastRanking; // the round that added nothing (after the first)
+    std::string chosen;             // the first effect; empty: nothing significant, the model is left as it is
     double rmsBefore = 0;           // RMS of μ_model − μ_ref (no correction)
     double cvRmsOffset = 0;         // k-fold, constant offset only
-    double cvRmsAfter = 0;          // k-fold, after the chosen effect (= rmsBefore if none)
+    double cvRmsAfter = 0;          // k-fold, after every effect added (= rmsBefore if none)
     bool physical = false;          // the chosen effect was corrected through FE du/dr
     double rmsPhysical = 0;         // RMS after the physical reduction correction (no fitted parameter)
     double slopeScale = 0;          // least-squares scale of the FE du/dr on all records (1: FE as is)
@@ -33,6 +40,7 @@ struct LoopSummary {
     double cvRmsPatch = 0; // the chosen candidate's best regression of the residual (k-fold)
     PhysicalFit grouping;  // reading "scale" or "n"
     LinearEffect linear;   // reading "process"
+    DriftFit drift;        // reading "drift"
     JournalJoin journal;   // runJournalLoop: what the join found
 };
 
@@ -43,9 +51,10 @@ LoopSummary runLoop(const std::string &manifestPath, const std::string &reportDi
 
 // The same on an icacam-fw journal folder joined with a CSV of reference values by record id
 // (journal_records.h): the saved frames are re-measured with the current pipeline.
+// calibrationDir: where the calibration files the journal names are (empty: the journal folder).
 LoopSummary runJournalLoop(const std::string &journalDir, const std::string &referenceCsv, const std::string &reportDir,
                            const std::string &modelName, const RankingOptions &opt,
-                           const std::vector<std::string> &feSweeps);
+                           const std::vector<std::string> &feSweeps, const std::string &calibrationDir = "");
 
 // On records already read; source: the report's first words about where they come from;
 // skippedBefore: records left out before measuring, with why.

@@ -27,7 +27,7 @@ double muWith(const friction::FrictionModel &model, const LoopRecord &r, GroupRe
         in.uMm = r.uMm / p;
     else
         in.n = std::clamp(r.n + p, kNMin, kNMax);
-    return model.estimate(in).mu;
+    return model.estimate(in).mu + r.muOffset;
 }
 
 double neutral(GroupReading reading)
@@ -183,7 +183,75 @@ void silhouetteCheck(const std::vector<LoopRecord> &usable, const Candidate &g, 
     }
 }
 
+// The levels relative to the typical one (the median of three or more, else the one nearest
+// the declared value): most cameras calibrated right, most materials declared right. A
+// level within 2σ of the declared value then stays declared.
+// The typical level's parameter: the median of three or more, else the one nearest `declared`.
+double typical(std::vector<double> values, double declared)
+{
+    double anchor = values.front();
+    if (values.size() >= 3) {
+        std::nth_element(values.begin(), values.begin() + long(values.size() / 2), values.end());
+        return values[values.size() / 2];
+    }
+    for (double v : values)
+        if (std::fabs(v - declared) < std::fabs(anchor - declared)) anchor = v;
+    return anchor;
+}
+
+void anchorLevels(GroupReading reading, std::map<std::string, GroupFit> *fit)
+{
+    std::vector<double> values;
+    for (const auto &[level, f] : *fit)
+        if (f.fitted) values.push_back(f.value);
+    if (values.empty()) return;
+    const double declared = neutral(reading);
+    const double anchor = typical(values, declared);
+    for (auto &[level, f] : *fit) {
+        if (!f.fitted) continue;
+        f.value = reading == GroupReading::Scale ? f.value / anchor : f.value - anchor;
+        if (std::fabs(f.value - declared) <= 2 * f.sigma) f.value = declared;
+    }
+}
+
 } // namespace
+
+void applyGrouping(const friction::FrictionModel &model, std::vector<LoopRecord> *records, const Candidate &g,
+                   GroupReading reading, const std::vector<bool> &train, bool onlyDiffering)
+{
+    double scatter = 0;
+    std::map<std::string, GroupFit> fit = fitLevels(model, *records, g, reading, train, &scatter);
+    if (onlyDiffering) anchorLevels(reading, &fit);
+    for (size_t i = 0; i < records->size(); ++i) {
+        LoopRecord &r = (*records)[i];
+        const auto it = fit.find(g.levels[i]);
+        const double p = it != fit.end() ? it->second.value : neutral(reading);
+        if (reading == GroupReading::Scale)
+            r.uMm /= p;
+        else
+            r.n = std::clamp(r.n + p, kNMin, kNMax);
+    }
+}
+
+void relativeToTypical(PhysicalFit *fit)
+{
+    std::vector<double> values;
+    for (const GroupFit &g : fit->groups)
+        if (g.fitted) values.push_back(fit->reading == GroupReading::Scale ? g.value : g.value - g.declared);
+    if (values.empty()) return;
+    const double anchor = typical(values, neutral(fit->reading));
+    // The typical level's own uncertainty enters every other level's relative estimate.
+    double anchorSigma = 0;
+    for (const GroupFit &g : fit->groups)
+        if (g.fitted && (fit->reading == GroupReading::Scale ? g.value : g.value - g.declared) == anchor)
+            anchorSigma = g.sigma;
+    for (GroupFit &g : fit->groups) {
+        if (!g.fitted) continue;
+        const bool isAnchor = (fit->reading == GroupReading::Scale ? g.value : g.value - g.declared) == anchor;
+        g.value = fit->reading == GroupReading::Scale ? g.value / anchor : g.value - anchor;
+        if (!isAnchor) g.sigma = std::hypot(g.sigma, anchorSigma);
+    }
+}
 
 const char *formName(GroupReading reading)
 {
@@ -226,22 +294,7 @@ friction::ModelInputs inputsOf(const LoopRecord &r)
 
 GroupReading readingOf(const std::vector<LoopRecord> &usable, const Candidate &g)
 {
-    if (g.kind != "categorical" || g.levels.size() != usable.size()) return GroupReading::Scale;
-    // Named as a material: its records may declare n per batch, the shift is per material.
-    std::string name = g.name;
-    for (char &ch : name) ch = char(std::tolower(static_cast<unsigned char>(ch)));
-    for (const char *word : {"material", "alloy", "grade"})
-        if (name.find(word) != std::string::npos) return GroupReading::N;
-    std::map<std::string, std::set<long>> nPerLevel;
-    std::set<long> all;
-    for (size_t i = 0; i < usable.size(); ++i) {
-        const long n = std::lround(usable[i].n * 1e4);
-        nPerLevel[g.levels[i]].insert(n);
-        all.insert(n);
-    }
-    for (const auto &[level, ns] : nPerLevel)
-        if (ns.size() != 1) return GroupReading::Scale;
-    return all.size() >= 2 ? GroupReading::N : GroupReading::Scale;
+    return isMaterialGrouping(usable, g) ? GroupReading::N : GroupReading::Scale;
 }
 
 PhysicalFit fitGrouping(const friction::FrictionModel &model, const std::vector<LoopRecord> &usable, const Candidate &g,

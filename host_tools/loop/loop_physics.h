@@ -50,6 +50,21 @@ struct PhysicalFit {
 PhysicalFit fitGrouping(const friction::FrictionModel &model, const std::vector<LoopRecord> &usable,
                         const Candidate &grouping, GroupReading reading, const std::vector<int> &fold, int folds);
 
+// Fits the grouping's parameter per level on the records where `train` holds and applies it
+// to every record (u/s, or n + Δn): the effect taken out before the loop looks for the next.
+// A level the training records never saw stays as declared. onlyDiffering: the levels are
+// taken relative to the typical level (the median of three or more, else the one nearest the
+// declared value), and a level within 2σ of the declared value stays declared.
+void applyGrouping(const friction::FrictionModel &model, std::vector<LoopRecord> *records, const Candidate &grouping,
+                   GroupReading reading, const std::vector<bool> &train, bool onlyDiffering = false);
+
+// The estimates relative to the typical level (the median of three or more, else the one
+// nearest the declared value): a factor over the typical factor, n shifted by minus the
+// typical shift. With several effects fitted together a scale common to every group cannot
+// be told from the other effects' common part; most cameras are taken as calibrated right,
+// most materials as declared right.
+void relativeToTypical(PhysicalFit *fit);
+
 // The grouping's physical form for the ranking: its held-out errors, and those of its baseline,
 // the same form with one parameter for every record (a global scale, a global Δn), so that a
 // grouping is credited only for what telling its groups apart adds.

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <utility>
 
 namespace icacam::host::loop {
 
@@ -22,6 +23,13 @@ constexpr double kCoverage = 2.0;
 bool differs(const GroupFit &g)
 {
     return g.fitted && std::fabs(g.value - g.declared) > kCoverage * g.sigma;
+}
+
+// σ of the drifting factor at x: a and b are nearly uncorrelated (x centred on its mean).
+double driftSigmaAt(const DriftFit &d, double x)
+{
+    const double dx = x - d.xMean;
+    return std::sqrt(d.levelSigma * d.levelSigma + dx * dx * d.slopeSigma * d.slopeSigma);
 }
 
 std::string list(const std::vector<std::string> &v)
@@ -52,52 +60,86 @@ std::string nextStudy(const std::string &name)
 
 } // namespace
 
-void writePhysicalCsv(const std::string &path, const LoopSummary &s)
+namespace {
+
+void writePhysicalRows(std::ostream &f, int order, const LoopEffectStep &e, const LoopSummary &s)
 {
-    std::ofstream f(path);
-    f << "candidate,reading,level,records,declared,value,sigma,expanded,verdict,silhouette,silhouette_sigma\n";
-    if (s.reading == "scale" || s.reading == "n")
-        for (const GroupFit &g : s.grouping.groups)
-            f << s.chosen << "," << s.reading << "," << g.level << "," << g.records << "," << fmt(g.declared) << ","
+    const std::string k = std::to_string(order) + ",";
+    if (e.reading == "scale" || e.reading == "n")
+        for (const GroupFit &g : e.grouping.groups)
+            f << k << e.name << "," << e.reading << "," << g.level << "," << g.records << "," << fmt(g.declared) << ","
               << fmt(g.value, "%.5f") << "," << fmt(g.sigma, "%.5f") << "," << fmt(kCoverage * g.sigma, "%.5f") << ","
               << (!g.fitted    ? "too_few_records"
-                  : differs(g) ? (s.reading == "scale" ? "recalibrate" : "revise_n")
+                  : differs(g) ? (e.reading == "scale" ? "recalibrate" : "revise_n")
                                : "consistent")
               << "," << (g.silhouette > 0 ? fmt(g.silhouette, "%.5f") : "") << ","
               << (g.silhouette > 0 ? fmt(g.silhouetteSigma, "%.5f") : "") << "\n";
-    else if (s.reading == "process")
-        f << s.chosen << ",process_" << s.linear.form << ",," << s.usable << ",0," << fmt(s.linear.slope, "%.6g") << ","
-          << fmt(s.linear.sigma, "%.6g") << "," << fmt(kCoverage * s.linear.sigma, "%.6g") << ",fe_study,,\n";
-    else if (s.reading == "fe_slope")
-        f << s.chosen << ",fe_slope_scale,," << s.usable << ",1," << fmt(s.slopeScale, "%.5f") << ",,,"
+    else if (e.reading == "process" && e.levelSlopes.empty())
+        f << k << e.name << ",process_" << e.linear.form << ",," << s.usable << ",0," << fmt(e.linear.slope, "%.6g")
+          << "," << fmt(e.linear.sigma, "%.6g") << "," << fmt(kCoverage * e.linear.sigma, "%.6g") << ",fe_study,,\n";
+    else if (e.reading == "process")
+        for (size_t j = 0; j < e.levelSlopes.size(); ++j) {
+            const LinearEffect &l = e.levelSlopes[j];
+            f << k << e.name << ",process_" << l.form << "_per_level," << e.slopeLevels[j] << ",,0,"
+              << fmt(l.slope, "%.6g") << "," << fmt(l.sigma, "%.6g") << "," << fmt(kCoverage * l.sigma, "%.6g") << ","
+              << (std::fabs(l.slope) > kCoverage * l.sigma ? "fe_study" : "consistent") << ",,\n";
+        }
+    else if (e.reading == "drift")
+        for (const auto &[at, factor] :
+             {std::pair{e.drift.xMin, e.drift.startFactor}, std::pair{e.drift.xMax, e.drift.endFactor}})
+            f << k << e.name << ",drift," << fmt(at, "%.6g") << "," << s.usable << ",1," << fmt(factor, "%.5f") << ","
+              << fmt(driftSigmaAt(e.drift, at), "%.5f") << "," << fmt(kCoverage * driftSigmaAt(e.drift, at), "%.5f")
+              << "," << (e.drift.drifts() ? "recalibrate" : "consistent") << ",,\n";
+    else if (e.reading == "fe_slope")
+        f << k << e.name << ",fe_slope_scale,," << s.usable << ",1," << fmt(s.slopeScale, "%.5f") << ",,,"
           << (std::fabs(s.slopeScale - 1) <= 0.15 ? "consistent" : "fe_slope_off") << ",,\n";
 }
 
-void writePhysicalSection(std::ostream &f, const LoopSummary &s)
+} // namespace
+
+void writePhysicalCsv(const std::string &path, const LoopSummary &s)
 {
-    const RankedCandidate &lead = s.ranking.front();
-    f << "`" << s.chosen << "` (" << lead.kind << ", ranked in form `" << lead.form << "`).\n\n";
+    std::ofstream f(path);
+    f << "effect,candidate,reading,level,records,declared,value,sigma,expanded,verdict,silhouette,silhouette_sigma\n";
+    for (size_t i = 0; i < s.effects.size(); ++i) writePhysicalRows(f, int(i + 1), s.effects[i], s);
+}
+
+void writePhysicalSection(std::ostream &f, const LoopEffectStep &e, bool first, const LoopSummary &s)
+{
+    f << "`" << e.name << "` (" << e.kind << ", ranked in form `" << e.form << "`"
+      << (e.via.empty() ? std::string()
+                        : "; it led as `" + e.via + "`, a property each `" + e.name +
+                              "` declares, and is read as the " + e.name + "'s")
+      << ").\n\n";
     f << "| held-out error in μ (k-fold) | RMS |\n|---|---|\n";
-    f << "| before (model as is) | " << fmt(s.rmsBefore) << " |\n";
-    f << "| constant offset only | " << fmt(s.cvRmsOffset) << " |\n";
-    f << "| patch: the best linear regression of the residual (form `" << lead.patchForm << "`) | " << fmt(s.cvRmsPatch)
+    if (first) {
+        f << "| before (model as is) | " << fmt(s.rmsBefore) << " |\n";
+        f << "| constant offset only | " << fmt(s.cvRmsOffset) << " |\n";
+    } else {
+        f << "| with the effects above (each refitted per fold) | " << fmt(e.cvRmsBefore) << " |\n";
+    }
+    f << "| patch: the best linear regression of the residual (form `" << e.patchForm << "`) | " << fmt(e.cvRmsPatch)
       << " |\n";
-    if (s.reading == "scale" || s.reading == "n")
-        f << "| **physical: " << (s.reading == "scale" ? "a length factor per group" : "an n per material") << "** | **"
-          << fmt(s.cvRmsAfter) << "** |\n";
+    if (e.reading == "scale" || e.reading == "n" || e.reading == "drift" || !first)
+        f << "| **physical: "
+          << (e.reading == "scale"   ? "a length factor per group"
+              : e.reading == "n"     ? "an n per material"
+              : e.reading == "drift" ? "a length factor drifting along `" + e.name + "`"
+                                     : "as read below")
+          << (first ? "" : ", with the effects above") << "** | **" << fmt(e.cvRmsAfter) << "** |\n";
     f << "\n";
-    if (s.reading == "scale") {
-        f << "Read as a length scale per group of images (`" << s.chosen
+    if (e.reading == "scale") {
+        f << "Read as a length scale per group of images (`" << e.name
           << "`): every length a group's camera measures is off by one factor s (measured/true), so μ = "
              "model(u/s, n). s fitted per group by least squares against μ_ref; σ the larger of the pooled "
              "scatter's (after the fit, "
-          << fmt(s.grouping.scatter) << " in μ) and the jackknife's over the group's records; U = " << kCoverage
+          << fmt(e.grouping.scatter) << " in μ) and the jackknife's over the group's records; U = " << kCoverage
           << " σ (≈ 95 %).\n\n";
-        f << "| " << s.chosen
+        f << "| " << e.name
           << " | records | factor s (measured/true) | σ | U (k = 2) | fix mm_per_px by × | verdict | "
              "silhouette check: R_max against the consistent groups' (± 2σ) |\n"
              "|---|---|---|---|---|---|---|---|\n";
-        for (const GroupFit &g : s.grouping.groups)
+        for (const GroupFit &g : e.grouping.groups)
             f << "| " << g.level << " | " << g.records << " | " << fmt(g.value) << " | " << fmt(g.sigma) << " | "
               << fmt(kCoverage * g.sigma) << " | " << fmt(1 / g.value) << " | "
               << (!g.fitted    ? "too few records"
@@ -118,16 +160,16 @@ void writePhysicalSection(std::ostream &f, const LoopSummary &s)
              "measured R_max against the FE's at each record's n, μ_ref and reduction, relative to the other "
              "groups whose factor is consistent with 1, ± 2σ statistical): a camera's scale moves it by the same "
              "factor, a friction or model effect does not.\n";
-    } else if (s.reading == "n") {
-        f << "Read as the strain-hardening exponent per material (`" << s.chosen
+    } else if (e.reading == "n") {
+        f << "Read as the strain-hardening exponent per material (`" << e.name
           << "`): the n that makes that material's records consistent, "
              "μ = model(u, n + Δn), Δn fitted by least squares against μ_ref; σ the larger of the pooled "
              "scatter's (after the fit, "
-          << fmt(s.grouping.scatter) << " in μ) and the jackknife's over the material's records; U = " << kCoverage
+          << fmt(e.grouping.scatter) << " in μ) and the jackknife's over the material's records; U = " << kCoverage
           << " σ (≈ 95 %).\n\n";
-        f << "| " << s.chosen
+        f << "| " << e.name
           << " | records | declared n | fitted n | σ | U (k = 2) | verdict |\n|---|---|---|---|---|---|---|\n";
-        for (const GroupFit &g : s.grouping.groups)
+        for (const GroupFit &g : e.grouping.groups)
             f << "| " << g.level << " | " << g.records << " | " << fmt(g.declared) << " | " << fmt(g.value) << " | "
               << fmt(g.sigma) << " | " << fmt(kCoverage * g.sigma) << " | "
               << (!g.fitted    ? "too few records"
@@ -137,28 +179,67 @@ void writePhysicalSection(std::ostream &f, const LoopSummary &s)
         f << "\nRecommended: for a material marked *declared n is off*, refit its flow curve σ = K·ε^n over the "
              "strains the upset reaches (a flow curve read at the wrong strain range gives another n) and declare "
              "the new n; the fitted n above is what its records say.\n";
-    } else if (s.reading == "process") {
-        const LinearEffect &e = s.linear;
-        const char *unit = e.form == "u" ? "mm of u" : e.form == "scale" ? "relative u" : "μ";
-        f << "A recorded process variable the FE does not model. Best form `" << e.form << "` ("
-          << (e.form == "u"       ? "an additive shift of u, linear in it"
-              : e.form == "scale" ? "a relative change of u, linear in it"
+    } else if (e.reading == "drift") {
+        const DriftFit &d = e.drift;
+        f << "Read as a length scale drifting along `" << e.name
+          << "`: every length the records' images give is off by s(x) = a + b·(x − x̄) (measured/true), "
+             "μ = model(u/s(x), n), a and b fitted by least squares against μ_ref; σ from the pooled scatter "
+             "after the fit ("
+          << fmt(d.scatter) << " in μ); U = " << kCoverage << " σ.\n\n";
+        f << "| `" << e.name << "` | factor s | U (k = 2) |\n|---|---|---|\n";
+        f << "| " << fmt(d.xMin, "%.6g") << " (first) | " << fmt(d.startFactor) << " | "
+          << fmt(kCoverage * driftSigmaAt(d, d.xMin)) << " |\n";
+        f << "| " << fmt(d.xMax, "%.6g") << " (last) | " << fmt(d.endFactor) << " | "
+          << fmt(kCoverage * driftSigmaAt(d, d.xMax)) << " |\n\n";
+        f << "Drift " << fmt(d.slope, "%.4g") << " ± " << fmt(kCoverage * d.slopeSigma, "%.2g")
+          << " (k = 2) per unit of `" << e.name << "`"
+          << (d.drifts() ? ": the scale moved during the run. Recommended: check the camera's mounting and "
+                           "working distance, recalibrate, and check the scale along the run (the reference disc's "
+                           "scale check, docs/firmware.md) until it holds.\n"
+                         : ": within its uncertainty of none.\n");
+    } else if (e.reading == "process" && !e.levelSlopes.empty()) {
+        f << "A recorded process variable acting within some levels of a grouping only (a slope per level; form `"
+          << e.form << "`), applied here as that regression (the patch):\n\n| level | records' slope | U (k = 2) | "
+          << "verdict |\n|---|---|---|---|\n";
+        for (size_t j = 0; j < e.levelSlopes.size(); ++j) {
+            const LinearEffect &l = e.levelSlopes[j];
+            f << "| " << e.slopeLevels[j] << " | " << fmt(l.slope, "%.4g") << " | " << fmt(kCoverage * l.sigma, "%.2g")
+              << " | " << (std::fabs(l.slope) > kCoverage * l.sigma ? "**acts**" : "none within U") << " |\n";
+        }
+        f << "\nNext step: " << nextStudy(e.name) << ", for the levels where it acts.\n";
+    } else if (e.reading == "process") {
+        const LinearEffect &l = e.linear;
+        const char *unit = l.form == "u" ? "mm of u" : l.form == "scale" ? "relative u" : "μ";
+        f << "A recorded process variable the FE does not model. Best form `" << l.form << "` ("
+          << (l.form == "u"       ? "an additive shift of u, linear in it"
+              : l.form == "scale" ? "a relative change of u, linear in it"
                                   : "an offset in μ, linear in it")
-          << "): " << fmt(e.slope, "%.4g") << " ± " << fmt(e.sigma, "%.2g") << " (1 σ) " << unit << " per unit of `"
-          << s.chosen << "`"
-          << (e.form == "scale" ? " (u changes by " + fmt(100 * e.slope, "%.2f") + " % per unit)" : std::string())
-          << "; over the recorded range " << fmt(e.xMin, "%.3g") << "–" << fmt(e.xMax, "%.3g")
-          << " it moves μ by about " << fmt(e.muSpan)
+          << "): " << fmt(l.slope, "%.4g") << " ± " << fmt(l.sigma, "%.2g") << " (1 σ) " << unit << " per unit of `"
+          << e.name << "`"
+          << (l.form == "scale" ? " (u changes by " + fmt(100 * l.slope, "%.2f") + " % per unit)" : std::string())
+          << "; over the recorded range " << fmt(l.xMin, "%.3g") << "–" << fmt(l.xMax, "%.3g")
+          << " it moves μ by about " << fmt(l.muSpan)
           << ". It is applied here as that regression (the patch); "
              "there is no physical form to add yet.\n\n";
-        f << "Next step: " << nextStudy(s.chosen) << ".\n";
-    } else if (s.reading == "patch") {
+        f << "Next step: " << nextStudy(e.name) << ".\n";
+    } else if (e.reading == "patch" && isReductionCandidate(e.name) && !first) {
+        f << "Applied as its one-candidate regression of the residual (k-fold). The reduction was carried to 50 % "
+             "with the FE du/dr above; what it explains after that is the FE slope's own error (the FE slope's "
+             "least-squares scale on these records: "
+          << fmt(s.slopeScale, "%.3f")
+          << "). Better-converged FE runs past 50 % are the fix, not this regression, which stays a patch on these "
+             "records.\n";
+    } else if (e.reading == "patch") {
         f << "Applied as its one-candidate regression of the residual (k-fold). "
-          << (lead.symptom ? "It is a measured quantity and no recorded condition explains the residual as well: "
-                             "the cause was not recorded. Form `scale` points to the optics (calibration, lens, "
-                             "working distance), form `u` to the upsetting.\n"
-                           : "\n");
+          << (e.symptom ? "It is a measured quantity and no recorded condition explains the residual as well: "
+                          "the cause was not recorded. Form `scale` points to the optics (calibration, lens, "
+                          "working distance), form `u` to the upsetting.\n"
+                        : "\n");
     }
+    if (!e.inseparable.empty())
+        f << "\nNot separable from " << list(e.inseparable) << ": they group these records the same way and explain "
+          << "the residual as well (paired z < 2). The records cannot say which it is; `" << e.name
+          << "` is read here, and the others are not added after it. Records where they differ would tell.\n";
 }
 
 void writeSymptomNote(std::ostream &f, const LoopSummary &s)
@@ -171,6 +252,10 @@ void writeSymptomNote(std::ostream &f, const LoopSummary &s)
           << " (measured, with a slightly lower CV RMS): their held-out errors are not significantly smaller "
              "(paired z < 2), and a measured quantity answers to any cause that moves the geometry; the recorded "
              "condition names the cause.\n";
+    if (!lead.aheadOfBetter.empty())
+        f << "\n`" << lead.name << "` (a recorded condition) is taken before " << list(lead.aheadOfBetter)
+          << ", measured quantities that explain the residual significantly better: they see more than it "
+             "does, and the next round looks at what it leaves.\n";
     if (lead.viaSymptom)
         f << "\n`" << lead.name << "` is not significant on its own over the whole family of candidates (z "
           << fmt(lead.z, "%.1f")
@@ -189,13 +274,31 @@ void printPhysical(std::ostream &out, const LoopSummary &s)
 {
     out << "reading " << (s.reading.empty() ? "-" : s.reading) << "\n";
     if (!s.chosen.empty()) out << "cv_rms_patch " << fmt(s.cvRmsPatch) << "\n";
-    for (const GroupFit &g : s.grouping.groups)
-        out << (s.reading == "scale" ? "factor " : "n ") << g.level << " " << fmt(g.value) << " +- "
-            << fmt(kCoverage * g.sigma) << " (k=2)" << (s.reading == "n" ? " declared " + fmt(g.declared) : "")
-            << (differs(g) ? " differs" : "") << "\n";
-    if (s.reading == "process")
-        out << "slope " << s.linear.form << " " << fmt(s.linear.slope, "%.4g") << " +- " << fmt(s.linear.sigma, "%.2g")
-            << " per unit of " << s.chosen << "\n";
+    for (size_t i = 0; i < s.effects.size(); ++i) {
+        const LoopEffectStep &e = s.effects[i];
+        out << "effect " << i + 1 << " " << e.name << " " << e.reading << " cv_rms " << fmt(e.cvRmsBefore) << " -> "
+            << fmt(e.cvRmsAfter) << "\n";
+        for (const GroupFit &g : e.grouping.groups)
+            out << (e.reading == "scale" ? "factor " : "n ") << g.level << " " << fmt(g.value) << " +- "
+                << fmt(kCoverage * g.sigma) << " (k=2)" << (e.reading == "n" ? " declared " + fmt(g.declared) : "")
+                << (differs(g) ? " differs" : "") << "\n";
+        if (e.reading == "process" && e.levelSlopes.empty())
+            out << "slope " << e.linear.form << " " << fmt(e.linear.slope, "%.4g") << " +- "
+                << fmt(e.linear.sigma, "%.2g") << " per unit of " << e.name << "\n";
+        for (size_t j = 0; j < e.levelSlopes.size(); ++j)
+            out << "slope " << e.levelSlopes[j].form << " " << e.slopeLevels[j] << " "
+                << fmt(e.levelSlopes[j].slope, "%.4g") << " +- " << fmt(e.levelSlopes[j].sigma, "%.2g") << "\n";
+        if (e.reading == "drift")
+            out << "drift factor " << fmt(e.drift.startFactor) << " -> " << fmt(e.drift.endFactor) << " +- "
+                << fmt(kCoverage * driftSigmaAt(e.drift, e.drift.xMax)) << " (k=2)"
+                << (e.drift.drifts() ? " differs" : "") << "\n";
+        if (!e.inseparable.empty()) {
+            out << "inseparable " << e.name;
+            for (const std::string &o : e.inseparable) out << " " << o;
+            out << "\n";
+        }
+    }
+    if (!s.chosen.empty()) out << "stopped " << s.stopped << "\n";
     if (!s.ranking.empty() && !s.ranking.front().pointedBy.empty() && !s.chosen.empty())
         out << "pointed_by " << s.ranking.front().pointedBy.front() << "\n";
 }

@@ -14,7 +14,8 @@ void writePhysicalCsv(const std::string &path, const LoopSummary &s);
 
 // report.md: what the chosen effect is physically, its estimates with their uncertainty, the
 // recommendation (recalibrate a camera, revise a material's n, the FE study to run next).
-void writePhysicalSection(std::ostream &f, const LoopSummary &s);
+// first: the first effect (its table starts from the model as is), else one added after others.
+void writePhysicalSection(std::ostream &f, const LoopEffectStep &e, bool first, const LoopSummary &s);
 
 // report.md: which measured quantities pointed to the chosen cause, and which it was ranked
 // ahead of.

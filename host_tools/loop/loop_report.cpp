@@ -135,14 +135,14 @@ std::string plotBeforeAfter(const ReportContext &c, const ResidualSet &set, cons
         ser.push_back(after);
     } else if (!s.grouping.cvErrors.empty()) {
         after.label = "with " + s.chosen + " as " + (s.reading == "n" ? "n per material" : "a scale per group") +
-                      " (after, CV), RMS " + f4(s.cvRmsAfter);
+                      " (after, CV), RMS " + f4(s.effects.front().cvRmsAfter);
         for (size_t i = 0; i < usable.size(); ++i) {
             after.x.push_back(usable[i].muRef);
             after.y.push_back(usable[i].muRef + s.grouping.cvErrors[i]);
         }
         ser.push_back(after);
     } else if (!s.chosen.empty()) {
-        after.label = "with " + s.chosen + " (after, CV), RMS " + f4(s.cvRmsAfter);
+        after.label = "with " + s.chosen + " (after, CV), RMS " + f4(s.effects.front().cvRmsAfter);
         for (const Candidate &cand : set.candidates)
             if (cand.name == s.chosen) {
                 const std::vector<double> p = cvPredict(cand, set.residual, set.fold, set.folds,
@@ -173,12 +173,38 @@ void writeErrorTable(std::ostream &f, const LoopSummary &s)
           << f4(s.rmsPhysical) << "** |\n";
         f << "| same with the FE slope's scale fitted per fold (k-fold; scale on all records "
           << f4(s.slopeScale, "%.3f") << ") | " << f4(s.cvRmsPhysicalScaled) << " |\n";
-    } else if (!s.grouping.cvErrors.empty()) {
+    } else if (!s.grouping.cvErrors.empty() || s.reading == "drift") {
         f << "| **after: " << s.chosen << " in its physical form ("
-          << (s.reading == "n" ? "n per material" : "a length factor per group") << ", k-fold)** | **"
-          << f4(s.cvRmsAfter) << "** |\n";
+          << (s.reading == "n"       ? "n per material"
+              : s.reading == "drift" ? "a length factor drifting along it"
+                                     : "a length factor per group")
+          << ", k-fold)** | **" << f4(s.effects.front().cvRmsAfter) << "** |\n";
     } else if (!s.chosen.empty()) {
-        f << "| **after (" << s.chosen << ", regression, k-fold)** | **" << f4(s.cvRmsAfter) << "** |\n";
+        f << "| **after (" << s.chosen << ", regression, k-fold)** | **" << f4(s.effects.front().cvRmsAfter)
+          << "** |\n";
+    }
+    for (size_t i = 1; i < s.effects.size(); ++i)
+        f << "| **then " << s.effects[i].name << " (" << s.effects[i].reading
+          << "; held out, every effect so far refitted per fold)** | **" << f4(s.effects[i].cvRmsAfter) << "** |\n";
+    if (s.effects.size() > 1) {
+        f << "\nEffects in the order added:";
+        for (size_t i = 0; i < s.effects.size(); ++i)
+            f << (i ? ", " : " ") << "`" << s.effects[i].name << "` (" << s.effects[i].reading << ", "
+              << f4(s.effects[i].cvRmsAfter) << ")";
+        f << ".\n";
+    }
+}
+
+void writeRankingTable(std::ostream &f, const std::vector<RankedCandidate> &ranking, size_t rows)
+{
+    f << "\n| # | candidate | kind | form | CV RMS before | CV RMS after | gain | z | r |\n"
+         "|---|---|---|---|---|---|---|---|---|\n";
+    for (size_t k = 0; k < ranking.size() && k < rows; ++k) {
+        const RankedCandidate &r = ranking[k];
+        f << "| " << k + 1 << " | " << r.name << (r.significant ? " *" : "") << " | " << r.kind
+          << (r.symptom ? " (symptom)" : "") << " | " << r.form << " | " << f4(r.cvRmsBefore) << " | "
+          << f4(r.cvRmsAfter) << " | " << f4(r.gain, "%.5f") << " | " << f4(r.z, "%.1f") << " | "
+          << f4(r.correlation, "%.2f") << " |\n";
     }
 }
 
@@ -215,21 +241,19 @@ void writeChosenEffect(std::ostream &f, const ReportContext &c, const ResidualSe
              "`--model paper` for the least-squares scale of the FE slope). Reported here as its "
              "one-candidate k-fold model, not built into the product: better FE runs are the fix.\n";
     } else {
-        writePhysicalSection(f, s);
+        writePhysicalSection(f, s.effects.front(), true, s);
     }
     writeSymptomNote(f, s);
-}
-
-void writeRankingTable(std::ostream &f, const LoopSummary &s)
-{
-    f << "\n## Ranking (best first; full list in ranking.csv)\n\n| # | candidate | kind | form | CV RMS before | "
-         "CV RMS after | gain | z | r |\n|---|---|---|---|---|---|---|---|---|\n";
-    for (size_t k = 0; k < s.ranking.size() && k < 15; ++k) {
-        const RankedCandidate &r = s.ranking[k];
-        f << "| " << k + 1 << " | " << r.name << (r.significant ? " *" : "") << " | " << r.kind
-          << (r.symptom ? " (symptom)" : "") << " | " << r.form << " | " << f4(r.cvRmsBefore) << " | "
-          << f4(r.cvRmsAfter) << " | " << f4(r.gain, "%.5f") << " | " << f4(r.z, "%.1f") << " | "
-          << f4(r.correlation, "%.2f") << " |\n";
+    for (size_t i = 1; i < s.effects.size(); ++i) {
+        f << "\n## Effect " << i + 1 << ", on the residual the effects above left\n\n";
+        writePhysicalSection(f, s.effects[i], false, s);
+        f << "\nIts round's ranking (on the residual the effects above left):\n";
+        writeRankingTable(f, s.effects[i].ranking, 8);
+    }
+    if (!s.chosen.empty()) f << "\nThe loop stopped: " << s.stopped << ".\n";
+    if (!s.lastRanking.empty()) {
+        f << "\nThe ranking on the residual the effects left:\n";
+        writeRankingTable(f, s.lastRanking, 8);
     }
 }
 
@@ -243,7 +267,8 @@ void writeReportMd(const ReportContext &c, const ResidualSet &set, const LoopSum
     for (const std::string &k : set.skipped) f << "- skipped " << k << "\n";
     writeErrorTable(f, s);
     writeChosenEffect(f, c, set, s);
-    writeRankingTable(f, s);
+    f << "\n## Ranking (best first; full list in ranking.csv)\n";
+    writeRankingTable(f, s.ranking, 15);
     f << "\n(* significant; a symptom is a measured quantity, the rest are recorded conditions)\n\n## Plots\n\n";
     for (const std::string &p : plots) f << "![" << p << "](" << p << ")\n\n";
 }

@@ -87,6 +87,7 @@ TEST(LoopEffects, CameraScaleErrorFoundAsARecalibration)
         EXPECT_EQ(s.ranking.front().name, "camera_id") << "seed " << seed;
         ASSERT_EQ(s.chosen, "camera_id") << "seed " << seed;
         EXPECT_EQ(s.reading, "scale");
+        EXPECT_EQ(s.effects.size(), 1u) << "seed " << seed << ": one effect, nothing added after it";
         EXPECT_LT(s.cvRmsAfter, 0.85 * s.rmsBefore) << s.rmsBefore << " -> " << s.cvRmsAfter;
         // Every camera's factor against the truth (1 + its scale error), within the stated U (k = 2).
         for (const auto &[camera, error] : truthBy(run.truth, "camera_id", "scale_error")) {
@@ -126,6 +127,7 @@ TEST(LoopEffects, WrongDeclaredNFoundPerMaterial)
         EXPECT_EQ(s.ranking.front().name, "material") << "seed " << seed;
         ASSERT_EQ(s.chosen, "material") << "seed " << seed;
         EXPECT_EQ(s.reading, "n");
+        EXPECT_EQ(s.effects.size(), 1u) << "seed " << seed << ": one effect, nothing added after it";
         EXPECT_LT(s.cvRmsAfter, 0.85 * s.rmsBefore) << s.rmsBefore << " -> " << s.cvRmsAfter;
         const auto trueN = truthBy(run.truth, "material", "n_true");
         const auto declared = truthBy(run.truth, "material", "n_declared");
@@ -148,6 +150,7 @@ TEST(LoopEffects, PressSpeedFoundAsAProcessVariable)
         EXPECT_EQ(s.ranking.front().name, "press_speed_mm_s") << "seed " << seed;
         ASSERT_EQ(s.chosen, "press_speed_mm_s");
         EXPECT_EQ(s.reading, "process");
+        EXPECT_EQ(s.effects.size(), 1u) << "seed " << seed << ": one effect, nothing added after it";
         EXPECT_LT(s.cvRmsAfter, 0.75 * s.rmsBefore) << s.rmsBefore << " -> " << s.cvRmsAfter;
         // u grows with the speed: a positive slope in whichever form, well beyond its uncertainty.
         EXPECT_GT(s.linear.slope, 3 * s.linear.sigma);
@@ -161,6 +164,7 @@ TEST(LoopEffects, NullSetAddsNothing)
         const LoopSummary &s = run.summary;
         EXPECT_TRUE(s.chosen.empty()) << "seed " << seed << " chose " << s.chosen;
         EXPECT_TRUE(s.reading.empty());
+        EXPECT_TRUE(s.effects.empty());
         EXPECT_DOUBLE_EQ(s.cvRmsAfter, s.rmsBefore);
         for (const RankedCandidate &r : s.ranking) EXPECT_FALSE(r.significant) << r.name;
     }

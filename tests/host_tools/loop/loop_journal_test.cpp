@@ -13,6 +13,9 @@
 
 #include <unistd.h>
 
+#include <opencv2/imgcodecs.hpp>
+
+#include "calibration/calibration_file.h"
 #include "firmware/device.h"
 #include "friction/paper_model.h"
 #include "friction/reduction_table.h"
@@ -22,9 +25,11 @@
 #include "hal/file/file_trigger.h"
 #include "hal/file/folder_storage.h"
 #include "hal/file/scripted_light.h"
+#include "host_tools/calibration_renderer.h"
 #include "host_tools/loop/journal_records.h"
 #include "host_tools/loop/loop_command.h"
 #include "host_tools/manifest.h"
+#include "host_tools/model_inverse.h"
 #include "host_tools/synth_loop_set.h"
 #include "reading/record_line.h"
 #include "tests/support/recording_serial.h"
@@ -219,5 +224,107 @@ TEST(LoopJournal, ARecordWithoutGeometryTakesTheSavedSettings)
     ASSERT_FALSE(joined.rows.empty());
     EXPECT_EQ(joined.rows.front().get("d0_mm"), "10");
     EXPECT_EQ(joined.rows.back().get("d0_mm"), "10");
+    fs::remove_all(dir);
+}
+
+// A device that measures through a camera calibration file (a tilted, distorting camera, no
+// mm_per_px) journals the file's name with each result; the loop re-measures those frames
+// through the same file, as the device did, and gets the device's μ. Without the file at
+// hand the records are left out with why, and the join goes on.
+TEST(LoopJournal, FramesMeasuredThroughACalibrationAreReMeasuredThroughIt)
+{
+    const fs::path dir = fs::temp_directory_path() / ("icacam_loop_calibrated_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir / "frames");
+    const host::CameraModel cam = host::exampleTiltedCamera();
+    calibration::CalibrationFile file;
+    file.plane = host::toPlaneCalibration(cam);
+    file.imageWidth = cam.width, file.imageHeight = cam.height;
+    file.board = "chessboard:9x7:1.4";
+    ASSERT_EQ(calibration::writeCalibrationFile((dir / "cam.cal").string(), file), "");
+    const host::BoardPhotoRenderer renderer(cam);
+    const friction::PaperModel paper;
+    const double n = 0.2;
+    const int count = 6; // the fewest records the loop takes
+    std::ofstream ref(dir / "reference.csv");
+    ref << "id,mu_ref,operator\n";
+    for (int i = 0; i < count; ++i) {
+        const double mu = 0.08 + 0.02 * i;
+        host::EndFaceScene s;
+        const double u = host::uForMu(paper, mu, n);
+        s.rOuterMm = 6.85 - 0.95 * u, s.rInnerMm = s.rOuterMm - u;
+        s.rMaxMm = 5.0 * std::sqrt(2.0) * (1.008 + 0.034 * u);
+        char name[32];
+        std::snprintf(name, sizeof name, "f%02d.png", i);
+        cv::imwrite((dir / "frames" / name).string(),
+                    renderer.endFace(s, 0.3 * (i % 3) - 0.3, -0.2, 7.5, 0.9, 2.0, uint32_t(10 + i)));
+        ref << i + 1 << "," << mu + 0.002 * ((i % 3) - 1) << ","
+            << "ABC"[i % 3] << "\n";
+    }
+    ref.close();
+
+    hal::ManualClock clock;
+    hal::ScriptedLight light{clock};
+    hal::FileCamera camera(clock, hal::FileCameraOptions{(dir / "frames").string(), 1, false, 0, {}, &light});
+    hal::FileTrigger trigger{clock};
+    hal::FileLed led{clock, &light};
+    NullDisplay display;
+    test::RecordingSerial serial;
+    hal::FolderStorage storage;
+    ASSERT_TRUE(storage.open((dir / "journal").string()).ok());
+    fw::Config cfg;
+    cfg.n = n;
+    cfg.h0Mm = 15, cfg.hFinalMm = 7.5; // the end face 7.5 mm above the fixture
+    cfg.cameraMaxWidth = 1600, cfg.cameraMaxHeight = 1200;
+    cfg.baseDir = dir.string();
+    cfg.calibrationFile = "cam.cal"; // no mm_per_px: the calibration scales
+    fw::Device device(fw::DeviceHal{camera, trigger, led, display, serial, storage, clock}, cfg, paper);
+    ASSERT_TRUE(device.start().ok());
+    for (int i = 0; i < count; ++i) {
+        serial.in += "trigger\n";
+        device.tick();
+    }
+
+    // The folder the calibration is in: every result joined, through it.
+    Manifest joined;
+    JournalJoin join;
+    std::string err;
+    ASSERT_TRUE(readJournalManifest((dir / "journal").string(), (dir / "reference.csv").string(), &joined, &join, &err,
+                                    dir.string()))
+        << err;
+    EXPECT_EQ(join.joined, count);
+    EXPECT_EQ(join.calibrated, count);
+    ASSERT_FALSE(joined.rows.empty());
+    EXPECT_EQ(fs::path(joined.rows.front().get("calibration")).filename(), "cam.cal");
+    EXPECT_EQ(joined.rows.front().get("device_plane_height_mm"), "7.5");
+
+    RankingOptions ro;
+    ro.folds = 5;
+    const LoopSummary s = runJournalLoop((dir / "journal").string(), (dir / "reference.csv").string(),
+                                         (dir / "report").string(), "paper", ro, kSweep, dir.string());
+    EXPECT_EQ(s.usable, count);
+    // The re-measurement's μ (records.csv) is the device's own (the journal's device_mu).
+    Manifest records;
+    ASSERT_TRUE(readManifest((dir / "report" / "records.csv").string(), &records, &err)) << err;
+    std::map<std::string, double> deviceMu;
+    for (const ManifestRow &r : joined.rows) parseNumber(r.get("device_mu"), &deviceMu[r.get("id")]);
+    ASSERT_EQ(records.rows.size(), size_t(count));
+    for (const ManifestRow &r : records.rows) {
+        double mu = 0;
+        ASSERT_TRUE(parseNumber(r.get("mu_model"), &mu));
+        ASSERT_TRUE(deviceMu.count(r.get("id"))) << r.get("id");
+        EXPECT_NEAR(mu, deviceMu[r.get("id")], 5e-4) << r.get("id");
+    }
+
+    // Without the file: each record left out, saying so.
+    Manifest none;
+    JournalJoin missing;
+    ASSERT_TRUE(
+        readJournalManifest((dir / "journal").string(), (dir / "reference.csv").string(), &none, &missing, &err));
+    EXPECT_EQ(missing.joined, 0);
+    int notThere = 0;
+    for (const std::string &why : missing.skipped)
+        notThere += why.find("'cam.cal', which is not in") != std::string::npos;
+    EXPECT_EQ(notThere, count);
     fs::remove_all(dir);
 }
