@@ -93,14 +93,17 @@ TEST(CoverageBars, ScaleMeasuredOnTheFixture)
 {
     expectBars("fixture_scale", 9104, false, {0, 0.2});
 }
-// Below the half line, at none: elliptical names every oblique view, and most lose the silhouette.
+// Below the half line: 40 % measured. A tilt the budget's tilt term covers is no finding, and
+// where an oblique view shows no silhouette the budget keeps the undeclared reduction; but a
+// view tilted under about 9° is not told from a straight one, where no silhouette is a finding,
+// and a close camera's perspective parts the boundaries' centres (centre_offset).
 TEST(CoverageBars, TiltedDistortingCamera)
 {
-    expectBars("tilt", 9105, false, {0, 0}, 30);
+    expectBars("tilt", 9105, false, {0, 0.35}, 30);
 }
-// Below the half line, at none: the calibrated silhouette is not used, so without a final
-// height every reading whose μ 45–55 % would move says reduction_unchecked.
+// The calibrated camera's oblique view shows no silhouette to check the height with: U covers
+// the undeclared reduction, and the reading is ok.
 TEST(CoverageBars, CalibratedTiltedCamera)
 {
-    expectBars("calibrated_tilt", 9106, false, {0, 0}, 30);
+    expectBars("calibrated_tilt", 9106, false, {0, 0.5}, 30);
 }
