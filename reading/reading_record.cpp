@@ -117,8 +117,8 @@ void adviceText(const Advice &a, char *buf, size_t size)
     if (a.input == AdviceInput::None)
         std::snprintf(buf, size, "none: U %.4f is mostly the %s", a.uNow, a.modelLeads ? "model's own" : "edges'");
     else if (a.input == AdviceInput::HFinal && a.reductionUnchecked)
-        std::snprintf(buf, size, "h_final_mm: U %.4f \xE2\x86\x92 %.4f (height unchecked: U covers 45-55 %%)",
-                      a.uNow, a.uThen);
+        std::snprintf(buf, size, "h_final_mm: U %.4f \xE2\x86\x92 %.4f (height unchecked: U covers 45-55 %%)", a.uNow,
+                      a.uThen);
     else if (a.input == AdviceInput::HFinal)
         std::snprintf(buf, size, "h_final_mm: U %.4f \xE2\x86\x92 %.4f", a.uNow, a.uThen);
     else
