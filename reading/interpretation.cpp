@@ -34,10 +34,9 @@ void readFace(const SpecimenSpec &spec, const friction::FrictionModel &model, co
     if (silhouette) {
         out->rMaxZ = silhouette->rMaxZ;
         out->reductionEst = silhouette->reductionEst;
-        // A tilted camera sees the barrel as a crescent on its own side and nothing on the far
-        // one: no silhouette there is the view, not a finding. The reduction is then unchecked,
-        // and the budget keeps the undeclared one's whole range.
-        f |= oblique ? silhouette->flags & ~uint32_t(kFlagNoSilhouette) : silhouette->flags;
+        // Without one the scale is unchecked too, in a tilted view as in a straight one: a
+        // scale measured on the fixture would pass unseen (no_silhouette stays a finding).
+        f |= silhouette->flags;
         if (silhouette->usable) {
             sr = silhouettePosterior(sr, *silhouette, silhouetteSigma, assumed.declared, oblique, &f, &why);
             explained = !assumed.declared;

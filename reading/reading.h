@@ -32,7 +32,7 @@ enum ReadingFlag : uint32_t {
     kFlagCentreOffset = 1u << 12,         // the boundaries are not concentric
     kFlagScaleSuspect = 1u << 13,         // no final height given: a scale off explains R_max best, and moves μ
     kFlagNarrowRing = 1u << 14,           // the ICA is only a few pixels wide
-    kFlagNoSilhouette = 1u << 15,         // a straight view shows no barrel silhouette: scale unchecked
+    kFlagNoSilhouette = 1u << 15,         // the barrel silhouette was not found: scale unchecked
     kFlagReductionOutside = 1u << 16,     // recorded final height outside what the model covers
     kFlagRadiiInconsistent = 1u << 17,    // R_max contradicts the declared scale and final height
     kFlagAspectOutside = 1u << 18,        // the specimen's H0/D0 lies outside what the model covers
@@ -57,8 +57,8 @@ struct Advice {
     double value = 0; // the input's value to declare (a tolerance), 0 for h_final_mm itself
     double uNow = 0, uThen = 0;
     bool modelLeads = false; // for None: the model's own error leads the budget (else the edges)
-    // No final height, and nothing in the image checks it (a tilted view without a silhouette,
-    // or a calibrated one): U covers the undeclared reduction's whole range, 45–55 %.
+    // No final height, and nothing in the image checks it (no silhouette, or a calibrated
+    // view): U covers the undeclared reduction's whole range, 45–55 %.
     bool reductionUnchecked = false;
 };
 // The manifest column (and the device config key's last part) the advice names.
