@@ -35,7 +35,7 @@ const char *shortFlag(int bit)
         "low contrast",       "edge coverage low", "edges scatter",      "image blurred",  "saturated",
         "specimen clipped",   "elliptical",        "not concentric",     "check scale",    "narrow ring",
         "no silhouette",      "reduction outside", "radii inconsistent", "H0/D0 outside",  "silhouette unusable",
-        "not pressed to 50%", "give final height"};
+        "not pressed to 50%"};
     return bit >= 0 && bit < reading::kFlagCount ? kWords[bit] : "check";
 }
 
@@ -87,6 +87,8 @@ void adviceLine(const reading::Advice &a, char *line, size_t size)
     using reading::AdviceInput;
     if (a.input == AdviceInput::None)
         std::snprintf(line, size, "U: %s", a.modelLeads ? "model's own" : "edges'");
+    else if (a.input == AdviceInput::HFinal && a.reductionUnchecked)
+        std::snprintf(line, size, "h unchecked U->%.4f", a.uThen); // 21 columns
     else if (a.input == AdviceInput::HFinal)
         std::snprintf(line, size, "h_final_mm U->%.4f", a.uThen);
     else

@@ -22,7 +22,7 @@ double silhouetteMeasuredRelSigma(double coverage, double scatterPx, double rMax
 // The steps after the face is in millimetres, shared by images and radii.
 void readFace(const SpecimenSpec &spec, const friction::FrictionModel &model, const AssumedReduction &assumed,
               double scaleRelSigma, double uSigmaEdgesMm, const SilhouetteObservation *silhouette,
-              double silhouetteSigma, bool calibrated, uint32_t f, Reading *out)
+              double silhouetteSigma, bool calibrated, bool oblique, uint32_t f, Reading *out)
 {
     const MuFunction F(spec, model);
     const double u = out->face.uMm, n = spec.n;
@@ -34,9 +34,11 @@ void readFace(const SpecimenSpec &spec, const friction::FrictionModel &model, co
     if (silhouette) {
         out->rMaxZ = silhouette->rMaxZ;
         out->reductionEst = silhouette->reductionEst;
+        // Without one the scale is unchecked too, in a tilted view as in a straight one: a
+        // scale measured on the fixture would pass unseen (no_silhouette stays a finding).
         f |= silhouette->flags;
         if (silhouette->usable) {
-            sr = silhouettePosterior(sr, *silhouette, silhouetteSigma, assumed.declared, &f, &why);
+            sr = silhouettePosterior(sr, *silhouette, silhouetteSigma, assumed.declared, oblique, &f, &why);
             explained = !assumed.declared;
         }
     }
@@ -52,12 +54,13 @@ void readFace(const SpecimenSpec &spec, const friction::FrictionModel &model, co
     out->muSigma = combinedSigma(out->budget);
     out->advice =
         adviseInput(F, model, spec, uF, rF, sr, uSigmaEdgesMm, read.bias, assumed.declared, calibrated, scaleRelSigma);
+    out->advice.reductionUnchecked = !assumed.declared && !explained;
     const ModelEstimate asDeclared = model.estimate({u, n, spec.kMpa, spec.d0Mm, spec.h0Mm, spec.hFinalMm});
     out->declared = {asDeclared.mu, asDeclared.dMuDu};
     out->nominalMu = F.at(u, kNominalReduction, n);
-    // A silhouette found unusable is a finding of its own (silhouette_unreliable, no_silhouette).
-    if (!assumed.declared && (explained || !silhouette))
-        f |= nominalCheck(F, spec, u, out->mu, explained ? &why : nullptr, &out->nominalMu);
+    // A silhouette found unusable is a finding of its own (silhouette_unreliable, no_silhouette);
+    // where the image has none to check the height with, U covers the undeclared range.
+    if (explained) f |= nominalCheck(F, spec, u, out->mu, &why, &out->nominalMu);
     decideStatus(spec, f | rangeChecks(model, read, assumed), out);
 }
 
@@ -88,6 +91,8 @@ Reading interpret(const EndFaceGeometry &g, const SpecimenSpec &spec, const visi
     const EdgeSigma e = edgeSigma(g, p, calibration != nullptr);
     out.uSigmaMm = e.uSigmaMm;
     const uint32_t f = imageChecks(g, p, e, spec.d0Mm, &out.centreOffsetPx);
+    // The image shows the camera oblique: the boundaries share an ellipse, or part.
+    const bool oblique = e.sharedEllipse || (f & kFlagCentreOffset);
 
     SilhouetteObservation obs;
     const SilhouetteObservation *silhouette = nullptr;
@@ -98,7 +103,7 @@ Reading interpret(const EndFaceGeometry &g, const SpecimenSpec &spec, const visi
         silhouette = &obs;
     }
     readFace(spec, model, assumed, p.scaleRelSigma, e.uSigmaEdgesMm, silhouette, silhouetteRelSigma(g),
-             calibration != nullptr, f, &out);
+             calibration != nullptr, oblique, f, &out);
     return out;
 }
 
@@ -115,7 +120,7 @@ Reading interpret(const FaceInMm &face, const SpecimenSpec &spec, const friction
     const double mu0 = F.at(out.face.uMm, assumed.r, spec.n);
     const SilhouetteObservation obs = observeSilhouette(out.face, 1, 0, face.rMaxMm, spec, assumed, mu0);
     const double silhouetteSigma = std::hypot(friction::kFeRMaxRelSigma, friction::measuredRMaxRelSigma(0));
-    readFace(spec, model, assumed, spec.tolerances.scaleRel, 0, &obs, silhouetteSigma, false, 0, &out);
+    readFace(spec, model, assumed, spec.tolerances.scaleRel, 0, &obs, silhouetteSigma, false, false, 0, &out);
     return out;
 }
 

@@ -47,8 +47,9 @@ struct EdgeSigma {
 };
 EdgeSigma edgeSigma(const vision::EndFaceGeometry &g, const PlaneMapping &p, bool calibrated);
 
-// The image's own checks: coverage, scatter, contrast, concentricity, ellipse, a narrow ring,
-// blur, saturation, and what the pipeline reported (ImageFlag).
+// The image's own checks: coverage, scatter, contrast, concentricity, an ellipse beyond the
+// tilt the budget covers, a narrow ring, blur, saturation, and what the pipeline reported
+// (ImageFlag).
 uint32_t imageChecks(const vision::EndFaceGeometry &g, const PlaneMapping &p, const EdgeSigma &e, double d0Mm,
                      double *centreOffsetPx);
 
@@ -100,18 +101,17 @@ struct Explanations {
 
 // The posterior of scale and reduction given the silhouette (interpretation.h): a linear
 // update where the final height is declared, the mixture of explanations where it is not
-// (then *why, when given, receives them). *flags may gain silhouette_unreliable.
+// (then *why, when given, receives them; oblique: the view is tilted, so a foreshortened
+// silhouette is one of them). *flags may gain silhouette_unreliable.
 ScaleAndReduction silhouettePosterior(const ScaleAndReduction &prior, const SilhouetteObservation &obs,
-                                      double silhouetteRelSigma, bool declared, uint32_t *flags,
+                                      double silhouetteRelSigma, bool declared, bool oblique, uint32_t *flags,
                                       Explanations *why = nullptr);
 
 // The method's nominal conditions checked where no final height is declared: μ at the
 // nominal half height with the declared scale, and under every explanation of the silhouette
 // that keeps some weight, against the reading's μ. Any of them beyond the tolerance is a
 // finding: reduction_not_nominal, or scale_suspect where a scale off explains the silhouette
-// best. why == nullptr (no silhouette to observe, as through a calibration): the undeclared
-// reduction's whole range (45–55 %) is held against the reading (reduction_unchecked).
-// *nominalMu: μ at the nominal conditions.
+// best. *nominalMu: μ at the nominal conditions.
 uint32_t nominalCheck(const MuFunction &F, const SpecimenSpec &spec, double uDeclaredMm, double mu,
                       const Explanations *why, double *nominalMu);
 

@@ -34,8 +34,7 @@ const char *flagName(int bit)
                                                    "radii_inconsistent",
                                                    "aspect_outside_model",
                                                    "silhouette_unreliable",
-                                                   "reduction_not_nominal",
-                                                   "reduction_unchecked"};
+                                                   "reduction_not_nominal"};
     return bit >= 0 && bit < kFlagCount ? kNames[bit] : "unknown";
 }
 

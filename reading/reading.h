@@ -28,7 +28,7 @@ enum ReadingFlag : uint32_t {
     kFlagBlurred = 1u << 8,               // edges wider than the ring resolves reliably
     kFlagSaturated = 1u << 9,             // part of the ring is clipped at full scale
     kFlagSpecimenClipped = 1u << 10,      // the specimen runs off the frame
-    kFlagElliptical = 1u << 11,           // both boundaries share an ellipticity: tilt or lens
+    kFlagElliptical = 1u << 11,           // the boundaries share an ellipse beyond the tilt the budget covers
     kFlagCentreOffset = 1u << 12,         // the boundaries are not concentric
     kFlagScaleSuspect = 1u << 13,         // no final height given: a scale off explains R_max best, and moves μ
     kFlagNarrowRing = 1u << 14,           // the ICA is only a few pixels wide
@@ -40,11 +40,8 @@ enum ReadingFlag : uint32_t {
     // No final height given, and the silhouette says the specimen was pressed to another
     // height than the test's nominal half by enough to move μ beyond the tolerance.
     kFlagReductionNotNominal = 1u << 20,
-    // No final height given, nothing in the image checks the nominal half height (a
-    // calibrated view), and 45–55 % moves μ beyond the tolerance.
-    kFlagReductionUnchecked = 1u << 21,
 };
-constexpr int kFlagCount = 22;
+constexpr int kFlagCount = 21;
 const char *flagName(int bit);
 
 // The expanded uncertainty U = k·σ_μ against the lab's tolerance on μ (a decision rule in the
@@ -60,6 +57,9 @@ struct Advice {
     double value = 0; // the input's value to declare (a tolerance), 0 for h_final_mm itself
     double uNow = 0, uThen = 0;
     bool modelLeads = false; // for None: the model's own error leads the budget (else the edges)
+    // No final height, and nothing in the image checks it (no silhouette, or a calibrated
+    // view): U covers the undeclared reduction's whole range, 45–55 %.
+    bool reductionUnchecked = false;
 };
 // The manifest column (and the device config key's last part) the advice names.
 const char *adviceInputName(AdviceInput a);

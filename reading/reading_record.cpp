@@ -105,7 +105,6 @@ const char *findingWords(int bit)
         "the specimen's H0/D0 lies outside what the model covers",
         "the silhouette does not fit the barrel's shape: declare h_final_mm",
         "the specimen was not pressed to half height: declare h_final_mm",
-        "no final height, and 45-55 % moves mu beyond the tolerance: declare h_final_mm",
     };
     return bit >= 0 && bit < kFlagCount ? kWords[bit] : "check";
 }
@@ -117,6 +116,9 @@ void adviceText(const Advice &a, char *buf, size_t size)
     if (size == 0) return;
     if (a.input == AdviceInput::None)
         std::snprintf(buf, size, "none: U %.4f is mostly the %s", a.uNow, a.modelLeads ? "model's own" : "edges'");
+    else if (a.input == AdviceInput::HFinal && a.reductionUnchecked)
+        std::snprintf(buf, size, "h_final_mm: U %.4f \xE2\x86\x92 %.4f (height unchecked: U covers 45-55 %%)", a.uNow,
+                      a.uThen);
     else if (a.input == AdviceInput::HFinal)
         std::snprintf(buf, size, "h_final_mm: U %.4f \xE2\x86\x92 %.4f", a.uNow, a.uThen);
     else

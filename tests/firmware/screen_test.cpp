@@ -59,6 +59,10 @@ TEST(Screen, ErrorsAreShownInWords)
     EXPECT_EQ(fw::readRow(bmp, 0), "#15 ok");
     EXPECT_EQ(fw::readRow(bmp, 4), "U beyond tol 0.009");
     EXPECT_EQ(fw::readRow(bmp, 5), "h_final_mm U->0.0060");
+    // Nothing in the image checked the height: U covers 45-55 %, and the line says so.
+    m.advice.reductionUnchecked = true;
+    fw::drawResult(&bmp, 16, m, "");
+    EXPECT_EQ(fw::readRow(bmp, 5), "h unchecked U->0.0060");
     fw::drawProblem(&bmp, "#14 error", "camera timeout: no frame within 2000 ms");
     EXPECT_EQ(fw::readRow(bmp, 2), "camera timeout: no");
     EXPECT_EQ(fw::readRow(bmp, 3), "frame within 2000 ms");

@@ -120,6 +120,12 @@ TEST(ImageChecks, EachConditionRaisesItsFlag)
     EXPECT_EQ(flagsOf(g), uint32_t(kFlagNarrowRing));
     g = circularFace(250, 300), g.imageFlags = vision::kImageSpecimenClipped;
     EXPECT_EQ(flagsOf(g), uint32_t(kFlagSpecimenClipped));
+    // A shared ellipse a tilt explains is covered by the edges' tilt term; beyond it, a finding.
+    g = circularFace(250, 300), g.inner.ellipticity = g.outer.ellipticity = 0.03;
+    g.inner.axisDeg = g.outer.axisDeg = 30;
+    EXPECT_EQ(flagsOf(g), 0u);
+    g.inner.ellipticity = g.outer.ellipticity = 0.08;
+    EXPECT_EQ(flagsOf(g), uint32_t(kFlagElliptical));
 }
 
 TEST(SilhouetteObservation, NoneFoundAFittingOneAndOneOutsideTheBarrel)
@@ -145,11 +151,11 @@ TEST(SilhouettePosterior, DeclaredHeightCorrectsTheScaleAndAContradictionWidensB
     SilhouetteObservation o;
     o.usable = true, o.beta = 0.6, o.d = 0.004;
     uint32_t flags = 0;
-    const ScaleAndReduction small = silhouettePosterior(prior, o, 0.003, true, &flags);
+    const ScaleAndReduction small = silhouettePosterior(prior, o, 0.003, true, false, &flags);
     EXPECT_GT(small.dk, 0);
     EXPECT_LT(small.pk, prior.pk) << "an agreeing silhouette narrows the scale";
     o.d = 0.1; // far past 3 σ
-    const ScaleAndReduction far = silhouettePosterior(prior, o, 0.003, true, &flags);
+    const ScaleAndReduction far = silhouettePosterior(prior, o, 0.003, true, false, &flags);
     EXPECT_EQ(far.dk, 0) << "neither declared value is corrected";
     EXPECT_GE(far.pk, o.d * o.d);
     EXPECT_EQ(flags, 0u);
@@ -162,7 +168,7 @@ TEST(SilhouettePosterior, WithoutHeightAnAgreeingSilhouettePinsTheNominalHalf)
     SilhouetteObservation o;
     o.usable = true, o.beta = 0.6, o.d = 0.0;
     uint32_t flags = 0;
-    const ScaleAndReduction p = silhouettePosterior(prior, o, 0.004, false, &flags);
+    const ScaleAndReduction p = silhouettePosterior(prior, o, 0.004, false, false, &flags);
     EXPECT_LT(std::sqrt(p.pr), 0.5 * kUndeclaredReductionSigma);
     EXPECT_NEAR(p.dr, 0, 1e-3);
 }
@@ -253,8 +259,6 @@ TEST(NominalCheck, AnExplanationBeyondTheToleranceIsAFinding)
     why.weight[Explanations::Nominal] = 0.99, why.weight[Explanations::OtherHeight] = 0.01;
     why.post[Explanations::OtherHeight].dr = 0.05;
     EXPECT_EQ(nominalCheck(F, s, u, mu, &why, &nominal), 0u);
-    // Nothing to check the height with: the undeclared range decides.
-    EXPECT_EQ(nominalCheck(F, s, u, mu, nullptr, &nominal), uint32_t(kFlagReductionUnchecked));
 }
 
 // The advice names the declared input that shrinks U the most: the final height where the

@@ -71,7 +71,7 @@ TEST(Interpretation, SmallSilhouetteInAnObliqueViewIsForeshortening)
 {
     const Reading straight = interpret(face(0.95, false));
     const Reading oblique = interpret(face(0.95, true));
-    ASSERT_TRUE(oblique.flags & kFlagElliptical);
+    EXPECT_FALSE(oblique.flags & kFlagElliptical) << "a tilt the budget's tilt term covers";
     ASSERT_FALSE(straight.flags & kFlagElliptical);
     EXPECT_GT(std::fabs(straight.reduction - 0.5), 0.01);
     EXPECT_LT(std::fabs(oblique.reduction - 0.5), 0.5 * std::fabs(straight.reduction - 0.5));
@@ -122,4 +122,23 @@ TEST(Interpretation, ASilhouetteOnAWrongEdgeDoesNotRescaleTheRingUnseen)
 }
 
 } // namespace
+// Without a silhouette nothing checks the scale or the final height, in a tilted view as in a
+// straight one: a finding (a scale measured on the fixture would otherwise pass unseen). The
+// budget keeps the undeclared reduction's whole range and the advice says the height went
+// unchecked.
+TEST(Interpretation, NoSilhouetteLeavesScaleAndHeightUnchecked)
+{
+    EndFaceGeometry straight = face(1.0, false), oblique = face(1.0, true);
+    straight.rMaxPx = oblique.rMaxPx = 0;
+    const Reading s = interpret(straight), o = interpret(oblique);
+    EXPECT_TRUE(s.flags & kFlagNoSilhouette);
+    EXPECT_TRUE(o.flags & kFlagNoSilhouette);
+    EXPECT_NEAR(o.reductionSigma, kUndeclaredReductionSigma, 1e-12);
+    EXPECT_TRUE(o.advice.reductionUnchecked);
+    EXPECT_EQ(o.advice.input, AdviceInput::HFinal);
+    const Reading seen = interpret(face(1.0, true));
+    EXPECT_FALSE(seen.advice.reductionUnchecked) << "a silhouette checked the height";
+    EXPECT_LT(seen.muSigma, o.muSigma);
+}
+
 } // namespace icacam::reading
