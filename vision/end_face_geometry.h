@@ -44,6 +44,10 @@ struct BoundaryFit {
 enum ImageFlag : uint32_t {
     kImageSpecimenClipped = 1u << 0, // the specimen runs off the frame
     kImageNarrowRingFit = 1u << 1,   // the ring was measured by the narrow-ring profile fit
+    // Just outside the silhouette the fixture shows a second step of its sign, as strong
+    // (the ring light's shadow round the foot): rMaxPx may be either edge, and a scale or
+    // reduction inferred from it is not to be trusted.
+    kImageOutlineAmbiguous = 1u << 2,
 };
 
 // Where the pipeline looks: the specimen's initial diameter and the scale at the end face
