@@ -48,6 +48,10 @@ enum ImageFlag : uint32_t {
     // (the ring light's shadow round the foot): rMaxPx may be either edge, and a scale or
     // reduction inferred from it is not to be trusted.
     kImageOutlineAmbiguous = 1u << 2,
+    // The mean profile does not decide which edge ends the flat face: the contact edge
+    // taken opens a band that may as well lie on the barrel beyond an unseen original face
+    // (profile_zones.h). R_i and R_o may both be one edge out.
+    kImageContactEdgeUndecided = 1u << 3,
 };
 
 // Where the pipeline looks: the specimen's initial diameter and the scale at the end face

@@ -41,10 +41,20 @@ ProfileEdges findProfileEdges(const uint16_t *level, const int32_t *deriv, int c
     ProfileEdges out;
     lo = std::max(lo, 1);
     hi = std::min(hi, count - 2);
+    // The ripple a groove or a stain leaves scales with the light on the specimen, not with
+    // the fixture's: the share is taken of the strongest step inside the outline (the
+    // outermost step at least half as strong as the profile's strongest), whose other side
+    // may be a fixture far brighter or darker than anything on the specimen.
     int32_t strongest = 0;
     for (int i = lo; i <= hi; ++i)
         if (isExtremum(deriv, i)) strongest = std::max(strongest, std::abs(deriv[i]));
-    const int32_t floor = std::max(minStrength, int32_t(kMinShareOfStrongest * strongest));
+    int outline = hi;
+    while (outline > lo && !(isExtremum(deriv, outline) && 2 * std::abs(deriv[outline]) >= strongest)) --outline;
+    int32_t strongestInside = 0;
+    for (int i = lo; i < outline; ++i)
+        if (isExtremum(deriv, i)) strongestInside = std::max(strongestInside, std::abs(deriv[i]));
+    const int32_t floor =
+        std::max(minStrength, int32_t(kMinShareOfStrongest * (strongestInside > 0 ? strongestInside : strongest)));
     for (int i = lo; i <= hi; ++i) {
         if (!isExtremum(deriv, i) || std::abs(deriv[i]) < floor) continue;
         ProfileEdge e;
@@ -110,6 +120,19 @@ int contactEdgeByZones(const uint16_t *level, int count, const ProfileEdges &edg
     // weak beside the first (a highlight line on a drawn barrel, a groove on the ring).
     if (kMuchStronger * e[1].strength < e[0].strength) return -1;
     return zoneBeyond(level, count, edges, 1, window) == ZoneKind::Level ? -1 : 1;
+}
+
+bool opensBand(const uint16_t *level, int count, const ProfileEdges &edges, int k)
+{
+    if (k < 0 || k + 1 >= edges.count) return false;
+    const ProfileEdge &open = edges.edge[k], &close = edges.edge[k + 1];
+    const int before = open.flankLo - 1, top = open.flankHi + 1, after = close.flankHi + 1;
+    if (close.sign == open.sign || !usable(level, count, before) || !usable(level, count, top) ||
+        !usable(level, count, after))
+        return false;
+    const int32_t height = std::abs(int32_t(level[top]) - level[before]);
+    const int32_t tolerance = std::max(kLevelTolerance, int32_t(kLevelToleranceOfStep * height));
+    return std::abs(int32_t(level[after]) - level[before]) <= tolerance;
 }
 
 } // namespace icacam::vision

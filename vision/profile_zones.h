@@ -56,4 +56,12 @@ ZoneKind zoneBeyond(const uint16_t *level, int count, const ProfileEdges &edges,
 // tell. window: the samples judged beyond each edge (about the narrowest ring resolved).
 int contactEdgeByZones(const uint16_t *level, int count, const ProfileEdges &edges, int window);
 
+// Whether edge k opens a band: the next edge steps back the other way and the level beyond
+// it returns to the level before k. A lit shoulder just outside the contact edge makes one,
+// and so does a highlight line across the barrel outside it: where the zones name the band's
+// first edge for the contact edge with too few samples beyond it to judge (Short), and no
+// step inside shows the original face's edge, the band may as well lie on the barrel, and
+// the profile does not decide which edge ends the face.
+bool opensBand(const uint16_t *level, int count, const ProfileEdges &edges, int k);
+
 } // namespace icacam::vision

@@ -180,13 +180,16 @@ RingSearch::MeanEdges RingSearch::meanProfileEdges()
     const ProfileEdges edges = findProfileEdges(mean, meanDeriv, count, lo, hi, int32_t(minStep));
     // The zones beyond each edge name the contact edge (profile_zones.h); the window judged
     // beyond an edge is about the narrowest ring the coarse step still resolves.
-    const int named = contactEdgeByZones(mean, count, edges, std::max(3, int(0.05 * r0 / step)));
+    const int window = std::max(3, int(0.05 * r0 / step));
+    const int named = contactEdgeByZones(mean, count, edges, window);
     if (named >= 0) {
         const ProfileEdge &c = edges.edge[named];
         e.found = true;
         e.rOuter = radiusOf(c.index);
         e.signOuter = c.sign;
         e.strengthOuter = c.strength / 16; // coarse → fine units
+        e.undecided = named == 1 && zoneBeyond(mean, count, edges, 1, window) == ZoneKind::Short &&
+                      opensBand(mean, count, edges, 1);
     }
     // Where the zones do not tell (three levels in a row, as a drawing paints the barrel),
     // the contact edge is where the flat, bright end face gives way to the steep barrel,
@@ -866,6 +869,7 @@ ErrorCode RingSearch::run(EndFaceGeometry *m)
     const double perRay = silhouetteFromRays(outerR, &m->silhouetteCoverage, &m->silhouetteScatterPx, &lopsided);
     m->rMaxPx = perRay > 0 ? perRay : lopsided ? 0 : me.rMax;
     if (m->rMaxPx > 0 && outlineRivalled(m->rMaxPx)) m->imageFlags |= kImageOutlineAmbiguous;
+    if (me.undecided) m->imageFlags |= kImageContactEdgeUndecided;
     m->innerPoints = innerPts;
     m->outerPoints = outerPts;
     m->rayCount = kRays;

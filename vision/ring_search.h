@@ -37,6 +37,9 @@ struct RingSearch {
         // (pixels; 0: none named): where a search for the contact edge must stop.
         double reachInPx = 0, reachOutPx = 0;
         bool found = false;
+        // The zones named the contact edge where the profile cannot tell it from a band on
+        // the barrel (profile_zones.h, opensBand): the reading must not be taken on trust.
+        bool undecided = false;
     };
     MeanEdges meanProfileEdges();
     // Moves (cx, cy) to the contact edge's own centre and returns its mean radius there

@@ -29,6 +29,37 @@ struct Profile {
         for (int i = 0; i < samples; ++i) grey.push_back(from + (to - from) * (i + 0.5) / samples);
         return *this;
     }
+    // A highlight line across a level: a Gaussian of `height` and σ `sigma` samples.
+    Profile &highlight(double base, double height, double sigma, int samples)
+    {
+        for (int i = 0; i < samples; ++i)
+            grey.push_back(base + height * std::exp(-0.5 * std::pow((i - 0.5 * (samples - 1)) / sigma, 2)));
+        return *this;
+    }
+    struct Named {
+        ProfileEdges edges;
+        int k = -1;
+        bool band = false; // the named edge opens a band
+    };
+    Named name() const
+    {
+        std::vector<double> g = grey;
+        for (int pass = 0; pass < (measured ? 0 : 2); ++pass) {
+            std::vector<double> s = g;
+            for (size_t i = 1; i + 1 < g.size(); ++i) s[i] = 0.25 * g[i - 1] + 0.5 * g[i] + 0.25 * g[i + 1];
+            g = s;
+        }
+        std::vector<uint16_t> q(g.size());
+        for (size_t i = 0; i < g.size(); ++i) q[i] = uint16_t(std::lround(g[i] * 256));
+        std::vector<int32_t> d(g.size());
+        profileDerivative(q.data(), int(q.size()), d.data());
+        const int n = int(q.size());
+        Named out;
+        out.edges = findProfileEdges(q.data(), d.data(), n, 2, n - 3, 1000);
+        out.k = contactEdgeByZones(q.data(), n, out.edges, 3);
+        out.band = opensBand(q.data(), n, out.edges, out.k);
+        return out;
+    }
     int contactEdge(int *edgeIndex = nullptr) const
     {
         std::vector<double> g = grey;
@@ -120,4 +151,37 @@ TEST(ProfileZones, GroovesOnTheRingAreNotTheContactEdge)
     if (k >= 0) {
         EXPECT_NEAR(at, 23, 1); // the ring's end, never a groove's flank
     }
+}
+
+// A drawn end face (host_tools/end_face_renderer.cpp): a face 18 grey darker than the ring,
+// the barrel a level with a highlight line across it, a fixture far brighter than anything
+// on the specimen. The original face's edge is weak beside the fixture's step but strong
+// beside the end face's own: it is an edge, and the first level beyond it is the ring, so
+// the highlight's flank is never taken for the contact edge.
+TEST(ProfileZones, AHighlightOnADrawnBarrelIsNotTheContactEdge)
+{
+    Profile p;
+    p.level(93, 10).level(111, 24).level(64, 10).highlight(64, 35, 1.5, 9).level(64, 6).level(212, 16);
+    const Profile::Named n = p.name();
+    ASSERT_GE(n.edges.count, 4);
+    EXPECT_NEAR(n.edges.edge[0].index, 10, 1) << "the original face's edge is kept";
+    EXPECT_LT(n.k, 2) << "the highlight's flank named the contact edge";
+    if (n.k >= 0) { EXPECT_NEAR(n.edges.edge[n.k].index, 34, 1); }
+}
+
+// The lit shoulder beyond a burnished ring and a highlight line on a barrel both open a band:
+// the level after it is the one before. A contact edge followed by the barrel's ramp does not.
+TEST(ProfileZones, ABandReturnsToTheLevelItLeft)
+{
+    Profile shoulder;
+    shoulder.level(130, 12).level(71, 9).level(131, 2).ramp(125, 72, 5).level(72, 3).ramp(72, 120, 4).level(120, 8);
+    const Profile::Named s = shoulder.name();
+    ASSERT_EQ(s.k, 1);
+    EXPECT_TRUE(s.band);
+
+    Profile ramp;
+    ramp.level(130, 12).level(71, 9).level(131, 2).ramp(125, 100, 10).level(160, 8);
+    const Profile::Named r = ramp.name();
+    ASSERT_GE(r.k, 0);
+    EXPECT_FALSE(r.band);
 }
