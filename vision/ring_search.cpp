@@ -215,12 +215,13 @@ RingSearch::MeanEdges RingSearch::meanProfileEdges()
         }
     }
     if (!e.found) return e;
-    // How far inside the contact edge it may be searched for before the original face's edge,
-    // where that steps the same way, is nearer: half way to it. Outside, the search takes
-    // the innermost clear step (innermostClearEdge), so the outline is not taken, and a
-    // tilted view needs the room: its contact edge is not concentric with the coarse rays,
+    // How far inside the contact edge it may be searched for before the original face's
+    // edge, where that steps the same way, is nearer: half way to it. Outside, the search
+    // takes the innermost clear step (innermostClearEdge), so the outline is not taken, and
+    // a tilted view needs the room: its contact edge is not concentric with the coarse rays,
     // and its smeared step shows several extrema. An edge whose flank spans the contact
     // edge is that step, not another one.
+    e.namedByZones = named >= 0;
     const double at = (e.rOuter - rA) / step;
     for (int k = 0; k < edges.count; ++k) {
         const ProfileEdge &o = edges.edge[k];
@@ -428,6 +429,11 @@ double RingSearch::centreOnContactEdge(const MeanEdges &me)
         const int lo = std::max(3, int((r - wIn - rA) / step));
         const int hi = std::min(count - 4, int((r + w - rA) / step) + 1);
         if (hi - lo < 4) break;
+        // Where the steps named the edge (the largest drop: a guess, which a highlight's
+        // flank merged into the outline can win), a stronger step inside it, within the
+        // whole window, is taken instead, as the step down from the flat face it names.
+        const int loWide = me.namedByZones ? lo : std::max(3, int((r - w - rA) / step));
+        const double at = (r - rA) / step;
         const int rays = coarseRows ? kFirstPassRays : kCentringRays;
         int found = 0;
         for (int k = 0; k < rays; ++k) {
@@ -445,14 +451,19 @@ double RingSearch::centreOnContactEdge(const MeanEdges &me)
             // The derivative over the window only (profileDerivative's kernel); a ray leaving
             // the frame there is not used (a vectorisable scan, then a branch-free loop).
             bool outside = false;
-            for (int j = lo - 3; j <= hi + 3; ++j) outside |= row[j] == kOutsideFrame;
+            for (int j = loWide - 3; j <= hi + 3; ++j) outside |= row[j] == kOutsideFrame;
             if (outside) {
                 valid[k] = false;
                 continue;
             }
-            for (int j = lo - 1; j <= hi + 1; ++j)
+            for (int j = loWide - 1; j <= hi + 1; ++j)
                 d[j] = int32_t(row[j + 2]) + 2 * int32_t(row[j + 1]) - 2 * int32_t(row[j - 1]) - int32_t(row[j - 2]);
-            const EdgePeak p = innermostClearEdge(d, count, lo, hi, me.signOuter);
+            EdgePeak p = innermostClearEdge(d, count, lo, hi, me.signOuter);
+            if (!me.namedByZones) {
+                const EdgePeak strongest = strongestEdge(d, count, loWide, hi, me.signOuter);
+                if (strongest.found && strongest.position.toDouble() < at - 1 && strongest.value > p.value)
+                    p = strongest;
+            }
             valid[k] = p.found;
             radius[k] = rA + p.position.toDouble() * step;
             if (p.found) peaks[found++] = p.value;

@@ -37,6 +37,7 @@ struct RingSearch {
         // (pixels; 0: none named): where a search for the contact edge must stop.
         double reachInPx = 0;
         bool found = false;
+        bool namedByZones = false; // else by the largest drop (the zones did not tell)
         // The zones named the contact edge where the profile cannot tell it from a band on
         // the barrel (profile_zones.h, opensBand): the reading must not be taken on trust.
         bool undecided = false;
