@@ -215,24 +215,19 @@ RingSearch::MeanEdges RingSearch::meanProfileEdges()
         }
     }
     if (!e.found) return e;
-    // How far the contact edge may be searched for on either side before another of the
-    // profile's edges of its sign is nearer: half way to it. Inside, the original face's
-    // edge where that steps the same way. Outside, where the zones named the edge, the
-    // outline where that steps the same way and stronger (a dark ring beside a lit fixture);
-    // where the steps named it (a drawing's barrel band), the innermost clear step is taken
-    // (innermostClearEdge) and a tilted view needs the room: its contact edge is not
-    // concentric with the coarse rays. An edge whose flank spans the contact edge is that
-    // step, not another one (a tilted view smears it over several extrema).
+    // How far inside the contact edge it may be searched for before the original face's
+    // edge, where that steps the same way, is nearer: half way to it. Outside, the search
+    // takes the innermost clear step (innermostClearEdge), so the outline is not taken, and
+    // a tilted view needs the room: its contact edge is not concentric with the coarse rays,
+    // and its smeared step shows several extrema. An edge whose flank spans the contact
+    // edge is that step, not another one.
     e.namedByZones = named >= 0;
     const double at = (e.rOuter - rA) / step;
     for (int k = 0; k < edges.count; ++k) {
         const ProfileEdge &o = edges.edge[k];
         if (o.sign != e.signOuter || (o.flankLo <= at && at <= o.flankHi)) continue;
         const double r = radiusOf(o.index);
-        if (r < e.rOuter - 1.5 * step)
-            e.reachInPx = 0.5 * (e.rOuter - r);
-        else if (e.namedByZones && r > e.rOuter + 1.5 * step && e.reachOutPx == 0)
-            e.reachOutPx = 0.5 * (r - e.rOuter);
+        if (r < e.rOuter - 1.5 * step) e.reachInPx = 0.5 * (e.rOuter - r);
     }
     // Silhouette: the outermost clear edge within a barrel's width outside the contact edge.
     const int so = int((e.rOuter + std::max(4.0, 0.03 * r0) - rA) / step);
@@ -415,11 +410,10 @@ double RingSearch::centreOnContactEdge(const MeanEdges &me)
     constexpr int kCentringRays = 32, kFirstPassRays = 16; // the first pass: every fourth coarse ray
     constexpr int kCoarseStride = kCoarseRays / kFirstPassRays;
     constexpr int kFineStride = kRays / kCentringRays;
-    // The window stops half way to the neighbouring edges of the contact edge's sign (see
-    // meanProfileEdges): a wider one would take them.
+    // The window stops half way to the original face's edge: where that steps the same way
+    // as the contact edge, a wider one would take it.
     const double w = 0.15 * r0;
     const double wIn = me.reachInPx > 0 ? std::min(w, std::max(4.0, me.reachInPx)) : w;
-    const double wOut = me.reachOutPx > 0 ? std::min(w, std::max(4.0, me.reachOutPx)) : w;
     int32_t d[kMaxCoarse], peaks[kCentringRays], sorted[kCentringRays];
     double radius[kCentringRays];
     bool valid[kCentringRays];
@@ -433,7 +427,7 @@ double RingSearch::centreOnContactEdge(const MeanEdges &me)
         const int count = coarseRows ? std::min(kMaxCoarse, int((kCoarseEnd * r0 - rA) / step))
                                      : std::min(kMaxFine, int(2 * w / step) + 7);
         const int lo = std::max(3, int((r - wIn - rA) / step));
-        const int hi = std::min(count - 4, int((r + wOut - rA) / step) + 1);
+        const int hi = std::min(count - 4, int((r + w - rA) / step) + 1);
         if (hi - lo < 4) break;
         // Where the steps named the edge (the largest drop: a guess, which a highlight's
         // flank merged into the outline can win), a stronger step inside it, within the

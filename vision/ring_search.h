@@ -33,9 +33,9 @@ struct RingSearch {
         int signOuter = -1;
         int32_t strengthOuter = 0; // in fine derivative units
         double rMax = 0;           // silhouette, 0 if not found
-        // Half the distance to the profile's next edge of its sign inside and outside the
-        // contact edge (pixels; 0: none): where a search for the contact edge must stop.
-        double reachInPx = 0, reachOutPx = 0;
+        // Half the distance to the profile's next edge of its sign inside the contact edge
+        // (pixels; 0: none named): where a search for the contact edge must stop.
+        double reachInPx = 0;
         bool found = false;
         bool namedByZones = false; // else by the largest drop (the zones did not tell)
         // The zones named the contact edge where the profile cannot tell it from a band on
