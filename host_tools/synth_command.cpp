@@ -14,6 +14,7 @@
 #include "host_tools/manifest.h"
 #include "host_tools/model_inverse.h"
 #include "host_tools/number_text.h"
+#include "host_tools/photo/photo_command.h"
 #include "host_tools/synth_conditions.h"
 #include "host_tools/synth_loop_set.h"
 
@@ -29,6 +30,7 @@ std::string usage()
 {
     return "usage: icacam synth --out DIR [--count N] [--seed S] [--hard]\n"
            "       icacam synth --out DIR --condition all|NAME[,NAME...] [--count N] [--seed S] [--hard]\n"
+           "       icacam synth --renderer povray --out DIR ... (photographs: icacam synth --renderer povray --help)\n"
            "       icacam synth --out DIR --effect "
            "process|optical|camera|material|speed|drift|speed_material|null[,...]\n"
            "                    [--radii] [--count N] [--seed S]\n"
@@ -51,6 +53,8 @@ std::string usage()
 
 int synthCommand(const std::vector<std::string> &args)
 {
+    // The photographic bench renders with POV-Ray and has options of its own.
+    if (photo::wantsPovray(args)) return photo::photoSynthCommand(args);
     std::string outDir, effect, conditions;
     double count = kDefaultCount, seed = 1;
     bool hard = false, radii = false;

@@ -44,6 +44,14 @@ struct BoundaryFit {
 enum ImageFlag : uint32_t {
     kImageSpecimenClipped = 1u << 0, // the specimen runs off the frame
     kImageNarrowRingFit = 1u << 1,   // the ring was measured by the narrow-ring profile fit
+    // Just outside the silhouette the fixture shows a second step of its sign, as strong
+    // (the ring light's shadow round the foot): rMaxPx may be either edge, and a scale or
+    // reduction inferred from it is not to be trusted.
+    kImageOutlineAmbiguous = 1u << 2,
+    // The mean profile does not decide which edge ends the flat face: the contact edge
+    // taken opens a band that may as well lie on the barrel beyond an unseen original face
+    // (profile_zones.h). R_i and R_o may both be one edge out.
+    kImageContactEdgeUndecided = 1u << 3,
 };
 
 // Where the pipeline looks: the specimen's initial diameter and the scale at the end face

@@ -8,6 +8,7 @@
 #include "vision/boundary_fit.h"
 #include "vision/edge_profile.h"
 #include "vision/narrow_ring.h"
+#include "vision/profile_zones.h"
 #include "vision/radial_profile.h"
 #include "vision/ray_capacity.h"
 
@@ -89,6 +90,39 @@ void boxStep(const int32_t *t, int count, int w, bool allInside, int16_t *d)
     }
 }
 
+// The noise of profileDerivative on a mean profile, from its second differences: a
+// photograph's profile slopes over long stretches (the fixture's shadow, vignetting, a lit
+// barrel), which the derivative's own spread would count as noise; the second difference
+// sees only what changes from sample to sample. σ(s[j+1] − 2 s[j] + s[j−1]) = √6 σ, and the
+// derivative's weights (1, 2, 2, 1) give √10 σ.
+double derivativeNoise(const uint16_t *s, int count)
+{
+    int32_t tmp[kMaxCoarse];
+    int n = 0;
+    for (int j = 1; j + 1 < count; ++j)
+        if (s[j - 1] != kOutsideFrame && s[j] != kOutsideFrame && s[j + 1] != kOutsideFrame)
+            tmp[n++] = std::abs(int32_t(s[j + 1]) - 2 * int32_t(s[j]) + int32_t(s[j - 1]));
+    if (n == 0) return 0;
+    std::nth_element(tmp, tmp + n / 2, tmp + n);
+    return 1.4826 * tmp[n / 2] * std::sqrt(10.0 / 6.0);
+}
+
+// The innermost peak of sign·d in [lo, hi] at least half as strong as the strongest: the
+// flat face ends at the contact edge, and where the barrel's outline steps the same way
+// beyond it (a tilted view shows the barrel wide on the side facing the camera), the
+// contact edge is the first of the two.
+EdgePeak innermostClearEdge(const int32_t *d, int count, int lo, int hi, int sign)
+{
+    const EdgePeak strongest = strongestEdge(d, count, lo, hi, sign);
+    if (!strongest.found) return strongest;
+    for (int i = std::max(lo, 1); i <= std::min(hi, count - 2); ++i) {
+        const int32_t v = sign * d[i], vm = sign * d[i - 1], vp = sign * d[i + 1];
+        if (2 * v >= strongest.value && v >= vm && v >= vp)
+            return {Q16_16::fromInt(i) + parabolaVertex(vm, v, vp), v, true};
+    }
+    return strongest;
+}
+
 bool isExtremum(const int32_t *d, int i)
 {
     const int32_t a = std::abs(d[i]);
@@ -116,8 +150,11 @@ RingSearch::MeanEdges RingSearch::meanProfileEdges()
         meanProfile[j] = mean[j];
     }
     profileDerivative(mean, count, meanDeriv);
-    const double noise = robustSigma(meanDeriv, 2, count - 3);
-    const double minStrength = std::max<double>(kMinCoarseStrength, 6 * noise);
+    // Steps are taken out of the profile's noise (its second differences); the silhouette
+    // must also stand out of the derivative's own spread, which a photograph's long slopes
+    // (the fixture's shadow, a lit barrel) inflate.
+    const double minStrength = std::max<double>(kMinCoarseStrength, 6 * robustSigma(meanDeriv, 2, count - 3));
+    const double minStep = std::max<double>(kMinCoarseStrength, 6 * derivativeNoise(mean, count));
     auto radiusOf = [&](int i) {
         const Q16_16 off =
             parabolaVertex(std::abs(meanDeriv[i - 1]), std::abs(meanDeriv[i]), std::abs(meanDeriv[i + 1]));
@@ -140,7 +177,22 @@ RingSearch::MeanEdges RingSearch::meanProfileEdges()
     MeanEdges e;
     const int lo = std::max(2, int((0.9 * r0 - rA) / step));
     const int hi = std::min(count - 3, int((1.75 * r0 - rA) / step));
-    // The contact edge is where the flat, bright end face gives way to the steep barrel,
+    const ProfileEdges edges = findProfileEdges(mean, meanDeriv, count, lo, hi, int32_t(minStep));
+    // The zones beyond each edge name the contact edge (profile_zones.h); the window judged
+    // beyond an edge is about the narrowest ring the coarse step still resolves.
+    const int window = std::max(3, int(0.05 * r0 / step));
+    const int named = contactEdgeByZones(mean, count, edges, window);
+    if (named >= 0) {
+        const ProfileEdge &c = edges.edge[named];
+        e.found = true;
+        e.rOuter = radiusOf(c.index);
+        e.signOuter = c.sign;
+        e.strengthOuter = c.strength / 16; // coarse → fine units
+        e.undecided = named == 1 && zoneBeyond(mean, count, edges, 1, window) == ZoneKind::Short &&
+                      opensBand(mean, count, edges, 1);
+    }
+    // Where the zones do not tell (three levels in a row, as a drawing paints the barrel),
+    // the contact edge is where the flat, bright end face gives way to the steep barrel,
     // dark under a ring light: the falling edge with the largest drop between the bands on
     // either side (a highlight's flank or the face/ICA edge drops less). If nothing falls
     // (an unusual light), the rising edge with the largest rise.
@@ -148,7 +200,7 @@ RingSearch::MeanEdges RingSearch::meanProfileEdges()
         int32_t strongest = 0;
         for (int i = lo; i <= hi; ++i)
             if (isExtremum(meanDeriv, i) && sign * meanDeriv[i] > strongest) strongest = sign * meanDeriv[i];
-        if (strongest < minStrength) continue;
+        if (strongest < minStep) continue;
         double bestDrop = 0;
         for (int i = lo; i <= hi; ++i) {
             if (!isExtremum(meanDeriv, i) || sign * meanDeriv[i] < 0.3 * strongest) continue;
@@ -163,6 +215,20 @@ RingSearch::MeanEdges RingSearch::meanProfileEdges()
         }
     }
     if (!e.found) return e;
+    // How far inside the contact edge it may be searched for before the original face's
+    // edge, where that steps the same way, is nearer: half way to it. Outside, the search
+    // takes the innermost clear step (innermostClearEdge), so the outline is not taken, and
+    // a tilted view needs the room: its contact edge is not concentric with the coarse rays,
+    // and its smeared step shows several extrema. An edge whose flank spans the contact
+    // edge is that step, not another one.
+    e.namedByZones = named >= 0;
+    const double at = (e.rOuter - rA) / step;
+    for (int k = 0; k < edges.count; ++k) {
+        const ProfileEdge &o = edges.edge[k];
+        if (o.sign != e.signOuter || (o.flankLo <= at && at <= o.flankHi)) continue;
+        const double r = radiusOf(o.index);
+        if (r < e.rOuter - 1.5 * step) e.reachInPx = 0.5 * (e.rOuter - r);
+    }
     // Silhouette: the outermost clear edge within a barrel's width outside the contact edge.
     const int so = int((e.rOuter + std::max(4.0, 0.03 * r0) - rA) / step);
     const int eo = std::min(count - 3, int((e.rOuter + 0.5 * r0 - rA) / step));
@@ -173,6 +239,31 @@ RingSearch::MeanEdges RingSearch::meanProfileEdges()
             break;
         }
     return e;
+}
+
+bool RingSearch::outlineRivalled(double rMaxPx) const
+{
+    // The fixture's shadow around the foot is a second step of the outline's sign outside
+    // it (lit fixture beyond a dark shadow beyond a dark barrel): where the mean profile
+    // shows one at least half as strong within a third of R0, the step taken for the
+    // outline could be either. The outline's own step is the strongest within the
+    // derivative's reach of it (which may be a highlight's flank just inside); a rival lies
+    // beyond that reach of the outline itself, so that the outline's own step is not one.
+    const double rA = kCoarseStart * r0, step = coarseStep(r0);
+    const int count = std::min(kMaxCoarse, int((kCoarseEnd * r0 - rA) / step));
+    const int at = int((rMaxPx - rA) / step + 0.5);
+    if (at < 2 || at > count - 3) return false;
+    int k = at;
+    for (int j = std::max(2, at - 2); j <= std::min(count - 3, at + 2); ++j)
+        if (std::abs(meanDeriv[j]) > std::abs(meanDeriv[k])) k = j;
+    const int32_t outline = meanDeriv[k];
+    if (outline == 0) return false;
+    const int end = std::min(count - 3, int((rMaxPx + r0 / 3 - rA) / step));
+    for (int j = std::max(k, at) + 3; j <= end; ++j)
+        if (isExtremum(meanDeriv, j) && (meanDeriv[j] > 0) == (outline > 0) &&
+            2 * std::abs(meanDeriv[j]) >= std::abs(outline))
+            return true;
+    return false;
 }
 
 void RingSearch::sampleWindow(const double *start, double step, int count, int boxHalf, EndFaceGeometry *m)
@@ -319,7 +410,10 @@ double RingSearch::centreOnContactEdge(const MeanEdges &me)
     constexpr int kCentringRays = 32, kFirstPassRays = 16; // the first pass: every fourth coarse ray
     constexpr int kCoarseStride = kCoarseRays / kFirstPassRays;
     constexpr int kFineStride = kRays / kCentringRays;
+    // The window stops half way to the original face's edge: where that steps the same way
+    // as the contact edge, a wider one would take it.
     const double w = 0.15 * r0;
+    const double wIn = me.reachInPx > 0 ? std::min(w, std::max(4.0, me.reachInPx)) : w;
     int32_t d[kMaxCoarse], peaks[kCentringRays], sorted[kCentringRays];
     double radius[kCentringRays];
     bool valid[kCentringRays];
@@ -332,9 +426,14 @@ double RingSearch::centreOnContactEdge(const MeanEdges &me)
         const double step = coarseRows ? coarseStep(r0) : 2.0;
         const int count = coarseRows ? std::min(kMaxCoarse, int((kCoarseEnd * r0 - rA) / step))
                                      : std::min(kMaxFine, int(2 * w / step) + 7);
-        const int lo = std::max(3, int((r - w - rA) / step));
+        const int lo = std::max(3, int((r - wIn - rA) / step));
         const int hi = std::min(count - 4, int((r + w - rA) / step) + 1);
         if (hi - lo < 4) break;
+        // Where the steps named the edge (the largest drop: a guess, which a highlight's
+        // flank merged into the outline can win), a stronger step inside it, within the
+        // whole window, is taken instead, as the step down from the flat face it names.
+        const int loWide = me.namedByZones ? lo : std::max(3, int((r - w - rA) / step));
+        const double at = (r - rA) / step;
         const int rays = coarseRows ? kFirstPassRays : kCentringRays;
         int found = 0;
         for (int k = 0; k < rays; ++k) {
@@ -352,14 +451,19 @@ double RingSearch::centreOnContactEdge(const MeanEdges &me)
             // The derivative over the window only (profileDerivative's kernel); a ray leaving
             // the frame there is not used (a vectorisable scan, then a branch-free loop).
             bool outside = false;
-            for (int j = lo - 3; j <= hi + 3; ++j) outside |= row[j] == kOutsideFrame;
+            for (int j = loWide - 3; j <= hi + 3; ++j) outside |= row[j] == kOutsideFrame;
             if (outside) {
                 valid[k] = false;
                 continue;
             }
-            for (int j = lo - 1; j <= hi + 1; ++j)
+            for (int j = loWide - 1; j <= hi + 1; ++j)
                 d[j] = int32_t(row[j + 2]) + 2 * int32_t(row[j + 1]) - 2 * int32_t(row[j - 1]) - int32_t(row[j - 2]);
-            const EdgePeak p = strongestEdge(d, count, lo, hi, me.signOuter);
+            EdgePeak p = innermostClearEdge(d, count, lo, hi, me.signOuter);
+            if (!me.namedByZones) {
+                const EdgePeak strongest = strongestEdge(d, count, loWide, hi, me.signOuter);
+                if (strongest.found && strongest.position.toDouble() < at - 1 && strongest.value > p.value)
+                    p = strongest;
+            }
             valid[k] = p.found;
             radius[k] = rA + p.position.toDouble() * step;
             if (p.found) peaks[found++] = p.value;
@@ -771,6 +875,8 @@ ErrorCode RingSearch::run(EndFaceGeometry *m)
     bool lopsided = false;
     const double perRay = silhouetteFromRays(outerR, &m->silhouetteCoverage, &m->silhouetteScatterPx, &lopsided);
     m->rMaxPx = perRay > 0 ? perRay : lopsided ? 0 : me.rMax;
+    if (m->rMaxPx > 0 && outlineRivalled(m->rMaxPx)) m->imageFlags |= kImageOutlineAmbiguous;
+    if (me.undecided) m->imageFlags |= kImageContactEdgeUndecided;
     m->innerPoints = innerPts;
     m->outerPoints = outerPts;
     m->rayCount = kRays;

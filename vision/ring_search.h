@@ -33,7 +33,14 @@ struct RingSearch {
         int signOuter = -1;
         int32_t strengthOuter = 0; // in fine derivative units
         double rMax = 0;           // silhouette, 0 if not found
+        // Half the distance to the profile's next edge of its sign inside the contact edge
+        // (pixels; 0: none named): where a search for the contact edge must stop.
+        double reachInPx = 0;
         bool found = false;
+        bool namedByZones = false; // else by the largest drop (the zones did not tell)
+        // The zones named the contact edge where the profile cannot tell it from a band on
+        // the barrel (profile_zones.h, opensBand): the reading must not be taken on trust.
+        bool undecided = false;
     };
     MeanEdges meanProfileEdges();
     // Moves (cx, cy) to the contact edge's own centre and returns its mean radius there
@@ -81,6 +88,9 @@ struct RingSearch {
     // detector w samples a side, located by one a quarter as wide (*atSample: its sample
     // position, sub-sample); false when no step stands out of the ray's noise.
     bool silhouetteOnRay(const uint16_t *row, int lo, int hi, int w, double *atSample) const;
+    // Whether the mean profile shows a second step of the outline's sign, as strong, just
+    // outside it (the fixture's shadow edge): then the outline cannot be told from it.
+    bool outlineRivalled(double rMaxPx) const;
     // Whether the barrel band outside the contact edge (radius − the contact edge, per coarse
     // ray) swings by more than half its mean width around the ring: an oblique view.
     bool barrelBandLopsided(const double *radius, const bool *valid, const double *outerR) const;

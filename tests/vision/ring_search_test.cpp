@@ -30,6 +30,7 @@ struct Search {
     std::vector<EdgeSample> innerPts = std::vector<EdgeSample>(kFineRays);
     std::vector<EdgeSample> outerPts = std::vector<EdgeSample>(kFineRays);
     EndFaceGeometry m;
+    RingSearch search{}; // the last run's, with its mean profile in meanDeriv
 
     ErrorCode run(const LumaView &v, double r0, double cx, double cy)
     {
@@ -42,19 +43,19 @@ struct Search {
             rayDirection(i, kCoarseRays, &ray.cosT, &ray.sinT);
             sampleRay(v, ray, count, coarse.data() + size_t(i) * kMaxCoarseSamples);
         }
-        RingSearch s{&v,
-                     r0,
-                     cx,
-                     cy,
-                     coarse.data(),
-                     fine.data(),
-                     deriv.data(),
-                     meanProfile.data(),
-                     meanDeriv.data(),
-                     innerPts.data(),
-                     outerPts.data()};
+        search = RingSearch{&v,
+                            r0,
+                            cx,
+                            cy,
+                            coarse.data(),
+                            fine.data(),
+                            deriv.data(),
+                            meanProfile.data(),
+                            meanDeriv.data(),
+                            innerPts.data(),
+                            outerPts.data()};
         m = EndFaceGeometry{};
-        return s.run(&m);
+        return search.run(&m);
     }
 };
 
@@ -125,6 +126,29 @@ TEST(RingSearch, TheSilhouetteIsTheOutlineNotAHighlightInsideIt)
     ASSERT_EQ(s.run(face.view(px), face.r0, face.cx, face.cy), ErrorCode::None);
     EXPECT_NEAR(s.m.rMaxPx, face.rMax, 0.5);
     EXPECT_GT(s.m.silhouetteCoverage, 0.9);
+}
+
+// A highlight band just inside the outline (the development set's devset-001: peak 14 px
+// in, a 46 → 35 outline): the outline's own step is not a second step beyond it, also where
+// the outline is placed a little inside its step (the per-ray detector, pulled by the
+// highlight's flank, leaves it 2–3 px in there), and the search does not flag the outline
+// as one it cannot tell from another.
+TEST(RingSearch, TheOutlinesOwnStepIsNotItsRival)
+{
+    test::SyntheticEndFace face;
+    face.width = face.height = 1200;
+    face.cx = 600.3, face.cy = 590.6;
+    face.scaleTo(378);
+    face.face = 150, face.ica = 172, face.barrel = 46, face.background = 35;
+    face.highlight = 26, face.highlightGap = 14, face.highlightSigma = 3.4;
+    face.blurSigma = 1.6;
+    const auto px = face.draw();
+    Search s;
+    ASSERT_EQ(s.run(face.view(px), face.r0, face.cx, face.cy), ErrorCode::None);
+    EXPECT_NEAR(s.m.rMaxPx, face.rMax, 0.01 * face.rMax);
+    EXPECT_EQ(s.m.imageFlags & kImageOutlineAmbiguous, 0u);
+    for (const double inside : {1.0, 2.0, 3.0})
+        EXPECT_FALSE(s.search.outlineRivalled(face.rMax - inside)) << inside << " px inside";
 }
 
 TEST(RingSearch, AnOffCentreStartIsAbsorbedByTheFit)

