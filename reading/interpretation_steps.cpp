@@ -247,6 +247,7 @@ uint32_t imageChecks(const EndFaceGeometry &g, const PlaneMapping &p, const Edge
     uint32_t f = 0;
     if (g.imageFlags & vision::kImageSpecimenClipped) f |= kFlagSpecimenClipped;
     if (g.imageFlags & vision::kImageNarrowRingFit) f |= kFlagNarrowRing;
+    if (g.imageFlags & vision::kImageContactEdgeUndecided) f |= kFlagContactEdgeUndecided;
     const double r0Px = 0.5 * d0Mm / p.mmPerPx;
     if (std::min(g.inner.coverage, g.outer.coverage) < 0.6) f |= kFlagLowCoverage;
     if (std::max(g.inner.scatterPx, g.outer.scatterPx) > std::max(1.5, 0.006 * r0Px)) f |= kFlagHighScatter;

@@ -34,7 +34,8 @@ const char *flagName(int bit)
                                                    "radii_inconsistent",
                                                    "aspect_outside_model",
                                                    "silhouette_unreliable",
-                                                   "reduction_not_nominal"};
+                                                   "reduction_not_nominal",
+                                                   "contact_edge_undecided"};
     return bit >= 0 && bit < kFlagCount ? kNames[bit] : "unknown";
 }
 

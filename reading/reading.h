@@ -40,8 +40,12 @@ enum ReadingFlag : uint32_t {
     // No final height given, and the silhouette says the specimen was pressed to another
     // height than the test's nominal half by enough to move μ beyond the tolerance.
     kFlagReductionNotNominal = 1u << 20,
+    // The profile across the ring does not tell which edge ends the flat face: the contact
+    // edge taken opens a band that may as well be a highlight on the barrel (vision's
+    // kImageContactEdgeUndecided); R_i and R_o may both be one edge out.
+    kFlagContactEdgeUndecided = 1u << 21,
 };
-constexpr int kFlagCount = 21;
+constexpr int kFlagCount = 22;
 const char *flagName(int bit);
 
 // The expanded uncertainty U = k·σ_μ against the lab's tolerance on μ (a decision rule in the
