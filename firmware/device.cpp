@@ -116,13 +116,11 @@ hal::Error Device::start()
     std::vector<std::string> recipeProblems;
     if (hal::Error e = recipes_.start(configured, &cfg_, wallTime(), &recipeProblems); !e.ok())
         return hal::Error::make(e.code, "audit trail: " + e.message);
-    if (hal_.recipeCamera)
-        if (hal::Error e = hal_.recipeCamera->setStartControls(cfg_); !e.ok())
-            recipeProblems.push_back("camera: the recipe's controls: " + e.message);
+    // The recipe's controls and a camera delay saved over serial, which the camera was not
+    // made with (it keeps them across reconfigures from then on).
+    if (std::string e = moveCamera(configured, cfg_); !e.empty())
+        recipeProblems.push_back("the recipe's controls: " + e);
     publishRecipe();
-    // A lens position or camera delay saved over serial, which the camera was not built with
-    // (it keeps them across reconfigures from then on).
-    if (cfg_.lensPosition != configured.lensPosition) applyLens();
     if (cfg_.stampDelayUs != configured.stampDelayUs) applyStampDelay();
     if (!cal_.present && !(cfg_.mmPerPx > 0))
         return hal::Error::make(hal::Errc::Invalid, "no scale: calibration.mm_per_px or calibration.file is required");
@@ -392,8 +390,6 @@ bool Device::applySetting(const Command &c, reading::JsonBuilder &j)
     if (err.empty() && liveKeyName(c.key) == "calibration_file") err = setCalibrationFile(&trial);
     if (err.empty() && liveKeyName(c.key) == "stamp_delay_us" && trial.stampDelayUs >= 0)
         if (hal::Error e = hal_.camera.setStampDelayUs(trial.stampDelayUs); !e.ok()) err = e.message;
-    if (err.empty() && liveKeyName(c.key) == "lens_position" && trial.lensPosition >= 0)
-        if (hal::Error e = hal_.camera.setLensPosition(trial.lensPosition); !e.ok()) err = e.message;
     if (!err.empty()) {
         sendError("bad_argument", err, c.tag);
         return false;
