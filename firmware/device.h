@@ -101,6 +101,11 @@ private:
     std::string wallTime() const; // UTC, ISO 8601
     void journaled(long id);
     void handleLine(std::string_view line);
+    // device_status.cpp: the greeting at start; `status`'s fields into j.
+    void sayHello(const JournalRecovery &rec);
+    void appendStatus(reading::JsonBuilder &j);
+    // device_settings.cpp: settings.conf over the config at start; "" or what was wrong.
+    std::string restoreSettings();
     void handleCommand(const Command &c);
     // `set KEY VALUE`: tried on a copy of the config, kept and saved when valid, the new
     // value into j; false when refused (the error already sent).
