@@ -48,7 +48,8 @@ struct DeviceHal {
     // their changes are reported and retried. nullptr: the parts are the backends themselves.
     Parts *parts = nullptr;
     // The camera seen as the recipe sets it (firmware/recipe_camera.h): the same camera as
-    // above, made again when a recipe changes its start controls. nullptr: those are fixed.
+    // above, made again when a recipe changes what it takes only when it starts (white
+    // balance temperature). nullptr: those are fixed, the rest set on the running camera.
     RecipeCamera *recipeCamera = nullptr;
 };
 
@@ -92,11 +93,19 @@ private:
     void liveControls(const RecipeDesk::Request &r);
     // Aim's live controls back to the recipe's.
     void endLiveControls();
+    // The camera from the controls of `from` to those of `to` (RecipeCamera::follow, or the
+    // changed ones set on a camera that is not one): "" or why not, the camera as it was.
+    std::string moveCamera(const Config &from, const Config &to);
     void publishRecipe();
     void appendRecipe(reading::JsonBuilder &j) const;
     std::string wallTime() const; // UTC, ISO 8601
     void journaled(long id);
     void handleLine(std::string_view line);
+    // device_status.cpp: the greeting at start; `status`'s fields into j.
+    void sayHello(const JournalRecovery &rec);
+    void appendStatus(reading::JsonBuilder &j);
+    // device_settings.cpp: settings.conf over the config at start; "" or what was wrong.
+    std::string restoreSettings();
     void handleCommand(const Command &c);
     // `set KEY VALUE`: tried on a copy of the config, kept and saved when valid, the new
     // value into j; false when refused (the error already sent).
@@ -137,7 +146,6 @@ private:
     // lens_position and held again after a restart (the camera keeps it across reconfigures).
     void setLens(const Command &c);
     void focus(const Command &c);
-    void applyLens();
     // `measure-latency` (device_latency.cpp): the ring stepped on under a running camera, the
     // first frame lit top to bottom found, and from its stamp the most the camera's timestamps
     // lag an exposure; saved as stamp_delay_us and used from then on.

@@ -30,10 +30,12 @@ LitFrameOptions Device::litOptions(int width, int height) const
     // the middle half, or the frame's full height.
     //
     // Judged against the LED-off frame alone, band by band (16 bands): a band the ring adds
-    // less than led.min_rise to is not lit. The top-to-bottom ratio test is off: a real end
-    // face's reflectance differs top to bottom more than that test allows (the devset's
-    // photographs). What it cannot see: a dark sliver thinner than a band, and rows above or
-    // below the region.
+    // less than led.min_rise to is not lit; the first and last bands' thin strips against
+    // their band (lit_frame.h), so a dark sliver of a few rows at the top or bottom is seen.
+    // The top-to-bottom ratio test is off: a real end face's reflectance differs top to
+    // bottom more than that test allows (the devset's photographs). What it cannot see: a
+    // sliver thinner than a strip (1/128 of the region's height, at least a row), a sliver
+    // the room light does not reach, and rows above or below the region.
     o.bands = 16;
     o.partialRatio = 0;
     const double facePx = cfg_.mmPerPx > 0 ? cfg_.d0Mm / cfg_.mmPerPx : 0;

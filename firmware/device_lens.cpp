@@ -13,13 +13,6 @@ namespace {
 constexpr int kFocusTimeoutMs = 5000; // a CM3 sweep takes about a second; a webcam's, a few
 } // namespace
 
-void Device::applyLens()
-{
-    if (cfg_.lensPosition < 0 || !cameraHealth_.ok()) return;
-    if (hal::Error e = hal_.camera.setLensPosition(cfg_.lensPosition); !e.ok())
-        sendError("lens_failed", "lens_position " + std::to_string(cfg_.lensPosition) + ": " + e.message, "");
-}
-
 void Device::sendLens(const char *by, const std::string &tag)
 {
     out_.clear();

@@ -1,7 +1,8 @@
 // Recipes on the device: every change of a recipe key (a web save, `set` over serial, `lens`,
 // `focus`) is a new version with its audit entry, written before the change takes effect;
 // every record names the version in effect. Aim mode's live controls move the camera
-// without a version, and go back to the recipe's when aim mode ends.
+// without a version, and go back to the recipe's when aim mode ends. The camera follows
+// either on the run (firmware/recipe_camera.h), between measurements.
 #include <cstdio>
 #include <ctime>
 
@@ -42,23 +43,26 @@ std::string Device::applyRecipe(const Config &trial, std::string_view id, std::s
     }
     // The camera as the version in effect, while aim's live controls are not.
     const Config &running = liveOn_ ? live_ : cfg_;
-    const bool remake = cameraStartControlsDiffer(trial, running);
-    if (remake && !hal_.recipeCamera) return "this camera takes exposure, gains and white balance only when it starts";
-    if (remake)
-        if (hal::Error e = hal_.recipeCamera->setStartControls(trial); !e.ok()) return "camera: " + e.message;
-    const bool moveLens = trial.lensPosition >= 0 && trial.lensPosition != running.lensPosition;
-    hal::Error lens = moveLens ? hal_.camera.setLensPosition(trial.lensPosition) : hal::Error{};
-    hal::Error saved = lens.ok() ? recipes_.record(trial, id, who, why, wallTime()) : hal::Error{};
-    if (!lens.ok() || !saved.ok()) { // the camera back as it was
-        if (remake) (void)hal_.recipeCamera->setStartControls(running);
-        if (moveLens && running.lensPosition >= 0) (void)hal_.camera.setLensPosition(running.lensPosition);
-        return !lens.ok() ? lens.message : saved.message;
+    if (std::string e = moveCamera(running, trial); !e.empty()) return e;
+    if (hal::Error saved = recipes_.record(trial, id, who, why, wallTime()); !saved.ok()) {
+        (void)moveCamera(trial, running); // the camera back as it was
+        return saved.message;
     }
     cfg_ = trial;
     liveOn_ = false;
     persistSettings();
     publishRecipe();
     return "";
+}
+
+std::string Device::moveCamera(const Config &from, const Config &to)
+{
+    if (hal_.recipeCamera) return hal_.recipeCamera->follow(from, to).message;
+    if (RecipeCamera::needsRemake(from, to))
+        return "this camera takes its white balance and automatic controls only when it starts";
+    const hal::CameraControls change = changedControls(cameraControlsOf(from), cameraControlsOf(to));
+    if (!hal::anyControlSet(change)) return "";
+    return hal_.camera.setControls(change).error.message;
 }
 
 void Device::pollRecipeDesk()
@@ -107,15 +111,7 @@ void Device::liveControls(const RecipeDesk::Request &r)
         if (!line.empty() && line.substr(0, 7) != "camera.") err = "live controls are the camera's keys only";
     }
     if (err.empty()) err = applyRecipeText(r.text, &trial);
-    const Config &running = liveOn_ ? live_ : cfg_;
-    if (err.empty() && cameraStartControlsDiffer(trial, running)) {
-        if (!hal_.recipeCamera)
-            err = "this camera takes exposure, gains and white balance only when it starts";
-        else if (hal::Error e = hal_.recipeCamera->setStartControls(trial); !e.ok())
-            err = "camera: " + e.message;
-    }
-    if (err.empty() && trial.lensPosition >= 0 && trial.lensPosition != running.lensPosition)
-        if (hal::Error e = hal_.camera.setLensPosition(trial.lensPosition); !e.ok()) err = "lens: " + e.message;
+    if (err.empty()) err = moveCamera(liveOn_ ? live_ : cfg_, trial);
     if (!err.empty()) {
         sendError("recipe_refused", err, r.tag);
         return;
@@ -135,12 +131,8 @@ void Device::endLiveControls()
 {
     if (!liveOn_) return;
     liveOn_ = false;
-    if (hal_.recipeCamera)
-        if (hal::Error e = hal_.recipeCamera->setStartControls(cfg_); !e.ok())
-            sendError("camera", "back to the recipe's controls: " + e.message, "");
-    if (cfg_.lensPosition >= 0 && cfg_.lensPosition != live_.lensPosition)
-        if (hal::Error e = hal_.camera.setLensPosition(cfg_.lensPosition); !e.ok())
-            sendError("lens_failed", "back to the recipe's lens position: " + e.message, "");
+    if (std::string e = moveCamera(live_, cfg_); !e.empty())
+        sendError("camera", "back to the recipe's controls: " + e, "");
     publishRecipe();
 }
 

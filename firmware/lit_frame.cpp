@@ -1,5 +1,6 @@
 #include "firmware/lit_frame.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace icacam::fw {
@@ -10,7 +11,7 @@ bool optionsValid(const LitFrameOptions &o)
 {
     return o.bands >= 2 && o.bands <= LitFrameCheck::kMaxBands && o.minRiseLevels >= 1 && o.darkFraction >= 0 &&
            o.darkFraction < o.litFraction && o.litFraction <= 1.5 && o.partialRatio >= 0 && o.partialRatio < 1 &&
-           o.maxSamples >= o.bands;
+           o.maxSamples >= o.bands && o.edgeStrips >= 0 && o.edgeStrips <= LitFrameCheck::kMaxEdgeStrips;
 }
 
 const char *partlyReason(bool litAtTop)
@@ -62,6 +63,20 @@ bool LitFrameCheck::measure(const LumaPlane &p, Bands *out) const
         }
         out->mean[b] = count ? float(double(sum) / double(count)) : 0.f;
     }
+    // The end bands' strips: every row of them, on the grid's columns.
+    const int bandRows = h / o.bands;
+    const int stripRows = o.edgeStrips > 0 ? std::max(1, bandRows / o.edgeStrips) : 0;
+    for (int end = 0; end < 2; ++end)
+        for (int k = 0; k < o.edgeStrips; ++k) {
+            const int first = end == 0 ? y0 + k * stripRows : y0 + h - (k + 1) * stripRows;
+            uint64_t sum = 0, count = 0;
+            for (int y = first; y < first + stripRows; ++y) {
+                const uint8_t *row = p.data + size_t(y) * size_t(p.stride) + size_t(x0) * size_t(p.pixelStep);
+                for (int x = 0; x < w; x += step) sum += row[size_t(x) * size_t(p.pixelStep)];
+                count += uint64_t((w + step - 1) / step);
+            }
+            out->edge[end][k] = count ? float(double(sum) / double(count)) : 0.f;
+        }
     out->width = p.width;
     out->height = p.height;
     return true;
@@ -131,6 +146,7 @@ LitCheckResult LitFrameCheck::check(const LumaPlane &frame) const
             if (lit == informative) {
                 r.verdict = LitVerdict::Lit;
                 r.reason = "lit top to bottom";
+                checkEdges(f, &r);
             } else if (dark == informative) {
                 r.verdict = LitVerdict::NotLit;
                 r.reason = "not lit: the LED ring is off or does not reach the specimen";
@@ -162,8 +178,35 @@ LitCheckResult LitFrameCheck::check(const LumaPlane &frame) const
     } else {
         r.verdict = LitVerdict::Lit;
         r.reason = "lit top to bottom";
+        checkEdges(f, &r);
     }
     return r;
+}
+
+void LitFrameCheck::checkEdges(const Bands &f, LitCheckResult *r) const
+{
+    const LitFrameOptions &o = options_;
+    const bool withLit = hasLit_ && lit_.width == f.width && lit_.height == f.height;
+    const float minRise = float(o.minRiseLevels), minOff = minRise / 2;
+    for (int end = 0; end < 2; ++end) {
+        const int band = end == 0 ? 0 : o.bands - 1;
+        const float bandOff = dark_.mean[band];
+        const float bandRatio = bandOff >= minOff ? (f.mean[band] - bandOff) / bandOff : 0;
+        for (int k = 0; k < o.edgeStrips; ++k) {
+            const float off = dark_.edge[end][k], rise = f.edge[end][k] - off;
+            bool dark = false;
+            if (withLit && lit_.edge[end][k] - off >= minRise)
+                dark = rise < float(o.litFraction) * (lit_.edge[end][k] - off);
+            else if (!withLit && off >= minOff && bandRatio > 0)
+                dark = rise / off < float(o.litFraction) * bandRatio;
+            r->darkStrips += dark ? 1 : 0;
+            if (dark && r->verdict == LitVerdict::Lit) {
+                r->verdict = LitVerdict::PartlyLit;
+                r->litAtTop = end == 1;
+                r->reason = partlyReason(r->litAtTop);
+            }
+        }
+    }
 }
 
 } // namespace icacam::fw

@@ -18,6 +18,15 @@
 //    more. All bands lit but the top and bottom rises more than 1 / `partialRatio` apart is
 //    also taken as partly lit (the rows at one end got part of the exposure); a scene whose
 //    top and bottom differ that much in reflectance needs the LED-on reference.
+// A frame lit but for a few rows at its top or bottom passes the bands (a band is lit while
+// the LED adds minRiseLevels to its mean), so the first and the last band are also cut into
+// `edgeStrips` thin strips each (down to one row), each judged against its own band: with
+// the LED-on reference, a strip with less than litFraction of the LED's light is dark; with
+// the LED-off reference alone, by its rise over its luma without the ring, which the
+// scene's reflectance cancels out of as long as the room light reaches it: a strip whose
+// ratio is below litFraction of its band's is dark. A strip the room light hardly reaches
+// (LED-off luma under minRiseLevels / 2) says nothing. A sliver thinner than a strip, or
+// with no room light and no LED-on reference, is not seen.
 //
 // Use (the integrator's call points): configure with the specimen region; at start-up, with
 // the ring off, setDarkReference(frame); optionally, with the ring on (aim mode, or the
@@ -54,7 +63,8 @@ struct LitFrameOptions {
     // LED-off reference only: top and bottom rises further apart: partly lit (0: not compared,
     // for scenes whose reflectance differs top to bottom; each band is then judged alone).
     double partialRatio = 0.5;
-    int maxSamples = 65536; // pixels read per frame (a grid over the region)
+    int maxSamples = 65536; // pixels read per frame (a grid over the region; the strips besides)
+    int edgeStrips = 8;     // strips the first and the last band are cut into, 0 to kMaxEdgeStrips
     LitRegion region;
 };
 
@@ -69,12 +79,14 @@ const char *litVerdictName(LitVerdict v); // "lit", "not_lit", "partly_lit", "no
 
 struct LitCheckResult {
     static constexpr int kMaxBands = 16;
+    static constexpr int kMaxEdgeStrips = 8;
     LitVerdict verdict = LitVerdict::NoReference;
     int bands = 0;
     float mean[kMaxBands] = {};     // the frame's band means (luma levels)
     float rise[kMaxBands] = {};     // band mean − LED-off reference
     float fraction[kMaxBands] = {}; // rise / the LED-on reference's rise; -1 without one, or uninformative
     int litBands = 0;               // bands judged lit
+    int darkStrips = 0;             // edge strips judged dark (a sliver the bands did not see)
     // PartlyLit: true when the lit bands are above the dark ones (the LED went off before the
     // last rows' exposure), false when below (it came on after the first rows').
     bool litAtTop = false;
@@ -84,6 +96,7 @@ struct LitCheckResult {
 class LitFrameCheck {
 public:
     static constexpr int kMaxBands = LitCheckResult::kMaxBands;
+    static constexpr int kMaxEdgeStrips = LitCheckResult::kMaxEdgeStrips;
 
     explicit LitFrameCheck(const LitFrameOptions &options = {});
 
@@ -101,7 +114,11 @@ private:
     struct Bands {
         int width = 0, height = 0; // the plane they were taken from
         float mean[kMaxBands] = {};
+        float edge[2][kMaxEdgeStrips] = {}; // the first band's strips top down, the last's bottom up
     };
+    // PartlyLit when a strip of the first or last band is dark (only called on a frame whose
+    // bands are all lit).
+    void checkEdges(const Bands &f, LitCheckResult *r) const;
     bool measure(const LumaPlane &plane, Bands *out) const;
 
     LitFrameOptions options_;

@@ -126,11 +126,4 @@ std::string recipeChanges(std::string_view from, std::string_view to)
     return out;
 }
 
-bool cameraStartControlsDiffer(const Config &a, const Config &b)
-{
-    return a.exposureUs != b.exposureUs || a.analogueGain != b.analogueGain || a.redGain != b.redGain ||
-           a.blueGain != b.blueGain || a.whiteBalanceK != b.whiteBalanceK || a.sharpness != b.sharpness ||
-           a.noiseReduction != b.noiseReduction;
-}
-
 } // namespace icacam::fw

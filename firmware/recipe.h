@@ -44,9 +44,5 @@ std::string recipeHash(std::string_view text);
 std::string applyRecipeText(std::string_view text, Config *cfg);
 // What differs between two canonical texts: "key: old -> new; ..." ("" when the same).
 std::string recipeChanges(std::string_view from, std::string_view to);
-// True when the imaging controls the camera takes only when it is started (exposure, gains,
-// white balance, sharpening, noise reduction) differ between a and b. The lens is not among
-// them: it moves while the camera runs.
-bool cameraStartControlsDiffer(const Config &a, const Config &b);
 
 } // namespace icacam::fw

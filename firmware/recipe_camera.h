@@ -1,9 +1,10 @@
 #pragma once
-// The camera as a recipe sets it: the backends take exposure, gains, white balance,
-// sharpening and noise reduction when they are made and configured, and only the lens while
-// they run (hal/camera.h). A recipe (or aim mode's live controls) that changes the others
-// makes the backend again with them, configures it as before, and holds the lens and the
-// stamp delay where they were; between measurements only, on the device's thread.
+// The camera as a recipe sets it. Exposure, gains, lens, sharpening and noise reduction change
+// on the running backend (hal::Camera::setControls), between measurements, on the device's
+// thread. Only what a backend takes when it opens makes it again: a white balance colour
+// temperature (camera.white_balance_k, which a V4L2 camera is opened with), or a control
+// going back to unset (the camera's own automatic or default value, which no running camera
+// is asked for). Made again, the backend is configured as before and keeps the stamp delay.
 //
 // A file camera made again starts its list of images over, as a real sensor restarted
 // shows the specimen again.
@@ -21,32 +22,38 @@ public:
     using Factory = std::function<hal::Result<std::unique_ptr<hal::Camera>>(const Config &)>;
 
     RecipeCamera(Factory make, std::unique_ptr<hal::Camera> first, const Config &madeWith)
-            : make_(std::move(make)), inner_(std::move(first)), made_(madeWith)
+            : make_(std::move(make)), inner_(std::move(first)), made_(madeWith), held_(cameraControlsOf(madeWith))
     {}
 
     hal::Error configure(const hal::CameraFormat &fmt) override;
     using hal::Camera::capture;
     hal::Error capture(const hal::CaptureRequest &req, hal::CapturedFrame *out) override;
     std::string describe() const override { return inner_ ? inner_->describe() : "no camera"; }
-    hal::Error setLensPosition(double position) override;
+    hal::Result<hal::CameraControls> setControls(const hal::CameraControls &asked) override;
     hal::Error setStampDelayUs(int us) override;
     hal::Result<double> focusOnce(int timeoutMs) override;
 
-    // The backend as cfg's start controls make it (firmware/recipe.h: cameraStartControlsDiffer);
-    // made again only when they differ from the ones it was made with. On an error it is
-    // made again as it was.
-    hal::Error setStartControls(const Config &cfg);
+    // The camera from the controls of `from` to those of `to` (whole configs): the changed
+    // ones set on the running backend, or the backend made again with `to` where one needs
+    // it (above). On an error the camera is as it was.
+    hal::Error follow(const Config &from, const Config &to);
+    // Whether going from `from` to `to` makes the backend again.
+    static bool needsRemake(const Config &from, const Config &to);
 
 private:
     hal::Error remake(const Config &cfg);
 
     Factory make_;
     std::unique_ptr<hal::Camera> inner_;
-    Config made_;
+    Config made_;              // the config the backend was made with
+    hal::CameraControls held_; // the controls in effect: made_'s and every change since
     hal::CameraFormat format_;
     bool configured_ = false;
-    double lens_ = -1;
     int stampDelayUs_ = -1;
 };
+
+// The controls set in `to` that differ from `from` (the others unset); a control that `to`
+// leaves unset is not among them, and colour gains come as a pair.
+hal::CameraControls changedControls(const hal::CameraControls &from, const hal::CameraControls &to);
 
 } // namespace icacam::fw

@@ -32,6 +32,25 @@ struct CameraControls {
     int noiseReduction = -1;            // 0 off, 1 fast, 2 high quality (libcamera's enumeration)
 };
 
+// True when any field of c is set.
+inline bool anyControlSet(const CameraControls &c)
+{
+    return c.exposureUs >= 0 || c.analogueGain >= 0 || c.redGain >= 0 || c.blueGain >= 0 || c.lensPosition >= 0 ||
+           c.sharpness >= 0 || c.noiseReduction >= 0;
+}
+
+// The fields set in `changes` over `into`.
+inline void mergeControls(CameraControls *into, const CameraControls &changes)
+{
+    if (changes.exposureUs >= 0) into->exposureUs = changes.exposureUs;
+    if (changes.analogueGain >= 0) into->analogueGain = changes.analogueGain;
+    if (changes.redGain >= 0) into->redGain = changes.redGain;
+    if (changes.blueGain >= 0) into->blueGain = changes.blueGain;
+    if (changes.lensPosition >= 0) into->lensPosition = changes.lensPosition;
+    if (changes.sharpness >= 0) into->sharpness = changes.sharpness;
+    if (changes.noiseReduction >= 0) into->noiseReduction = changes.noiseReduction;
+}
+
 struct CaptureRequest {
     // Sentinel: the exposure must start after capture() was called.
     static constexpr int64_t kAtCall = std::numeric_limits<int64_t>::min();
@@ -74,12 +93,19 @@ public:
     }
     // Words for `status` and the display: model, mode, what it was asked (one line).
     virtual std::string describe() const { return {}; }
-    // The lens of a camera with a focus motor (Camera Module 3, a UVC camera with
-    // focus_absolute), held at position (CameraControls::lensPosition's units), autofocus
-    // off; kept across configure(). Errors: Invalid (no lens control), Io, Closed.
-    virtual Error setLensPosition(double /*position*/)
+    // Imaging controls changed on the running camera, without a reconfigure: each field of
+    // `asked` that is set (>= 0) takes effect, the others stay as they are; all kept across
+    // configure(). Exposure and gain set turn their automatic control off; a lens position holds
+    // the lens of a camera with a focus motor (Camera Module 3, a UVC camera with
+    // focus_absolute), autofocus off. A capture() after it hands out only frames exposed with
+    // the new values: a camera that reports per frame what it used (libcamera) waits for the
+    // first frame that reports them, one that does not (V4L2) for the first exposed after the
+    // change. Returns the values the camera took, in CameraControls' units after its own
+    // limits and steps (-1: not set or not read back). Errors: Invalid (a control this camera
+    // does not have, or a value < 0 where one is needed: nothing changed), Io, Closed.
+    virtual Result<CameraControls> setControls(const CameraControls & /*asked*/)
     {
-        return Error::make(Errc::Invalid, "this camera has no lens control (fixed focus)");
+        return Result<CameraControls>::fail(Errc::Invalid, "this camera's controls are fixed");
     }
     // The most a buffer's timestamp lags the end of its exposure, measured (`measure-latency`):
     // used from the next capture on. Errors: Invalid (a camera whose stamps are the sensor's
@@ -89,7 +115,7 @@ public:
         return Error::make(Errc::Invalid, "this camera's timestamps are the sensor's own: no delay to set");
     }
     // One autofocus sweep on what the camera sees now, then the lens held where it ended, as
-    // setLensPosition(): the position. Errors: Invalid (no autofocus), Timeout (no focus within
+    // setControls() holds it: the position. Errors: Invalid (no autofocus), Timeout (no focus within
     // timeoutMs, the lens left as it was), Io, Closed.
     virtual Result<double> focusOnce(int /*timeoutMs*/)
     {

@@ -64,6 +64,8 @@ HttpResponse refusal(int status, const char *code, const char *message)
 struct WebServer::Request {
     std::string body;
     bool refused = false;
+    bool posted = false; // a login handed to the worker: answered when the connection resumes
+    LoginJob login;
 };
 
 WebServer::~WebServer()
@@ -73,6 +75,7 @@ WebServer::~WebServer()
 
 void WebServer::stop()
 {
+    logins_.reset(); // every suspended login resumed first: a daemon stops with none suspended
     if (daemon_) MHD_stop_daemon(daemon_);
     daemon_ = nullptr;
 }
@@ -114,6 +117,10 @@ int WebServer::onRequest(void *connection, const char *url, const char *method, 
         *uploadSize = 0;
         return MHD_YES;
     }
+    if (req->posted) { // resumed: the worker's answer, or none (too many logins waiting, or stopping)
+        if (req->login.answered) return send(c, req->login.answer, false);
+        return send(c, refusal(503, "busy", "logins are being checked: try again in a moment"), false);
+    }
     std::string_view path(url), query;
     // libmicrohttpd hands the path without its query; the arguments are read back as one string.
     std::string q;
@@ -138,6 +145,22 @@ int WebServer::onRequest(void *connection, const char *url, const char *method, 
     const char *cookie = MHD_lookup_connection_value(c, MHD_COOKIE_KIND, WebApi::kCookie);
     r.session = cookie ? cookie : "";
     r.nowMs = nowMs();
+    if (r.method == "POST" && r.path == "/api/login" && logins_) {
+        LoginJob &j = req->login;
+        j.method = r.method;
+        j.path = r.path;
+        j.query = r.query;
+        j.body = std::move(req->body);
+        j.contentType = r.contentType;
+        j.session = r.session;
+        j.nowMs = r.nowMs;
+        j.connection = c;
+        req->posted = true;
+        // Suspended before it is posted: the worker's resume never comes first.
+        MHD_suspend_connection(c);
+        if (!logins_->post(&j)) MHD_resume_connection(c); // answered 503 when it resumes
+        return MHD_YES;
+    }
     return send(c, api_.handle(r), r.method == "HEAD");
 }
 
@@ -148,7 +171,7 @@ hal::Error WebServer::start(const WebServerSettings &s)
     addr.sin_port = htons(uint16_t(s.port));
     if (inet_pton(AF_INET, s.address.c_str(), &addr.sin_addr) != 1)
         return hal::Error::make(hal::Errc::Invalid, "http.address: not an IPv4 address: " + s.address);
-    unsigned flags = MHD_USE_AUTO_INTERNAL_THREAD | MHD_USE_ERROR_LOG;
+    unsigned flags = MHD_USE_AUTO_INTERNAL_THREAD | MHD_USE_ERROR_LOG | MHD_ALLOW_SUSPEND_RESUME;
     cert_ = s.tlsCertPem;
     key_ = s.tlsKeyPem;
     const bool tls = !cert_.empty();
@@ -176,12 +199,17 @@ hal::Error WebServer::start(const WebServerSettings &s)
         {tls ? MHD_OPTION_HTTPS_MEM_KEY : MHD_OPTION_END, 0, const_cast<char *>(key_.c_str())},
         {MHD_OPTION_END, 0, nullptr},
     };
+    logins_ = std::make_unique<LoginQueue>(
+        checkLogin_ ? checkLogin_ : LoginQueue::Check([this](const HttpRequest &r) { return api_.handle(r); }),
+        [](LoginJob *j) { MHD_resume_connection(static_cast<MHD_Connection *>(j->connection)); });
     daemon_ =
         MHD_start_daemon(flags, uint16_t(s.port), nullptr, nullptr, static_cast<MHD_AccessHandlerCallback>(access),
                          this, MHD_OPTION_ARRAY, opts, MHD_OPTION_END);
-    if (!daemon_)
+    if (!daemon_) {
+        logins_.reset();
         return hal::Error::make(hal::Errc::Io, "cannot listen on " + s.address + ":" + std::to_string(s.port) +
                                                    (tls ? " (HTTPS: check the certificate and key)" : ""));
+    }
     if (const MHD_DaemonInfo *info = MHD_get_daemon_info(daemon_, MHD_DAEMON_INFO_BIND_PORT)) port_ = info->port;
     return {};
 }

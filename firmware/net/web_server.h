@@ -3,11 +3,15 @@
 // http.address:http.port, HTTPS when a certificate and key are configured; bodies over
 // WebApi::kMaxBody refused with 413 before they are read, requests over the rate refused
 // with 429, a connection that sends nothing for kIdleTimeoutS closed (a slowloris client
-// holds nothing long), connections limited in number overall and per address.
+// holds nothing long), connections limited in number overall and per address. A login is
+// checked on a worker of its own (login_queue.h), its connection suspended meanwhile, so
+// pages and pictures are served while a password is checked; a login beyond the ones the
+// worker holds is answered 503 at once.
 #include <cstdint>
 #include <memory>
 #include <string>
 
+#include "firmware/net/login_queue.h"
 #include "firmware/net/rate_limiter.h"
 #include "firmware/net/web_api.h"
 #include "hal/error.h"
@@ -28,7 +32,10 @@ public:
     static constexpr unsigned kMaxConnections = 64, kMaxPerAddress = 16;
     static constexpr size_t kConnectionMemory = 64 * 1024;
 
-    explicit WebServer(WebApi &api) : api_(api) {}
+    // checkLogin: how a login request is answered on the worker (empty: api.handle); a test
+    // holds it there to see the server go on meanwhile.
+    explicit WebServer(WebApi &api, LoginQueue::Check checkLogin = {}) : api_(api), checkLogin_(std::move(checkLogin))
+    {}
     ~WebServer();
     hal::Error start(const WebServerSettings &s);
     void stop();
@@ -41,6 +48,8 @@ public:
 
 private:
     WebApi &api_;
+    LoginQueue::Check checkLogin_;
+    std::unique_ptr<LoginQueue> logins_;
     RateLimiter rate_{50, 100}; // per address: 50 requests a second, bursts of 100
     MHD_Daemon *daemon_ = nullptr;
     std::string cert_, key_;

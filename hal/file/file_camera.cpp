@@ -79,6 +79,16 @@ std::string FileCamera::describe() const
     return "file camera: " + opts_.source + " (" + std::to_string(files_.size()) + " frames)";
 }
 
+Result<CameraControls> FileCamera::setControls(const CameraControls &asked)
+{
+    if (asked.lensPosition >= 0 && opts_.fixedFocus)
+        return Result<CameraControls>::fail(Errc::Invalid, "this camera has no lens control (fixed focus)");
+    mergeControls(&opts_.controls, asked);
+    CameraControls took;
+    mergeControls(&took, asked);
+    return {took, {}};
+}
+
 Error FileCamera::capture(const CaptureRequest &req, CapturedFrame *out)
 {
     if (!buffer_) return Error::make(Errc::Invalid, "camera not configured");

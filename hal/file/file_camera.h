@@ -4,7 +4,9 @@
 // ISPs pad it, and once the list is exhausted (or at a "!timeout" entry) a capture waits its
 // full timeout and fails with Errc::Timeout.
 //
-// configure() again over the same frames carries on at the same position.
+// configure() again over the same frames carries on at the same position, and so does
+// setControls(): the controls it is given are reported on every frame after it, as a sensor
+// reports what it used, and the list of images goes on where it was.
 //
 // Lit by a ScriptedLight (hal/file/scripted_light.h), the images are the scene under the LED
 // ring: each row is dimmed to `ambient` for the part of its exposure the ring gave no light,
@@ -41,6 +43,7 @@ struct FileCameraOptions {
     const ScriptedLight *light = nullptr; // none: every image as it is, each used once
     double ambient = 0.1;                 // the scene's brightness without the ring, of the image's
     int readoutMs = 0;                    // first row's exposure start to the last's
+    bool fixedFocus = false;              // no lens: setControls() refuses a lens position
 };
 
 class FileCamera final : public Camera {
@@ -52,6 +55,9 @@ public:
     // The "exposure" starts when the call is made (or at req.notBeforeMs, waited for, if later).
     Error capture(const CaptureRequest &req, CapturedFrame *out) override;
     std::string describe() const override;
+    // Records the controls (reported from the next frame on); takes every value as asked,
+    // but a lens position on a fixed-focus one (Errc::Invalid, nothing changed).
+    Result<CameraControls> setControls(const CameraControls &asked) override;
 
 private:
     // Dims each row for the part of its exposure the light was off; true when every row was

@@ -33,9 +33,11 @@
 #include <cstring>
 #include <filesystem>
 #include <mutex>
+#include <type_traits>
 #include <vector>
 
 #include "hal/fresh_frame.h"
+#include "hal/libcamera/control_settle.h"
 #include "hal/libcamera/sensor_mode.h"
 #include "hal/libcamera/tuning.h"
 
@@ -175,11 +177,19 @@ struct LibcameraCamera::Session {
     std::vector<lc::Request *> done; // completed, not yet looked at (capacity = requests)
     lc::Request *held = nullptr;     // handed out by the last capture()
     bool gone = false;
-    // Controls for the next request queued (lens, autofocus), and what the last frame handed
-    // out reported of them. Touched by the calling thread only.
+    // Controls for the next request queued (setControls, autofocus), and what the last frame
+    // handed out reported of them. Touched by the calling thread only.
     lc::ControlList pending{lc::controls::controls};
     int afState = -1;
     float lensPosition = -1;
+    // The last setControls() until a frame shows it (control_settle.h): each request's
+    // generation when it was last queued (a request queued before the change cannot carry
+    // it), and how many frames after it may still not show it before one is taken anyway.
+    ControlChange change;
+    bool changing = false;
+    int changeFramesLeft = 0;
+    uint64_t generation = 0;
+    std::vector<uint64_t> queuedIn; // by request cookie, sized in configure()
 
     // Called on libcamera's thread: only records the request (no allocation: reserved).
     void onCompleted(lc::Request *r)
@@ -443,6 +453,7 @@ Error LibcameraCamera::configure(const CameraFormat &fmt)
         s->maps.push_back(std::move(map));
         s->requests.push_back(std::move(req));
     }
+    s->queuedIn.assign(s->requests.size(), 0);
 
     // Measurement needs the same picture every shot: fixed exposure and gain, AWB off with
     // locked colour gains, the lens held where it was focused, and the ISP's sharpening
@@ -492,8 +503,8 @@ Error LibcameraCamera::configure(const CameraFormat &fmt)
     else
         mode += "unlisted, by " + mode_.namedBy;
     description_ = "libcamera " + s->camera->id() + " " + modelOf(*s->camera) + " " + sc.size.toString() + " " +
-                   sc.pixelFormat.toString() + " (" + mode + "), " + tuningNote_ + ", exposure " +
-                   std::to_string(want.exposureUs) + " us, gain " + fmtNum(want.analogueGain) + notes;
+                   sc.pixelFormat.toString() + " (" + mode + "), " + tuningNote_;
+    notes_ = notes;
     source_ = "libcamera:" + modelOf(*s->camera) + " " + sc.size.toString();
     if (mode_.choice.found)
         source_ += " mode " + std::to_string(mode_.choice.mode.width) + "x" + std::to_string(mode_.choice.mode.height) +
@@ -501,6 +512,13 @@ Error LibcameraCamera::configure(const CameraFormat &fmt)
     source_ += tuningNote_.find("adaptive contrast off") != std::string::npos ? " tone fixed" : " tone default";
     session_ = std::move(s);
     return {};
+}
+
+std::string LibcameraCamera::describe() const
+{
+    if (!session_) return description_;
+    return description_ + ", exposure " + std::to_string(options_.controls.exposureUs) + " us, gain " +
+           fmtNum(options_.controls.analogueGain) + notes_;
 }
 
 Error LibcameraCamera::capture(const CaptureRequest &req, CapturedFrame *out)
@@ -517,6 +535,7 @@ Error LibcameraCamera::capture(const CaptureRequest &req, CapturedFrame *out)
             r->controls().merge(s.pending);
             s.pending.clear();
         }
+        s.queuedIn[size_t(r->cookie())] = s.generation;
         return s.camera->queueRequest(r) >= 0;
     };
     int stale = 0;
@@ -552,6 +571,28 @@ Error LibcameraCamera::capture(const CaptureRequest &req, CapturedFrame *out)
                 if (!requeue(r)) return Error::make(Errc::Io, "libcamera: requeue failed");
                 continue;
             }
+            CameraControls got;
+            if (exposureUs) got.exposureUs = *exposureUs;
+            if (const auto g = meta.get(lc::controls::AnalogueGain)) got.analogueGain = *g;
+            if (const auto cg = meta.get(lc::controls::ColourGains)) {
+                got.redGain = (*cg)[0];
+                got.blueGain = (*cg)[1];
+            }
+            if (const auto lens = meta.get(lc::controls::LensPosition)) got.lensPosition = *lens;
+            got.sharpness = options_.controls.sharpness; // not reported per frame
+            got.noiseReduction = options_.controls.noiseReduction;
+            // After setControls(): frames of requests queued before it, and those that do not
+            // show it yet, go back (the pipeline applies controls a few frames late); after
+            // kSettleFrames the frame is taken as it is, its metadata saying what it used.
+            if (s.changing) {
+                const bool before = s.queuedIn[size_t(r->cookie())] < s.generation;
+                if (before || (!showsChange(s.change, got) && --s.changeFramesLeft > 0)) {
+                    ++stale;
+                    if (!requeue(r)) return Error::make(Errc::Io, "libcamera: requeue failed");
+                    continue;
+                }
+                s.changing = false;
+            }
             s.held = r;
             const Mapping &map = *s.maps[size_t(r->cookie())];
             out->view = {s.format, map.luma, s.width, s.height, s.stride, map.lumaBytes};
@@ -561,20 +602,10 @@ Error LibcameraCamera::capture(const CaptureRequest &req, CapturedFrame *out)
             out->exposureUs = stamp.exposureNs / 1000;
             out->sequence = md.sequence;
             out->staleFrames = stale;
-            CameraControls &got = out->controls;
-            got = {};
-            if (exposureUs) got.exposureUs = *exposureUs;
-            if (const auto g = meta.get(lc::controls::AnalogueGain)) got.analogueGain = *g;
-            if (const auto cg = meta.get(lc::controls::ColourGains)) {
-                got.redGain = (*cg)[0];
-                got.blueGain = (*cg)[1];
-            }
-            if (const auto lens = meta.get(lc::controls::LensPosition)) got.lensPosition = *lens;
+            out->controls = got;
             s.lensPosition = float(got.lensPosition);
             const auto af = meta.get(lc::controls::AfState);
             s.afState = af ? int(*af) : -1;
-            got.sharpness = options_.controls.sharpness; // not reported per frame
-            got.noiseReduction = options_.controls.noiseReduction;
             out->source = source_;
             return {};
         }
@@ -585,18 +616,92 @@ Error LibcameraCamera::capture(const CaptureRequest &req, CapturedFrame *out)
     }
 }
 
-Error LibcameraCamera::setLensPosition(double dioptres)
+namespace {
+
+// v within the limits the camera lists for the control (its current mode's, on a Raspberry
+// Pi: the exposure's upper limit is the frame duration's).
+template <typename T> T withinLimits(const lc::Camera &cam, const lc::ControlId &id, T v)
 {
-    if (!configured_) return Error::make(Errc::Invalid, "camera: not configured");
+    const auto it = cam.controls().find(id.id());
+    if (it == cam.controls().end()) return v;
+    const lc::ControlValue &lo = it->second.min(), &hi = it->second.max();
+    constexpr lc::ControlType type = std::is_same_v<T, float> ? lc::ControlTypeFloat : lc::ControlTypeInteger32;
+    if (lo.type() == type && !lo.isArray() && v < lo.get<T>()) v = lo.get<T>();
+    if (hi.type() == type && !hi.isArray() && hi.get<T>() > lo.get<T>() && v > hi.get<T>()) v = hi.get<T>();
+    return v;
+}
+
+} // namespace
+
+Result<CameraControls> LibcameraCamera::setControls(const CameraControls &asked)
+{
+    if (!configured_) return Result<CameraControls>::fail(Errc::Invalid, "camera: not configured");
     if (!session_)
-        if (Error e = configure(wanted_); !e.ok()) return e;
+        if (Error e = configure(wanted_); !e.ok()) return {{}, e};
     Session &s = *session_;
-    if (!supports(*s.camera, lc::controls::AfMode) || !supports(*s.camera, lc::controls::LensPosition))
-        return Error::make(Errc::Invalid, "libcamera: " + modelOf(*s.camera) + " has no lens control (fixed focus)");
-    s.pending.set(lc::controls::AfMode, lc::controls::AfModeManual);
-    s.pending.set(lc::controls::LensPosition, float(dioptres));
-    options_.controls.lensPosition = dioptres; // and after a reconfigure
-    return {};
+    const lc::Camera &cam = *s.camera;
+    std::string missing;
+    auto need = [&](bool set, const lc::ControlId &id) {
+        if (set && !supports(cam, id)) missing += (missing.empty() ? "" : ", ") + std::string(id.name());
+    };
+    const bool colour = asked.redGain >= 0 || asked.blueGain >= 0;
+    need(asked.exposureUs >= 0, lc::controls::ExposureTime);
+    need(asked.analogueGain >= 0, lc::controls::AnalogueGain);
+    need(colour, lc::controls::ColourGains);
+    need(asked.lensPosition >= 0, lc::controls::AfMode);
+    need(asked.lensPosition >= 0, lc::controls::LensPosition);
+    need(asked.sharpness >= 0, lc::controls::Sharpness);
+    need(asked.noiseReduction >= 0, lc::controls::draft::NoiseReductionMode);
+    if (!missing.empty())
+        return Result<CameraControls>::fail(Errc::Invalid, "libcamera: " + modelOf(cam) + " has no " + missing +
+                                                               " control (nothing changed)");
+    // Colour gains go as a pair: the one not asked stays as it is.
+    const double red = asked.redGain >= 0 ? asked.redGain : options_.controls.redGain;
+    const double blue = asked.blueGain >= 0 ? asked.blueGain : options_.controls.blueGain;
+    if (colour && (red < 0 || blue < 0))
+        return Result<CameraControls>::fail(Errc::Invalid, "libcamera: colour gains are set as a pair (red and blue)");
+    // On the next request queued, as rpicam-apps' SetControls and picamera2's set_controls
+    // do; the pipeline carries them over to every frame after.
+    CameraControls took;
+    if (asked.exposureUs >= 0) {
+        took.exposureUs = withinLimits(cam, lc::controls::ExposureTime, int32_t(asked.exposureUs));
+        s.pending.set(lc::controls::ExposureTime, int32_t(took.exposureUs));
+    }
+    if (asked.analogueGain >= 0) {
+        took.analogueGain = withinLimits(cam, lc::controls::AnalogueGain, float(asked.analogueGain));
+        s.pending.set(lc::controls::AnalogueGain, float(took.analogueGain));
+    }
+    if (colour) {
+        took.redGain = red;
+        took.blueGain = blue;
+        const std::array<float, 2> gains{float(red), float(blue)};
+        s.pending.set(lc::controls::AwbEnable, false);
+        s.pending.set(lc::controls::ColourGains, lc::Span<const float, 2>(gains));
+    }
+    if (asked.lensPosition >= 0) {
+        took.lensPosition = withinLimits(cam, lc::controls::LensPosition, float(asked.lensPosition));
+        s.pending.set(lc::controls::AfMode, lc::controls::AfModeManual);
+        s.pending.set(lc::controls::LensPosition, float(took.lensPosition));
+    }
+    if (asked.sharpness >= 0) {
+        took.sharpness = asked.sharpness;
+        s.pending.set(lc::controls::Sharpness, float(asked.sharpness));
+    }
+    if (asked.noiseReduction >= 0) {
+        took.noiseReduction = asked.noiseReduction;
+        s.pending.set(lc::controls::draft::NoiseReductionMode, int32_t(asked.noiseReduction));
+    }
+    // The frames to wait for: the ones that report the values taken (capture()).
+    s.change.before = options_.controls;
+    s.change.asked = {};
+    s.change.asked.exposureUs = took.exposureUs;
+    s.change.asked.analogueGain = took.analogueGain;
+    s.change.asked.lensPosition = took.lensPosition;
+    s.changing = true;
+    s.changeFramesLeft = kSettleFrames;
+    ++s.generation;
+    mergeControls(&options_.controls, took); // and after a reconfigure
+    return {took, {}};
 }
 
 Result<double> LibcameraCamera::focusOnce(int timeoutMs)
@@ -624,13 +729,15 @@ Result<double> LibcameraCamera::focusOnce(int timeoutMs)
         // answer comes after it reported Scanning.
         if (s.afState == lc::controls::AfStateScanning) scanned = true;
         if (!scanned) continue;
+        CameraControls hold;
         if (s.afState == lc::controls::AfStateFocused) {
-            const double lens = s.lensPosition;
-            if (Error e = setLensPosition(lens); !e.ok()) return {0, e};
-            return {lens, {}};
+            hold.lensPosition = s.lensPosition;
+            if (const auto r = setControls(hold); !r.ok()) return {0, r.error};
+            return {hold.lensPosition, {}};
         }
         if (s.afState == lc::controls::AfStateFailed) {
-            (void)setLensPosition(options_.controls.lensPosition >= 0 ? options_.controls.lensPosition : 0);
+            hold.lensPosition = options_.controls.lensPosition >= 0 ? options_.controls.lensPosition : 0;
+            (void)setControls(hold);
             return Result<double>::fail(Errc::Timeout, "libcamera: autofocus found nothing sharp");
         }
     }

@@ -67,14 +67,22 @@ public:
     // Errors: Timeout, Closed (the camera went away; the next call tries again), Io.
     using Camera::capture;
     Error capture(const CaptureRequest &req, CapturedFrame *out) override;
-    std::string describe() const override { return description_; }
-    // AfMode Manual with LensPosition (dioptres) on the next requests.
-    Error setLensPosition(double dioptres) override;
+    std::string describe() const override;
+    // ExposureTime, AnalogueGain (within the limits the camera lists), ColourGains (AWB off),
+    // LensPosition (dioptres, AfMode Manual), Sharpness and NoiseReductionMode on the next
+    // request queued; capture() then hands out only a frame whose metadata shows the new
+    // exposure, gain and lens (control_settle.h), or, after kSettleFrames that do not, the
+    // next as it is (its controls say what it used).
+    Result<CameraControls> setControls(const CameraControls &asked) override;
     // AfMode Auto and AfTrigger Start, frames until AfState says Focused (or Failed), then
-    // the LensPosition the frame reports held as setLensPosition() holds it.
+    // the LensPosition the frame reports held as setControls() holds it.
     Result<double> focusOnce(int timeoutMs) override;
     // Valid after a successful configure().
     const LibcameraMode &mode() const { return mode_; }
+
+    // Frames after a setControls() that may still not show it (a Raspberry Pi sensor's
+    // exposure lags its request by two frames, gain by one) before one is taken anyway.
+    static constexpr int kSettleFrames = 6;
 
 private:
     struct Session; // CameraManager, camera, allocator, mapped buffers, requests
@@ -86,6 +94,7 @@ private:
     LibcameraOptions options_;
     CameraFormat wanted_{};
     std::string description_ = "libcamera: not opened";
+    std::string notes_;  // what the camera lacks of the controls asked
     std::string source_; // the frame's `source`: camera, mode, tuning
     bool configured_ = false;
     LibcameraMode mode_;

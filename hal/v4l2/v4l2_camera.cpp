@@ -12,6 +12,7 @@
 
 #include <cstdio>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -163,6 +164,24 @@ bool getControl(int fd, uint32_t id, int32_t *value)
     if (xioctl(fd, VIDIOC_G_EXT_CTRLS, &cs) < 0) return false;
     *value = c.value;
     return true;
+}
+
+// The driver's range for a control; false when the device has no such control (or it is
+// disabled).
+bool queryControl(int fd, uint32_t id, v4l2_queryctrl *q)
+{
+    *q = {};
+    q->id = id;
+    return xioctl(fd, VIDIOC_QUERYCTRL, q) == 0 && !(q->flags & V4L2_CTRL_FLAG_DISABLED);
+}
+
+// v within the driver's range, on its step (uvcvideo clamps the same way; a value read back
+// is the one that counts).
+int32_t inRange(const v4l2_queryctrl &q, double v)
+{
+    const double lo = q.minimum, hi = q.maximum, step = q.step > 0 ? q.step : 1;
+    const double c = std::min(std::max(v, lo), hi);
+    return int32_t(std::min(hi, lo + std::round((c - lo) / step) * step));
 }
 
 std::string fourccName(uint32_t cc)
@@ -472,7 +491,7 @@ Error V4l2Camera::capture(const CaptureRequest &req, CapturedFrame *out)
     }
     const int timeoutMs = req.timeoutMs;
     const int64_t startNs = monotonicNs();
-    const int64_t notBeforeNs = notBeforeOnMonotonicNs(clock_, req.notBeforeMs);
+    const int64_t notBeforeNs = std::max(notBeforeOnMonotonicNs(clock_, req.notBeforeMs), controlsChangedNs_);
     const int64_t deadline = clock_.monotonicMs() + timeoutMs;
     // Also bounded in real time: a test's manual clock does not move while poll() waits.
     const int64_t realDeadlineNs = startNs + int64_t(timeoutMs) * 1000000;
@@ -564,20 +583,73 @@ Error V4l2Camera::setStampDelayUs(int us)
     return {};
 }
 
-Error V4l2Camera::setLensPosition(double position)
+Result<CameraControls> V4l2Camera::setControls(const CameraControls &asked)
 {
-    if (!configured_) return Error::make(Errc::Invalid, "camera: not configured");
+    if (!configured_) return Result<CameraControls>::fail(Errc::Invalid, "camera: not configured");
     if (!streaming_)
-        if (Error e = openAndStart(); !e.ok()) return e;
+        if (Error e = openAndStart(); !e.ok()) return {{}, e};
+    const int fd = fd_.get();
+    // Each control asked, in the device's units (exposure_absolute counts 100 µs steps, UVC
+    // 1.5 §4.2.2.1.4), and the automatic one it needs off: all checked against what the
+    // driver lists before any is set, so a refusal changes nothing.
+    struct Step {
+        uint32_t id, autoId;
+        int32_t autoManual;
+        double value;
+        const char *name;
+        v4l2_queryctrl range;
+    };
+    Step steps[6];
+    int n = 0;
+    std::string missing;
+    auto want = [&](bool set, uint32_t id, uint32_t autoId, int32_t autoManual, double value, const char *name) {
+        if (!set) return;
+        Step &st = steps[n];
+        st = {id, autoId, autoManual, value, name, {}};
+        if (queryControl(fd, id, &st.range))
+            ++n;
+        else
+            missing += std::string(missing.empty() ? "" : ", ") + name;
+    };
+    v4l2_queryctrl q{};
+    const uint32_t gainId = queryControl(fd, V4L2_CID_GAIN, &q) ? V4L2_CID_GAIN : V4L2_CID_ANALOGUE_GAIN;
+    want(asked.exposureUs >= 0, V4L2_CID_EXPOSURE_ABSOLUTE, V4L2_CID_EXPOSURE_AUTO, V4L2_EXPOSURE_MANUAL,
+         asked.exposureUs / 100.0, "exposure_absolute");
+    want(asked.analogueGain >= 0, gainId, 0, 0, asked.analogueGain, "gain");
+    want(asked.redGain >= 0, V4L2_CID_RED_BALANCE, V4L2_CID_AUTO_WHITE_BALANCE, 0, asked.redGain, "red_balance");
+    want(asked.blueGain >= 0, V4L2_CID_BLUE_BALANCE, V4L2_CID_AUTO_WHITE_BALANCE, 0, asked.blueGain, "blue_balance");
+    want(asked.lensPosition >= 0, V4L2_CID_FOCUS_ABSOLUTE, V4L2_CID_FOCUS_AUTO, 0, asked.lensPosition,
+         "focus_absolute");
+    want(asked.sharpness >= 0, V4L2_CID_SHARPNESS, 0, 0, asked.sharpness, "sharpness");
+    if (asked.noiseReduction >= 0) missing += std::string(missing.empty() ? "" : ", ") + "noise reduction";
+    if (!missing.empty())
+        return Result<CameraControls>::fail(Errc::Invalid, "camera " + options_.device + " has no " + missing +
+                                                               " control (nothing changed)");
+    // uvcvideo refuses (EACCES) a value whose automatic control is on: that one goes first.
+    // No frame-rate priority either: it would let the camera stretch the exposure.
+    for (int i = 0; i < n; ++i) {
+        const Step &st = steps[i];
+        if (st.autoId) (void)setControl(fd, st.autoId, st.autoManual);
+        if (st.id == V4L2_CID_EXPOSURE_ABSOLUTE) (void)setControl(fd, V4L2_CID_EXPOSURE_AUTO_PRIORITY, 0);
+        if (!setControl(fd, st.id, inRange(st.range, st.value)))
+            return Result<CameraControls>::fail(unplugged(errno) ? Errc::Closed : Errc::Io,
+                                                sysError("camera " + options_.device + ": " + st.name));
+    }
+    mergeControls(&options_.controls, asked); // and after a reconfigure or a replug
+    // What the device took: reported with every frame from now on.
+    CameraControls took;
     int32_t v = 0;
-    if (!getControl(fd_.get(), V4L2_CID_FOCUS_ABSOLUTE, &v))
-        return Error::make(Errc::Invalid, "camera " + options_.device + " has no focus_absolute (fixed focus)");
-    (void)setControl(fd_.get(), V4L2_CID_FOCUS_AUTO, 0); // the absolute value is inactive while it is on
-    if (!setControl(fd_.get(), V4L2_CID_FOCUS_ABSOLUTE, int32_t(std::lround(position))))
-        return Error::make(Errc::Io, sysError("camera: focus_absolute"));
-    options_.controls.lensPosition = position; // and after a reconfigure
-    if (getControl(fd_.get(), V4L2_CID_FOCUS_ABSOLUTE, &v)) reported_.lensPosition = v;
-    return {};
+    if (asked.exposureUs >= 0 && getControl(fd, V4L2_CID_EXPOSURE_ABSOLUTE, &v)) took.exposureUs = v * 100;
+    if (asked.analogueGain >= 0 && getControl(fd, gainId, &v)) took.analogueGain = v;
+    if (asked.redGain >= 0 && getControl(fd, V4L2_CID_RED_BALANCE, &v)) took.redGain = v;
+    if (asked.blueGain >= 0 && getControl(fd, V4L2_CID_BLUE_BALANCE, &v)) took.blueGain = v;
+    if (asked.lensPosition >= 0 && getControl(fd, V4L2_CID_FOCUS_ABSOLUTE, &v)) took.lensPosition = v;
+    if (asked.sharpness >= 0 && getControl(fd, V4L2_CID_SHARPNESS, &v)) took.sharpness = v;
+    mergeControls(&reported_, took);
+    // A UVC camera reports nothing per frame: frames exposed before the change, and in the
+    // frame interval after it (the camera applies a control at a frame boundary), are old.
+    controlsChangedNs_ = monotonicNs() + frameIntervalUs_ * 1000;
+    return {took, {}};
 }
 
 Result<double> V4l2Camera::focusOnce(int timeoutMs)
@@ -602,13 +674,16 @@ Result<double> V4l2Camera::focusOnce(int timeoutMs)
         still = v == last ? still + 1 : 0;
         last = v;
         if (++frames > kStill && still >= kStill) {
-            if (Error e = setLensPosition(v); !e.ok()) return {0, e};
+            CameraControls hold;
+            hold.lensPosition = v;
+            if (const auto r = setControls(hold); !r.ok()) return {0, r.error};
             return {double(v), {}};
         }
     }
-    const double before = options_.controls.lensPosition;
-    if (before >= 0)
-        (void)setLensPosition(before);
+    CameraControls before;
+    before.lensPosition = options_.controls.lensPosition;
+    if (before.lensPosition >= 0)
+        (void)setControls(before);
     else
         (void)setControl(fd_.get(), V4L2_CID_FOCUS_AUTO, 0);
     return Result<double>::fail(Errc::Timeout, "camera " + options_.device + ": focus did not settle within " +

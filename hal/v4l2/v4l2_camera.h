@@ -63,10 +63,14 @@ public:
     Error capture(const CaptureRequest &req, CapturedFrame *out) override;
     std::string describe() const override { return description_; }
     Error setStampDelayUs(int us) override;
-    // focus_automatic_continuous off, focus_absolute at position (the device's units).
-    Error setLensPosition(double position) override;
+    // VIDIOC_S_EXT_CTRLS on the streaming device, each value within the range QUERYCTRL gives
+    // and its automatic control off first: exposure_absolute (exposure_auto manual),
+    // gain (else analogue_gain), red/blue_balance, focus_absolute (focus_automatic_continuous
+    // off), sharpness, in the device's own units; read back. The next capture() refuses frames
+    // exposed before the change and one frame interval after it. No noise reduction control.
+    Result<CameraControls> setControls(const CameraControls &asked) override;
     // Continuous autofocus on, frames until focus_absolute has held still for a while, then
-    // that position held as setLensPosition() holds it (UVC has no one-shot focus).
+    // that position held as setControls() holds it (UVC has no one-shot focus).
     Result<double> focusOnce(int timeoutMs) override;
 
     // What the driver agreed to (valid after configure()).
@@ -116,7 +120,8 @@ private:
     int whiteBalanceReadK_ = -1;
     CameraControls reported_; // read back after setting
     std::string description_ = "v4l2: not opened";
-    std::string refused_; // controls the device did not take
+    std::string refused_;           // controls the device did not take
+    int64_t controlsChangedNs_ = 0; // frames exposed before this are from the controls before setControls()
 };
 
 } // namespace icacam::hal

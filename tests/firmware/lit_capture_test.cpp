@@ -142,6 +142,21 @@ TEST(LitCapture, ARingThatGoesDarkDuringTheFrameEndsInLedRingNotLit)
     EXPECT_NE(e.find("message")->text.find("3 frames refused"), std::string::npos);
 }
 
+// The ring goes dark 49 ms after being switched on, as the last two of 64 rows start their
+// exposure: every band but the last is lit throughout and the last keeps half its light, so
+// only its strips see it. Refused, with one attempt an error.
+TEST(LitCapture, ARingThatLightsAllButTheLastRowsIsRefused)
+{
+    Rig rig("flash 49\n", 1);
+    const reading::FlatObject r = rig.trigger1();
+    ASSERT_TRUE(r.find("lit")) << rig.serial.out;
+    EXPECT_EQ(r.find("lit")->text, "partly_lit");
+    EXPECT_EQ(r.find("status")->text, "error");
+    const reading::FlatObject e = rig.serial.last("error");
+    ASSERT_TRUE(e.find("message")) << rig.serial.out;
+    EXPECT_EQ(e.find("message")->text.rfind("LED ring not lit: lit at the top only", 0), 0u) << e.find("message")->text;
+}
+
 TEST(LitCapture, ADeadRingIsReportedNotMeasured)
 {
     Rig rig("dead\n");

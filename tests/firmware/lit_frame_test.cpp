@@ -158,6 +158,28 @@ TEST_P(LitFrame, OneLateRowOfTheFirstBandIsNotEnoughToRefuse)
     EXPECT_EQ(r.verdict, LitVerdict::Lit) << r.reason;
 }
 
+TEST_P(LitFrame, ADarkSliverThinnerThanABandAtTheBottomIsRefused)
+{
+    // The last three rows of 240 saw only the room light (a short exposure read out as the
+    // ring went off): the last band keeps 90 % of its light, its strips do not.
+    std::vector<uint8_t> px = render(on());
+    std::copy(dark_.begin() + ptrdiff_t(W * (H - 3)), dark_.end(), px.begin() + ptrdiff_t(W * (H - 3)));
+    const auto r = check_.check(plane(px));
+    EXPECT_EQ(r.verdict, LitVerdict::PartlyLit) << r.reason;
+    EXPECT_TRUE(r.litAtTop);
+    EXPECT_GE(r.darkStrips, 1);
+    EXPECT_EQ(r.litBands, 8); // every band, on its own, lit
+}
+
+TEST_P(LitFrame, ADarkSliverAtTheTopIsRefusedToo)
+{
+    std::vector<uint8_t> px = render(on());
+    std::copy(dark_.begin(), dark_.begin() + ptrdiff_t(W * 2), px.begin());
+    const auto r = check_.check(plane(px));
+    EXPECT_EQ(r.verdict, LitVerdict::PartlyLit) << r.reason;
+    EXPECT_FALSE(r.litAtTop);
+}
+
 INSTANTIATE_TEST_SUITE_P(References, LitFrame, ::testing::Values(false, true),
                          [](const ::testing::TestParamInfo<bool> &p) { return p.param ? "LedOnToo" : "LedOffOnly"; });
 
@@ -260,3 +282,22 @@ TEST(LitFrameReference, ACheckAllocatesNothing)
 }
 
 } // namespace
+
+double darkBackdropAtTheBottom(int x, int y)
+{
+    return y >= H - 4 ? 0.2 : reflectance(x, y);
+}
+
+TEST(LitFrameReference, ADarkBackdropAtTheEdgeIsNotTakenForADarkSliver)
+{
+    // The last rows are a dark surface, lit top to bottom: their rise is small, but so is
+    // their luma without the ring, and the ratio of the two is the band's.
+    Scene offScene = off(), onScene = on();
+    offScene.reflect = onScene.reflect = darkBackdropAtTheBottom;
+    const std::vector<uint8_t> dark = render(offScene), lit = render(onScene);
+    fw::LitFrameCheck check;
+    ASSERT_TRUE(check.setDarkReference(plane(dark)));
+    const auto r = check.check(plane(lit));
+    EXPECT_EQ(r.verdict, LitVerdict::Lit) << r.reason;
+    EXPECT_EQ(r.darkStrips, 0);
+}

@@ -347,7 +347,7 @@ TEST(DeviceRecipe, ASaveFromTheWebNeedsAReasonAndSetsTheCamera)
     const reading::FlatObject saved = rig.newest("recipe");
     EXPECT_EQ(textOf(saved, "recipe_version"), "2");
     EXPECT_EQ(textOf(saved, "tag"), "w2");
-    EXPECT_EQ(rig.made, madeAtStart + 1); // the camera made again with the new exposure
+    EXPECT_EQ(rig.made, madeAtStart); // the exposure set on the running camera, not made again
     rig.serial.in = "trigger\n";
     rig.device->tick();
     const reading::FlatObject r = rig.newest("result");
@@ -380,6 +380,7 @@ TEST(DeviceRecipe, LiveControlsOnlyWhileAimingAndBackAfter)
     ASSERT_TRUE(rig.desk.post(q));
     rig.device->tick();
     EXPECT_EQ(textOf(rig.newest("live"), "changes"), "camera.exposure_us: 5000 -> 12000");
+    EXPECT_EQ(rig.made, 1); // a slider move is a control on the running camera
     std::string live;
     rig.desk.inEffect(&live);
     EXPECT_EQ(live, "camera.exposure_us: 5000 -> 12000");
@@ -389,4 +390,59 @@ TEST(DeviceRecipe, LiveControlsOnlyWhileAimingAndBackAfter)
     const reading::FlatObject r = rig.newest("result");
     EXPECT_EQ(textOf(r, "exposure_us"), "5000");
     EXPECT_EQ(textOf(r, "recipe_version"), "1");
+}
+
+TEST(DeviceRecipe, OnlyAWhiteBalanceTemperatureMakesTheCameraAgain)
+{
+    DeviceRig rig;
+    ASSERT_TRUE(rig.device->start().ok());
+    const int madeAtStart = rig.made;
+    fw::RecipeDesk::Request q;
+    q.who = "alice (web)";
+    q.why = "test";
+    q.text = "camera.exposure_us = 9000\ncamera.analogue_gain = 2\ncamera.lens_position = 3\n";
+    ASSERT_TRUE(rig.desk.post(q));
+    rig.device->tick();
+    EXPECT_EQ(textOf(rig.newest("recipe"), "recipe_version"), "2");
+    EXPECT_EQ(rig.made, madeAtStart);
+    q.text = "camera.white_balance_k = 4000\n";
+    ASSERT_TRUE(rig.desk.post(q));
+    rig.device->tick();
+    EXPECT_EQ(textOf(rig.newest("recipe"), "recipe_version"), "3");
+    EXPECT_EQ(rig.made, madeAtStart + 1);
+    // Made again with the whole recipe: the controls set on the run before are not lost.
+    rig.serial.in = "trigger\n";
+    rig.device->tick();
+    const reading::FlatObject r = rig.newest("result");
+    EXPECT_EQ(textOf(r, "exposure_us"), "9000");
+    EXPECT_EQ(textOf(r, "recipe_version"), "3");
+}
+
+TEST(RecipeCamera, ChangedControlsAreTheOnesSetInTheNewConfig)
+{
+    hal::CameraControls a, b;
+    a.exposureUs = 5000;
+    a.analogueGain = 1;
+    a.redGain = 1.5;
+    a.blueGain = 1.6;
+    b = a;
+    b.exposureUs = 6000;
+    b.blueGain = 1.7;
+    b.analogueGain = -1; // left unset: not a change to make on the run
+    const hal::CameraControls c = fw::changedControls(a, b);
+    EXPECT_EQ(c.exposureUs, 6000);
+    EXPECT_LT(c.analogueGain, 0);
+    EXPECT_EQ(c.redGain, 1.5); // colour gains go as a pair
+    EXPECT_EQ(c.blueGain, 1.7);
+    EXPECT_FALSE(hal::anyControlSet(fw::changedControls(a, a)));
+    fw::Config x, y;
+    x.exposureUs = 5000;
+    y = x;
+    y.exposureUs = -1; // back to the camera's own exposure: only a camera made again does that
+    EXPECT_TRUE(fw::RecipeCamera::needsRemake(x, y));
+    y = x;
+    y.exposureUs = 7000;
+    EXPECT_FALSE(fw::RecipeCamera::needsRemake(x, y));
+    y.whiteBalanceK = x.whiteBalanceK + 500;
+    EXPECT_TRUE(fw::RecipeCamera::needsRemake(x, y));
 }

@@ -44,11 +44,13 @@ struct LensCamera final : hal::Camera {
         notBefore.push_back(req.notBeforeMs);
         return frames.capture(req, out);
     }
-    hal::Error setLensPosition(double p) override
+    hal::Result<hal::CameraControls> setControls(const hal::CameraControls &c) override
     {
-        lens = p;
-        ++lensCalls;
-        return {};
+        if (c.lensPosition >= 0) {
+            lens = c.lensPosition;
+            ++lensCalls;
+        }
+        return frames.setControls(c);
     }
     hal::Result<double> focusOnce(int) override
     {
@@ -165,7 +167,9 @@ TEST(SetupCommands, ACameraWithoutALensSaysSo)
         f << "P5\n8 8\n255\n" << std::string(64, char(90));
     }
     hal::ManualClock clock;
-    hal::FileCamera camera(clock, {dir, 1, true});
+    hal::FileCameraOptions fixed{dir, 1, true};
+    fixed.fixedFocus = true;
+    hal::FileCamera camera(clock, fixed);
     hal::FileTrigger trigger(clock);
     hal::FileLed led(clock);
     NullDisplay display;

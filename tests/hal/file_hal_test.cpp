@@ -185,3 +185,35 @@ TEST(FileCamera, ScriptedLightLightsTheRowsItReachesAndKeepsTheSceneUntilLit)
     EXPECT_EQ(light.litFraction(double(clock.monotonicMs()), double(clock.monotonicMs()) + 1), 0.0);
     std::filesystem::remove_all(dir);
 }
+
+TEST(FileCamera, ControlsChangeOnTheRunWithoutStartingTheImagesOver)
+{
+    TempDir dir;
+    writePgm(dir.path + "/a.pgm", 8, 8);
+    writePgm(dir.path + "/b.pgm", 8, 8);
+    writePgm(dir.path + "/c.pgm", 8, 8);
+    hal::ManualClock clock;
+    hal::CameraControls made;
+    made.exposureUs = 5000;
+    made.analogueGain = 1;
+    hal::FileCamera cam(clock, {dir.path, 1, false, 0, made});
+    ASSERT_TRUE(cam.configure({hal::PixelFormat::Grey8, 64, 64}).ok());
+    hal::CapturedFrame f;
+    ASSERT_TRUE(cam.capture(500, &f).ok());
+    EXPECT_EQ(f.source, "a.pgm");
+    EXPECT_EQ(f.controls.exposureUs, 5000);
+    hal::CameraControls asked;
+    asked.exposureUs = 12000;
+    asked.lensPosition = 2.5;
+    const hal::Result<hal::CameraControls> took = cam.setControls(asked);
+    ASSERT_TRUE(took.ok()) << took.error.message;
+    EXPECT_EQ(took.value.exposureUs, 12000);
+    EXPECT_EQ(took.value.lensPosition, 2.5);
+    EXPECT_LT(took.value.analogueGain, 0); // not asked
+    ASSERT_TRUE(cam.capture(500, &f).ok());
+    EXPECT_EQ(f.source, "b.pgm"); // the list goes on
+    EXPECT_EQ(f.controls.exposureUs, 12000);
+    EXPECT_EQ(f.exposureUs, 12000);
+    EXPECT_EQ(f.controls.analogueGain, 1); // kept
+    EXPECT_EQ(f.controls.lensPosition, 2.5);
+}

@@ -66,7 +66,9 @@ struct FakeVideo {
     bool streaming = false, unplugged = false;
     // What a UVC camera lists: formats with their discrete sizes (empty: ENUM_FMT unsupported).
     std::vector<std::pair<uint32_t, std::vector<std::pair<uint32_t, uint32_t>>>> listed;
-    std::map<uint32_t, int32_t> controls;      // supported controls and their values
+    std::map<uint32_t, int32_t> controls; // supported controls and their values
+    // QUERYCTRL's minimum, maximum and step per control (absent: 0 … 1 000 000 in steps of 1).
+    std::map<uint32_t, std::tuple<int32_t, int32_t, int32_t>> ranges;
     uint32_t intervalNum = 0, intervalDen = 0; // G_PARM (0: unsupported); S_PARM sets it
     // ENUM_FRAMEINTERVALS: frame rates (frames per second, discrete) per format and size.
     std::map<std::tuple<uint32_t, uint32_t, uint32_t>, std::vector<uint32_t>> rates;
@@ -157,6 +159,18 @@ gboolean onIoctl(UMockdevIoctlBase *, UMockdevIoctlClient *client, gpointer user
             it->second = c->value;
         else
             c->value = it->second;
+        return done(0);
+    }
+    case VIDIOC_QUERYCTRL: {
+        auto *q = test::ioctlArg<v4l2_queryctrl>(client);
+        if (!q) return done(EFAULT);
+        if (!v->controls.count(q->id)) return done(EINVAL);
+        const auto r = v->ranges.count(q->id) ? v->ranges[q->id] : std::make_tuple(0, 1000000, 1);
+        q->type = V4L2_CTRL_TYPE_INTEGER;
+        q->minimum = std::get<0>(r);
+        q->maximum = std::get<1>(r);
+        q->step = std::get<2>(r);
+        q->flags = 0;
         return done(0);
     }
     case VIDIOC_QUERYCAP: {
@@ -451,6 +465,88 @@ TEST_F(V4l2Mock, ImagingControlsAreSetAndReadBack)
     EXPECT_EQ(frame.controls.lensPosition, 250);
     EXPECT_EQ(frame.controls.analogueGain, 12); // read back right after setting
     EXPECT_LT(frame.controls.redGain, 0);       // not reported
+}
+
+TEST_F(V4l2Mock, ControlsChangeOnTheStreamingCameraWithinTheDriversRanges)
+{
+    {
+        std::lock_guard<std::mutex> lock(video_.m);
+        video_.controls = {{V4L2_CID_EXPOSURE_AUTO, V4L2_EXPOSURE_APERTURE_PRIORITY},
+                           {V4L2_CID_EXPOSURE_AUTO_PRIORITY, 1},
+                           {V4L2_CID_EXPOSURE_ABSOLUTE, 156},
+                           {V4L2_CID_GAIN, 0},
+                           {V4L2_CID_FOCUS_AUTO, 1},
+                           {V4L2_CID_FOCUS_ABSOLUTE, 0}};
+        // A C920's ranges (uvcvideo from the camera's GET_MIN / GET_MAX / GET_RES).
+        video_.ranges = {{V4L2_CID_EXPOSURE_ABSOLUTE, {3, 2047, 1}},
+                         {V4L2_CID_GAIN, {0, 255, 1}},
+                         {V4L2_CID_FOCUS_ABSOLUTE, {0, 250, 5}}};
+    }
+    hal::V4l2Camera cam(clock_, opts("/dev/video0", 2), &mapper_);
+    ASSERT_TRUE(cam.configure({hal::PixelFormat::YUYV, 640, 480}).ok());
+    size_t before = 0;
+    {
+        std::lock_guard<std::mutex> lock(video_.m);
+        before = video_.seen.size();
+    }
+    hal::CameraControls asked;
+    asked.exposureUs = 12000;
+    asked.analogueGain = 300; // above the range: the driver's maximum
+    asked.lensPosition = 123; // between steps of 5: the nearest
+    const hal::Result<hal::CameraControls> took = cam.setControls(asked);
+    ASSERT_TRUE(took.ok()) << took.error.message;
+    EXPECT_EQ(took.value.exposureUs, 12000);
+    EXPECT_EQ(took.value.analogueGain, 255);
+    EXPECT_EQ(took.value.lensPosition, 125);
+    {
+        std::lock_guard<std::mutex> lock(video_.m);
+        EXPECT_EQ(video_.controls[V4L2_CID_EXPOSURE_AUTO], V4L2_EXPOSURE_MANUAL); // auto off first
+        EXPECT_EQ(video_.controls[V4L2_CID_EXPOSURE_AUTO_PRIORITY], 0);
+        EXPECT_EQ(video_.controls[V4L2_CID_EXPOSURE_ABSOLUTE], 120); // 100 µs steps
+        EXPECT_EQ(video_.controls[V4L2_CID_GAIN], 255);
+        EXPECT_EQ(video_.controls[V4L2_CID_FOCUS_AUTO], 0);
+        EXPECT_EQ(video_.controls[V4L2_CID_FOCUS_ABSOLUTE], 125);
+        // On the running stream: no stream off, no buffers freed or asked again.
+        for (size_t i = before; i < video_.seen.size(); ++i) {
+            EXPECT_NE(video_.seen[i], VIDIOC_STREAMOFF);
+            EXPECT_NE(video_.seen[i], VIDIOC_REQBUFS);
+            EXPECT_NE(video_.seen[i], VIDIOC_S_FMT);
+        }
+        EXPECT_TRUE(video_.streaming);
+    }
+    // A frame exposed before the change is the old exposure: not handed out, even to a capture
+    // that would take any frame (its LED settled long ago); the one after is, reporting what
+    // the device took.
+    const int64_t now = nowNs();
+    expose(now - 5000000, 1);
+    expose(now + 1000000000, 2);
+    hal::CapturedFrame frame;
+    ASSERT_TRUE(cam.capture(hal::CaptureRequest{0, 1500}, &frame).ok());
+    EXPECT_EQ(frame.view.data[0], 2);
+    EXPECT_GE(frame.staleFrames, 1);
+    EXPECT_EQ(frame.controls.exposureUs, 12000);
+    EXPECT_EQ(frame.controls.analogueGain, 255);
+    EXPECT_EQ(frame.controls.lensPosition, 125);
+}
+
+TEST_F(V4l2Mock, AControlTheCameraLacksChangesNothing)
+{
+    {
+        std::lock_guard<std::mutex> lock(video_.m);
+        video_.controls = {{V4L2_CID_EXPOSURE_AUTO, V4L2_EXPOSURE_APERTURE_PRIORITY},
+                           {V4L2_CID_EXPOSURE_ABSOLUTE, 156}};
+    }
+    hal::V4l2Camera cam(clock_, opts("/dev/video0", 2), &mapper_);
+    ASSERT_TRUE(cam.configure({hal::PixelFormat::YUYV, 640, 480}).ok());
+    hal::CameraControls asked;
+    asked.exposureUs = 20000;
+    asked.lensPosition = 100; // a fixed-focus webcam
+    const hal::Result<hal::CameraControls> took = cam.setControls(asked);
+    EXPECT_EQ(took.error.code, hal::Errc::Invalid);
+    EXPECT_NE(took.error.message.find("focus_absolute"), std::string::npos) << took.error.message;
+    std::lock_guard<std::mutex> lock(video_.m);
+    EXPECT_EQ(video_.controls[V4L2_CID_EXPOSURE_ABSOLUTE], 156);
+    EXPECT_EQ(video_.controls[V4L2_CID_EXPOSURE_AUTO], V4L2_EXPOSURE_APERTURE_PRIORITY);
 }
 
 TEST_F(V4l2Mock, SkipsFramesExposedBeforeTheTriggerAndRecyclesBuffers)
