@@ -170,6 +170,9 @@ private:
     std::string idleNote(std::string_view note) const;
     void buildRecord(long id, const char *origin, const std::string &tag, const reading::Reading &m,
                      std::string_view problem, const hal::CapturedFrame *frame, std::string_view image, long ms);
+    // The frame saved beside its record as img-NNNNNN.pgm when the journal keeps images: its
+    // name, or "" (with *problem saying why where saving failed).
+    std::string journalFrame(long id, const vision::LumaView &v, std::string *problem);
     hal::Error saveImage(std::string_view name, const vision::LumaView &v);
     void persistSettings();
     void showOrLog(const hal::MonoBitmap &bmp);

@@ -30,17 +30,8 @@ void Device::measure(const char *origin, const std::string &tag)
 
     state_ = State::Report;
     lastId_ = id;
-    std::string imageName;
     std::string storageProblem;
-    if (captured && problem.empty() && cfg_.journalImages == "pgm") {
-        char name[32];
-        std::snprintf(name, sizeof name, "img-%06ld.pgm", id);
-        if (hal::Error e = saveImage(name, luma); e.ok())
-            imageName = name;
-        else
-            storageProblem =
-                e.code == hal::Errc::Full ? "storage full: image not saved" : "image not saved: " + e.message;
-    }
+    const std::string imageName = captured && problem.empty() ? journalFrame(id, luma, &storageProblem) : "";
     buildRecord(id, origin, tag, m, problem, captured ? &frame : nullptr, imageName,
                 long(hal_.clock.monotonicMs() - t0));
     // The record is durable before anyone hears of it: what was reported survives a crash.
@@ -125,6 +116,17 @@ void Device::buildRecord(long id, const char *origin, const std::string &tag, co
     }
     if (!tag.empty()) j.str("tag", tag);
     j.end();
+}
+
+std::string Device::journalFrame(long id, const vision::LumaView &v, std::string *problem)
+{
+    if (cfg_.journalImages != "pgm") return {};
+    char name[32];
+    std::snprintf(name, sizeof name, "img-%06ld.pgm", id);
+    const hal::Error e = saveImage(name, v);
+    if (e.ok()) return name;
+    *problem = e.code == hal::Errc::Full ? "storage full: image not saved" : "image not saved: " + e.message;
+    return {};
 }
 
 hal::Error Device::saveImage(std::string_view name, const vision::LumaView &v)

@@ -27,16 +27,8 @@ void Device::scaleCheck(const Command &c)
 
     state_ = State::Report;
     lastId_ = id;
-    std::string imageName, storageProblem;
-    if (captured && problem.empty() && cfg_.journalImages == "pgm") {
-        char name[32];
-        std::snprintf(name, sizeof name, "img-%06ld.pgm", id);
-        if (hal::Error e = saveImage(name, luma); e.ok())
-            imageName = name;
-        else
-            storageProblem =
-                e.code == hal::Errc::Full ? "storage full: image not saved" : "image not saved: " + e.message;
-    }
+    std::string storageProblem;
+    const std::string imageName = captured && problem.empty() ? journalFrame(id, luma, &storageProblem) : "";
     out_.clear();
     reading::JsonBuilder j(&out_);
     char when[96];
