@@ -4,7 +4,7 @@ A device in a temporary folder (frames from tests/data/sample, looped), its seri
 a mosquitto broker on a free loopback port. ICACAM_EMULATOR (e.g. "qemu-aarch64 -L ...")
 prefixes the device program.
 """
-import json, os, select, shutil, signal, socket, subprocess, sys, tempfile, time
+import json, os, pwd, select, shutil, signal, socket, subprocess, sys, tempfile, time
 
 SKIP = 77
 EMULATOR = os.environ.get("ICACAM_EMULATOR", "").split()
@@ -57,9 +57,11 @@ class Broker:
         self.port = free_port()
         self.folder = folder
         self.conf = os.path.join(folder, "broker.conf")
+        # Started as root, mosquitto drops to the user "mosquitto", which cannot write the
+        # store in a private temporary folder: the sessions would then be lost at a restart.
         with open(self.conf, "w") as f:
             f.write("listener %d 127.0.0.1\nallow_anonymous true\npersistence true\n"
-                    "persistence_location %s/\n" % (self.port, folder))
+                    "persistence_location %s/\nuser %s\n" % (self.port, folder, pwd.getpwuid(os.geteuid()).pw_name))
         self.proc = None
 
     def start(self):
@@ -77,6 +79,9 @@ class Broker:
     def stop(self):
         self.proc.send_signal(signal.SIGTERM)
         self.proc.wait(10)
+        with open(os.path.join(self.folder, "broker.log"), errors="replace") as f:
+            if "Error saving" in f.read():
+                fail("the broker could not save its sessions (broker.log)")
 
 
 class Subscriber:
