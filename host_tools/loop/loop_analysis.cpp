@@ -359,6 +359,11 @@ bool isReductionCandidate(const std::string &name)
     return name == "reduction" || name == "h_final_mm" || name == "diag_reduction_est";
 }
 
+bool passesSingleComparison(const RankedCandidate &c, const RankingOptions &opt)
+{
+    return c.gain > 0 && c.z > normalUpperQuantile(opt.alpha) && c.gain >= opt.minRelativeGain * c.cvRmsBefore;
+}
+
 double rms(const std::vector<double> &v)
 {
     double s = 0;
@@ -665,9 +670,7 @@ void nameTheLeadingSymptomsCause(const std::vector<Candidate> &candidates, std::
     double bestR2 = -1;
     for (size_t k = 0; k < o.size(); ++k) {
         const RankedCandidate &c = out[o[k]];
-        if (c.symptom || c.significant || c.kind == "interaction" ||
-            !(c.gain > 0 && c.z > zSingle && c.gain >= opt.minRelativeGain * c.cvRmsBefore))
-            continue;
+        if (c.symptom || c.significant || c.kind == "interaction" || !passesSingleComparison(c, opt)) continue;
         bool told = pairedZ(errors[o[k]], errors[o[lead]]) >= 2.0;
         for (size_t j = 0; j < k && !told; ++j) told = out[o[j]].symptom && pairedZ(errors[o[k]], errors[o[j]]) >= 2.0;
         double zAssoc = 0;

@@ -84,6 +84,10 @@ struct RankedCandidate {
     // On a significant recorded condition put first although symptoms explain the residual
     // significantly better: those symptoms (they see more than it; the next round looks again).
     std::vector<std::string> aheadOfBetter;
+    // Significant only with another recorded condition taken out (the two hid each other): that
+    // condition, and this one's z on the records it leaves.
+    std::string given;
+    double givenZ = 0;
 };
 
 // A candidate's physical form fitted outside the ranking: held-out errors per record under it
@@ -101,6 +105,10 @@ struct RankingOptions {
     double alpha = 0.01;           // family-wise, Bonferroni over the candidates and forms
     double minRelativeGain = 0.05; // a chosen effect must cut the CV RMS by at least 5 %
 };
+
+// The test of a single comparison: a gain, z above the one-sided α quantile, and the minimum
+// relative gain.
+bool passesSingleComparison(const RankedCandidate &c, const RankingOptions &opt);
 
 // Fold index per record: a seeded permutation dealt round-robin (reproducible everywhere).
 std::vector<int> foldAssignment(size_t count, int folds, uint32_t seed);

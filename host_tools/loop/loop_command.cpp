@@ -281,6 +281,7 @@ LoopEffectStep readEffect(const FrictionModel &model, const ResidualSet &set, co
     step.z = lead.z, step.cvRmsPatch = lead.cvRmsPatch, step.cvRmsAfter = lead.cvRmsAfter;
     step.symptom = lead.symptom, step.viaSymptom = lead.viaSymptom;
     step.preferredOver = lead.preferredOver, step.pointedBy = lead.pointedBy;
+    step.given = lead.given, step.givenZ = lead.givenZ;
     // The reduction's names (h_final_mm, reduction) are one cause, not two that cannot be told apart.
     for (const std::string &other : lead.inseparable)
         if (!(isReductionCandidate(lead.name) && isReductionCandidate(other))) step.inseparable.push_back(other);
@@ -354,6 +355,82 @@ void markTaken(const LoopEffectStep &step, std::set<std::string> *taken)
     taken->insert(step.inseparable.begin(), step.inseparable.end());
 }
 
+// One round: the candidates left (not taken) ranked on what the records' residual now is,
+// the reduction in its FE form while it has not been carried. Fills *round.
+std::vector<RankedCandidate> rankRound(const FrictionModel &model, const fe::ReductionSlope *slope,
+                                       const std::vector<LoopRecord> &records, const std::set<std::string> &taken,
+                                       bool carried, const std::vector<int> &fold, int folds, const RankingOptions &opt,
+                                       ResidualSet *round)
+{
+    round->folds = folds, round->fold = fold;
+    setRound(round, records, taken);
+    std::map<std::string, std::vector<double>> physicalForms;
+    if (slope && !carried && !model.correctsReduction()) physicalForms = reductionChange(model, *round, *slope);
+    const std::map<std::string, FittedForm> fittedForms = groupingForms(model, *round);
+    return rankCandidates(round->candidates, round->residual, opt, &round->scaleSens, &round->uSens, &physicalForms,
+                          &fittedForms);
+}
+
+// The round's records with a candidate ranked on `rankedOn` taken out in its physical form
+// (fitted on every record), and the names it takes out of later rounds.
+std::vector<LoopRecord> withCandidateOut(const FrictionModel &model, const fe::ReductionSlope *slope,
+                                         const ResidualSet &round, const ResidualSet &rankedOn,
+                                         const RankedCandidate &lead, bool carried, std::set<std::string> *taken)
+{
+    const bool physicalReduction = isReductionCandidate(lead.name) && !model.correctsReduction() && slope && !carried;
+    const LoopEffectStep step = readEffect(model, rankedOn, lead, physicalReduction);
+    std::vector<LoopRecord> records = round.usable;
+    if (const Candidate *c = candidateNamed(round, step.name))
+        applyEffect(model, slope, step, *c, &records, round.fold, -1);
+    markTaken(step, taken);
+    return records;
+}
+
+// Two effects can hide each other: each one's records carry the other's scatter, and neither
+// is significant over the family on its own. When no recorded condition is, the leading one
+// that passes the test of a single comparison is taken out: where a recorded condition is
+// then significant over the family (not through a symptom), and the leader is significant
+// over the family with that one taken out instead, the leader counts (`given`) and is put
+// first; the other leads the next round, on the records the leader leaves.
+void lookPastAMaskingEffect(const FrictionModel &model, const fe::ReductionSlope *slope, const ResidualSet &round,
+                            const std::set<std::string> &taken, bool carried, const RankingOptions &opt,
+                            std::vector<RankedCandidate> *ranking)
+{
+    std::vector<RankedCandidate> &r = *ranking;
+    if (r.empty() || (r.front().significant && !r.front().symptom)) return;
+    size_t lead = 0;
+    while (lead < r.size() && (r[lead].symptom || !passesSingleComparison(r[lead], opt))) ++lead;
+    if (lead == r.size()) return;
+    std::set<std::string> takenLead = taken;
+    const std::vector<LoopRecord> leadOut = withCandidateOut(model, slope, round, round, r[lead], carried, &takenLead);
+    ResidualSet next;
+    const std::vector<RankedCandidate> after =
+        rankRound(model, slope, leadOut, takenLead, carried, round.fold, round.folds, opt, &next);
+    // The other must be another cause: the reduction carried with the FE stays a candidate for
+    // the FE slope's own error, which is the same cause.
+    if (after.empty() || !after.front().significant || after.front().symptom || after.front().viaSymptom ||
+        after.front().name == r[lead].name ||
+        (isReductionCandidate(after.front().name) && isReductionCandidate(r[lead].name)))
+        return;
+    std::set<std::string> takenOther = taken;
+    const std::vector<LoopRecord> otherOut =
+        withCandidateOut(model, slope, round, next, after.front(), carried, &takenOther);
+    ResidualSet again;
+    const std::vector<RankedCandidate> given =
+        rankRound(model, slope, otherOut, takenOther, carried, round.fold, round.folds, opt, &again);
+    const auto it =
+        std::find_if(given.begin(), given.end(), [&](const RankedCandidate &g) { return g.name == r[lead].name; });
+    if (it == given.end() || !it->significant || it->viaSymptom) return;
+    RankedCandidate moved = r[lead];
+    moved.significant = true;
+    moved.given = after.front().name;
+    moved.givenZ = it->z;
+    for (size_t j = 0; j < lead; ++j)
+        if (r[j].symptom && r[j].significant) moved.aheadOfBetter.push_back(r[j].name);
+    r.erase(r.begin() + long(lead));
+    r.insert(r.begin(), std::move(moved));
+}
+
 // Held-out errors with every effect fitted on each fold's training records: record i as the
 // records of its fold's state give it.
 std::vector<double> heldOut(const std::vector<std::vector<LoopRecord>> &perFold, const std::vector<int> &fold)
@@ -386,13 +463,9 @@ void addFurtherEffects(const FrictionModel &model, const fe::ReductionSlope *slo
     double cvNow = rms(heldOut(perFold, first.fold));
     while (s->effects.size() < kMaxEffects) {
         ResidualSet round;
-        round.folds = first.folds, round.fold = first.fold;
-        setRound(&round, all, taken);
-        std::map<std::string, std::vector<double>> physicalForms;
-        if (slope && !carried && !model.correctsReduction()) physicalForms = reductionChange(model, round, *slope);
-        const std::map<std::string, FittedForm> fittedForms = groupingForms(model, round);
-        const std::vector<RankedCandidate> ranking = rankCandidates(
-            round.candidates, round.residual, opt, &round.scaleSens, &round.uSens, &physicalForms, &fittedForms);
+        std::vector<RankedCandidate> ranking =
+            rankRound(model, slope, all, taken, carried, first.fold, first.folds, opt, &round);
+        lookPastAMaskingEffect(model, slope, round, taken, carried, opt, &ranking);
         if (ranking.empty() || !ranking.front().significant) {
             s->lastRanking = ranking;
             s->stopped = "no further candidate is significant" +
@@ -532,6 +605,7 @@ LoopSummary runLoopOn(const Manifest &manifest, const std::string &source,
     const std::map<std::string, FittedForm> fittedForms = groupingForms(*model, set);
     s.ranking =
         rankCandidates(set.candidates, set.residual, opt, &set.scaleSens, &set.uSens, &physicalForms, &fittedForms);
+    lookPastAMaskingEffect(*model, slopeLoaded ? &slope : nullptr, set, {}, false, opt, &s.ranking);
     s.cvRmsOffset = offsetCvRms(set.residual, set.fold, set.folds);
     s.cvRmsAfter = s.rmsBefore;
     if (!s.ranking.empty() && s.ranking.front().significant) {

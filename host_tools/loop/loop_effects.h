@@ -28,6 +28,8 @@ struct LoopEffectStep {
     double cvRmsAfter = 0;  // held-out RMS with it added (every effect refitted per fold)
     bool symptom = false, viaSymptom = false;
     std::vector<std::string> preferredOver, pointedBy, inseparable;
+    std::string given; // significant only with this other effect taken out (RankedCandidate::given)
+    double givenZ = 0;
     PhysicalFit grouping;                  // scale, n
     LinearEffect linear;                   // process (numeric)
     std::vector<std::string> slopeLevels;  // process (a slope per level): the levels, with

@@ -236,6 +236,11 @@ void writePhysicalSection(std::ostream &f, const LoopEffectStep &e, bool first, 
                           "working distance), form `u` to the upsetting.\n"
                         : "\n");
     }
+    if (!e.given.empty())
+        f << "\nNot significant over the family on its own: with `" << e.given << "` taken out it is (z "
+          << fmt(e.givenZ, "%.1f") << "), and `" << e.given
+          << "` is with it taken out. Each carried the other's scatter; the next effect is read on what this one "
+             "leaves.\n";
     if (!e.inseparable.empty())
         f << "\nNot separable from " << list(e.inseparable) << ": they group these records the same way and explain "
           << "the residual as well (paired z < 2). The records cannot say which it is; `" << e.name

@@ -183,6 +183,19 @@ TEST(LoopSeveral, SpeedWithinOneMaterialIsNotReadAsTheMaterial)
     EXPECT_GE(t.exact, 9);
 }
 
+// A camera and a speed within one material that hide each other (seed 20 of the set: neither is
+// significant over the family alone, a measured radius is): the leading cause is taken out,
+// the camera is then significant, and the speed is with the camera taken out; both are added
+// and the radius is not.
+TEST(LoopSeveral, TwoEffectsThatHideEachOtherAreBothAdded)
+{
+    const SetRun run = runSet("masking", LoopEffect::Camera | LoopEffect::SpeedInMaterial, 20);
+    std::string what;
+    EXPECT_TRUE(foundExactly(run.summary, LoopEffect::Camera | LoopEffect::SpeedInMaterial, &what)) << what;
+    ASSERT_FALSE(run.summary.effects.empty());
+    EXPECT_EQ(run.summary.effects.front().given, "camera_id");
+}
+
 // The drift alone: read as a length factor moving along the sequence, rising by the
 // generator's 8 % over the run within the stated U (k = 2) in at least 8 runs of 10.
 TEST(LoopSeveral, DriftReadAsAMovingLengthFactor)
