@@ -142,8 +142,7 @@ LevelEnd fitLevelEnd(const int32_t *profile, int count, int lo, int hi, double e
     const double span = pts.x[pts.n - 1] - best.e;
     out.jump = c[1];
     out.barrelChange = c[2] * span + (basis == 3 ? c[3] * span * span : 0.0);
-    out.stepSuffices =
-        std::fabs(out.barrelChange) < std::max(kMinChangeGrey, kMinChangeOfJump * std::fabs(out.jump));
+    out.stepSuffices = std::fabs(out.barrelChange) < std::max(kMinChangeGrey, kMinChangeOfJump * std::fabs(out.jump));
     if (!out.stepSuffices) out.edge = best.e;
     return out;
 }

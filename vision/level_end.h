@@ -24,10 +24,10 @@ namespace icacam::vision {
 
 struct LevelEnd {
     bool found = false;
-    double edge = 0;       // e, in samples
+    double edge = 0;          // e, in samples
     bool stepSuffices = true; // a blurred step between two levels explains the profile
-    double jump = 0;         // J: the level's step onto the barrel (grey levels)
-    double barrelChange = 0; // the barrel's change from the edge to the window's end (grey levels)
+    double jump = 0;          // J: the level's step onto the barrel (grey levels)
+    double barrelChange = 0;  // the barrel's change from the edge to the window's end (grey levels)
 };
 
 // profile: a mean profile in Q8 grey at 1 px steps; the fit reads samples lo … hi and

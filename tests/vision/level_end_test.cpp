@@ -46,7 +46,8 @@ TEST(LevelEnd, ABlurredStepIsLeftToTheDerivative)
 {
     int32_t p[kCount];
     for (uint32_t seed = 1; seed <= 5; ++seed) {
-        draw(p, [](double x) { return x < kEdge ? 120.0 : 60.0; }, 1.2, 0.3, seed);
+        draw(
+            p, [](double x) { return x < kEdge ? 120.0 : 60.0; }, 1.2, 0.3, seed);
         const LevelEnd e = fitLevelEnd(p, kCount, 6, 22, 9, 20, 1.2);
         ASSERT_TRUE(e.found);
         EXPECT_TRUE(e.stepSuffices) << "seed " << seed;
@@ -57,14 +58,16 @@ TEST(LevelEnd, ABarrelFallingAwayEndsTheLevelAtTheEdge)
 {
     int32_t p[kCount];
     // A jump of 12 grey levels, then 4 a pixel: steepest 1–3 px beyond the edge.
-    draw(p, [](double x) { return x < kEdge ? 83.0 : 71.0 - 4.0 * (x - kEdge); }, 1.35, 0.2, 7);
+    draw(
+        p, [](double x) { return x < kEdge ? 83.0 : 71.0 - 4.0 * (x - kEdge); }, 1.35, 0.2, 7);
     ASSERT_GT(steepest(p) - kEdge, 0.6);
     LevelEnd e = fitLevelEnd(p, kCount, 6, 22, 9, 20, 1.35);
     ASSERT_TRUE(e.found);
     EXPECT_FALSE(e.stepSuffices);
     EXPECT_NEAR(e.edge, kEdge, 0.3);
     // No jump at all: the barrel's slope changes at the edge.
-    draw(p, [](double x) { return x < kEdge ? 200.0 : 200.0 - 9.0 * (x - kEdge); }, 0.9, 0.3, 8);
+    draw(
+        p, [](double x) { return x < kEdge ? 200.0 : 200.0 - 9.0 * (x - kEdge); }, 0.9, 0.3, 8);
     e = fitLevelEnd(p, kCount, 6, 22, 9, 20, 0.9);
     ASSERT_TRUE(e.found);
     EXPECT_FALSE(e.stepSuffices);
@@ -77,7 +80,8 @@ TEST(LevelEnd, ALitShoulderEndsTheLevelAtTheEdge)
     // The barrel lit just beyond the edge (20 grey levels over the ring), then turning into
     // the dark.
     for (uint32_t seed = 1; seed <= 5; ++seed) {
-        draw(p, [](double x) { return x < kEdge ? 96.0 : 116.0 - 2.0 * (x - kEdge) * (x - kEdge); }, 1.35, 0.2, seed);
+        draw(
+            p, [](double x) { return x < kEdge ? 96.0 : 116.0 - 2.0 * (x - kEdge) * (x - kEdge); }, 1.35, 0.2, seed);
         ASSERT_GT(steepest(p) - kEdge, 1.5);
         const LevelEnd e = fitLevelEnd(p, kCount, 6, 22, 9, 20, 1.35);
         ASSERT_TRUE(e.found);
@@ -90,7 +94,8 @@ TEST(LevelEnd, TheBlurOfAStepBetweenTwoLevels)
 {
     int32_t p[kCount];
     for (double blur : {0.7, 1.0, 1.6, 2.2}) {
-        draw(p, [](double x) { return x < kEdge ? 110.0 : 80.0; }, blur, 0.3, 3);
+        draw(
+            p, [](double x) { return x < kEdge ? 110.0 : 80.0; }, blur, 0.3, 3);
         EXPECT_NEAR(fitStepBlur(p, kCount, 8, 26, kEdge - 2, kEdge + 2), blur, 0.1) << blur;
     }
 }
