@@ -33,15 +33,6 @@ bool usable(const uint16_t *level, int count, int i)
 {
     return i >= 0 && i < count && level[i] != kOutsideFrame;
 }
-
-// The level's change across an edge's flanks (Q8 grey): a barrel ramping away spreads the
-// contact edge's step over several samples, lowering its derivative's peak but not its height.
-int32_t stepHeight(const uint16_t *level, int count, const ProfileEdge &e)
-{
-    const int a = e.flankLo - 1, b = e.flankHi + 1;
-    if (!usable(level, count, a) || !usable(level, count, b)) return 0;
-    return std::abs(int32_t(level[b]) - int32_t(level[a]));
-}
 } // namespace
 
 ProfileEdges findProfileEdges(const uint16_t *level, const int32_t *deriv, int count, int lo, int hi,
@@ -126,10 +117,8 @@ int contactEdgeByZones(const uint16_t *level, int count, const ProfileEdges &edg
     if (first == ZoneKind::Short || edges.count < 2) return -1;
     // A level beyond the first edge: the ring, ended by the contact edge, unless a level
     // follows that too (a drawn barrel band: the zones do not tell) or the second edge is
-    // small beside the first (a highlight line on a drawn barrel, a groove on the ring): small
-    // in the level's change across it, which a barrel ramping away from the contact edge
-    // spreads over several samples without lowering it.
-    if (kMuchStronger * stepHeight(level, count, e[1]) < stepHeight(level, count, e[0])) return -1;
+    // weak beside the first (a highlight line on a drawn barrel, a groove on the ring).
+    if (kMuchStronger * e[1].strength < e[0].strength) return -1;
     return zoneBeyond(level, count, edges, 1, window) == ZoneKind::Level ? -1 : 1;
 }
 

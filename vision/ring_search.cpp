@@ -7,7 +7,6 @@
 #include "vision/angle_table.h"
 #include "vision/boundary_fit.h"
 #include "vision/edge_profile.h"
-#include "vision/level_end.h"
 #include "vision/narrow_ring.h"
 #include "vision/profile_zones.h"
 #include "vision/radial_profile.h"
@@ -790,51 +789,6 @@ bool RingSearch::originalFaceOnRays(OriginalFaceName name, const AlignedProfile 
     return true;
 }
 
-double RingSearch::originalFaceBlur(const double *innerR, double widthPx) const
-{
-    // Either side of the edge up to half the ring, at most 10 px (the face's grain and the
-    // ring's grooves beyond add nothing to a blur of 0.5–2 px).
-    const int half = std::min(10, int(0.5 * widthPx));
-    if (half < 4) return -1;
-    const int count = 2 * half + 1;
-    uint32_t sum[21] = {}, n[21] = {};
-    uint16_t row[21];
-    for (int i = 0; i < kRays; i += kAlignStride) {
-        RaySpec ray{Q16_16::fromDouble(cx),
-                    Q16_16::fromDouble(cy),
-                    rayCosQ_[i],
-                    raySinQ_[i],
-                    Q16_16::fromDouble(innerR[i] - half),
-                    Q16_16::fromDouble(1.0)};
-        sampleRay(*frame, ray, count, row);
-        for (int k = 0; k < count; ++k)
-            if (row[k] != kOutsideFrame) sum[k] += row[k], ++n[k];
-    }
-    int32_t level[21];
-    for (int k = 0; k < count; ++k) {
-        if (n[k] * 2 < uint32_t(kRays / kAlignStride)) return -1;
-        level[k] = int32_t(sum[k] / n[k]);
-    }
-    return fitStepBlur(level, count, 0, count - 1, half - 2, half + 2);
-}
-
-double RingSearch::levelEndOffset(const AlignedProfile &p, double widthPx, double blurPx) const
-{
-    if (!(blurPx > 0)) return 0;
-    // The ring's level from beyond the original face's blur (3σ and 2 px) to the contact edge,
-    // at most 12 px of it; the barrel up to 5 px beyond the derivative's peak (a quadratic
-    // holds over that much of it: farther out the barrel's fall slows, and a quadratic bent to
-    // follow it pulls the edge inwards).
-    const int inside = std::min(12, int(widthPx - 3 * blurPx - 2));
-    if (inside < 5) return 0;
-    const int lo = p.K - inside, hi = p.K + std::min(5, p.M);
-    for (int k = lo; k <= hi; ++k)
-        if (p.level[k] == 0) return 0; // off the frame
-    const LevelEnd end = fitLevelEnd(p.level, p.count(), lo, hi, lo + 3.0, p.K + 2.0, blurPx);
-    if (!end.found || end.stepSuffices) return 0;
-    return end.edge - p.K;
-}
-
 bool RingSearch::narrowRingFromProfile(const AlignedProfile &p, int signOuter, double startWidthPx, BoundaryFit *outer,
                                        BoundaryFit *inner, double *contrastInner)
 {
@@ -937,19 +891,8 @@ ErrorCode RingSearch::ringAbout(const MeanEdges &me, EndFaceGeometry *m)
     // that the derivative happened to peak on, not the original face.
     if (originalFaceOnRays(name, profile, outerR, m, &inner, innerR, &contrastInner) &&
         std::fabs(contrastInner) >= kMinInnerContrast) {
-        const double width = outer.rEqPx - inner.rEqPx;
-        if (width < kNarrowRingPx) {
-            narrowRingFromProfile(profile, me.signOuter, width, &outer, &inner, &contrastInner);
-        } else {
-            // The derivative's peak is where the profile is steepest; the contact edge is where
-            // the ring's level ends, which a barrel ramping away from it puts inside the peak.
-            const double blur = originalFaceBlur(innerR, width);
-            const double shift = levelEndOffset(profile, width, blur);
-            if (shift != 0) {
-                outer.a0 += shift, outer.rEqPx += shift;
-                for (int i = 0; i < kRays; ++i) outerR[i] += shift;
-            }
-        }
+        if (outer.rEqPx - inner.rEqPx < kNarrowRingPx)
+            narrowRingFromProfile(profile, me.signOuter, outer.rEqPx - inner.rEqPx, &outer, &inner, &contrastInner);
     } else if (narrowRingFromProfile(profile, me.signOuter, 0.0, &outer, &inner, &contrastInner)) {
         // No ray saw the original face's edge: the profile alone says the ring is narrow,
         // and the reading says so (warn).

@@ -81,14 +81,6 @@ struct RingSearch {
     // (inner, its curve innerR at every fine ray, its contrast); false where it is not found.
     bool originalFaceOnRays(OriginalFaceName name, const AlignedProfile &p, const double *outerR, EndFaceGeometry *m,
                             BoundaryFit *inner, double *innerR, double *contrast);
-    // The original face's edge's blur (Gaussian σ, pixels; −1: none fits), from the mean
-    // profile across it following its fitted curve innerR: a step between two levels, so its
-    // blur is the optics' own.
-    double originalFaceBlur(const double *innerR, double widthPx) const;
-    // Where the ring's level ends (level_end.h) relative to the fitted contact edge, on the
-    // aligned profile: 0 where a blurred step explains the profile (the derivative's peak
-    // stands) or nothing fits.
-    double levelEndOffset(const AlignedProfile &p, double widthPx, double blurPx) const;
     // A ring too narrow for the per-ray search: both edges from the aligned profile's
     // two-step fit (narrow_ring.h), the original face's edge following the contact edge's
     // shape at the fitted width. startWidthPx: the rays' width to start from (0: none).
