@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "vision/normal_cdf.h"
+
 namespace icacam::vision {
 
 namespace {
@@ -23,28 +25,9 @@ constexpr int kFaceFrom = 16, kFaceWindow = 8;
 constexpr double kMinInnerStep = 5 * 256;
 constexpr int32_t kClipped = 254 * 256;
 
-// Φ, the normal distribution function, from a table (the fit evaluates it some ten thousand
-// times per ring): 1/64 steps over ±8, linear between, off by under 1e-5. Filled when the
-// program starts, not in a measurement.
-struct PhiTable {
-    static constexpr int kPerUnit = 64, kHalf = 8 * kPerUnit;
-    double v[2 * kHalf + 2];
-    PhiTable()
-    {
-        for (int i = 0; i <= 2 * kHalf + 1; ++i)
-            v[i] = 0.5 * std::erfc(-(double(i - kHalf) / kPerUnit) * 0.7071067811865476);
-    }
-};
-const PhiTable phiTable;
-
 double phi(double z)
 {
-    const double t = z * PhiTable::kPerUnit + PhiTable::kHalf;
-    if (t <= 0) return 0.0;
-    if (t >= 2 * PhiTable::kHalf) return 1.0;
-    const int i = int(t);
-    const double f = t - i;
-    return phiTable.v[i] + f * (phiTable.v[i + 1] - phiTable.v[i]);
+    return normalCdf(z);
 }
 
 struct Profile {

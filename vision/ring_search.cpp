@@ -238,6 +238,17 @@ RingSearch::MeanEdges RingSearch::meanProfileEdges()
             e.rMax = radiusOf(i);
             break;
         }
+    if (!e.namedByZones)
+        for (int k = 0; k < edges.count; ++k) {
+            const ProfileEdge &o = edges.edge[k];
+            const double r = radiusOf(o.index);
+            if (o.flankLo <= at || r < e.rOuter + 1.5 * step) continue;
+            if (k == edges.count - 1) break; // the outermost step: the outline
+            e.rNext = r;
+            e.signNext = o.sign;
+            e.strengthNext = o.strength / 16;
+            break;
+        }
     return e;
 }
 
@@ -803,6 +814,31 @@ ErrorCode RingSearch::run(EndFaceGeometry *m)
     raySinQ_ = angles.sinQ;
     const MeanEdges me = meanProfileEdges();
     if (!me.found) return ErrorCode::OuterEdgeNotFound;
+    const double cx0 = cx, cy0 = cy;
+    const ErrorCode e = ringAbout(me, m);
+    if (e != ErrorCode::InnerEdgeNotFound || !(me.rNext > 0) || me.signNext != me.signOuter) return e;
+    // The largest drop named an edge with no original face's edge inside it, and the profile
+    // steps the same way again beyond it, inside the outline: a staircase (face above ring
+    // above barrel, or below each), whose first step, the original face's edge, drops the
+    // most where the face is far from the ring's grey and the ring is too narrow at the
+    // coarse step to show as a level. The ring is searched again about that next step.
+    MeanEdges next = me;
+    next.rOuter = me.rNext;
+    next.signOuter = me.signNext;
+    next.strengthOuter = me.strengthNext;
+    next.reachInPx = 0.5 * (me.rNext - me.rOuter);
+    next.namedByZones = true; // by elimination: the centring must not go back to the drop
+    next.rNext = 0;
+    cx = cx0, cy = cy0;
+    samplesInside_ = samplesSaturated_ = 0;
+    m->imageFlags = 0;
+    m->saturatedFraction = 0;
+    m->edgeWidthPx = 0;
+    return ringAbout(next, m);
+}
+
+ErrorCode RingSearch::ringAbout(const MeanEdges &me, EndFaceGeometry *m)
+{
     coarseCx_ = cx, coarseCy_ = cy;
     const double rOuter = centreOnContactEdge(me);
     m->centreX = cx, m->centreY = cy;

@@ -41,8 +41,17 @@ struct RingSearch {
         // The zones named the contact edge where the profile cannot tell it from a band on
         // the barrel (profile_zones.h, opensBand): the reading must not be taken on trust.
         bool undecided = false;
+        // Where the largest drop named it: the profile's next edge beyond it, inside the
+        // outline (0: none), and that edge's sign and strength. A face much brighter than
+        // the ring drops more onto the ring than the ring onto the barrel, and where the
+        // zones are too narrow to tell, the drop names the original face's edge.
+        double rNext = 0;
+        int signNext = 0;
+        int32_t strengthNext = 0;
     };
     MeanEdges meanProfileEdges();
+    // Both boundaries and the silhouette about the contact edge `me` names.
+    ErrorCode ringAbout(const MeanEdges &me, EndFaceGeometry *m);
     // Moves (cx, cy) to the contact edge's own centre and returns its mean radius there
     // (me.rOuter when no fit is possible).
     double centreOnContactEdge(const MeanEdges &me);
