@@ -34,18 +34,34 @@ struct Profile {
     double x[kMaxPoints], p[kMaxPoints];
     int n = 0;
     double mean = 0, sumP2 = 0; // p is kept about its mean (the sums stay well conditioned)
+    double count = 0, sumP = 0; // n and Σ p, as the normal equations use them
 };
+
+// One blurred step at x over the profile's points, with the sums the normal equations take
+// of it alone (Σ f, Σ f², Σ f·p): a trial that keeps a step keeps its sums, and only the
+// cross term Σ f1·f2 is summed per trial. Each sum runs over the points in order, so it
+// holds the same bits however the sums are grouped.
+struct StepBasis {
+    double f[kMaxPoints];
+    double s = 0, ss = 0, sp = 0;
+};
+
+void stepBasis(const Profile &pr, double x, double blur, StepBasis *b)
+{
+    double s = 0, ss = 0, sp = 0;
+    for (int i = 0; i < pr.n; ++i) {
+        const double a = phi((pr.x[i] - x) / blur);
+        b->f[i] = a;
+        s += a, ss += a * a, sp += a * pr.p[i];
+    }
+    b->s = s, b->ss = ss, b->sp = sp;
+}
 
 // Least squares of p on the basis 1, f1 and (if given) f2: the residual sum of squares, and
 // the coefficients (1e300 for a singular basis).
-double solve(const Profile &pr, const double *f1, const double *f2, double coef[3])
+double solve(const Profile &pr, const StepBasis &f1, const StepBasis *f2, double coef[3])
 {
-    double n = 0, s1 = 0, s2 = 0, s11 = 0, s12 = 0, s22 = 0, r0 = 0, r1 = 0, r2 = 0;
-    for (int i = 0; i < pr.n; ++i) {
-        const double a = f1[i], b = f2 ? f2[i] : 0.0, p = pr.p[i];
-        n += 1, s1 += a, s2 += b, s11 += a * a, s12 += a * b, s22 += b * b;
-        r0 += p, r1 += a * p, r2 += b * p;
-    }
+    const double n = pr.count, s1 = f1.s, s11 = f1.ss, r0 = pr.sumP, r1 = f1.sp;
     if (!f2) {
         const double det = n * s11 - s1 * s1;
         if (std::fabs(det) < 1e-9) return 1e300;
@@ -56,6 +72,9 @@ double solve(const Profile &pr, const double *f1, const double *f2, double coef[
         coef[0] += pr.mean;
         return ssr;
     }
+    const double s2 = f2->s, s22 = f2->ss, r2 = f2->sp;
+    double s12 = 0;
+    for (int i = 0; i < pr.n; ++i) s12 += f1.f[i] * f2->f[i];
     // The symmetric 3 × 3 system by Cramer's rule.
     const double c00 = s11 * s22 - s12 * s12, c01 = s2 * s12 - s1 * s22, c02 = s1 * s12 - s2 * s11;
     const double det = n * c00 + s1 * c01 + s2 * c02;
@@ -73,20 +92,14 @@ struct TwoStep {
     double xi = 0, xo = 0, s = 1, ssr = 1e300, coef[3] = {};
 };
 
-// One blurred step at x over the profile's points.
-void stepBasis(const Profile &pr, double x, double s, double *f)
-{
-    for (int i = 0; i < pr.n; ++i) f[i] = phi((pr.x[i] - x) / s);
-}
-
 TwoStep evaluate(const Profile &pr, double xi, double xo, double s)
 {
-    double f1[kMaxPoints], f2[kMaxPoints];
-    stepBasis(pr, xi, s, f1);
-    stepBasis(pr, xo, s, f2);
+    StepBasis f1, f2;
+    stepBasis(pr, xi, s, &f1);
+    stepBasis(pr, xo, s, &f2);
     TwoStep t;
     t.xi = xi, t.xo = xo, t.s = s;
-    t.ssr = solve(pr, f1, f2, t.coef);
+    t.ssr = solve(pr, f1, &f2, t.coef);
     return t;
 }
 
@@ -107,6 +120,7 @@ bool profileAround(const int32_t *profile, int count, int edgeIndex, Profile *pr
         pr->p[i] -= pr->mean;
         pr->sumP2 += pr->p[i] * pr->p[i];
     }
+    for (int i = 0; i < pr->n; ++i) pr->count += 1, pr->sumP += pr->p[i];
     return true;
 }
 
@@ -119,8 +133,9 @@ double singleStepSsr(const Profile &pr)
     for (double blur : kSingleBlurs) {
         double xo = 0, bl = blur, h = 0.5, hs = 0.15;
         auto ssrAt = [&](double x, double b) {
-            double f1[kMaxPoints], coef[3];
-            stepBasis(pr, x, b, f1);
+            StepBasis f1;
+            double coef[3];
+            stepBasis(pr, x, b, &f1);
             return solve(pr, f1, nullptr, coef);
         };
         double cur = ssrAt(xo, bl);
@@ -142,6 +157,11 @@ double singleStepSsr(const Profile &pr)
 
 constexpr int kMaxStarts = 4 * 3;
 
+// The coarse grid's step positions: multiples of half a pixel from the innermost inner step
+// (x_o −2, width 8) to the outermost outer step (x_o +2).
+constexpr double kGridStep = 0.5, kGridFirst = -10.0;
+constexpr int kGridPositions = 25;
+
 // Where the two-step search starts (on a narrow ring blur, width and step heights trade
 // against each other: one start can end in the wrong valley). With a width from the per-ray
 // search, two starts at it; without, the best of a coarse grid for each of four blurs and
@@ -155,15 +175,23 @@ int twoStepStarts(const Profile &pr, double startWidthPx, int outerSign, TwoStep
         for (double s0 : {0.9, 1.6}) start[starts++] = evaluate(pr, -startWidthPx, 0.0, s0);
         return starts;
     }
-    for (double s0 : kGridBlurs)
+    // Every grid point's steps lie on the half-pixel grid: each blur's step bases are
+    // computed once per position (the same values evaluate() would compute for each pair).
+    StepBasis basis[kGridPositions];
+    auto at = [&](double x) -> const StepBasis & { return basis[int((x - kGridFirst) / kGridStep + 0.5)]; };
+    for (double s0 : kGridBlurs) {
+        for (int k = 0; k < kGridPositions; ++k) stepBasis(pr, kGridFirst + k * kGridStep, s0, &basis[k]);
         for (int bucket = 0; bucket < 3; ++bucket) {
             TwoStep &b = start[starts++];
-            for (double xo = -2; xo <= 2.001; xo += 0.5)
-                for (double w = kWidthBuckets[bucket]; w < kWidthBuckets[bucket + 1] - 0.001; w += 0.5) {
-                    const TwoStep t = evaluate(pr, xo - w, xo, s0);
+            for (double xo = -2; xo <= 2.001; xo += kGridStep)
+                for (double w = kWidthBuckets[bucket]; w < kWidthBuckets[bucket + 1] - 0.001; w += kGridStep) {
+                    TwoStep t;
+                    t.xi = xo - w, t.xo = xo, t.s = s0;
+                    t.ssr = solve(pr, at(t.xi), &at(xo), t.coef);
                     if (t.ssr < b.ssr && t.coef[2] * outerSign > 0) b = t;
                 }
         }
+    }
     return starts;
 }
 
@@ -174,8 +202,8 @@ TwoStep refineTwoStep(const Profile &pr, TwoStep t, bool seen)
     // The current point's two step bases: a trial that moves one step alone reuses the
     // other's (two thirds of the trials; the fit's cost is these normal-distribution
     // evaluations). An accepted trial's bases swap in for the current ones.
-    double buf[4][kMaxPoints];
-    double *f1 = buf[0], *f2 = buf[1], *g1 = buf[2], *g2 = buf[3];
+    StepBasis buf[4];
+    StepBasis *f1 = &buf[0], *f2 = &buf[1], *g1 = &buf[2], *g2 = &buf[3];
     stepBasis(pr, t.xi, t.s, f1);
     stepBasis(pr, t.xo, t.s, f2);
     double hx = 0.25, hs = 0.08;
@@ -190,7 +218,7 @@ TwoStep refineTwoStep(const Profile &pr, TwoStep t, bool seen)
             if (movesOuter) stepBasis(pr, xo, bl, g2);
             TwoStep c;
             c.xi = xi, c.xo = xo, c.s = bl;
-            c.ssr = solve(pr, movesInner ? g1 : f1, movesOuter ? g2 : f2, c.coef);
+            c.ssr = solve(pr, movesInner ? *g1 : *f1, movesOuter ? g2 : f2, c.coef);
             if (c.ssr < t.ssr) {
                 t = c;
                 moved = true;
