@@ -21,7 +21,12 @@ constexpr double kNarrowRingPx = 6.0;
 // Grey levels between the two sides of the original face's edge below which the rays' edge
 // is not taken (low_contrast warns below 5; no rendered or photographed face shows under 6).
 constexpr double kMinInnerContrast = 2.0;
-constexpr int kRays = kFineRays;
+constexpr int kRays = kFineRays; // the most fine rays a search casts
+// Arc between neighbouring fine rays (pixels, at the initial radius) below which more rays
+// add little: each ray's derivative is the [1 2 1] sum of it and its neighbours, and with
+// the edge's blur and the bilinear footprint, rays closer than this read mostly the same
+// pixels. The ray count halves (down to kCoarseRays) until the arc is at least this.
+constexpr double kMinRayArcPx = 5.0;
 constexpr int kMaxFine = kMaxFineSamples;
 constexpr int kMaxCoarse = kMaxCoarseSamples;
 // The fine rays' sample spacing (pixels).
@@ -30,9 +35,9 @@ constexpr double kFineStepPx = 1.0;
 constexpr int32_t kMinCoarseStrength = 1000;
 // Widest ICA searched, as a fraction of the initial radius.
 constexpr double kMaxU = 0.32;
-// Every how many fine rays the edge-following mean profile samples (it only names the
-// face edge; the fine rays locate it).
-constexpr int kAlignStride = 8;
+// How many rays the edge-following mean profile samples (it only names the face edge; the
+// fine rays locate it).
+constexpr int kAlignRays = kFineRays / 8;
 // Below this fraction of rays a boundary's fit counts as low coverage (the reading flags
 // low_coverage at the same fraction).
 constexpr double kLowCoverage = 0.6;
@@ -282,25 +287,25 @@ void RingSearch::sampleWindow(const double *start, double step, int count, int b
     fineStep_ = step;
     fineCount_ = count;
     uint32_t saturated = 0, inside = 0;
-    for (int i = 0; i < kRays; ++i) {
+    for (int i = 0; i < rays_; ++i) {
         fineStart_[i] = start[i];
         RaySpec ray{Q16_16::fromDouble(cx),       Q16_16::fromDouble(cy),  rayCosQ_[i], raySinQ_[i],
                     Q16_16::fromDouble(start[i]), Q16_16::fromDouble(step)};
         uint16_t *row = fine + size_t(i) * kMaxFine;
         inside += uint32_t(sampleRay(*frame, ray, count, row));
     }
-    if (inside < uint32_t(count) * kRays) m->imageFlags |= kImageSpecimenClipped;
+    if (inside < uint32_t(count) * uint32_t(rays_)) m->imageFlags |= kImageSpecimenClipped;
 
     // Derivative across a [1 2 1] angular smoothing of neighbouring rays (the boundaries
     // vary slowly with angle; the noise does not). Samples at the same index of adjacent
     // rays lie at the same offset from the window's start curve. Stored as slope in 1/128
     // grey per px.
     int32_t t[kMaxFine];
-    const bool allInside = inside == uint32_t(count) * kRays;
-    for (int i = 0; i < kRays; ++i) {
-        const uint16_t *a = fine + size_t((i + kRays - 1) % kRays) * kMaxFine;
+    const bool allInside = inside == uint32_t(count) * uint32_t(rays_);
+    for (int i = 0; i < rays_; ++i) {
+        const uint16_t *a = fine + size_t((i + rays_ - 1) % rays_) * kMaxFine;
         const uint16_t *b = fine + size_t(i) * kMaxFine;
-        const uint16_t *c = fine + size_t((i + 1) % kRays) * kMaxFine;
+        const uint16_t *c = fine + size_t((i + 1) % rays_) * kMaxFine;
         for (int j = 0; j < count; ++j) {
             saturated += b[j] == kFullScaleQ8;
             t[j] = int32_t(a[j]) + 2 * int32_t(b[j]) + int32_t(c[j]);
@@ -337,10 +342,11 @@ bool RingSearch::locateOnRays(int sign, int fallbackSign, const double *loPx, co
     int nSteps = 0;
     const int reach = std::max(1, int(reachPx / fineStep_ + 0.5));
     if (!pts) {
-        // A first pass only places the second pass's narrow windows: every other ray (128,
-        // still far more than the curve's 9 coefficients need), then the curve at all rays.
-        constexpr int kHalf = kRays / 2;
-        for (int h = 0; h < kHalf; ++h) {
+        // A first pass only places the second pass's narrow windows: every other ray (32 or
+        // more, still far more than the curve's 9 coefficients need), then the curve at all
+        // rays.
+        const int half = rays_ / 2;
+        for (int h = 0; h < half; ++h) {
             const int i = 2 * h;
             const int lo = int(std::floor((loPx[i] - fineStart_[i]) / fineStep_));
             const int hi = int(std::ceil((hiPx[i] - fineStart_[i]) / fineStep_));
@@ -348,11 +354,11 @@ bool RingSearch::locateOnRays(int sign, int fallbackSign, const double *loPx, co
             valid[h] = p.found && p.value >= minStrength;
             radius[h] = fineStart_[i] + p.position.toDouble() * fineStep_;
         }
-        if (!fitBoundary(radius, valid, kHalf, cx, cy, FitOptions{}, fit)) return false;
-        for (int i = 0; i < kRays; ++i) curveOut[i] = fit->radiusAt(rayCos_[i], raySin_[i]);
+        if (!fitBoundary(radius, valid, half, cx, cy, FitOptions{}, fit)) return false;
+        for (int i = 0; i < rays_; ++i) curveOut[i] = fit->radiusAt(rayCos_[i], raySin_[i]);
         return true;
     }
-    for (int i = 0; i < kRays; ++i) {
+    for (int i = 0; i < rays_; ++i) {
         const int lo = int(std::floor((loPx[i] - fineStart_[i]) / fineStep_));
         const int hi = int(std::ceil((hiPx[i] - fineStart_[i]) / fineStep_));
         const int16_t *d = deriv + size_t(i) * kMaxFine;
@@ -370,10 +376,10 @@ bool RingSearch::locateOnRays(int sign, int fallbackSign, const double *loPx, co
             row[j + reach] != kOutsideFrame)
             steps[nSteps++] = (double(row[j + reach]) - double(row[j - reach])) / 256.0;
     }
-    if (!fitBoundary(radius, valid, kRays, cx, cy, FitOptions{}, fit, curveOut)) return false;
+    if (!fitBoundary(radius, valid, rays_, cx, cy, FitOptions{}, fit, curveOut)) return false;
     // Points the robust fit rejected are shown as such (overlays, diagnostics).
     const double keep = std::max(0.75, 3 * fit->scatterPx);
-    for (int i = 0; i < kRays; ++i) pts[i].valid = pts[i].valid && std::fabs(radius[i] - curveOut[i]) <= keep;
+    for (int i = 0; i < rays_; ++i) pts[i].valid = pts[i].valid && std::fabs(radius[i] - curveOut[i]) <= keep;
     // A boundary fitted on under kLowCoverage of the rays is as uncertain as the edge the
     // fit threw away: when the rejected points sit together at another radius (the edge
     // taken on part of the ring is a neighbouring one, or the curve is), either could be the
@@ -383,7 +389,7 @@ bool RingSearch::locateOnRays(int sign, int fallbackSign, const double *loPx, co
     if (fit->coverage < kLowCoverage) {
         double offsets[kRays];
         int n = 0;
-        for (int i = 0; i < kRays; ++i)
+        for (int i = 0; i < rays_; ++i)
             if (valid[i] && !pts[i].valid) offsets[n++] = std::fabs(radius[i] - curveOut[i]);
         if (n > 0) {
             std::nth_element(offsets, offsets + n / 2, offsets + n);
@@ -420,7 +426,7 @@ double RingSearch::centreOnContactEdge(const MeanEdges &me)
     // differ by 3 px or more.
     constexpr int kCentringRays = 32, kFirstPassRays = 16; // the first pass: every fourth coarse ray
     constexpr int kCoarseStride = kCoarseRays / kFirstPassRays;
-    constexpr int kFineStride = kRays / kCentringRays;
+    const int fineStride = rays_ / kCentringRays;
     // The window stops half way to the original face's edge: where that steps the same way
     // as the contact edge, a wider one would take it.
     const double w = 0.15 * r0;
@@ -452,7 +458,7 @@ double RingSearch::centreOnContactEdge(const MeanEdges &me)
             if (coarseRows) {
                 row = coarse + size_t(k * kCoarseStride) * kMaxCoarse;
             } else {
-                const int i = k * kFineStride;
+                const int i = k * fineStride;
                 uint16_t *out = fine + size_t(k) * kMaxFine;
                 RaySpec ray{Q16_16::fromDouble(cx), Q16_16::fromDouble(cy),  rayCosQ_[i], raySinQ_[i],
                             Q16_16::fromDouble(rA), Q16_16::fromDouble(step)};
@@ -563,7 +569,7 @@ bool RingSearch::barrelBandLopsided(const double *radius, const bool *valid, con
     double n = 0, sc = 0, ss = 0, scc = 0, sss = 0, scs = 0, sw = 0, swc = 0, sws = 0;
     for (int i = 0; i < kCoarse; ++i) {
         if (!valid[i]) continue;
-        const int fineIdx = i * (kRays / kCoarse);
+        const int fineIdx = i * (rays_ / kCoarse);
         const double c = rayCos_[fineIdx], sn = raySin_[fineIdx];
         const double width = radius[i] - (outerR[fineIdx] + (cx - coarseCx_) * c + (cy - coarseCy_) * sn);
         n += 1, sc += c, ss += sn, scc += c * c, sss += sn * sn, scs += c * sn;
@@ -608,7 +614,7 @@ double RingSearch::silhouetteFromRays(const double *outerR, double *coverage, do
         if (outside) continue;
         // The contact edge's radius seen from the coarse rays' centre (to first order in
         // the contact edge's centre offset).
-        const int fineIdx = i * (kRays / kCoarse);
+        const int fineIdx = i * (rays_ / kCoarse);
         const double ro = outerR[fineIdx] + (cx - coarseCx_) * rayCos_[fineIdx] + (cy - coarseCy_) * raySin_[fineIdx];
         const int lo = std::max(w, int((ro + 0.04 * r0 - rA) / step));
         const int hi = count - w - 2;
@@ -659,7 +665,7 @@ bool RingSearch::alignedProfile(const double *outerR, AlignedProfile *p) const
     std::fill_n(sum, count, 0u);
     std::fill_n(n, count, 0u);
     uint16_t row[AlignedProfile::kSpan];
-    for (int i = 0; i < kRays; i += kAlignStride) {
+    for (int i = 0; i < rays_; i += rays_ / kAlignRays) {
         if (!outerPts[i].valid) continue;
         const double ro = outerR[i];
         RaySpec ray{Q16_16::fromDouble(cx),     Q16_16::fromDouble(cy), rayCosQ_[i], raySinQ_[i],
@@ -673,7 +679,7 @@ bool RingSearch::alignedProfile(const double *outerR, AlignedProfile *p) const
     }
     uint16_t mean[AlignedProfile::kSpan];
     for (int k = 0; k < count; ++k) {
-        mean[k] = n[k] * 2 >= uint32_t(kRays / kAlignStride) ? uint16_t(sum[k] / n[k]) : kOutsideFrame;
+        mean[k] = n[k] * 2 >= uint32_t(kAlignRays) ? uint16_t(sum[k] / n[k]) : kOutsideFrame;
         p->level[k] = mean[k] == kOutsideFrame ? 0 : mean[k];
     }
     // Same units as the fine derivative rows (the [1 2 1] angular weights sum to 4).
@@ -771,10 +777,10 @@ bool RingSearch::originalFaceOnRays(OriginalFaceName name, const AlignedProfile 
     const int pad = std::max(W, 2) + 3;
     const int innerCount = std::min(kMaxFine, int(2 * half) + 2 * pad + 1);
     double start[kRays], lo[kRays], hi[kRays];
-    for (int i = 0; i < kRays; ++i) start[i] = outerR[i] - uGuess - half - pad;
+    for (int i = 0; i < rays_; ++i) start[i] = outerR[i] - uGuess - half - pad;
     sampleWindow(start, kFineStepPx, innerCount, W, m);
     for (int pass = 0; pass < 2; ++pass) {
-        for (int i = 0; i < kRays; ++i) {
+        for (int i = 0; i < rays_; ++i) {
             const double ro = outerR[i];
             const double c = pass == 0 ? ro - uGuess : innerR[i];
             const double h = pass == 0 ? half : 2.5;
@@ -800,18 +806,25 @@ bool RingSearch::narrowRingFromProfile(const AlignedProfile &p, int signOuter, d
     inner->rEqSigmaPx = nf.sigmaWidthPx;
     inner->used = 0; // no per-ray point: the edge is the profile's
     *contrastInner = nf.innerStep / 256.0;
-    for (int i = 0; i < kRays; ++i) innerPts[i].valid = false;
+    for (int i = 0; i < rays_; ++i) innerPts[i].valid = false;
     return true;
 }
 
 ErrorCode RingSearch::run(EndFaceGeometry *m)
 {
-    static_assert(kRays == AngleTable::kSize, "fine ray i is table angle i");
+    static_assert(kRays == AngleTable::kSize && kRays <= kMaxRayTable, "fine ray i is at most table angle i");
+    rays_ = kRays;
+    while (rays_ > kCoarseRays && 2 * std::numbers::pi * r0 / rays_ < kMinRayArcPx) rays_ /= 2;
     const AngleTable &angles = angleTable();
-    rayCos_ = angles.cos;
-    raySin_ = angles.sin;
-    rayCosQ_ = angles.cosQ;
-    raySinQ_ = angles.sinQ;
+    const int stride = AngleTable::kSize / rays_;
+    for (int i = 0; i < rays_; ++i) {
+        rayCosBuf_[i] = angles.cos[i * stride], raySinBuf_[i] = angles.sin[i * stride];
+        rayCosQBuf_[i] = angles.cosQ[i * stride], raySinQBuf_[i] = angles.sinQ[i * stride];
+    }
+    rayCos_ = rayCosBuf_;
+    raySin_ = raySinBuf_;
+    rayCosQ_ = rayCosQBuf_;
+    raySinQ_ = raySinQBuf_;
     const MeanEdges me = meanProfileEdges();
     if (!me.found) return ErrorCode::OuterEdgeNotFound;
     const double cx0 = cx, cy0 = cy;
@@ -849,7 +862,7 @@ ErrorCode RingSearch::ringAbout(const MeanEdges &me, EndFaceGeometry *m)
     const double outerHi = me.rMax > 0 ? std::min(margin, 0.5 * (me.rMax - me.rOuter)) : margin;
     double start[kRays];
     const int outerCount = std::min(kMaxFine, int(margin + outerHi) + 6);
-    for (int i = 0; i < kRays; ++i) start[i] = rOuter - margin - 3;
+    for (int i = 0; i < rays_; ++i) start[i] = rOuter - margin - 3;
     sampleWindow(start, kFineStepPx, outerCount, 0, m);
     if (m->saturatedFraction > 0.5) return ErrorCode::Saturated;
 
@@ -857,7 +870,7 @@ ErrorCode RingSearch::ringAbout(const MeanEdges &me, EndFaceGeometry *m)
     BoundaryFit outer, inner;
     double outerR[kRays], innerR[kRays]; // the fitted curves at every fine ray
     double contrastOuter = 0, contrastInner = 0;
-    for (int i = 0; i < kRays; ++i) {
+    for (int i = 0; i < rays_; ++i) {
         lo[i] = rOuter - margin;
         hi[i] = rOuter + outerHi;
     }
@@ -866,7 +879,7 @@ ErrorCode RingSearch::ringAbout(const MeanEdges &me, EndFaceGeometry *m)
         outer.coverage < 0.3)
         return ErrorCode::OuterEdgeNotFound;
     // Pass 2: close to the fitted curve, so a stain edge nearby cannot win.
-    for (int i = 0; i < kRays; ++i) {
+    for (int i = 0; i < rays_; ++i) {
         lo[i] = outerR[i] - 3.0;
         hi[i] = outerR[i] + 3.0;
     }
@@ -915,7 +928,7 @@ ErrorCode RingSearch::ringAbout(const MeanEdges &me, EndFaceGeometry *m)
     if (me.undecided) m->imageFlags |= kImageContactEdgeUndecided;
     m->innerPoints = innerPts;
     m->outerPoints = outerPts;
-    m->rayCount = kRays;
+    m->rayCount = rays_;
     return ErrorCode::None;
 }
 

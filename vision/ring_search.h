@@ -106,7 +106,12 @@ struct RingSearch {
 
     double coarseCx_ = 0, coarseCy_ = 0; // the centre the coarse rays were cast from
     double fineStart_[kMaxRayTable] = {}, fineStep_ = 1;
-    // Fine ray i points along angle 2πi/256: directions come from the shared AngleTable.
+    // How many fine rays this search casts (a divisor of 256, scaled to the ring's size in
+    // pixels); fine ray i points along angle 2πi/rays_, its direction from the shared
+    // AngleTable.
+    int rays_ = 0;
+    double rayCosBuf_[kMaxRayTable] = {}, raySinBuf_[kMaxRayTable] = {};
+    Q2_14 rayCosQBuf_[kMaxRayTable] = {}, raySinQBuf_[kMaxRayTable] = {};
     const Q2_14 *rayCosQ_ = nullptr, *raySinQ_ = nullptr;
     const double *rayCos_ = nullptr, *raySin_ = nullptr;
     uint32_t samplesInside_ = 0, samplesSaturated_ = 0;
