@@ -1,6 +1,6 @@
 #pragma once
 // cos and sin of the 256 ray angles 2πj/256, computed once. Every ray count the pipeline
-// uses (32, 64, 256) divides 256, so ray directions and the boundary fit's harmonics are
+// uses (32, 64, 128, 256) divides 256, so ray directions and the boundary fit's harmonics are
 // look-ups, not trigonometry per frame.
 #include "vision/fixed_point.h"
 
