@@ -99,7 +99,11 @@ Reading interpret(const EndFaceGeometry &g, const SpecimenSpec &spec, const visi
     if (!calibration) {
         // Calibrated: R_max is reported, not held against the model.
         const double mu0 = MuFunction(spec, model).at(p.face.uMm, assumed.r, spec.n);
-        obs = observeSilhouette(p.face, g.silhouetteCoverage, g.silhouetteScatterPx, g.rMaxPx, spec, assumed, mu0);
+        obs = observeSilhouette(p.face, g.silhouetteCoverage, g.silhouetteScatterPx, g.rMaxPx, spec, assumed, mu0,
+                                declaredD0OverW(spec));
+        // Where the outline cannot be told from the fixture's shadow beyond it, the radius
+        // taken may be either: it neither rescales nor warns, and the height goes unchecked.
+        if (g.imageFlags & vision::kImageOutlineAmbiguous) obs.usable = false, obs.flags = 0;
         silhouette = &obs;
     }
     readFace(spec, model, assumed, p.scaleRelSigma, e.uSigmaEdgesMm, silhouette, silhouetteRelSigma(g),
@@ -118,7 +122,8 @@ Reading interpret(const FaceInMm &face, const SpecimenSpec &spec, const friction
     const AssumedReduction assumed = assumedReduction(spec);
     const MuFunction F(spec, model);
     const double mu0 = F.at(out.face.uMm, assumed.r, spec.n);
-    const SilhouetteObservation obs = observeSilhouette(out.face, 1, 0, face.rMaxMm, spec, assumed, mu0);
+    const SilhouetteObservation obs =
+        observeSilhouette(out.face, 1, 0, face.rMaxMm, spec, assumed, mu0, declaredD0OverW(spec));
     const double silhouetteSigma = std::hypot(friction::kFeRMaxRelSigma, friction::measuredRMaxRelSigma(0));
     readFace(spec, model, assumed, spec.tolerances.scaleRel, 0, &obs, silhouetteSigma, false, false, 0, &out);
     return out;
