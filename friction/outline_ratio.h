@@ -7,7 +7,7 @@
 // over z, which for a close camera comes from a band between the rim and the widest section.
 // friction/outline_table.h holds that outline over R_max from the FE's deformed sides over
 // (n, μ, reduction, D0/W); a telecentric view (or a drawn image) is D0/W = 0, ratio 1. At
-// 45–95 mm the outline lies 2–6 % inside R_max.
+// 45–95 mm the outline lies 3–7 % inside R_max.
 // Pure C++20: no heap, no OS calls, no exceptions.
 
 namespace icacam::friction {

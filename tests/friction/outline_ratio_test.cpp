@@ -52,9 +52,9 @@ TEST(OutlineRatio, LiesBetweenTheWidestSectionsProjectionAndRMax)
             }
 }
 
-TEST(OutlineRatio, ACloseCameraSeesTheOutlineTwoToSixPerCentInside)
+TEST(OutlineRatio, ACloseCameraSeesTheOutlineThreeToSevenPerCentInside)
 {
-    // docs/photobench.md: at 45–95 mm the outline lies 2–6 % inside R_max.
+    // At 45–95 mm the outline lies 3–7 % inside R_max (docs/uncertainty.md).
     const double at45 = friction::outlineRatioAt(0.25, 0.15, 0.5, 10.0 / 45);
     const double at95 = friction::outlineRatioAt(0.25, 0.15, 0.5, 10.0 / 95);
     EXPECT_GT(at45, 0.92);
