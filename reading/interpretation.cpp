@@ -117,8 +117,11 @@ Reading interpret(const EndFaceGeometry &g, const SpecimenSpec &spec, const visi
         obs = observeSilhouette(p.face, g.silhouetteCoverage, g.silhouetteScatterPx, g.rMaxPx, spec, assumed, mu,
                                 declaredD0OverW(spec));
         // Where the outline cannot be told from the fixture's shadow beyond it, the radius
-        // taken may be either: it neither rescales nor warns, and the height goes unchecked.
-        if (g.imageFlags & vision::kImageOutlineAmbiguous) obs.usable = false, obs.flags = 0;
+        // taken may be either: it neither rescales nor says another height, and the reading
+        // is that of a view without a silhouette (the height unchecked, U covering 45–55 %; the
+        // declared scale unchecked too, which no_silhouette says: a scale measured on the
+        // fixture would otherwise pass 0.01–0.04 high, CalibratedMeasure.*).
+        if (g.imageFlags & vision::kImageOutlineAmbiguous) obs.usable = false, obs.flags = kFlagNoSilhouette;
     };
     if (!calibration) {
         // Calibrated: R_max is reported, not held against the model.
