@@ -55,6 +55,10 @@ const KeyDef kKeys[] = {
      "relative standard uncertainty of calibration.mm_per_px"},
     {"calibration.mm_per_px", "mm_per_px", &Config::mmPerPx, nullptr, nullptr, 1e-5, 1, nullptr, true,
      "scale in the end-face plane (this or calibration.file is required; with a file it only sizes the search)"},
+    {"calibration.working_distance_mm", "working_distance_mm", &Config::workingDistanceMm, nullptr, nullptr, 0, 10000,
+     nullptr, true,
+     "the lens's distance to the end face (0 = not given: the barrel's silhouette is held against R_max as a "
+     "telecentric view sees it; a close camera sees it inside)"},
     {"calibration.file", "calibration_file", nullptr, nullptr, &Config::calibrationFile, 0, 4096, nullptr, true,
      "camera calibration from `icacam calibrate`: maps each boundary into the end-face plane at "
      "h_final_mm (else h0_mm / 2) above the fixture"},

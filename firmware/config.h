@@ -18,7 +18,8 @@ struct Config {
     double n = 0;    // strain-hardening exponent (required)
     double kMpa = 0; // strength coefficient, 0 = unknown
     double d0Mm = 10, h0Mm = 15;
-    double hFinalMm = 0; // final height after upsetting; 0 = not given (50 % assumed)
+    double hFinalMm = 0;          // final height after upsetting; 0 = not given (50 % assumed)
+    double workingDistanceMm = 0; // the lens's distance to the end face; 0 = not given
     std::string material;
     // [reading] the friction model (friction/friction_models.h), as `icacam measure --model`
     std::string model = friction::kDefaultModel;

@@ -64,6 +64,7 @@ reading::SpecimenSpec specimenSpec(const Config &c)
         {"d0_mm", c.d0Mm},
         {"h0_mm", c.h0Mm},
         {"h_final_mm", c.hFinalMm},
+        {"working_distance_mm", c.workingDistanceMm},
         {"mm_per_px_tol", c.mmPerPxTolRel},
         {"h_final_tol_mm", c.hFinalTolMm},
         {"n_tol", c.nTol},

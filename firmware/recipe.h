@@ -19,13 +19,27 @@
 namespace icacam::fw {
 
 inline constexpr const char *kRecipeKeys[] = {
-    "specimen.n",           "specimen.k_mpa",         "specimen.d0_mm",
-    "specimen.h0_mm",       "specimen.h_final_mm",    "specimen.material",
-    "tolerance.mu",         "tolerance.rel",          "tolerance.n",
-    "tolerance.h_final_mm", "tolerance.mm_per_px",    "calibration.mm_per_px",
-    "camera.exposure_us",   "camera.analogue_gain",   "camera.red_gain",
-    "camera.blue_gain",     "camera.white_balance_k", "camera.lens_position",
-    "camera.sharpness",     "camera.noise_reduction",
+    "specimen.n",
+    "specimen.k_mpa",
+    "specimen.d0_mm",
+    "specimen.h0_mm",
+    "specimen.h_final_mm",
+    "specimen.material",
+    "tolerance.mu",
+    "tolerance.rel",
+    "tolerance.n",
+    "tolerance.h_final_mm",
+    "tolerance.mm_per_px",
+    "calibration.mm_per_px",
+    "calibration.working_distance_mm",
+    "camera.exposure_us",
+    "camera.analogue_gain",
+    "camera.red_gain",
+    "camera.blue_gain",
+    "camera.white_balance_k",
+    "camera.lens_position",
+    "camera.sharpness",
+    "camera.noise_reduction",
 };
 
 bool isRecipeKey(std::string_view key);

@@ -11,6 +11,7 @@
 #include "host_tools/fe/fe_tables.h"
 #include "host_tools/loop/loop_command.h"
 #include "host_tools/measure_command.h"
+#include "host_tools/outline_table.h"
 #include "host_tools/score_command.h"
 #include "host_tools/synth_command.h"
 
@@ -43,6 +44,9 @@ int main(int argc, char **argv)
         // `fe tables` needs the loop's du/dr fit as well as the FE readers: linked here, above both.
         if (cmd == "fe" && !args.empty() && args[0] == "tables")
             return icacam::host::fe::tablesCommand({args.begin() + 1, args.end()});
+        // `fe outline-table` reads the photographic bench's barrel profiles (the host library).
+        if (cmd == "fe" && !args.empty() && args[0] == "outline-table")
+            return icacam::host::outlineTableCommand({args.begin() + 1, args.end()});
         if (cmd == "fe") return icacam::host::feCommand(args);
         if (cmd == "loop") return icacam::host::loopCommand(args);
         if (cmd == "ctl") return icacam::host::ctlCommand(args);

@@ -61,7 +61,8 @@ std::string usage()
            numberText("%g", d.scaleRel) + "),\nh_final_tol_mm (" + numberText("%g", d.hFinalMm) + "), n_tol (" +
            numberText("%g", d.n) +
            "); without h_final_mm the reduction is inferred from the silhouette\n"
-           "(docs/uncertainty.md).\n";
+           "(docs/uncertainty.md). working_distance_mm: the camera's distance to the end face; a close\n"
+           "camera sees the barrel's outline inside R_max, and the silhouette is held against that outline.\n";
 }
 
 void drawOverlay(const cv::Mat &luma, const reading::Reading &reading, const std::string &path)

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "friction/outline_ratio.h"
 #include "friction/radii_consistency.h"
 
 namespace icacam::reading {
@@ -56,6 +57,16 @@ constexpr double kForeshortenMean = -0.05, kForeshortenSigma = 0.04;
 // outline than kMisreadMinInside the rays' scatter measures what a highlight does.
 constexpr double kMisreadPrior = 0.02;
 constexpr double kMisreadMinInside = 0.03;
+// The outline a camera sees lies inside R_max (friction/outline_ratio.h), by a known amount
+// where the working distance is declared (to 5 %: a ruler from the lens to the end face).
+// Where it is not, the view is taken as telecentric (the silhouette at R_max, as a drawn
+// image or a long lens shows it): a close camera's outline then reads as another height
+// (reduction_not_nominal, whose words name working_distance_mm). W unknown over 40 mm … ∞
+// would spread the view's part of d over 8 %, more than the undeclared reduction's own
+// (± 3 %): the silhouette would then check the height no longer, on drawn views as on
+// photographs, and a specimen pressed to 47 % would pass for one at half height seen from
+// 100 mm.
+constexpr double kWorkingDistanceRelSigma = 0.05;
 // The nominal conditions' check: a reading is ok while the silhouette's explanations leave
 // less than a 15 % chance that μ lies beyond the tolerance (and the finding names the
 // weightiest explanation other than the nominal height with at least 5 % of the weight).
@@ -94,17 +105,19 @@ ScaleAndReduction update(const ScaleAndReduction &prior, double d, double beta, 
     return p;
 }
 
-// With a declared final height: one update, or past 3 σ neither declared value corrected and
-// each widened to explain the whole discrepancy alone.
+// With a declared final height: one update (the view's part of d taken off, its spread
+// kept), or past 3 σ neither declared value corrected and each widened to explain the whole
+// discrepancy alone.
 ScaleAndReduction declaredPosterior(ScaleAndReduction sr, const SilhouetteObservation &o, double se2)
 {
-    const double S = sr.pk + o.beta * o.beta * sr.pr + se2;
-    if (o.d * o.d / S > kContradictionChi2) {
-        sr.pk = std::max(sr.pk, o.d * o.d);
-        sr.pr = std::max(sr.pr, o.d * o.d / (o.beta * o.beta));
+    const double d = o.d - o.view.offset, ve = se2 + o.view.var;
+    const double S = sr.pk + o.beta * o.beta * sr.pr + ve;
+    if (d * d / S > kContradictionChi2) {
+        sr.pk = std::max(sr.pk, d * d);
+        sr.pr = std::max(sr.pr, d * d / (o.beta * o.beta));
         return sr;
     }
-    return update(sr, o.d, o.beta, se2);
+    return update(sr, d, o.beta, ve);
 }
 
 // Without one: three explanations of the silhouette's discrepancy, four in an oblique view
@@ -131,16 +144,20 @@ ScaleAndReduction mixturePosterior(const ScaleAndReduction &declared, const Silh
     E e;
     double wSum = 0;
     for (int h = 0; h < E::WrongEdge; ++h) {
-        const double S = alpha[h] * alpha[h] * prior[h].pk + beta * beta * prior[h].pr + se2 + offsetVar[h];
-        const double v = d - offset[h] - alpha[h] * prior[h].dk;
+        // The camera's part of d added to the explanation's own.
+        const double off = offset[h] + o.view.offset, offVar = offsetVar[h] + o.view.var;
+        const double S = alpha[h] * alpha[h] * prior[h].pk + beta * beta * prior[h].pr + se2 + offVar;
+        const double v = d - off - alpha[h] * prior[h].dk;
         // Densities up to the common 1/√(2π).
         e.weight[h] =
             h != E::Foreshortened || oblique ? gaussianPrior * std::exp(-0.5 * v * v / S) / std::sqrt(S) : 0.0;
         wSum += e.weight[h];
-        e.post[h] = update(prior[h], d, beta, se2, offset[h], offsetVar[h], alpha[h]);
+        e.post[h] = update(prior[h], d, beta, se2, off, offVar, alpha[h]);
     }
+    // A wrong edge lies inside the outline the camera sees.
+    const double dSeen = d - o.view.offset;
     const double misreadSpan = -kMisreadMinInside - o.dContact;
-    const bool misreadPossible = misreadSpan > 0 && d >= o.dContact && d <= -kMisreadMinInside;
+    const bool misreadPossible = misreadSpan > 0 && dSeen >= o.dContact && dSeen <= -kMisreadMinInside;
     e.weight[E::WrongEdge] = misreadPossible ? kMisreadPrior * std::sqrt(2 * std::numbers::pi) / misreadSpan : 0.0;
     wSum += e.weight[E::WrongEdge];
     e.post[E::WrongEdge] = prior[E::WrongEdge];
@@ -274,8 +291,28 @@ ModelEstimate MuFunction::estimate(double u, double r, double n) const
     return model_.correctsReduction() ? model_.estimate(in) : carry_.estimate(in);
 }
 
+OutlineView outlineView(double n, double mu, double reduction, double d0OverW)
+{
+    OutlineView v;
+    auto lnRatio = [&](double x) { return std::log(friction::outlineRatioAt(n, mu, reduction, x)); };
+    const double table = friction::outlineRatioRelSigma();
+    v.offset = lnRatio(d0OverW);
+    if (d0OverW > 0) { // a telecentric view's outline is R_max itself
+        v.var = table * table;
+        const double dx = d0OverW * kWorkingDistanceRelSigma;
+        const double slope = (lnRatio(d0OverW + dx) - lnRatio(d0OverW - dx)) / (2 * dx);
+        v.var += slope * slope * dx * dx;
+    }
+    return v;
+}
+
+double declaredD0OverW(const SpecimenSpec &spec)
+{
+    return spec.workingDistanceMm > 0 ? spec.d0Mm / spec.workingDistanceMm : 0;
+}
+
 SilhouetteObservation observeSilhouette(const FaceInMm &face, double coverage, double scatterPx, double rMaxPx,
-                                        const SpecimenSpec &spec, const AssumedReduction &r, double mu0)
+                                        const SpecimenSpec &spec, const AssumedReduction &r, double mu0, double d0OverW)
 {
     SilhouetteObservation o;
     if (!(rMaxPx > 0)) {
@@ -283,11 +320,13 @@ SilhouetteObservation observeSilhouette(const FaceInMm &face, double coverage, d
         return o;
     }
     const double n = spec.n;
+    o.view = outlineView(n, mu0, r.r, d0OverW);
     // The silhouette on the FE's terms (friction::kFeRMaxOverSpecimen).
     const double rMaxAsFe = face.rMaxMm * (1 + friction::kFeRMaxOverSpecimen);
     o.measuredRelSigma = friction::measuredRMaxRelSigma(coverage > 0 ? scatterPx / rMaxPx : 0);
-    const friction::RadiiCheck rc =
-        friction::checkRadii(rMaxAsFe, n, mu0, spec.d0Mm, r.r, spec.h0Mm, true, o.measuredRelSigma);
+    // z and the reduction it implies are R_max's: the outline the view sees, scaled back.
+    const friction::RadiiCheck rc = friction::checkRadii(rMaxAsFe * std::exp(-o.view.offset), n, mu0, spec.d0Mm, r.r,
+                                                         spec.h0Mm, true, o.measuredRelSigma);
     o.rMaxZ = rc.z;
     o.reductionEst = rc.reductionEst;
     // Without a declared final height a discrepancy is weighed by its explanations, and

@@ -77,6 +77,14 @@ struct ScaleAndReduction {
 // The silhouette held against the FE's shape: d = ln(R_max / R_max,FE) at the assumed
 // reduction, β = ∂ln R_max,FE/∂r, and whether it is usable as an observation of scale and
 // reduction. flags: scale_suspect, radii_inconsistent, silhouette_unreliable, no_silhouette.
+// The view's own part of d: ln(outline / R_max) of a camera at working distance W
+// (friction/outline_ratio.h) and its variance (the table's and W's 5 %). d0OverW: D0/W of
+// a declared working distance; 0 (telecentric) where none is declared.
+struct OutlineView {
+    double offset = 0, var = 0;
+};
+OutlineView outlineView(double n, double mu, double reduction, double d0OverW);
+
 struct SilhouetteObservation {
     bool usable = false;
     double d = 0, beta = 0;
@@ -84,12 +92,16 @@ struct SilhouetteObservation {
     double rMaxZ = 0;
     double reductionEst = -1;
     double measuredRelSigma = 0; // the measurement's own relative error
+    OutlineView view;            // the camera's part of d
     uint32_t flags = 0;
 };
 // coverage, scatterPx: the silhouette's per-ray fit (coverage 1 and scatter 0 for a radius
-// given as a number).
+// given as a number). d0OverW: as outlineView.
 SilhouetteObservation observeSilhouette(const FaceInMm &face, double coverage, double scatterPx, double rMaxPx,
-                                        const SpecimenSpec &spec, const AssumedReduction &r, double mu0);
+                                        const SpecimenSpec &spec, const AssumedReduction &r, double mu0,
+                                        double d0OverW);
+// D0/W of the spec's declared working distance, or 0 (telecentric) where none is declared.
+double declaredD0OverW(const SpecimenSpec &spec);
 
 // The silhouette's explanations of its discrepancy where no final height is declared
 // (interpretation.h): each one's posterior of scale and reduction and its weight.

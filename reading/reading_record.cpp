@@ -104,7 +104,8 @@ const char *findingWords(int bit)
         "the silhouette contradicts the declared scale and final height: check both",
         "the specimen's H0/D0 lies outside what the model covers",
         "the silhouette does not fit the barrel's shape: declare h_final_mm",
-        "the specimen was not pressed to half height: declare h_final_mm",
+        "the silhouette says another height than half: declare h_final_mm (a close camera sees the barrel inside "
+        "R_max: declare working_distance_mm)",
     };
     return bit >= 0 && bit < kFlagCount ? kWords[bit] : "check";
 }

@@ -24,6 +24,7 @@ constexpr SpecimenField kFields[] = {
     {"d0_mm", &SpecimenSpec::d0Mm, nullptr, nullptr, false},
     {"h0_mm", &SpecimenSpec::h0Mm, nullptr, nullptr, false},
     {"h_final_mm", &SpecimenSpec::hFinalMm, nullptr, nullptr, true},
+    {"working_distance_mm", &SpecimenSpec::workingDistanceMm, nullptr, nullptr, true},
     {"mm_per_px_tol", nullptr, &DeclaredTolerances::scaleRel, nullptr, true},
     {"h_final_tol_mm", nullptr, &DeclaredTolerances::hFinalMm, nullptr, true},
     {"n_tol", nullptr, &DeclaredTolerances::n, nullptr, true},
@@ -49,9 +50,19 @@ bool parseValue(std::string_view text, double *out)
 
 } // namespace
 
-const char *const kSpecimenKeys[] = {"n",     "mm_per_px",    "k_mpa",         "d0_mm",
-                                     "h0_mm", "h_final_mm",   "mm_per_px_tol", "h_final_tol_mm",
-                                     "n_tol", "tolerance_mu", "tolerance_rel", nullptr};
+const char *const kSpecimenKeys[] = {"n",
+                                     "mm_per_px",
+                                     "k_mpa",
+                                     "d0_mm",
+                                     "h0_mm",
+                                     "h_final_mm",
+                                     "working_distance_mm",
+                                     "mm_per_px_tol",
+                                     "h_final_tol_mm",
+                                     "n_tol",
+                                     "tolerance_mu",
+                                     "tolerance_rel",
+                                     nullptr};
 
 bool setSpecimenField(std::string_view key, std::string_view text, SpecimenSpec *spec, std::string *why)
 {

@@ -38,6 +38,9 @@ struct SpecimenSpec {
     double h0Mm = 15;    // initial height
     double mmPerPx = 0;  // scale in the plane of the end face (with a calibration: 0, or a search hint)
     double hFinalMm = 0; // final height when recorded (0: not declared)
+    // The camera's distance to the end face (0: not declared): the outline a close camera
+    // sees of the barrel lies inside R_max (friction/outline_ratio.h).
+    double workingDistanceMm = 0;
     DeclaredTolerances tolerances = {};
     ReadingTolerance tolerance = {};
 };

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "friction/friction_models.h"
+#include "friction/outline_ratio.h"
 #include "friction/radii_consistency.h"
 #include "reading/interpretation.h"
 
@@ -53,6 +54,47 @@ Reading interpret(const EndFaceGeometry &g, double n = kN)
     spec.n = n;
     spec.mmPerPx = kMmPerPx;
     return reading::interpret(g, spec, nullptr, *frictionModel(kDefaultModel));
+}
+
+// A camera W above the end face sees the outline inside R_max (friction/outline_ratio.h).
+// Declared, that outline is the nominal half height; undeclared, the same image reads as a
+// specimen pressed less far, and says so.
+TEST(Interpretation, TheDeclaredWorkingDistanceTakesTheCloseCamerasOutlineForHalfHeight)
+{
+    const double w = 55;
+    const EndFaceGeometry g = face(outlineRatioAt(kN, kMu, 0.5, 10.0 / w), false);
+    SpecimenSpec spec;
+    spec.n = kN;
+    spec.mmPerPx = kMmPerPx;
+    const Reading undeclared = reading::interpret(g, spec, nullptr, *frictionModel(kDefaultModel));
+    spec.workingDistanceMm = w;
+    const Reading declared = reading::interpret(g, spec, nullptr, *frictionModel(kDefaultModel));
+    ASSERT_EQ(declared.status, Status::Ok) << declared.flags;
+    EXPECT_NEAR(declared.reduction, 0.5, 0.003);
+    EXPECT_LT(declared.reductionSigma, 0.01);
+    EXPECT_NEAR(declared.scaleFactor, 1, 0.003);
+    EXPECT_TRUE(undeclared.flags & kNominalFinding);
+    EXPECT_LT(undeclared.reduction, 0.49);
+    // The same distance declared for a silhouette at R_max itself: pressed further, or a
+    // scale measured on the fixture (the two explain 5 % alike).
+    const Reading atRMax = reading::interpret(face(1.0, false), spec, nullptr, *frictionModel(kDefaultModel));
+    EXPECT_TRUE(atRMax.reduction > 0.52 || atRMax.scaleFactor < 0.98) << atRMax.reduction << " " << atRMax.scaleFactor;
+    EXPECT_TRUE(atRMax.flags & kNominalFinding);
+}
+
+// Where the outline cannot be told from the fixture's shadow the silhouette neither moves the
+// reading nor says another height: the height goes unchecked, its U covers 45–55 %, and the
+// declared scale goes unchecked too (no_silhouette), as in any view without a silhouette.
+TEST(Interpretation, AnAmbiguousOutlineNeitherRescalesNorSaysAnotherHeight)
+{
+    EndFaceGeometry g = face(0.95, false);
+    g.imageFlags |= vision::kImageOutlineAmbiguous;
+    const Reading m = interpret(g);
+    EXPECT_EQ(m.flags, uint32_t(kFlagNoSilhouette));
+    EXPECT_DOUBLE_EQ(m.reduction, 0.5);
+    EXPECT_DOUBLE_EQ(m.scaleFactor, 1.0);
+    EXPECT_NEAR(m.reductionSigma, kUndeclaredReductionSigma, 1e-9);
+    EXPECT_TRUE(m.advice.reductionUnchecked);
 }
 
 TEST(Interpretation, SilhouetteAtItsSizeKeepsTheNominalHalfHeight)
