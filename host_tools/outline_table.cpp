@@ -69,7 +69,8 @@ std::string outlineTableText(const std::string &profilesPath, const std::string 
                 if (!solved(n, mu, r)) {
                     ++copied;
                     for (double alt : rs)
-                        if (solved(n, mu, alt) && (!solved(n, mu, rShape) || std::fabs(alt - r) < std::fabs(rShape - r)))
+                        if (solved(n, mu, alt) &&
+                            (!solved(n, mu, rShape) || std::fabs(alt - r) < std::fabs(rShape - r)))
                             rShape = alt;
                 }
                 const photo::BarrelShape shape = photo::barrelShapeAt(table, n, mu, rShape);
@@ -77,7 +78,8 @@ std::string outlineTableText(const std::string &profilesPath, const std::string 
                 const bool base = friction::feRadiusAt(friction::FeRadius::Outer, n, mu, r, &ro) &&
                                   friction::feRMaxAt(n, mu, r, &rm) && rm > ro;
                 const auto own = std::find_if(table.begin(), table.end(), [&](const photo::BarrelProfile &p) {
-                    return std::fabs(p.n - n) < 1e-6 && std::fabs(p.mu - mu) < 1e-6 && std::fabs(p.reduction - r) < 1e-6;
+                    return std::fabs(p.n - n) < 1e-6 && std::fabs(p.mu - mu) < 1e-6 &&
+                           std::fabs(p.reduction - r) < 1e-6;
                 });
                 double ownRo = 0, ownRm = 0;
                 if (own != table.end()) {
@@ -96,7 +98,8 @@ std::string outlineTableText(const std::string &profilesPath, const std::string 
                 body += "},\n";
                 if (base && own != table.end()) {
                     const double x = kD0Mm / 60; // a camera 60 mm away
-                    const double d = std::log(outlineRatio(shape, ro, rm, h, x) / outlineRatio(shape, ownRo, ownRm, h, x));
+                    const double d =
+                        std::log(outlineRatio(shape, ro, rm, h, x) / outlineRatio(shape, ownRo, ownRm, h, x));
                     sumSq += d * d, worst = std::max(worst, std::fabs(d)), ++compared;
                 }
             }
@@ -119,7 +122,8 @@ std::string outlineTableText(const std::string &profilesPath, const std::string 
                   "largest %.4f (ln);\n",
                   rms, worst);
     o += b;
-    std::snprintf(b, sizeof b, "// %d grid points without their snapshot take the nearest reduction's shape.\n", copied);
+    std::snprintf(b, sizeof b, "// %d grid points without their snapshot take the nearest reduction's shape.\n",
+                  copied);
     o += b;
     o += "namespace icacam::friction::outline_table {\n";
     o += "inline constexpr const char *kProvenance = \"icacam fe outline-table --profiles " + profilesPath + "\";\n";
@@ -142,8 +146,9 @@ std::string outlineTableText(const std::string &profilesPath, const std::string 
     for (int i = 0; i < kXCount; ++i) xs.push_back(i * kXStep);
     o += "// D0/W: 0 a telecentric view, 0.25 a camera 40 mm from the end face.\n";
     list("kX", "kXCount", xs);
-    std::snprintf(b, sizeof b, "// The table's own relative error (the shape's radii: the comparison above).\n"
-                               "inline constexpr double kRelSigma = %.4f;\n",
+    std::snprintf(b, sizeof b,
+                  "// The table's own relative error (the shape's radii: the comparison above).\n"
+                  "inline constexpr double kRelSigma = %.4f;\n",
                   std::max(rms, 0.001));
     o += b;
     o += "// [reduction][n][μ][D0/W]: outline / R_max\n";
