@@ -677,7 +677,7 @@ bool RingSearch::alignedProfile(const double *outerR, AlignedProfile *p) const
                 n[k]++;
             }
     }
-    uint16_t mean[AlignedProfile::kSpan];
+    uint16_t mean[AlignedProfile::kSpan] = {}; // count ≤ kSpan are set; zeroed for GCC's flow analysis at -O0
     for (int k = 0; k < count; ++k) {
         mean[k] = n[k] * 2 >= uint32_t(kAlignRays) ? uint16_t(sum[k] / n[k]) : kOutsideFrame;
         p->level[k] = mean[k] == kOutsideFrame ? 0 : mean[k];
