@@ -2,6 +2,7 @@
 
 #include <sodium.h>
 
+#include <chrono>
 #include <cstring>
 
 namespace icacam::fw::net {
@@ -38,11 +39,20 @@ WebAuth::Login WebAuth::login(std::string_view password, int64_t nowMs, std::str
         if (hash_.empty()) return Login::NoPassword;
         if (nowMs < heldUntilMs_) return Login::HeldOff;
         // Set before the (slow) check: a second attempt meanwhile is held off too.
-        heldUntilMs_ = nowMs + kHoldOffMs;
+        heldUntilMs_ = INT64_MAX;
     }
+    const auto checkStart = std::chrono::steady_clock::now();
     if (!sodiumReady() || password.size() > 256 ||
-        crypto_pwhash_str_verify(hash_.c_str(), password.data(), password.size()) != 0)
+        crypto_pwhash_str_verify(hash_.c_str(), password.data(), password.size()) != 0) {
+        // The second counts from the answer, not the attempt: where the check itself takes
+        // a second or more (a slow board, an emulator) the next guess is still held off.
+        const int64_t checkMs =
+            std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now() - checkStart)
+                .count();
+        std::lock_guard<std::mutex> lock(mutex_);
+        heldUntilMs_ = nowMs + checkMs + kHoldOffMs;
         return Login::Wrong;
+    }
     unsigned char raw[32];
     randombytes_buf(raw, sizeof raw);
     char hex[65];

@@ -2,7 +2,7 @@
 // The web login: one password per device, stored only as a salted Argon2id hash
 // (libsodium's crypto_pwhash_str, the string `icacam-fw --hash-password` and
 // deploy/install.sh write), and sessions as random tokens with an idle time-out. A wrong
-// password holds off the next attempt for a second, whoever makes it.
+// password holds off the next attempt for a second after its answer, whoever makes it.
 #include <array>
 #include <cstdint>
 #include <mutex>

@@ -157,7 +157,7 @@ protected:
         r.body = body;
         r.contentType = "application/json";
         r.session = session;
-        r.nowMs = now += 2000; // past any hold-off
+        r.nowMs = now += 60000; // past any hold-off (a second after a check that may take seconds)
         return api.handle(r);
     }
     std::string login()
