@@ -1,6 +1,7 @@
 #include "host_tools/fe/fe_results.h"
 
 #include <cstdlib>
+#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
@@ -61,6 +62,14 @@ FrdResults parseFrd(const std::string &text)
     }
     if (r.coords.empty()) throw std::runtime_error("frd: no node block");
     return r;
+}
+
+FrdResults readFrd(const std::string &path)
+{
+    std::ifstream f(path, std::ios::binary);
+    std::ostringstream text;
+    text << f.rdbuf();
+    return parseFrd(text.str());
 }
 
 std::vector<ForcePoint> parseDatTotals(const std::string &text)

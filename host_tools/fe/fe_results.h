@@ -20,6 +20,8 @@ struct FrdResults {
 
 // Parses the ASCII .frd text; throws std::runtime_error on a malformed file.
 FrdResults parseFrd(const std::string &text);
+// The same for the .frd file at path (an absent file reads as empty text and throws as such).
+FrdResults readFrd(const std::string &path);
 
 struct ForcePoint {
     double time = 0;

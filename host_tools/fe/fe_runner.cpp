@@ -120,7 +120,7 @@ RunResult runOnce(FeCase c, const RunOptions &o)
         res.message = "ccx produced no .frd (exit " + std::to_string(rc) + ")";
         return res;
     }
-    const FrdResults frd = parseFrd(slurp(dir / "job.frd"));
+    const FrdResults frd = readFrd((dir / "job.frd").string());
     const auto forces = parseDatTotals(slurp(dir / "job.dat"));
     const bool finished = log.find("Job finished") != std::string::npos;
     // A run that stopped on divergence writes its "best solution" (not converged) as the

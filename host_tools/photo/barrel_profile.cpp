@@ -7,7 +7,6 @@
 #include <fstream>
 #include <iostream>
 #include <map>
-#include <sstream>
 #include <stdexcept>
 
 #include "host_tools/fe/fe_results.h"
@@ -19,14 +18,6 @@ namespace icacam::host::photo {
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string slurp(const fs::path &p)
-{
-    std::ifstream f(p, std::ios::binary);
-    std::ostringstream s;
-    s << f.rdbuf();
-    return s.str();
-}
 
 // The profile resampled at equal steps of its arc length, normalised as BarrelShape says.
 BarrelShape normalisedShape(const BarrelProfile &p)
@@ -232,7 +223,7 @@ void makeBarrelProfiles(const std::string &outCsv, const std::string &workDir, c
             fe::FeCase c = profileCase(n, mu);
             const fe::RunResult res = fe::runCase(c, run);
             if (res.status == "error") throw std::runtime_error(c.label() + ": " + res.message);
-            const fe::FrdResults frd = fe::parseFrd(slurp(fs::path(res.dir) / "job.frd"));
+            const fe::FrdResults frd = fe::readFrd((fs::path(res.dir) / "job.frd").string());
             for (double red : profileReductions()) {
                 // Only a snapshot the run reached and converged (its radii row exists).
                 if (std::none_of(res.radii.begin(), res.radii.end(),
