@@ -85,7 +85,9 @@ namespace {
 void adviceLine(const reading::Advice &a, char *line, size_t size)
 {
     using reading::AdviceInput;
-    if (a.input == AdviceInput::None)
+    if (a.scaleUnchecked) // an oblique view: neither height nor scale checked
+        std::snprintf(line, size, "oblique: calibrate");
+    else if (a.input == AdviceInput::None)
         std::snprintf(line, size, "U: %s", a.modelLeads ? "model's own" : "edges'");
     else if (a.input == AdviceInput::HFinal && a.reductionUnchecked)
         std::snprintf(line, size, "h unchecked U->%.4f", a.uThen); // 21 columns

@@ -64,6 +64,9 @@ struct Advice {
     // No final height, and nothing in the image checks it (no silhouette, or a calibrated
     // view): U covers the undeclared reduction's whole range, 45–55 %.
     bool reductionUnchecked = false;
+    // An uncalibrated oblique view without a silhouette: the declared scale is unchecked too
+    // (a scale measured on the fixture would pass; a calibration checks it).
+    bool scaleUnchecked = false;
 };
 // The manifest column (and the device config key's last part) the advice names.
 const char *adviceInputName(AdviceInput a);

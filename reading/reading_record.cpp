@@ -124,6 +124,10 @@ void adviceText(const Advice &a, char *buf, size_t size)
         std::snprintf(buf, size, "h_final_mm: U %.4f \xE2\x86\x92 %.4f", a.uNow, a.uThen);
     else
         std::snprintf(buf, size, "%s %g: U %.4f \xE2\x86\x92 %.4f", adviceInputName(a.input), a.value, a.uNow, a.uThen);
+    if (a.scaleUnchecked) {
+        const size_t used = std::strlen(buf);
+        std::snprintf(buf + used, size - used, "; oblique view: the declared scale is unchecked, calibrate the camera");
+    }
 }
 
 namespace {} // namespace

@@ -52,6 +52,10 @@ enum ImageFlag : uint32_t {
     // taken opens a band that may as well lie on the barrel beyond an unseen original face
     // (profile_zones.h). R_i and R_o may both be one edge out.
     kImageContactEdgeUndecided = 1u << 3,
+    // The barrel band is wide on one side and hidden behind the end face on the other: the
+    // camera sees the specimen obliquely (tilted, or close and off-axis), and no circle is the
+    // barrel's outline (rMaxPx is 0). The view, not the specimen, is why there is no silhouette.
+    kImageBarrelOblique = 1u << 4,
 };
 
 // Where the pipeline looks: the specimen's initial diameter and the scale at the end face

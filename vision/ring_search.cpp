@@ -924,6 +924,7 @@ ErrorCode RingSearch::ringAbout(const MeanEdges &me, EndFaceGeometry *m)
     bool lopsided = false;
     const double perRay = silhouetteFromRays(outerR, &m->silhouetteCoverage, &m->silhouetteScatterPx, &lopsided);
     m->rMaxPx = perRay > 0 ? perRay : lopsided ? 0 : me.rMax;
+    if (lopsided) m->imageFlags |= kImageBarrelOblique;
     if (m->rMaxPx > 0 && outlineRivalled(m->rMaxPx)) m->imageFlags |= kImageOutlineAmbiguous;
     if (me.undecided) m->imageFlags |= kImageContactEdgeUndecided;
     m->innerPoints = innerPts;

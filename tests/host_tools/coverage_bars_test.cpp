@@ -94,12 +94,12 @@ TEST(CoverageBars, ScaleMeasuredOnTheFixture)
 {
     expectBars("fixture_scale", 9104, false, {0, 0.2});
 }
-// Below the half line, at none: a tilt the budget's tilt term covers is no finding, but most
-// oblique views show no silhouette, and without one nothing checks the declared scale (a scale
-// measured on the fixture would pass unseen): no_silhouette. Calibrating the camera is the cure.
+// A tilt the budget's tilt term covers is no finding, and neither is the barrel hidden on the
+// view's far side: the reading is ok with U covering the unchecked height, and the advice says
+// that the height and the declared scale went unchecked (calibrating the camera checks the scale).
 TEST(CoverageBars, TiltedDistortingCamera)
 {
-    expectBars("tilt", 9105, false, {0, 0}, 30);
+    expectBars("tilt", 9105, false, {0, 0.5}, 30);
 }
 // The calibrated camera's oblique view shows no silhouette to check the height with; the scale
 // is the calibration's: U covers the undeclared reduction, and the reading is ok.
