@@ -295,6 +295,9 @@ LoopEffectStep readEffect(const FrictionModel &model, const ResidualSet &set, co
     if (const Candidate *g = c ? materialDeclaring(set, *c) : nullptr) {
         step.via = c->name;
         step.name = g->name, step.kind = g->kind;
+        // The grouping it is read as is not a condition it cannot be told from.
+        step.inseparable.erase(std::remove(step.inseparable.begin(), step.inseparable.end(), g->name),
+                               step.inseparable.end());
         c = g;
     }
     if (physicalReduction)
