@@ -270,6 +270,17 @@ const Candidate *materialDeclaring(const ResidualSet &set, const Candidate &c)
     return nullptr;
 }
 
+// A condition that orders the records in time, ranked in the form `mu` (its gain over a
+// constant offset larger than the drift's over one factor for every record), is still read
+// as a drift of the scale where the drift fits the held-out records better than that offset
+// in μ: a scale drifting beside another scale error (a camera) leaves most of both to the one
+// factor the drift is ranked against.
+bool drifts(const FrictionModel &model, const ResidualSet &set, const Candidate &c, double cvRmsMu, DriftFit *out)
+{
+    *out = fitDrift(model, set.usable, c, set.fold, set.folds);
+    return rms(out->cvErrors) < cvRmsMu;
+}
+
 // The leading candidate of a round as an effect in its physical form (fitted on every record),
 // with the regression patch beside it. held: the held-out errors of its physical form where
 // the ranking computed them for this round alone.
@@ -309,8 +320,9 @@ LoopEffectStep readEffect(const FrictionModel &model, const ResidualSet &set, co
         step.grouping = fitGrouping(model, set.usable, *c, reading, set.fold, set.folds);
         step.reading = reading == GroupReading::Scale ? "scale" : "n";
         step.cvRmsAfter = rms(step.grouping.cvErrors);
-    } else if (ordersInTime(c->name) && lead.form != "mu") {
-        step.drift = fitDrift(model, set.usable, *c, set.fold, set.folds);
+    } else if (ordersInTime(c->name) && c->kind == "numeric" &&
+               (lead.form != "mu" || drifts(model, set, *c, lead.cvRmsAfter, &step.drift))) {
+        if (lead.form != "mu") step.drift = fitDrift(model, set.usable, *c, set.fold, set.folds);
         step.reading = "drift";
         step.cvRmsAfter = rms(step.drift.cvErrors);
     } else {
