@@ -83,7 +83,8 @@ std::string writeLoopSet(const std::string &dir, const LoopSetOptions &opt)
         << ",n,k_mpa,d0_mm,h0_mm,mu_ref,h_final_mm,material,camera_id,lens,operator,press_speed_mm_s,ambient_c,"
            "sequence\n";
     truth << "id,mu,n_true,n_declared,reduction,scale_error,speed_factor,u_mm,r_inner_mm,r_outer_mm,r_bulge_mm,"
-             "material,camera_id,effects,camera_error,drift_error\n";
+             "material,camera_id,effects,camera_error,drift_error,mu_camera_shift,mu_drift_shift,mu_speed_shift,"
+             "mu_n_shift\n";
     const std::string effects = loopEffectNames(opt.effect);
     std::mt19937 rng(opt.seed);
     auto U = [&](double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); };
@@ -130,6 +131,18 @@ std::string writeLoopSet(const std::string &dir, const LoopSetOptions &opt)
         scaleError = (1 + cameraError) * (1 + driftError) - 1;
         if (has(opt.effect, LoopEffect::Optical) && lens == std::string("L25"))
             scaleError = (1 + scaleError) * 1.08 - 1;
+        // What each hidden effect adds to the paper model's μ at this record (the truth a run's
+        // design is judged against: how large an effect is against the records' scatter).
+        auto paperMu = [&](double uMm, double nAt) {
+            friction::ModelInputs in;
+            in.uMm = uMm, in.n = nAt;
+            return paper.estimate(in).mu;
+        };
+        const double uCamera = u * (1 + driftError);
+        const double muCameraShift = paperMu(uCamera * (1 + cameraError), nDeclared) - paperMu(uCamera, nDeclared);
+        const double muDriftShift = paperMu(u * (1 + driftError), nDeclared) - paperMu(u, nDeclared);
+        const double muSpeedShift = paperMu(u, n) - paperMu(u / speedFactor, n);
+        const double muNShift = paperMu(u, nDeclared) - paperMu(u, n);
         char id[32];
         std::snprintf(id, sizeof id, "loop-%03d", i + 1);
         std::string measured;
@@ -164,9 +177,11 @@ std::string writeLoopSet(const std::string &dir, const LoopSetOptions &opt)
                       measured.c_str(), nDeclared, mat.kMpa, mu + refNoise(rng), hFinalRecorded, mat.name,
                       kCameras[cam], lens.c_str(), op.c_str(), speed, ambient, i + 1);
         man << line;
-        std::snprintf(line, sizeof line, "%s,%.5f,%.4f,%.4f,%.4f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%s,%s,%s,%.5f,%.5f\n",
+        std::snprintf(line, sizeof line,
+                      "%s,%.5f,%.4f,%.4f,%.4f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%s,%s,%s,%.5f,%.5f,%.6f,%.6f,%.6f,%.6f\n",
                       id, mu, n, nDeclared, r, scaleError, speedFactor, roEq - ri, ri, roEq, rMax, mat.name,
-                      kCameras[cam], effects.c_str(), cameraError, driftError);
+                      kCameras[cam], effects.c_str(), cameraError, driftError, muCameraShift, muDriftShift,
+                      muSpeedShift, muNShift);
         truth << line;
     }
     return manifestPath;

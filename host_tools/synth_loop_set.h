@@ -62,7 +62,8 @@ constexpr double kDriftScaleError = 0.08; // Drift: the last record's scale erro
 // press_speed_mm_s, ambient_c, sequence), DIR/images/* (images only) and DIR/truth.csv (per
 // record: the true μ, n and reduction, the declared n, the length scale error, the speed
 // factor of u, the true radii, the set's effects, the camera's and the drift's share of the
-// scale error). Returns the manifest's path.
+// scale error, and the μ each of the camera, the drift, the speed and a wrong declared n adds
+// to the paper model's μ at the record). Returns the manifest's path.
 std::string writeLoopSet(const std::string &dir, const LoopSetOptions &opt);
 
 } // namespace icacam::host

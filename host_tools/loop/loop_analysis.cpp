@@ -10,6 +10,7 @@
 #include <set>
 
 #include "host_tools/linear_system.h"
+#include "host_tools/loop/loop_drift.h"
 #include "host_tools/manifest.h"
 
 namespace icacam::host::loop {
@@ -86,31 +87,35 @@ double mean(const std::vector<double> &v)
 // Features of one record for a candidate in a form. mu form: [1] (baseline), [1, x]
 // (numeric), one-hot levels (categorical). scale form (g = dμ/du · u): [1, g] (baseline: an
 // offset and a global scale), [1, g, g·x] (numeric), [1, g·one-hot] (categorical). Every
-// model contains its form's baseline, so a candidate's gain is what its values add.
+// model contains its form's baseline, so a candidate's gain is what its values add. An
+// interaction is a slope in one level, the one whose slope explains the training records
+// best: [1, (g,) (g·)x·1{level = acting}], with commonSlope also [(g·)x] in every level.
 struct Design {
     const Candidate *c;
     const std::vector<double> *g;
     std::vector<std::string> levels; // categorical levels seen in training
     std::vector<double> xMean;       // numeric: training mean (missing values take it)
+    std::string acting;              // interaction: the level with the slope
+    bool commonSlope = false;        // interaction: a slope common to every level beside it
 
     size_t size() const
     {
         if (!c) return g ? 2 : 1;
         if (c->kind == "categorical") return g ? 1 + levels.size() : levels.size();
-        if (c->kind == "interaction") return (g ? 2 : 1) + levels.size();
+        if (c->kind == "interaction") return (g ? 2 : 1) + (commonSlope ? 2 : 1);
         return g ? 3 : 2;
     }
     void row(size_t i, std::vector<double> *f) const
     {
         f->assign(size(), 0);
         if (c && c->kind == "interaction") {
-            // A slope per level: [1, (g,) (g·)x·one-hot].
             (*f)[0] = 1;
             if (g) (*f)[1] = (*g)[i];
-            const auto it = std::lower_bound(levels.begin(), levels.end(), c->levels[i]);
-            if (it == levels.end() || *it != c->levels[i]) return;
             const double x = std::isfinite(c->x[i]) ? c->x[i] - xMean[0] : 0;
-            (*f)[(g ? 2 : 1) + size_t(it - levels.begin())] = g ? (*g)[i] * x : x;
+            const double gx = g ? (*g)[i] * x : x;
+            const size_t at = g ? 2 : 1;
+            if (c->levels[i] == acting) (*f)[at] = gx;
+            if (commonSlope) (*f)[at + 1] = gx;
             return;
         }
         if (c && c->kind == "categorical") {
@@ -134,15 +139,45 @@ struct Design {
     }
 };
 
+// Least squares of y in the design over the records where train(i); the training SSE.
+template <typename Train>
+bool solveDesign(const Design &d, const std::vector<double> &y, Train train, std::vector<double> *q, double *sse)
+{
+    const size_t p = d.size();
+    std::vector<double> a(p * p, 0), b(p, 0), f;
+    for (size_t i = 0; i < y.size(); ++i) {
+        if (!train(i)) continue;
+        d.row(i, &f);
+        for (size_t r = 0; r < p; ++r) {
+            b[r] += f[r] * y[i];
+            for (size_t cc = 0; cc < p; ++cc) a[r * p + cc] += f[r] * f[cc];
+        }
+    }
+    double tr = 0;
+    for (size_t r = 0; r < p; ++r) tr += a[r * p + r];
+    for (size_t r = 0; r < p; ++r) a[r * p + r] += 1e-10 * tr / double(p) + 1e-300; // degenerate columns
+    if (!solveLinearSystem(a, b, q)) return false;
+    *sse = 0;
+    for (size_t i = 0; i < y.size(); ++i) {
+        if (!train(i)) continue;
+        d.row(i, &f);
+        double v = 0;
+        for (size_t r = 0; r < p; ++r) v += f[r] * (*q)[r];
+        *sse += (y[i] - v) * (y[i] - v);
+    }
+    return true;
+}
+
 // Fits the candidate (nullptr: the baseline) on the records with fold != k and predicts those
 // with fold == k (every record with predictAll). k < 0: fit on all and predict all. sens: the
 // scale form.
 void fitPredict(const Candidate *c, const std::vector<double> &y, const std::vector<int> &fold, int k,
-                std::vector<double> *pred, const std::vector<double> *sens = nullptr, bool predictAll = false)
+                std::vector<double> *pred, const std::vector<double> *sens = nullptr, bool predictAll = false,
+                bool commonSlope = false)
 {
     const size_t n = y.size();
     auto train = [&](size_t i) { return k < 0 || fold[i] != k; };
-    Design d{c, sens, {}, {0}};
+    Design d{c, sens, {}, {0}, {}, commonSlope};
     double sy = 0;
     int cnt = 0;
     for (size_t i = 0; i < n; ++i)
@@ -167,20 +202,26 @@ void fitPredict(const Candidate *c, const std::vector<double> &y, const std::vec
             }
         d.xMean[0] = nx ? sx / nx : 0;
     }
-    const size_t p = d.size();
-    std::vector<double> a(p * p, 0), b(p, 0), q, f;
-    for (size_t i = 0; i < n; ++i) {
-        if (!train(i)) continue;
-        d.row(i, &f);
-        for (size_t r = 0; r < p; ++r) {
-            b[r] += f[r] * y[i];
-            for (size_t cc = 0; cc < p; ++cc) a[r * p + cc] += f[r] * f[cc];
+    std::vector<double> q;
+    double sse = 0;
+    bool ok = false;
+    if (c && c->kind == "interaction") {
+        // The acting level: the one whose slope leaves the least of the training records. Each
+        // fold chooses its own, so the held-out error carries the choice (and its family counts
+        // one try per level).
+        std::vector<double> qLevel;
+        double best = INFINITY;
+        for (const std::string &level : d.levels) {
+            Design t = d;
+            t.acting = level;
+            if (solveDesign(t, y, train, &qLevel, &sse) && sse < best) best = sse, q = qLevel, d.acting = level;
         }
+        ok = !q.empty();
+    } else {
+        ok = solveDesign(d, y, train, &q, &sse);
     }
-    double tr = 0;
-    for (size_t r = 0; r < p; ++r) tr += a[r * p + r];
-    for (size_t r = 0; r < p; ++r) a[r * p + r] += 1e-10 * tr / double(p) + 1e-300; // degenerate columns
-    const bool ok = solveLinearSystem(a, b, &q);
+    std::vector<double> f;
+    const size_t p = d.size();
     for (size_t i = 0; i < n; ++i) {
         if (k >= 0 && fold[i] != k && !predictAll) continue;
         if (!ok) {
@@ -297,22 +338,23 @@ double functionShare(const Candidate &a, const Candidate &b)
 }
 
 // A recorded numeric condition that varies within a material (press speed, temperature) as
-// a slope per material: an effect confined to one material (a rate-sensitive material among
+// a slope in one material: an effect confined to one material (a rate-sensitive material among
 // others) is not read as that material. Rate and temperature sensitivity are properties of
 // a material, so only material groupings get one. Declared properties of a level (n, K of a
-// material: a function of some grouping) and the reduction are left out.
+// material: a function of some grouping), the reduction and a condition that orders the
+// records in time (what moves along the run is the instrument's, a drift) are left out.
 void addInteractions(const std::vector<LoopRecord> &usable, std::vector<Candidate> *out)
 {
     std::vector<Candidate> added;
     for (const Candidate &x : *out) {
-        if (x.kind != "numeric" || x.symptom || isReductionCandidate(x.name)) continue;
+        if (x.kind != "numeric" || x.symptom || isReductionCandidate(x.name) || ordersInTime(x.name)) continue;
         bool declaredProperty = false;
         for (const Candidate &g : *out)
             if (g.kind == "categorical" && !g.symptom && functionShare(x, g) >= 0.95) declaredProperty = true;
         if (declaredProperty) continue;
         for (const Candidate &g : *out) {
             if (g.kind != "categorical" || g.symptom || !isMaterialGrouping(usable, g)) continue;
-            Candidate c{x.name + "_by_" + g.name, "interaction", x.x, g.levels, false};
+            Candidate c{x.name + "_by_" + g.name, "interaction", x.x, g.levels, false, x.logarithmic};
             added.push_back(std::move(c));
         }
     }
@@ -351,6 +393,21 @@ bool isSymptom(const std::string &name)
     static const char *const kStems[] = {"r_inner", "r_outer", "r_bulge", "r_max", "u_mm", "u_px", "reduction_est"};
     for (const char *stem : kStems)
         if (name.find(stem) != std::string::npos) return true;
+    return false;
+}
+
+bool isRate(const std::string &name)
+{
+    std::string word;
+    for (size_t i = 0; i <= name.size(); ++i) {
+        const char ch = i < name.size() ? char(std::tolower(static_cast<unsigned char>(name[i]))) : '_';
+        if (std::isalnum(static_cast<unsigned char>(ch))) {
+            word += ch;
+            continue;
+        }
+        if (word == "speed" || word == "rate" || word == "velocity") return true;
+        word.clear();
+    }
     return false;
 }
 
@@ -422,6 +479,12 @@ std::vector<Candidate> buildCandidates(const std::vector<LoopRecord> &usable)
                               : dates                       ? dayNumber(it->second)
                               : parseNumber(it->second, &d) ? d
                                                             : kNaN);
+            }
+            bool positive = numeric;
+            for (double v : c.x) positive = positive && !(v <= 0);
+            if (positive && isRate(name)) {
+                c.logarithmic = true;
+                for (double &v : c.x) v = std::log(v);
             }
         } else {
             if (distinct.size() * 2 > usable.size()) continue; // an identifier, not a factor
@@ -520,17 +583,17 @@ std::vector<Form> linearForms(const std::vector<double> &y, const std::vector<in
 
 // In-sample sum of squares and parameter count of a linear model (nullptr: the baseline).
 double inSample(const Candidate *c, const std::vector<double> &y, const std::vector<int> &fold,
-                const std::vector<double> *sens, int *params)
+                const std::vector<double> *sens, int *params, bool commonSlope = false)
 {
     std::vector<double> pred(y.size(), 0);
-    fitPredict(c, y, fold, -1, &pred, sens);
+    fitPredict(c, y, fold, -1, &pred, sens, false, commonSlope);
     for (size_t i = 0; i < y.size(); ++i) pred[i] = y[i] - pred[i];
     if (!c)
         *params = sens ? 2 : 1;
     else if (c->kind == "categorical")
         *params = int(std::set<std::string>(c->levels.begin(), c->levels.end()).size()) + (sens ? 1 : 0);
     else if (c->kind == "interaction")
-        *params = int(std::set<std::string>(c->levels.begin(), c->levels.end()).size()) + (sens ? 2 : 1);
+        *params = (sens ? 2 : 1) + (commonSlope ? 2 : 1);
     else
         *params = sens ? 3 : 2;
     return sumSquares(pred);
@@ -709,18 +772,28 @@ void putTheAddedEffectFirst(std::vector<RankedCandidate> &out, std::vector<size_
     o.insert(o.begin(), moved);
 }
 
-// A slope per level counts only where the slopes differ: the per-level model against one
-// common slope in the same form, F test at the family's critical z.
+// A slope in one level counts only where it differs from the others': the acting level's
+// slope beside one common slope, against the common slope alone in the same form, F test
+// at the level of a single comparison. The slope is already significant over the family;
+// what is left is which of its two forms reads it (a closed test).
 bool slopesDiffer(const Candidate &c, const std::vector<double> &y, const std::vector<int> &fold,
-                  const std::vector<Form> &formList, const FormScore &f, double zCrit)
+                  const std::vector<Form> &formList, const FormScore &f, double zNeeded)
 {
     const std::vector<double> *sens = nullptr;
     for (const Form &form : formList)
         if (f.form == form.name) sens = form.sens;
-    const Candidate common{c.name, "numeric", c.x, {}, false};
+    const Candidate common{c.name, "numeric", c.x, {}, false, c.logarithmic};
     int p0 = 0, p1 = 0;
-    const double sse0 = inSample(&common, y, fold, sens, &p0), sse1 = inSample(&c, y, fold, sens, &p1);
-    return nestedZ(sse0, p0, sse1, p1, y.size()) > zCrit;
+    const double sse0 = inSample(&common, y, fold, sens, &p0), sse1 = inSample(&c, y, fold, sens, &p1, true);
+    return nestedZ(sse0, p0, sse1, p1, y.size()) > zNeeded;
+}
+
+// The tries a candidate makes per form: one, or for a slope in one level one per level (the
+// acting level is chosen among them).
+size_t triesOf(const Candidate &c)
+{
+    if (c.kind != "interaction") return 1;
+    return std::max<size_t>(std::set<std::string>(c.levels.begin(), c.levels.end()).size(), 1);
 }
 
 // The significant recorded conditions the leading one cannot be told from: they group the
@@ -755,8 +828,8 @@ std::vector<RankedCandidate> rankCandidates(const std::vector<Candidate> &candid
     const int folds = std::clamp(opt.folds, 2, int(y.size()));
     const std::vector<int> fold = foldAssignment(y.size(), folds, opt.seed);
     const std::vector<Form> formList = linearForms(y, fold, folds, scaleSensitivity, uSensitivity);
-    const size_t tries = candidates.size() * formList.size() + (physicalForms ? physicalForms->size() : 0) +
-                         (fittedForms ? fittedForms->size() : 0);
+    size_t tries = (physicalForms ? physicalForms->size() : 0) + (fittedForms ? fittedForms->size() : 0);
+    for (const Candidate &c : candidates) tries += triesOf(c) * formList.size();
     const double zCrit = normalUpperQuantile(opt.alpha / double(std::max<size_t>(tries, 1)));
     std::vector<std::vector<double>> errors; // held-out errors per candidate, as in out
     for (const Candidate &c : candidates) {
@@ -774,8 +847,10 @@ std::vector<RankedCandidate> rankCandidates(const std::vector<Candidate> &candid
         r.gain = r.cvRmsBefore - r.cvRmsAfter;
         r.z = nestedZ(f.sse0, f.p0, f.sse1, f.p1, y.size());
         if (c.kind != "categorical") r.correlation = correlation(c, y);
+        r.zFamily = zCrit;
         r.significant = r.gain > 0 && r.z > zCrit && r.gain >= opt.minRelativeGain * r.cvRmsBefore;
-        if (c.kind == "interaction" && r.significant) r.significant = slopesDiffer(c, y, fold, formList, f, zCrit);
+        if (c.kind == "interaction" && r.significant)
+            r.significant = slopesDiffer(c, y, fold, formList, f, normalUpperQuantile(opt.alpha));
         out.push_back(r);
         errors.push_back(std::move(f.e1));
     }

@@ -35,6 +35,8 @@ struct Candidate {
     std::vector<double> x;           // numeric value per usable record (NaN: missing)
     std::vector<std::string> levels; // categorical level per usable record
     bool symptom = false;            // a measured quantity (isSymptom), not a recorded condition
+    // x is the natural logarithm of the recorded value (a rate: isRate).
+    bool logarithmic = false;
 };
 
 // A measured quantity (a symptom) rather than a recorded condition (a cause): every
@@ -42,6 +44,11 @@ struct Candidate {
 // (r_inner_mm, r_outer_mm, r_bulge_mm), what a device measured (mu, u_mm, reduction_est, status, flags, ...), and any
 // column named after one of them (r_outer_px, u_over_r0, ...).
 bool isSymptom(const std::string &name);
+
+// A recorded rate (press speed, strain rate, velocity: a word of the name): a rate-sensitive
+// flow curve σ = K ε^n (ε̇/ε̇₀)^m moves u with ln ε̇, so a rate enters as its logarithm where
+// every recorded value is positive.
+bool isRate(const std::string &name);
 
 // The specimen's height reduction as a candidate: recorded (h_final_mm, the derived
 // reduction) or as the silhouette implies it (diag_reduction_est).
@@ -67,6 +74,7 @@ struct RankedCandidate {
     double z = 0;           // nested F test of the form against its baseline, as a normal z
     double correlation = 0; // numeric: Pearson r with the residual (for reading only)
     bool significant = false;
+    double zFamily = 0; // the critical z of its round's family (Bonferroni over every try)
     bool symptom = false;
     // Significant through a significant symptom it cannot be told from (rankCandidates): on its
     // own only at the level of a single comparison.
@@ -88,6 +96,15 @@ struct RankedCandidate {
     // condition, and this one's z on the records it leaves.
     std::string given;
     double givenZ = 0;
+    // Put first over a significant recorded condition that ranked ahead of it and is not
+    // significant with this one taken out, while this one is with it taken out: that condition
+    // (this one explains what it did and more), and the two z's on what the other leaves.
+    std::string subsumes;
+    double subsumesZ = 0, subsumedZ = 0;
+    // Significant recorded conditions that explain the same part of the residual as this one:
+    // with either taken out the other is not significant. These records cannot say which it
+    // is; they are not added after it.
+    std::vector<std::string> sameResidual;
 };
 
 // A candidate's physical form fitted outside the ranking: held-out errors per record under it

@@ -270,6 +270,17 @@ const Candidate *materialDeclaring(const ResidualSet &set, const Candidate &c)
     return nullptr;
 }
 
+// A condition that orders the records in time, ranked in the form `mu` (its gain over a
+// constant offset larger than the drift's over one factor for every record), is still read
+// as a drift of the scale where the drift fits the held-out records better than that offset
+// in μ: a scale drifting beside another scale error (a camera) leaves most of both to the one
+// factor the drift is ranked against.
+bool drifts(const FrictionModel &model, const ResidualSet &set, const Candidate &c, double cvRmsMu, DriftFit *out)
+{
+    *out = fitDrift(model, set.usable, c, set.fold, set.folds);
+    return rms(out->cvErrors) < cvRmsMu;
+}
+
 // The leading candidate of a round as an effect in its physical form (fitted on every record),
 // with the regression patch beside it. held: the held-out errors of its physical form where
 // the ranking computed them for this round alone.
@@ -282,6 +293,8 @@ LoopEffectStep readEffect(const FrictionModel &model, const ResidualSet &set, co
     step.symptom = lead.symptom, step.viaSymptom = lead.viaSymptom;
     step.preferredOver = lead.preferredOver, step.pointedBy = lead.pointedBy;
     step.given = lead.given, step.givenZ = lead.givenZ;
+    step.subsumes = lead.subsumes, step.subsumesZ = lead.subsumesZ, step.subsumedZ = lead.subsumedZ;
+    step.sameResidual = lead.sameResidual;
     // The reduction's names (h_final_mm, reduction) are one cause, not two that cannot be told apart.
     for (const std::string &other : lead.inseparable)
         if (!(isReductionCandidate(lead.name) && isReductionCandidate(other))) step.inseparable.push_back(other);
@@ -293,6 +306,9 @@ LoopEffectStep readEffect(const FrictionModel &model, const ResidualSet &set, co
     if (const Candidate *g = c ? materialDeclaring(set, *c) : nullptr) {
         step.via = c->name;
         step.name = g->name, step.kind = g->kind;
+        // The grouping it is read as is not a condition it cannot be told from.
+        step.inseparable.erase(std::remove(step.inseparable.begin(), step.inseparable.end(), g->name),
+                               step.inseparable.end());
         c = g;
     }
     if (physicalReduction)
@@ -304,8 +320,9 @@ LoopEffectStep readEffect(const FrictionModel &model, const ResidualSet &set, co
         step.grouping = fitGrouping(model, set.usable, *c, reading, set.fold, set.folds);
         step.reading = reading == GroupReading::Scale ? "scale" : "n";
         step.cvRmsAfter = rms(step.grouping.cvErrors);
-    } else if (ordersInTime(c->name) && lead.form != "mu") {
-        step.drift = fitDrift(model, set.usable, *c, set.fold, set.folds);
+    } else if (ordersInTime(c->name) && c->kind == "numeric" &&
+               (lead.form != "mu" || drifts(model, set, *c, lead.cvRmsAfter, &step.drift))) {
+        if (lead.form != "mu") step.drift = fitDrift(model, set.usable, *c, set.fold, set.folds);
         step.reading = "drift";
         step.cvRmsAfter = rms(step.drift.cvErrors);
     } else {
@@ -353,6 +370,7 @@ void markTaken(const LoopEffectStep &step, std::set<std::string> *taken)
     if (isReductionCandidate(step.name))
         for (const char *name : {"reduction", "h_final_mm", "diag_reduction_est"}) taken->insert(name);
     taken->insert(step.inseparable.begin(), step.inseparable.end());
+    taken->insert(step.sameResidual.begin(), step.sameResidual.end());
 }
 
 // One round: the candidates left (not taken) ranked on what the records' residual now is,
@@ -431,6 +449,86 @@ void lookPastAMaskingEffect(const FrictionModel &model, const fe::ReductionSlope
     r.insert(r.begin(), std::move(moved));
 }
 
+// The z of `name` in a ranking and whether it is significant there (not through a symptom).
+bool significantIn(const std::vector<RankedCandidate> &ranking, const std::string &name, double *z)
+{
+    *z = 0;
+    for (const RankedCandidate &c : ranking)
+        if (c.name == name) {
+            *z = c.z;
+            return c.significant && !c.viaSymptom;
+        }
+    return false;
+}
+
+// The share two corrections have in common: R² between what each took out of the residual.
+double sharedShare(const std::vector<LoopRecord> &before, const std::vector<LoopRecord> &a,
+                   const std::vector<LoopRecord> &b)
+{
+    const size_t n = before.size();
+    std::vector<double> da(n), db(n);
+    double ma = 0, mb = 0;
+    for (size_t i = 0; i < n; ++i) {
+        da[i] = before[i].muModel - a[i].muModel, db[i] = before[i].muModel - b[i].muModel;
+        ma += da[i] / double(n), mb += db[i] / double(n);
+    }
+    double saa = 0, sbb = 0, sab = 0;
+    for (size_t i = 0; i < n; ++i) {
+        saa += (da[i] - ma) * (da[i] - ma), sbb += (db[i] - mb) * (db[i] - mb), sab += (da[i] - ma) * (db[i] - mb);
+    }
+    return saa > 0 && sbb > 0 ? sab * sab / (saa * sbb) : 0;
+}
+
+// Two recorded conditions can explain the same part of the residual (a press speed and an
+// ambient temperature that happen to rise together within one material). The leader is
+// weighed against each significant recorded condition below it (the first three): each is
+// taken out in its physical form and the other ranked on what it leaves. Where the leader is
+// still significant, it adds to the other and leads. Where it is not and the other is with
+// the leader taken out, the other explains what the leader did and more: it leads
+// (`subsumes`). Where neither is and the two take out mostly the same (R² of their
+// corrections above one half), the records cannot say which it is: the leader is read, and
+// the other is named beside it (`sameResidual`) and not added after it.
+void weighRivals(const FrictionModel &model, const fe::ReductionSlope *slope, const ResidualSet &round,
+                 const std::set<std::string> &taken, bool carried, const RankingOptions &opt,
+                 std::vector<RankedCandidate> *ranking)
+{
+    constexpr int kRivals = 3;
+    std::vector<RankedCandidate> &r = *ranking;
+    if (r.empty() || !r.front().significant || r.front().symptom) return;
+    int tried = 0;
+    for (size_t k = 1; k < r.size() && tried < kRivals; ++k) {
+        const RankedCandidate &lead = r.front(), &rival = r[k];
+        if (rival.symptom || !rival.significant || rival.viaSymptom) continue;
+        if (std::find(lead.inseparable.begin(), lead.inseparable.end(), rival.name) != lead.inseparable.end()) continue;
+        if (isReductionCandidate(lead.name) && isReductionCandidate(rival.name)) continue;
+        ++tried;
+        std::set<std::string> takenRival = taken, takenLead = taken;
+        ResidualSet next;
+        const std::vector<LoopRecord> rivalOut =
+            withCandidateOut(model, slope, round, round, rival, carried, &takenRival);
+        if (takenRival.count(lead.name)) continue;
+        double leadZ = 0, rivalZ = 0;
+        if (significantIn(rankRound(model, slope, rivalOut, takenRival, carried, round.fold, round.folds, opt, &next),
+                          lead.name, &leadZ))
+            continue;
+        const std::vector<LoopRecord> leadOut = withCandidateOut(model, slope, round, round, lead, carried, &takenLead);
+        const bool rivalStands =
+            !takenLead.count(rival.name) &&
+            significantIn(rankRound(model, slope, leadOut, takenLead, carried, round.fold, round.folds, opt, &next),
+                          rival.name, &rivalZ);
+        if (!rivalStands) {
+            // The same part of the residual: most of what one takes out the other does too.
+            if (sharedShare(round.usable, leadOut, rivalOut) > 0.5) r.front().sameResidual.push_back(rival.name);
+            continue;
+        }
+        RankedCandidate moved = rival;
+        moved.subsumes = lead.name, moved.subsumesZ = rivalZ, moved.subsumedZ = leadZ;
+        r.erase(r.begin() + long(k));
+        r.insert(r.begin(), std::move(moved));
+        return;
+    }
+}
+
 // Held-out errors with every effect fitted on each fold's training records: record i as the
 // records of its fold's state give it.
 std::vector<double> heldOut(const std::vector<std::vector<LoopRecord>> &perFold, const std::vector<int> &fold)
@@ -439,6 +537,25 @@ std::vector<double> heldOut(const std::vector<std::vector<LoopRecord>> &perFold,
     for (size_t i = 0; i < fold.size(); ++i)
         e[i] = perFold[size_t(fold[i])][i].muModel - perFold[size_t(fold[i])][i].muRef;
     return e;
+}
+
+// Backfitting: a few rounds of refitting each effect on the records every other one leaves,
+// each grouping's levels relative to its typical level (applyEffect's onlyDiffering).
+constexpr int kBackfitRounds = 4;
+void backfit(const FrictionModel &model, const fe::ReductionSlope *slope, const ResidualSet &first,
+             const std::vector<LoopEffectStep> &effects, std::vector<EffectShare> *shares)
+{
+    if (effects.size() < 2) return;
+    for (int round = 0; round < kBackfitRounds; ++round)
+        for (size_t j = 0; j < effects.size(); ++j) {
+            const LoopEffectStep &e = effects[j];
+            const Candidate *c = candidateNamed(first, e.name);
+            if (!c || e.reading == "fe_slope") continue;
+            std::vector<LoopRecord> others = withShares(model, slope, first.usable, *shares, j, false);
+            const std::vector<LoopRecord> before = others;
+            applyEffect(model, slope, e, *c, &others, first.fold, -1, true);
+            (*shares)[j] = shareOf(before, others);
+        }
 }
 
 // After the first effect: take it out of the records (fitted on all of them for the next
@@ -466,12 +583,14 @@ void addFurtherEffects(const FrictionModel &model, const fe::ReductionSlope *slo
         std::vector<RankedCandidate> ranking =
             rankRound(model, slope, all, taken, carried, first.fold, first.folds, opt, &round);
         lookPastAMaskingEffect(model, slope, round, taken, carried, opt, &ranking);
+        weighRivals(model, slope, round, taken, carried, opt, &ranking);
         if (ranking.empty() || !ranking.front().significant) {
             s->lastRanking = ranking;
-            s->stopped = "no further candidate is significant" +
-                         (ranking.empty()
-                              ? std::string()
-                              : " (best left: " + ranking.front().name + ", z " + f4(ranking.front().z, "%.1f") + ")");
+            s->stopped =
+                "no further candidate is significant" +
+                (ranking.empty() ? std::string()
+                                 : " (best left: " + ranking.front().name + ", z " + f4(ranking.front().z, "%.1f") +
+                                       " against the family's " + f4(ranking.front().zFamily, "%.1f") + ")");
             return;
         }
         const RankedCandidate &next = ranking.front();
@@ -496,6 +615,13 @@ void addFurtherEffects(const FrictionModel &model, const fe::ReductionSlope *slo
         applyEffect(model, slope, step, *cand, &all, first.fold, -1);
         shares->push_back(shareOf(before, all));
         markTaken(step, &taken);
+        s->effects.push_back(step);
+        // The next round looks at what every effect so far leaves fitted together: an effect
+        // fitted while a later one was still in the records carries part of it, and that part
+        // would read as a further effect.
+        backfit(model, slope, first, s->effects, shares);
+        all = withShares(model, slope, first.usable, *shares, shares->size(), false);
+        s->effects.pop_back();
         carried = carried || step.reading == "fe_slope";
         cvNow = step.cvRmsAfter;
         s->cvRmsAfter = cvNow;
@@ -511,7 +637,7 @@ void refitTogether(const FrictionModel &model, const fe::ReductionSlope *slope, 
                    std::vector<EffectShare> shares, LoopSummary *s)
 {
     if (s->effects.size() < 2) return;
-    constexpr int kRounds = 4;
+    constexpr int kRounds = kBackfitRounds;
     for (int round = 0; round < kRounds; ++round)
         for (size_t j = 0; j < s->effects.size(); ++j) {
             LoopEffectStep &e = s->effects[j];
@@ -606,6 +732,7 @@ LoopSummary runLoopOn(const Manifest &manifest, const std::string &source,
     s.ranking =
         rankCandidates(set.candidates, set.residual, opt, &set.scaleSens, &set.uSens, &physicalForms, &fittedForms);
     lookPastAMaskingEffect(*model, slopeLoaded ? &slope : nullptr, set, {}, false, opt, &s.ranking);
+    weighRivals(*model, slopeLoaded ? &slope : nullptr, set, {}, false, opt, &s.ranking);
     s.cvRmsOffset = offsetCvRms(set.residual, set.fold, set.folds);
     s.cvRmsAfter = s.rmsBefore;
     if (!s.ranking.empty() && s.ranking.front().significant) {

@@ -30,6 +30,9 @@ struct LoopEffectStep {
     std::vector<std::string> preferredOver, pointedBy, inseparable;
     std::string given; // significant only with this other effect taken out (RankedCandidate::given)
     double givenZ = 0;
+    std::string subsumes; // RankedCandidate::subsumes, subsumesZ, subsumedZ, sameResidual
+    double subsumesZ = 0, subsumedZ = 0;
+    std::vector<std::string> sameResidual;
     PhysicalFit grouping;                  // scale, n
     LinearEffect linear;                   // process (numeric)
     std::vector<std::string> slopeLevels;  // process (a slope per level): the levels, with

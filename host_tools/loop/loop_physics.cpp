@@ -371,6 +371,8 @@ LinearEffect fitLinearEffect(const Candidate &c, const std::vector<double> &y, c
     e.sigma = std::sqrt(s2 * s00 / det);
     std::nth_element(w.begin(), w.begin() + long(w.size() / 2), w.end());
     e.muSpan = b * (e.xMax - e.xMin) * w[w.size() / 2];
+    e.logarithmic = c.logarithmic;
+    if (c.logarithmic) e.xMin = std::exp(e.xMin), e.xMax = std::exp(e.xMax);
     return e;
 }
 

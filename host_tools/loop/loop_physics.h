@@ -74,11 +74,12 @@ FittedForm groupingForm(const friction::FrictionModel &model, const std::vector<
 // A numeric recorded condition in its best linear form: residual = sens·(a + b·x), b with its
 // standard uncertainty, on every usable record.
 struct LinearEffect {
-    std::string form; // "mu", "scale" or "u" (as in RankedCandidate)
-    double slope = 0; // b: μ, relative u or mm of u per unit of x
-    double sigma = 0; // standard uncertainty of b
-    double xMin = 0, xMax = 0;
-    double muSpan = 0; // the μ the effect moves across the recorded range, at the median sensitivity
+    std::string form;          // "mu", "scale" or "u" (as in RankedCandidate)
+    double slope = 0;          // b: μ, relative u or mm of u per unit of x
+    double sigma = 0;          // standard uncertainty of b
+    double xMin = 0, xMax = 0; // the recorded range (as recorded, also for a logarithmic x)
+    bool logarithmic = false;  // the slope is per unit of ln x (a rate: isRate)
+    double muSpan = 0;         // the μ the effect moves across the recorded range, at the median sensitivity
 };
 LinearEffect fitLinearEffect(const Candidate &c, const std::vector<double> &residual, const std::string &form,
                              const std::vector<double> &scaleSens, const std::vector<double> &uSens);

@@ -198,9 +198,13 @@ void writePhysicalSection(std::ostream &f, const LoopEffectStep &e, bool first, 
                            "scale check, docs/firmware.md) until it holds.\n"
                          : ": within its uncertainty of none.\n");
     } else if (e.reading == "process" && !e.levelSlopes.empty()) {
-        f << "A recorded process variable acting within some levels of a grouping only (a slope per level; form `"
-          << e.form << "`), applied here as that regression (the patch):\n\n| level | records' slope | U (k = 2) | "
-          << "verdict |\n|---|---|---|---|\n";
+        const bool logarithmic = !e.levelSlopes.empty() && e.levelSlopes.front().logarithmic;
+        f << "A recorded process variable acting within one level of a grouping (a slope in the level where it "
+             "explains the records best, significant against none and against one slope common to every level; "
+             "form `"
+          << e.form << "`), applied here as that regression (the patch). Each level's own slope per unit of "
+          << (logarithmic ? "ln(`" + e.name.substr(0, e.name.find("_by_")) + "`)" : "its variable")
+          << ":\n\n| level | records' slope | U (k = 2) | verdict |\n|---|---|---|---|\n";
         for (size_t j = 0; j < e.levelSlopes.size(); ++j) {
             const LinearEffect &l = e.levelSlopes[j];
             f << "| " << e.slopeLevels[j] << " | " << fmt(l.slope, "%.4g") << " | " << fmt(kCoverage * l.sigma, "%.2g")
@@ -214,8 +218,8 @@ void writePhysicalSection(std::ostream &f, const LoopEffectStep &e, bool first, 
           << (l.form == "u"       ? "an additive shift of u, linear in it"
               : l.form == "scale" ? "a relative change of u, linear in it"
                                   : "an offset in μ, linear in it")
-          << "): " << fmt(l.slope, "%.4g") << " ± " << fmt(l.sigma, "%.2g") << " (1 σ) " << unit << " per unit of `"
-          << e.name << "`"
+          << "): " << fmt(l.slope, "%.4g") << " ± " << fmt(l.sigma, "%.2g") << " (1 σ) " << unit << " per unit of "
+          << (l.logarithmic ? "ln(`" + e.name + "`) (a rate acts through its logarithm)" : "`" + e.name + "`")
           << (l.form == "scale" ? " (u changes by " + fmt(100 * l.slope, "%.2f") + " % per unit)" : std::string())
           << "; over the recorded range " << fmt(l.xMin, "%.3g") << "–" << fmt(l.xMax, "%.3g")
           << " it moves μ by about " << fmt(l.muSpan)
@@ -241,6 +245,17 @@ void writePhysicalSection(std::ostream &f, const LoopEffectStep &e, bool first, 
           << fmt(e.givenZ, "%.1f") << "), and `" << e.given
           << "` is with it taken out. Each carried the other's scatter; the next effect is read on what this one "
              "leaves.\n";
+    if (!e.subsumes.empty())
+        f << "\nRead before `" << e.subsumes << "`, which ranked ahead of it: with `" << e.name
+          << "` taken out that one is not significant (z " << fmt(e.subsumedZ, "%.1f") << "), and `" << e.name
+          << "` is with it taken out (z " << fmt(e.subsumesZ, "%.1f") << "): it explains what `" << e.subsumes
+          << "` did and more.\n";
+    if (!e.sameResidual.empty())
+        f << "\nCould not be separated from " << list(e.sameResidual)
+          << ": they take out mostly the same part of the residual, and with either taken out the other is not "
+             "significant. The records cannot say which it is; `"
+          << e.name << "` (the lower held-out error) is read here, and the others are not added after it. Records "
+          << "where they differ would tell.\n";
     if (!e.inseparable.empty())
         f << "\nNot separable from " << list(e.inseparable) << ": they group these records the same way and explain "
           << "the residual as well (paired z < 2). The records cannot say which it is; `" << e.name
@@ -289,7 +304,8 @@ void printPhysical(std::ostream &out, const LoopSummary &s)
                 << (differs(g) ? " differs" : "") << "\n";
         if (e.reading == "process" && e.levelSlopes.empty())
             out << "slope " << e.linear.form << " " << fmt(e.linear.slope, "%.4g") << " +- "
-                << fmt(e.linear.sigma, "%.2g") << " per unit of " << e.name << "\n";
+                << fmt(e.linear.sigma, "%.2g") << " per unit of "
+                << (e.linear.logarithmic ? "ln(" + e.name + ")" : e.name) << "\n";
         for (size_t j = 0; j < e.levelSlopes.size(); ++j)
             out << "slope " << e.levelSlopes[j].form << " " << e.slopeLevels[j] << " "
                 << fmt(e.levelSlopes[j].slope, "%.4g") << " +- " << fmt(e.levelSlopes[j].sigma, "%.2g") << "\n";
@@ -297,9 +313,10 @@ void printPhysical(std::ostream &out, const LoopSummary &s)
             out << "drift factor " << fmt(e.drift.startFactor) << " -> " << fmt(e.drift.endFactor) << " +- "
                 << fmt(kCoverage * driftSigmaAt(e.drift, e.drift.xMax)) << " (k=2)"
                 << (e.drift.drifts() ? " differs" : "") << "\n";
-        if (!e.inseparable.empty()) {
+        if (!e.inseparable.empty() || !e.sameResidual.empty()) {
             out << "inseparable " << e.name;
             for (const std::string &o : e.inseparable) out << " " << o;
+            for (const std::string &o : e.sameResidual) out << " " << o;
             out << "\n";
         }
     }
