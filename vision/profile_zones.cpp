@@ -87,6 +87,11 @@ ProfileEdges findProfileEdges(const uint16_t *level, const int32_t *deriv, int c
 ZoneKind zoneBeyond(const uint16_t *level, int count, const ProfileEdges &edges, int k, int window)
 {
     const ProfileEdge &e = edges.edge[k];
+    // The optics blur a step alike on either side of it, so its derivative falls off as
+    // fast outside its peak as inside. A flank that runs on well beyond the peak on the
+    // outside is a ramp after the step: the brightness keeps changing there (a barrel
+    // turning away into the dark, its outline close behind).
+    if (e.flankHi - e.index > 2 * (e.index - e.flankLo) + 1) return ZoneKind::Varying;
     const int a = e.flankHi + 1;
     int b = std::min(count - 1, e.flankHi + window);
     if (k + 1 < edges.count) b = std::min(b, edges.edge[k + 1].flankLo - 1);
