@@ -766,7 +766,21 @@ RingSearch::OriginalFaceName RingSearch::nameOriginalFace(const AlignedProfile &
     const double noise = robustSigma(p.deriv, 0, K / 2);
     const double innerMin = std::max(3.0 * noise, 40.0);
     OriginalFaceName name;
-    for (int k = -K + 2; k <= -2; ++k) {
+    // The contact edge's own hump of the derivative is not an edge inside it: a barrel
+    // ramping away behind the step gives the descent two humps, the step's and the ramp's,
+    // and the profile, aligned between them, would otherwise offer the step's hump as the
+    // original face's. Walking in from sample K, the hump rises to its top and falls to the
+    // valley before the next one, or below a quarter of its top, or to the other sign.
+    const int signAtEdge = p.deriv[K] > 0 ? 1 : p.deriv[K] < 0 ? -1 : 0;
+    int flank = K;
+    if (signAtEdge) {
+        int32_t top = signAtEdge * p.deriv[K];
+        while (flank > 0 && signAtEdge * p.deriv[flank - 1] >= top) top = signAtEdge * p.deriv[--flank];
+        while (flank > 0 && signAtEdge * p.deriv[flank - 1] <= signAtEdge * p.deriv[flank] &&
+               4 * signAtEdge * p.deriv[flank - 1] >= top)
+            --flank;
+    }
+    for (int k = -K + 2; k <= std::min(-2, flank - 1 - K); ++k) {
         const int idx = k + K;
         if (!isExtremum(p.deriv, idx) || std::abs(p.deriv[idx]) < innerMin || std::abs(p.deriv[idx]) <= name.strength)
             continue;
@@ -900,7 +914,8 @@ ErrorCode RingSearch::run(EndFaceGeometry *m)
         // searched again on the drop itself. The zones did not tell the two apart, so the
         // geometry says so (a drawn barrel band beyond a ring of the face's grey looks alike).
         MeanEdges onDrop = me;
-        onDrop.namedByZones = true; // the centring must not go back inside
+        onDrop.namedByZones = true;                            // the centring must not go back inside, nor
+        onDrop.reachInPx = 0.5 * (me.rOuter - centredRadius_); // half way to that edge
         onDrop.undecided = true;
         const ErrorCode e2 = again(onDrop);
         return e2 == ErrorCode::None ? e2 : e;
