@@ -496,7 +496,11 @@ double RingSearch::centreOnContactEdge(const MeanEdges &me)
         const double step = coarseRows ? coarseStep(r0) : 2.0;
         const int count = coarseRows ? std::min(kMaxCoarse, int((kCoarseEnd * r0 - rA) / step))
                                      : std::min(kMaxFine, int(2 * w / step) + 7);
-        const int lo = std::max(3, int((r - wIn - rA) / step));
+        // Where an edge of the contact edge's sign lies inside, the window's inner end stays
+        // half way to it as the radius settles: a mean radius pulled inwards by rays that took
+        // something inside would otherwise walk the window onto it, pass by pass.
+        const double inner = me.reachInPx > 0 ? std::max(r, me.rOuter) - wIn : r - wIn;
+        const int lo = std::max(3, int((inner - rA) / step));
         const int hi = std::min(count - 4, int((r + w - rA) / step) + 1);
         if (hi - lo < 4) break;
         // Where the steps named the edge (the largest drop: a guess, which a highlight's
@@ -896,7 +900,6 @@ ErrorCode RingSearch::run(EndFaceGeometry *m)
     if (!me.found) return ErrorCode::OuterEdgeNotFound;
     const double cx0 = cx, cy0 = cy;
     const ErrorCode e = ringAbout(me, m);
-    if (e != ErrorCode::InnerEdgeNotFound) return e;
     auto again = [&](const MeanEdges &about) {
         cx = cx0, cy = cy0;
         samplesInside_ = samplesSaturated_ = 0;
@@ -905,7 +908,25 @@ ErrorCode RingSearch::run(EndFaceGeometry *m)
         m->edgeWidthPx = 0;
         return ringAbout(about, m);
     };
-    if (!(me.rNext > 0) || me.signNext != me.signOuter) {
+    const bool staircase = me.rNext > 0 && me.signNext == me.signOuter;
+    MeanEdges next = me;
+    next.rOuter = me.rNext;
+    next.signOuter = me.signNext;
+    next.strengthOuter = me.strengthNext;
+    next.reachInPx = 0.5 * (me.rNext - me.rOuter);
+    next.namedByZones = true; // by elimination: the centring must not go back to the drop
+    next.rNext = 0;
+    if (e == ErrorCode::None && staircase && (m->imageFlags & kImageNarrowRingFit)) {
+        // No ray saw an original face's edge inside the largest drop, and only the profile's
+        // two-step fit read a ring there: on a staircase the drop is as likely the original
+        // face's edge itself, two steps of one face edge not round about the centre passing
+        // for a narrow ring. Where the rays find the ring about the next step, that reading
+        // stands; else the fit's, as it was.
+        if (again(next) == ErrorCode::None && !(m->imageFlags & kImageNarrowRingFit)) return ErrorCode::None;
+        return again(me);
+    }
+    if (e != ErrorCode::InnerEdgeNotFound) return e;
+    if (!staircase) {
         if (me.namedByZones || !(centredRadius_ < me.rOuter - kInwardMovePx)) return e;
         // The largest drop named an edge, the centring took a sharper step of its sign inside
         // it instead, and no original face's edge lies inside that one: it is the original
@@ -925,13 +946,6 @@ ErrorCode RingSearch::run(EndFaceGeometry *m)
     // above barrel, or below each), whose first step, the original face's edge, drops the
     // most where the face is far from the ring's grey and the ring is too narrow at the
     // coarse step to show as a level. The ring is searched again about that next step.
-    MeanEdges next = me;
-    next.rOuter = me.rNext;
-    next.signOuter = me.signNext;
-    next.strengthOuter = me.strengthNext;
-    next.reachInPx = 0.5 * (me.rNext - me.rOuter);
-    next.namedByZones = true; // by elimination: the centring must not go back to the drop
-    next.rNext = 0;
     return again(next);
 }
 
