@@ -229,8 +229,10 @@ RingSearch::MeanEdges RingSearch::meanProfileEdges()
         // The first edges lie too close together at the coarse step for the zone between
         // them to be judged (a ring of a few samples between two flanks): the profile is read
         // again at half the step from just inside the first, and named there if it can be.
+        // It starts at the first edge's flank: farther in, the face's grain, sharper at the
+        // half step, would pass for an edge before it.
         const double stepF = 0.5 * step;
-        const int from = std::max(lo, edges.edge[0].flankLo - 2 * window);
+        const int from = std::max(lo, edges.edge[0].flankLo - 3);
         const double fromPx = rA + from * step;
         const int n = std::min(kMaxFine, 2 * (hi - from) + 6);
         uint16_t fineMean[kMaxFine];
