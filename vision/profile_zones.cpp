@@ -119,6 +119,15 @@ int contactEdgeByZones(const uint16_t *level, int count, const ProfileEdges &edg
     // follows that too (a drawn barrel band: the zones do not tell) or the second edge is
     // weak beside the first (a highlight line on a drawn barrel, a groove on the ring).
     if (kMuchStronger * e[1].strength < e[0].strength) return -1;
+    // The optics blur a step alike on either side, so its derivative falls off as fast
+    // outside its peak as inside. Where the second edge's flank runs on well beyond its
+    // peak on the outside, the brightness keeps changing there: the barrel turning away into
+    // the dark, its outline close behind, one descent with the step. (Not asked of the first
+    // edge: the mean profile is taken about the centre, and an original face's edge that is
+    // no circle about it, R_i varying by a percent or so around the face, spreads its step
+    // over its radii unevenly, several pixels at full resolution; its zone is judged by the
+    // levels alone.)
+    if (e[1].flankHi - e[1].index > 2 * (e[1].index - e[1].flankLo) + 1) return 1;
     return zoneBeyond(level, count, edges, 1, window) == ZoneKind::Level ? -1 : 1;
 }
 

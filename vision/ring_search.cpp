@@ -29,6 +29,9 @@ constexpr int kRays = kFineRays; // the most fine rays a search casts
 constexpr double kMinRayArcPx = 5.0;
 constexpr int kMaxFine = kMaxFineSamples;
 constexpr int kMaxCoarse = kMaxCoarseSamples;
+// How far inside the named drop (pixels) the centring must have moved before the drop
+// itself is tried again as the contact edge: more than the coarse step's reach.
+constexpr double kInwardMovePx = 4.0;
 // The fine rays' sample spacing (pixels).
 constexpr double kFineStepPx = 1.0;
 // A 3-grey-level step blurred to σ = 2 px gives a coarse derivative of about 1200.
@@ -187,14 +190,60 @@ RingSearch::MeanEdges RingSearch::meanProfileEdges()
     // beyond an edge is about the narrowest ring the coarse step still resolves.
     const int window = std::max(3, int(0.05 * r0 / step));
     const int named = contactEdgeByZones(mean, count, edges, window);
-    if (named >= 0) {
-        const ProfileEdge &c = edges.edge[named];
+    // How far inside the contact edge it may be searched for before the original face's
+    // edge, where that steps the same way, is nearer: half way to it. Outside, the search
+    // takes the innermost clear step (innermostClearEdge), so the outline is not taken, and
+    // a tilted view needs the room: its contact edge is not concentric with the coarse rays,
+    // and its smeared step shows several extrema. An edge whose flank spans the contact
+    // edge is that step, not another one. (pe: the edges of a profile sampled from fromPx at
+    // stepPx, d its derivative.)
+    auto reachInside = [&](const int32_t *d, const ProfileEdges &pe, double fromPx, double stepPx) {
+        const double at = (e.rOuter - fromPx) / stepPx;
+        for (int j = 0; j < pe.count; ++j) {
+            const ProfileEdge &o = pe.edge[j];
+            if (o.sign != e.signOuter || (o.flankLo <= at && at <= o.flankHi)) continue;
+            const Q16_16 off = parabolaVertex(std::abs(d[o.index - 1]), std::abs(d[o.index]), std::abs(d[o.index + 1]));
+            const double r = fromPx + (o.index + off.toDouble()) * stepPx;
+            if (r < e.rOuter - 1.5 * stepPx) e.reachInPx = 0.5 * (e.rOuter - r);
+        }
+    };
+    // The edge k of pe that the zones named (window: the samples judged beyond an edge).
+    auto takeNamed = [&](const uint16_t *lv, const int32_t *d, int n, const ProfileEdges &pe, int k, int win,
+                         double fromPx, double stepPx) {
+        auto radiusAt = [&](int i) {
+            const Q16_16 off = parabolaVertex(std::abs(d[i - 1]), std::abs(d[i]), std::abs(d[i + 1]));
+            return fromPx + (i + off.toDouble()) * stepPx;
+        };
+        const ProfileEdge &c = pe.edge[k];
         e.found = true;
-        e.rOuter = radiusOf(c.index);
+        e.namedByZones = true;
+        e.rOuter = radiusAt(c.index);
         e.signOuter = c.sign;
-        e.strengthOuter = c.strength / 16; // coarse → fine units
-        e.undecided = named == 1 && zoneBeyond(mean, count, edges, 1, window) == ZoneKind::Short &&
-                      opensBand(mean, count, edges, 1);
+        e.strengthOuter = int32_t(c.strength * (step / stepPx)) / 16; // coarse → fine units
+        e.undecided = k == 1 && zoneBeyond(lv, n, pe, 1, win) == ZoneKind::Short && opensBand(lv, n, pe, 1);
+        reachInside(d, pe, fromPx, stepPx);
+    };
+    if (named >= 0) {
+        takeNamed(mean, meanDeriv, count, edges, named, window, rA, step);
+    } else if (edges.count >= 2 && zoneBeyond(mean, count, edges, 0, window) == ZoneKind::Short) {
+        // The first edges lie too close together at the coarse step for the zone between
+        // them to be judged (a ring of a few samples between two flanks): the profile is read
+        // again at half the step from just inside the first, and named there if it can be.
+        // It starts at the first edge's flank: farther in, the face's grain, sharper at the
+        // half step, would pass for an edge before it.
+        const double stepF = 0.5 * step;
+        const int from = std::max(lo, edges.edge[0].flankLo - 3);
+        const double fromPx = rA + from * step;
+        const int n = std::min(kMaxFine, 2 * (hi - from) + 6);
+        uint16_t fineMean[kMaxFine];
+        int32_t fineDeriv[kMaxFine];
+        finerMeanProfile(fromPx, stepF, n, fineMean);
+        profileDerivative(fineMean, n, fineDeriv);
+        const double minStepF = std::max<double>(kMinCoarseStrength * stepF / step, 6 * derivativeNoise(fineMean, n));
+        const ProfileEdges fineEdges = findProfileEdges(fineMean, fineDeriv, n, 2, n - 3, int32_t(minStepF));
+        const int windowF = std::max(3, int(0.05 * r0 / stepF));
+        const int namedF = contactEdgeByZones(fineMean, n, fineEdges, windowF);
+        if (namedF >= 0) takeNamed(fineMean, fineDeriv, n, fineEdges, namedF, windowF, fromPx, stepF);
     }
     // Where the zones do not tell (three levels in a row, as a drawing paints the barrel),
     // the contact edge is where the flat, bright end face gives way to the steep barrel,
@@ -220,20 +269,8 @@ RingSearch::MeanEdges RingSearch::meanProfileEdges()
         }
     }
     if (!e.found) return e;
-    // How far inside the contact edge it may be searched for before the original face's
-    // edge, where that steps the same way, is nearer: half way to it. Outside, the search
-    // takes the innermost clear step (innermostClearEdge), so the outline is not taken, and
-    // a tilted view needs the room: its contact edge is not concentric with the coarse rays,
-    // and its smeared step shows several extrema. An edge whose flank spans the contact
-    // edge is that step, not another one.
-    e.namedByZones = named >= 0;
+    if (!e.namedByZones) reachInside(meanDeriv, edges, rA, step);
     const double at = (e.rOuter - rA) / step;
-    for (int k = 0; k < edges.count; ++k) {
-        const ProfileEdge &o = edges.edge[k];
-        if (o.sign != e.signOuter || (o.flankLo <= at && at <= o.flankHi)) continue;
-        const double r = radiusOf(o.index);
-        if (r < e.rOuter - 1.5 * step) e.reachInPx = 0.5 * (e.rOuter - r);
-    }
     // Silhouette: the outermost clear edge within a barrel's width outside the contact edge.
     const int so = int((e.rOuter + std::max(4.0, 0.03 * r0) - rA) / step);
     const int eo = std::min(count - 3, int((e.rOuter + 0.5 * r0 - rA) / step));
@@ -255,6 +292,24 @@ RingSearch::MeanEdges RingSearch::meanProfileEdges()
             break;
         }
     return e;
+}
+
+void RingSearch::finerMeanProfile(double fromPx, double stepPx, int count, uint16_t *mean)
+{
+    uint32_t sum[kMaxFine] = {}, n[kMaxFine] = {};
+    const int stride = rays_ / kCoarseRays;
+    uint16_t *row = fine; // the fine stage fills the fine rows afresh
+    for (int i = 0; i < kCoarseRays; ++i) {
+        RaySpec ray{Q16_16::fromDouble(cx), Q16_16::fromDouble(cy),     rayCosQ_[i * stride],
+                    raySinQ_[i * stride],   Q16_16::fromDouble(fromPx), Q16_16::fromDouble(stepPx)};
+        sampleRay(*frame, ray, count, row);
+        for (int j = 0; j < count; ++j)
+            if (row[j] != kOutsideFrame) {
+                sum[j] += row[j];
+                ++n[j];
+            }
+    }
+    for (int j = 0; j < count; ++j) mean[j] = n[j] * 4 >= kCoarseRays ? uint16_t(sum[j] / n[j]) : kOutsideFrame;
 }
 
 bool RingSearch::outlineRivalled(double rMaxPx) const
@@ -443,7 +498,11 @@ double RingSearch::centreOnContactEdge(const MeanEdges &me)
         const double step = coarseRows ? coarseStep(r0) : 2.0;
         const int count = coarseRows ? std::min(kMaxCoarse, int((kCoarseEnd * r0 - rA) / step))
                                      : std::min(kMaxFine, int(2 * w / step) + 7);
-        const int lo = std::max(3, int((r - wIn - rA) / step));
+        // Where an edge of the contact edge's sign lies inside, the window's inner end stays
+        // half way to it as the radius settles: a mean radius pulled inwards by rays that took
+        // something inside would otherwise walk the window onto it, pass by pass.
+        const double inner = me.reachInPx > 0 ? std::max(r, me.rOuter) - wIn : r - wIn;
+        const int lo = std::max(3, int((inner - rA) / step));
         const int hi = std::min(count - 4, int((r + w - rA) / step) + 1);
         if (hi - lo < 4) break;
         // Where the steps named the edge (the largest drop: a guess, which a highlight's
@@ -713,7 +772,21 @@ RingSearch::OriginalFaceName RingSearch::nameOriginalFace(const AlignedProfile &
     const double noise = robustSigma(p.deriv, 0, K / 2);
     const double innerMin = std::max(3.0 * noise, 40.0);
     OriginalFaceName name;
-    for (int k = -K + 2; k <= -2; ++k) {
+    // The contact edge's own hump of the derivative is not an edge inside it: a barrel
+    // ramping away behind the step gives the descent two humps, the step's and the ramp's,
+    // and the profile, aligned between them, would otherwise offer the step's hump as the
+    // original face's. Walking in from sample K, the hump rises to its top and falls to the
+    // valley before the next one, or below a quarter of its top, or to the other sign.
+    const int signAtEdge = p.deriv[K] > 0 ? 1 : p.deriv[K] < 0 ? -1 : 0;
+    int flank = K;
+    if (signAtEdge) {
+        int32_t top = signAtEdge * p.deriv[K];
+        while (flank > 0 && signAtEdge * p.deriv[flank - 1] >= top) top = signAtEdge * p.deriv[--flank];
+        while (flank > 0 && signAtEdge * p.deriv[flank - 1] <= signAtEdge * p.deriv[flank] &&
+               4 * signAtEdge * p.deriv[flank - 1] >= top)
+            --flank;
+    }
+    for (int k = -K + 2; k <= std::min(-2, flank - 1 - K); ++k) {
         const int idx = k + K;
         if (!isExtremum(p.deriv, idx) || std::abs(p.deriv[idx]) < innerMin || std::abs(p.deriv[idx]) <= name.strength)
             continue;
@@ -829,12 +902,15 @@ ErrorCode RingSearch::run(EndFaceGeometry *m)
     if (!me.found) return ErrorCode::OuterEdgeNotFound;
     const double cx0 = cx, cy0 = cy;
     const ErrorCode e = ringAbout(me, m);
-    if (e != ErrorCode::InnerEdgeNotFound || !(me.rNext > 0) || me.signNext != me.signOuter) return e;
-    // The largest drop named an edge with no original face's edge inside it, and the profile
-    // steps the same way again beyond it, inside the outline: a staircase (face above ring
-    // above barrel, or below each), whose first step, the original face's edge, drops the
-    // most where the face is far from the ring's grey and the ring is too narrow at the
-    // coarse step to show as a level. The ring is searched again about that next step.
+    auto again = [&](const MeanEdges &about) {
+        cx = cx0, cy = cy0;
+        samplesInside_ = samplesSaturated_ = 0;
+        m->imageFlags = 0;
+        m->saturatedFraction = 0;
+        m->edgeWidthPx = 0;
+        return ringAbout(about, m);
+    };
+    const bool staircase = me.rNext > 0 && me.signNext == me.signOuter;
     MeanEdges next = me;
     next.rOuter = me.rNext;
     next.signOuter = me.signNext;
@@ -842,18 +918,44 @@ ErrorCode RingSearch::run(EndFaceGeometry *m)
     next.reachInPx = 0.5 * (me.rNext - me.rOuter);
     next.namedByZones = true; // by elimination: the centring must not go back to the drop
     next.rNext = 0;
-    cx = cx0, cy = cy0;
-    samplesInside_ = samplesSaturated_ = 0;
-    m->imageFlags = 0;
-    m->saturatedFraction = 0;
-    m->edgeWidthPx = 0;
-    return ringAbout(next, m);
+    if (e == ErrorCode::None && staircase && (m->imageFlags & kImageNarrowRingFit)) {
+        // No ray saw an original face's edge inside the largest drop, and only the profile's
+        // two-step fit read a ring there: on a staircase the drop is as likely the original
+        // face's edge itself, two steps of one face edge not round about the centre passing
+        // for a narrow ring. Where the rays find the ring about the next step, that reading
+        // stands; else the fit's, as it was.
+        if (again(next) == ErrorCode::None && !(m->imageFlags & kImageNarrowRingFit)) return ErrorCode::None;
+        return again(me);
+    }
+    if (e != ErrorCode::InnerEdgeNotFound) return e;
+    if (!staircase) {
+        if (me.namedByZones || !(centredRadius_ < me.rOuter - kInwardMovePx)) return e;
+        // The largest drop named an edge, the centring took a sharper step of its sign inside
+        // it instead, and no original face's edge lies inside that one: it is the original
+        // face's edge itself. A ring whose barrel ramps away into a dark fixture shows so, its
+        // contact edge smeared by the ramp into one descent with the outline: the ring is
+        // searched again on the drop itself. The zones did not tell the two apart, so the
+        // geometry says so (a drawn barrel band beyond a ring of the face's grey looks alike).
+        MeanEdges onDrop = me;
+        onDrop.namedByZones = true;                            // the centring must not go back inside, nor
+        onDrop.reachInPx = 0.5 * (me.rOuter - centredRadius_); // half way to that edge
+        onDrop.undecided = true;
+        const ErrorCode e2 = again(onDrop);
+        return e2 == ErrorCode::None ? e2 : e;
+    }
+    // The largest drop named an edge with no original face's edge inside it, and the profile
+    // steps the same way again beyond it, inside the outline: a staircase (face above ring
+    // above barrel, or below each), whose first step, the original face's edge, drops the
+    // most where the face is far from the ring's grey and the ring is too narrow at the
+    // coarse step to show as a level. The ring is searched again about that next step.
+    return again(next);
 }
 
 ErrorCode RingSearch::ringAbout(const MeanEdges &me, EndFaceGeometry *m)
 {
     coarseCx_ = cx, coarseCy_ = cy;
     const double rOuter = centreOnContactEdge(me);
+    centredRadius_ = rOuter;
     m->centreX = cx, m->centreY = cy;
 
     // Stage 1, the contact edge on every fine ray: a window about the mean profile's radius

@@ -50,6 +50,10 @@ struct RingSearch {
         int32_t strengthNext = 0;
     };
     MeanEdges meanProfileEdges();
+    // The mean of the coarse rays' directions sampled again, count samples from fromPx at
+    // stepPx (kOutsideFrame where under a quarter of the rays saw the frame); count ≤
+    // kMaxFineSamples. Uses the fine rows as scratch.
+    void finerMeanProfile(double fromPx, double stepPx, int count, uint16_t *mean);
     // Both boundaries and the silhouette about the contact edge `me` names.
     ErrorCode ringAbout(const MeanEdges &me, EndFaceGeometry *m);
     // Moves (cx, cy) to the contact edge's own centre and returns its mean radius there
@@ -105,6 +109,7 @@ struct RingSearch {
     bool barrelBandLopsided(const double *radius, const bool *valid, const double *outerR) const;
 
     double coarseCx_ = 0, coarseCy_ = 0; // the centre the coarse rays were cast from
+    double centredRadius_ = 0;           // the contact edge's radius the centring settled on
     double fineStart_[kMaxRayTable] = {}, fineStep_ = 1;
     // How many fine rays this search casts (a divisor of 256, scaled to the ring's size in
     // pixels); fine ray i points along angle 2πi/rays_, its direction from the shared

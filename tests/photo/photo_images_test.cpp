@@ -63,14 +63,31 @@ vision::EndFaceAnalyzer PhotoImages::analyzer_;
 // Both boundaries found and each named for what it is: R_i within a pixel of the original
 // face's projected edge, R_o nearer the contact edge than to either of its neighbours (the
 // original face's edge inside, the outline outside).
-TEST_P(PhotoImages, NamesTheOriginalFaceAndTheContactEdge)
+void expectNamed(const Photo &p)
 {
-    const Photo p = measure(GetParam());
     ASSERT_EQ(p.g.error, vision::ErrorCode::None) << vision::errorMessage(p.g.error);
     const double ri = num(p.truth, "r_inner_px"), ro = num(p.truth, "r_outer_px");
     const double outline = num(p.truth, "outline_px");
     EXPECT_NEAR(p.g.inner.rEqPx, ri, 1.0);
     EXPECT_NEAR(p.g.outer.rEqPx, ro, 0.5 * std::min(ro - ri, outline - ro));
+}
+
+TEST_P(PhotoImages, NamesTheOriginalFaceAndTheContactEdge)
+{
+    expectNamed(measure(GetParam()));
+}
+
+// Rings of about 10 px beside a barrel that does not show as a level of its own: a lit
+// shoulder just beyond a burnished ring (s1-0008: at the coarse profile's step the ring's
+// level does not show between the two edges), a barrel ramping away into a black fixture
+// (s2-0004, s3-0019: the contact edge, the barrel and the outline one long descent). Their
+// outline is not checked: where the barrel is as dark as the fixture it shows no step of
+// its own (docs/photographs.md).
+class NarrowRingPhotos : public PhotoImages {};
+
+TEST_P(NarrowRingPhotos, NamesTheOriginalFaceAndTheContactEdge)
+{
+    expectNamed(measure(GetParam()));
 }
 
 // The outline a straight view shows is the specimen's, not the fixture's shadow beyond it:
@@ -101,6 +118,14 @@ TEST_P(PhotoImages, DISABLED_LocatesTheContactEdgeToAPixel)
 INSTANTIATE_TEST_SUITE_P(Rendered, PhotoImages,
                          ::testing::Values("straight-0011", "straight-0016", "straight-0003", "tilted-0002",
                                            "straight-0005", "straight-0020"),
+                         [](const ::testing::TestParamInfo<std::string> &p) {
+                             std::string s = p.param;
+                             std::replace(s.begin(), s.end(), '-', '_');
+                             return s;
+                         });
+
+INSTANTIATE_TEST_SUITE_P(Rendered, NarrowRingPhotos,
+                         ::testing::Values("straight-s1-0008", "straight-s2-0004", "straight-s3-0019"),
                          [](const ::testing::TestParamInfo<std::string> &p) {
                              std::string s = p.param;
                              std::replace(s.begin(), s.end(), '-', '_');

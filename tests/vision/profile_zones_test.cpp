@@ -139,6 +139,23 @@ TEST(ProfileZones, ThreeLevelsInARowDoNotTell)
     EXPECT_EQ(p.contactEdge(), -1);
 }
 
+// A barrel ramping away into a black fixture: beyond a ring of 12 px the contact edge's step
+// runs on into the barrel's descent and the outline, one falling flank far longer outside
+// its peak than inside, then the fixture's level. The descent is the barrel's zone, not a
+// level: the second edge is the contact edge. The same levels joined by a plain step are
+// three levels in a row (above), and do not tell.
+TEST(ProfileZones, ARampAfterTheStepIsTheBarrel)
+{
+    Profile ramp;
+    ramp.level(180, 12).level(130, 6).ramp(118, 50, 9).level(52, 10);
+    int at = 0;
+    EXPECT_EQ(ramp.contactEdge(&at), 1);
+    EXPECT_NEAR(at, 18, 1.5);
+    Profile step;
+    step.level(180, 12).level(130, 6).level(52, 19);
+    EXPECT_EQ(step.contactEdge(), -1);
+}
+
 // Turning grooves on the ring are ridges of a few grey levels: weak beside the ring's
 // edges, they are not the contact edge.
 TEST(ProfileZones, GroovesOnTheRingAreNotTheContactEdge)
