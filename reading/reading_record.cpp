@@ -106,8 +106,10 @@ const char *findingWords(int bit)
         "the silhouette does not fit the barrel's shape: declare h_final_mm",
         "the silhouette says another height than half: declare h_final_mm (a close camera sees the barrel inside "
         "R_max: declare working_distance_mm)",
+        "the profile does not tell which edge ends the flat face: R_i and R_o may be one edge out; check the image "
+        "(a diffuse ring light or a matt barrel removes the band)",
     };
-    return bit >= 0 && bit < kFlagCount ? kWords[bit] : "check";
+    return bit >= 0 && bit < kFlagCount && kWords[bit] ? kWords[bit] : "check";
 }
 
 } // namespace
