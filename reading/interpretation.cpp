@@ -111,6 +111,11 @@ Reading interpret(const EndFaceGeometry &g, const SpecimenSpec &spec, const visi
     // The image shows the camera oblique: the boundaries share an ellipse, or part.
     const bool oblique = e.sharedEllipse || (f & kFlagCentreOffset);
 
+    // An oblique view hides the barrel's outline on its far side: no silhouette is what such
+    // a view shows, not a finding about the specimen. The height and the declared scale are
+    // unchecked, which U (the undeclared reduction's range, the tilt term) and the advice
+    // carry; a straight view without one stays no_silhouette.
+    const bool outlineHiddenByView = !(g.rMaxPx > 0) && (g.imageFlags & vision::kImageBarrelOblique);
     SilhouetteObservation obs;
     const SilhouetteObservation *silhouette = nullptr;
     auto observeAt = [&](double mu) {
@@ -122,11 +127,7 @@ Reading interpret(const EndFaceGeometry &g, const SpecimenSpec &spec, const visi
         // declared scale unchecked too, which no_silhouette says: a scale measured on the
         // fixture would otherwise pass 0.01–0.04 high, CalibratedMeasure.*).
         if (g.imageFlags & vision::kImageOutlineAmbiguous) obs.usable = false, obs.flags = kFlagNoSilhouette;
-        // An oblique view hides the barrel's outline on its far side: no silhouette is what such
-        // a view shows, not a finding about the specimen. The height and the declared scale are
-        // unchecked, which U (the undeclared reduction's range, the tilt term) and the advice
-        // carry; a straight view without one stays no_silhouette.
-        if (!(g.rMaxPx > 0) && (g.imageFlags & vision::kImageBarrelOblique)) obs.flags &= ~kFlagNoSilhouette;
+        if (outlineHiddenByView) obs.flags &= ~kFlagNoSilhouette;
     };
     if (!calibration) {
         // Calibrated: R_max is reported, not held against the model.
@@ -142,7 +143,7 @@ Reading interpret(const EndFaceGeometry &g, const SpecimenSpec &spec, const visi
         observeAt(specimenMu(spec, model, out));
         read();
     }
-    out.advice.scaleUnchecked = silhouette && !obs.usable && (g.imageFlags & vision::kImageBarrelOblique);
+    out.advice.scaleUnchecked = silhouette && outlineHiddenByView;
     return out;
 }
 
