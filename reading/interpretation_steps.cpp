@@ -84,6 +84,10 @@ constexpr double kTiltEllipticityMax = 0.05;
 // development set's photographs the pipeline's R_i lies 0.005 mm (1 σ) off the truth's
 // equivalent radius and R_o 0.001 mm (a ragged texture boundary, not a step, on the inside).
 constexpr double kInnerEdgeModelMm = 0.005, kOuterEdgeModelMm = 0.001;
+// Under about 3 px the two edges' blurs merge, and the two-step fit reads such a ring up to
+// 0.9 px wide (drawn 640 × 480 rings of 2.6–2.9 px read 3.1–3.4 px, with Δμ up to 0.012):
+// a ring read under 3.5 px may be one of those, a finding whichever path measured it.
+constexpr double kNarrowRingFindingPx = 3.5;
 
 // The silhouette's observation d = α·δk + β·δr + o + e (α the share of a scale error the
 // silhouette sees; e of variance se2: silhouetteRelSigma; o an offset of the silhouette alone,
@@ -275,7 +279,7 @@ uint32_t imageChecks(const EndFaceGeometry &g, const PlaneMapping &p, const Edge
     if (*centreOffsetPx > std::max(3.0, 0.012 * r0Px)) f |= kFlagCentreOffset;
     if (e.sharedEllipse && std::min(p.inner.ellipticity, p.outer.ellipticity) > kTiltEllipticityMax)
         f |= kFlagElliptical;
-    if (g.outer.rEqPx - g.inner.rEqPx < 3.0) f |= kFlagNarrowRing;
+    if (g.outer.rEqPx - g.inner.rEqPx < kNarrowRingFindingPx) f |= kFlagNarrowRing;
     if (g.edgeWidthPx > 2.6) f |= kFlagBlurred;
     if (g.saturatedFraction > 0.02) f |= kFlagSaturated;
     return f;
