@@ -44,14 +44,20 @@ ProfileEdges findProfileEdges(const uint16_t *level, const int32_t *deriv, int c
     // The ripple a groove or a stain leaves scales with the light on the specimen, not with
     // the fixture's: the share is taken of the strongest step inside the outline (the
     // outermost step at least half as strong as the profile's strongest), whose other side
-    // may be a fixture far brighter or darker than anything on the specimen.
+    // may be a fixture far brighter or darker than anything on the specimen. Where a clear
+    // step (one the profile's strongest would keep) still lies beyond that step, it is not
+    // the outline but the specimen's own contact edge, with a faint outline beyond it: the
+    // share is then of it, or a turned ring's grooves would pass for zones' edges.
     int32_t strongest = 0;
     for (int i = lo; i <= hi; ++i)
         if (isExtremum(deriv, i)) strongest = std::max(strongest, std::abs(deriv[i]));
+    const int32_t clear = int32_t(kMinShareOfStrongest * strongest);
     int outline = hi;
     while (outline > lo && !(isExtremum(deriv, outline) && 2 * std::abs(deriv[outline]) >= strongest)) --outline;
+    bool beyond = false;
+    for (int i = outline + 1; i <= hi; ++i) beyond = beyond || (isExtremum(deriv, i) && std::abs(deriv[i]) >= clear);
     int32_t strongestInside = 0;
-    for (int i = lo; i < outline; ++i)
+    for (int i = lo; i < outline && !beyond; ++i)
         if (isExtremum(deriv, i)) strongestInside = std::max(strongestInside, std::abs(deriv[i]));
     const int32_t floor =
         std::max(minStrength, int32_t(kMinShareOfStrongest * (strongestInside > 0 ? strongestInside : strongest)));

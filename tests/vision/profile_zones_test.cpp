@@ -202,3 +202,22 @@ TEST(ProfileZones, ABandReturnsToTheLevelItLeft)
     ASSERT_GE(r.k, 0);
     EXPECT_FALSE(r.band);
 }
+
+// A turned ring on a lab photograph (the shape of loopset-015's mean profile): a face edge of
+// 22 grey, grooves on the ring of ±4 grey, a contact edge of 79 grey into a dark barrel and a
+// faint outline beyond it. The contact edge is the profile's strongest step but not its
+// outline (a clear step lies beyond it): the grooves' share is of it, and they stay ripple.
+TEST(ProfileZones, GroovesOnATurnedRingBesideAStrongContactEdgeStayRipple)
+{
+    Profile p;
+    p.level(141, 12).level(119, 3);
+    for (int g = 0; g < 4; ++g) p.level(123, 3).level(114, 3);
+    p.level(119, 2).level(40, 20).level(52, 12);
+    const Profile::Named n = p.name();
+    ASSERT_EQ(n.edges.count, 3) << "a groove kept as an edge";
+    EXPECT_NEAR(n.edges.edge[0].index, 11, 1) << "the original face's edge";
+    EXPECT_NEAR(n.edges.edge[1].index, 41, 1) << "the contact edge";
+    // Face, ring and a dark barrel are three levels: the zones may leave the naming to the
+    // largest drop (ring_search), but never name a groove.
+    if (n.k >= 0) { EXPECT_EQ(n.k, 1); }
+}
