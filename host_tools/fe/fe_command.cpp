@@ -46,7 +46,7 @@ std::string usage()
     const FeCase c;
     const RunOptions run;
     const SlurmOptions slurm;
-    return "usage: icacam fe <deck|run|sweep|tables|report|compare> [options]\n"
+    return "usage: icacam fe <deck|run|sweep|tables|outline-table|report|compare> [options]\n"
            "  deck    [case options]                                  print the CalculiX deck\n"
            "  run     [case options] [--out CSV] [--work DIR]         one case: ccx, R_i R_o R_max u force\n"
            "  sweep   --grid 'k=500;n=0.25,0.05;mu=0.05,0.1' [case options] --out CSV [--jobs 1]\n"
@@ -65,6 +65,8 @@ std::string usage()
            "] [--cancel 1]\n"
            "  tables  --base CSV [--k-family CSV]... [--aspect CSV]... [--out friction]\n"
            "          every generated table of the friction models from one FE base (icacam fe tables --help)\n"
+           "  outline-table [--profiles CSV] [--out HEADER]           the outline a close camera sees, over\n"
+           "          n, mu, the reduction and D0/W, from the photo bench's barrel profiles\n"
            "  report  --in CSV --out DIR [--snapshot-reduction 0.5]    Table 1 / Fig. 3 comparison\n"
            "  compare --in REF.csv --in OTHER.csv [--out MD] [--min-u 0.1] [--bar 0.05] [--edge interp|track]\n"
            "          [--across-material 1] (K and E left out of the match: the independence checks)\n"
