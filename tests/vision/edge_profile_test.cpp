@@ -112,6 +112,27 @@ TEST(RadialProfile, RayEqualsBilinearSamplesAtEveryAngleAndLength)
     }
 }
 
+TEST(EdgeProfile, EitherSignIsTheStrongerOfBothSearches)
+{
+    // Random rows with ties, flat stretches and all-zero windows: the one-pass search must
+    // return what the two single-sign searches and the comparison between them return.
+    std::mt19937 rng(3);
+    std::uniform_int_distribution<int32_t> D(-6, 6);
+    for (int trial = 0; trial < 2000; ++trial) {
+        const int count = 5 + trial % 40;
+        std::vector<int32_t> d(static_cast<size_t>(count));
+        for (auto &v : d) v = trial % 7 == 0 ? 0 : D(rng) * (1 + trial % 3);
+        const int lo = trial % 4, hi = count - 1 - trial % 3;
+        const EdgePeak up = strongestEdge(d.data(), count, lo, hi, +1);
+        const EdgePeak down = strongestEdge(d.data(), count, lo, hi, -1);
+        const EdgePeak &want = up.value > down.value ? up : down;
+        const EdgePeak got = strongestEdgeEitherSign(d.data(), count, lo, hi);
+        ASSERT_EQ(got.found, want.found) << trial;
+        ASSERT_EQ(got.value, want.value) << trial;
+        ASSERT_EQ(got.position.raw(), want.position.raw()) << trial;
+    }
+}
+
 TEST(EdgeProfile, ParabolaVertexMatchesDouble)
 {
     std::mt19937 rng(5);
