@@ -49,4 +49,31 @@ template <typename T> EdgePeak strongestEdge(const T *d, int count, int lo, int 
     return p;
 }
 
+// The stronger of strongestEdge(+1) and strongestEdge(−1) (the falling one on a tie), in one
+// pass over the window.
+template <typename T> EdgePeak strongestEdgeEitherSign(const T *d, int count, int lo, int hi)
+{
+    if (lo < 1) lo = 1;
+    if (hi > count - 2) hi = count - 2;
+    int bestUp = -1, bestDown = -1;
+    int32_t up = 0, down = 0;
+    for (int i = lo; i <= hi; ++i) {
+        const int32_t v = int32_t(d[i]);
+        if (v > up) {
+            up = v;
+            bestUp = i;
+        }
+        if (-v > down) {
+            down = -v;
+            bestDown = i;
+        }
+    }
+    const int sign = up > down ? 1 : -1;
+    const int best = sign > 0 ? bestUp : bestDown;
+    if (best < 0) return EdgePeak{Q16_16::fromRaw(0), 0, false};
+    const int32_t bestV = sign > 0 ? up : down;
+    const int32_t vm = sign * int32_t(d[best - 1]), vp = sign * int32_t(d[best + 1]);
+    return EdgePeak{Q16_16::fromInt(best) + parabolaVertex(vm, bestV, vp), bestV, true};
+}
+
 } // namespace icacam::vision

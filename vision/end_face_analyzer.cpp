@@ -73,9 +73,7 @@ bool EndFaceAnalyzer::refineCentre(const LumaView &v, double r0Px, double *cx, d
             uint16_t *row = coarse_ + size_t(i) * kMaxCoarseSamples;
             sampleRay(v, ray, count, row);
             profileDerivative(row, count, d);
-            const EdgePeak up = strongestEdge(d, count, 2, count - 3, +1);
-            const EdgePeak down = strongestEdge(d, count, 2, count - 3, -1);
-            const EdgePeak &e = up.value > down.value ? up : down;
+            const EdgePeak e = strongestEdgeEitherSign(d, count, 2, count - 3);
             valid[i] = e.found;
             radius[i] = rA + e.position.toDouble() * step;
         }

@@ -13,6 +13,17 @@ namespace icacam::vision {
 constexpr uint16_t kOutsideFrame = 0xFFFF;
 constexpr int32_t kFullScaleQ8 = 255 * 256;
 
+// Whether any of s[0 … count) is kOutsideFrame: only that value plus one carries into bit
+// 16, so an OR of the samples plus one tells (a loop the compiler vectorises; a per-sample
+// comparison into a bool it does not).
+inline bool anyOutsideFrame(const uint16_t *s, int count)
+{
+    static_assert(kOutsideFrame == 0xFFFF, "the carry test needs the largest 16-bit value");
+    uint32_t any = 0;
+    for (int j = 0; j < count; ++j) any |= uint32_t(s[j]) + 1;
+    return (any >> 16) != 0;
+}
+
 struct RaySpec {
     Q16_16 cx, cy;    // centre in pixels
     Q2_14 cosT, sinT; // direction

@@ -361,10 +361,11 @@ void RingSearch::sampleWindow(const double *start, double step, int count, int b
         const uint16_t *a = fine + size_t((i + rays_ - 1) % rays_) * kMaxFine;
         const uint16_t *b = fine + size_t(i) * kMaxFine;
         const uint16_t *c = fine + size_t((i + 1) % rays_) * kMaxFine;
-        for (int j = 0; j < count; ++j) {
-            saturated += b[j] == kFullScaleQ8;
-            t[j] = int32_t(a[j]) + 2 * int32_t(b[j]) + int32_t(c[j]);
-        }
+        // Two loops the compiler vectorises (one mixing the count and the sums does not).
+        for (int j = 0; j < count; ++j) t[j] = int32_t(a[j]) + 2 * int32_t(b[j]) + int32_t(c[j]);
+        uint32_t full = 0;
+        for (int j = 0; j < count; ++j) full += uint32_t(b[j] == kFullScaleQ8);
+        saturated += full;
         if (!allInside) // a sum touching a sample outside the frame is marked unusable
             for (int j = 0; j < count; ++j)
                 if (a[j] == kOutsideFrame || b[j] == kOutsideFrame || c[j] == kOutsideFrame) t[j] = -1;
@@ -526,9 +527,7 @@ double RingSearch::centreOnContactEdge(const MeanEdges &me)
             }
             // The derivative over the window only (profileDerivative's kernel); a ray leaving
             // the frame there is not used (a vectorisable scan, then a branch-free loop).
-            bool outside = false;
-            for (int j = loWide - 3; j <= hi + 3; ++j) outside |= row[j] == kOutsideFrame;
-            if (outside) {
+            if (anyOutsideFrame(row + loWide - 3, hi - loWide + 7)) {
                 valid[k] = false;
                 continue;
             }
@@ -668,9 +667,7 @@ double RingSearch::silhouetteFromRays(const double *outerR, double *coverage, do
     for (int i = 0; i < kCoarse; ++i) {
         valid[i] = false;
         const uint16_t *row = coarse + size_t(i) * kMaxCoarse;
-        bool outside = false; // a ray leaving the frame is not used (a vectorisable scan)
-        for (int j = 0; j < count; ++j) outside |= row[j] == kOutsideFrame;
-        if (outside) continue;
+        if (anyOutsideFrame(row, count)) continue; // a ray leaving the frame is not used
         // The contact edge's radius seen from the coarse rays' centre (to first order in
         // the contact edge's centre offset).
         const int fineIdx = i * (rays_ / kCoarse);

@@ -82,6 +82,57 @@ TEST(RadialProfile, RayPositionsDriftLessThanStated)
     }
 }
 
+TEST(RadialProfile, RayEqualsBilinearSamplesAtEveryAngleAndLength)
+{
+    // The ray's fast paths (four samples at a time where the platform has them, then one at
+    // a time) must give sampleBilinear's integers exactly at the accumulated positions: a
+    // noise image, so that every weight and every pixel matters.
+    const int w = 203, h = 171;
+    std::mt19937 rng(11);
+    std::vector<uint8_t> img(size_t(w) * h);
+    for (auto &p : img) p = uint8_t(rng() & 255);
+    const LumaView v{img.data(), w, h, w, 1};
+    std::uniform_real_distribution<double> U(0, 1);
+    for (int trial = 0; trial < 400; ++trial) {
+        RaySpec ray{Q16_16::fromDouble(60 + 80 * U(rng)), Q16_16::fromDouble(50 + 70 * U(rng)),  {}, {},
+                    Q16_16::fromDouble(3 * U(rng)),       Q16_16::fromDouble(0.3 + 1.8 * U(rng))};
+        rayDirection(trial % 256, 256, &ray.cosT, &ray.sinT);
+        const int count = 1 + trial % 29;
+        std::vector<uint16_t> out(static_cast<size_t>(count));
+        const int inside = sampleRay(v, ray, count, out.data());
+        const Q16_16 dx = ray.step.mul(ray.cosT), dy = ray.step.mul(ray.sinT);
+        Q16_16 x = ray.cx + ray.r0.mul(ray.cosT), y = ray.cy + ray.r0.mul(ray.sinT);
+        int expectInside = 0;
+        for (int i = 0; i < count; ++i, x = x + dx, y = y + dy) {
+            const uint16_t s = sampleBilinear(v, x, y);
+            expectInside += s != kOutsideFrame;
+            ASSERT_EQ(out[size_t(i)], s) << "trial " << trial << " sample " << i;
+        }
+        EXPECT_EQ(inside, expectInside);
+    }
+}
+
+TEST(EdgeProfile, EitherSignIsTheStrongerOfBothSearches)
+{
+    // Random rows with ties, flat stretches and all-zero windows: the one-pass search must
+    // return what the two single-sign searches and the comparison between them return.
+    std::mt19937 rng(3);
+    std::uniform_int_distribution<int32_t> D(-6, 6);
+    for (int trial = 0; trial < 2000; ++trial) {
+        const int count = 5 + trial % 40;
+        std::vector<int32_t> d(static_cast<size_t>(count));
+        for (auto &v : d) v = trial % 7 == 0 ? 0 : D(rng) * (1 + trial % 3);
+        const int lo = trial % 4, hi = count - 1 - trial % 3;
+        const EdgePeak up = strongestEdge(d.data(), count, lo, hi, +1);
+        const EdgePeak down = strongestEdge(d.data(), count, lo, hi, -1);
+        const EdgePeak &want = up.value > down.value ? up : down;
+        const EdgePeak got = strongestEdgeEitherSign(d.data(), count, lo, hi);
+        ASSERT_EQ(got.found, want.found) << trial;
+        ASSERT_EQ(got.value, want.value) << trial;
+        ASSERT_EQ(got.position.raw(), want.position.raw()) << trial;
+    }
+}
+
 TEST(EdgeProfile, ParabolaVertexMatchesDouble)
 {
     std::mt19937 rng(5);
