@@ -19,6 +19,14 @@ double bilinearRef(const std::vector<uint8_t> &img, int w, double x, double y)
     return (p(xi, yi) * (1 - fx) + p(xi + 1, yi) * fx) * (1 - fy) +
            (p(xi, yi + 1) * (1 - fx) + p(xi + 1, yi + 1) * fx) * fy;
 }
+
+// A w × h image of uniform noise, every pixel drawn from rng: every weight and pixel matters.
+std::vector<uint8_t> noiseImage(int w, int h, std::mt19937 &rng)
+{
+    std::vector<uint8_t> img(size_t(w) * h);
+    for (auto &p : img) p = uint8_t(rng() & 255);
+    return img;
+}
 } // namespace
 
 TEST(RadialProfile, BilinearMatchesDoubleWithinStatedBound)
@@ -27,8 +35,7 @@ TEST(RadialProfile, BilinearMatchesDoubleWithinStatedBound)
     // + 0.5/256 grey of output rounding. Random images have slopes up to 255 per px.
     const int w = 64, h = 48;
     std::mt19937 rng(3);
-    std::vector<uint8_t> img(size_t(w) * h);
-    for (auto &p : img) p = uint8_t(rng() & 255);
+    const std::vector<uint8_t> img = noiseImage(w, h, rng);
     const LumaView v{img.data(), w, h, w, 1};
     std::uniform_real_distribution<double> X(0, w - 1.01), Y(0, h - 1.01);
     double worst = 0;
@@ -89,8 +96,7 @@ TEST(RadialProfile, RayEqualsBilinearSamplesAtEveryAngleAndLength)
     // noise image, so that every weight and every pixel matters.
     const int w = 203, h = 171;
     std::mt19937 rng(11);
-    std::vector<uint8_t> img(size_t(w) * h);
-    for (auto &p : img) p = uint8_t(rng() & 255);
+    const std::vector<uint8_t> img = noiseImage(w, h, rng);
     const LumaView v{img.data(), w, h, w, 1};
     std::uniform_real_distribution<double> U(0, 1);
     for (int trial = 0; trial < 400; ++trial) {
