@@ -61,6 +61,12 @@ void readFace(const SpecimenSpec &spec, const friction::FrictionModel &model, co
     // A silhouette found unusable is a finding of its own (silhouette_unreliable, no_silhouette);
     // where the image has none to check the height with, U covers the undeclared range.
     if (explained) f |= nominalCheck(F, spec, u, out->mu, &why, &out->nominalMu);
+    // Without a silhouette the height and the declared scale are unchecked (U covers the
+    // undeclared range, the advice says so); a finding where they could move μ beyond the
+    // tolerance, not where μ barely depends on them.
+    if ((f & kFlagNoSilhouette) && !assumed.declared && !calibrated &&
+        !uncheckedViewMatters(F, spec, scaleRelSigma, u, out->mu))
+        f &= ~kFlagNoSilhouette;
     decideStatus(spec, f | rangeChecks(model, read, assumed), out);
 }
 

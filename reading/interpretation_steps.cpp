@@ -319,7 +319,9 @@ SilhouetteObservation observeSilhouette(const FaceInMm &face, double coverage, d
                                         const SpecimenSpec &spec, const AssumedReduction &r, double mu0, double d0OverW)
 {
     SilhouetteObservation o;
-    if (!(rMaxPx > 0)) {
+    // An outline the rays see on fewer than half their number (or that only the mean profile
+    // shows) was not found: the view is one without a silhouette.
+    if (!(rMaxPx > 0) || coverage < kSilhouetteMinCoverage) {
         o.flags = kFlagNoSilhouette;
         return o;
     }
@@ -339,8 +341,8 @@ SilhouetteObservation observeSilhouette(const FaceInMm &face, double coverage, d
     const friction::RadiiCheck up = friction::checkRadii(rMaxAsFe, n, mu0, spec.d0Mm, r.r + 0.01, spec.h0Mm, false);
     const friction::RadiiCheck down = friction::checkRadii(rMaxAsFe, n, mu0, spec.d0Mm, r.r - 0.01, spec.h0Mm, false);
     const double overContact = face.rMaxMm / face.rOuterMm;
-    o.usable = rc.valid && up.valid && down.valid && coverage >= kSilhouetteMinCoverage &&
-               overContact > kSilhouetteOverContactMin && overContact < kSilhouetteOverContactMax;
+    o.usable = rc.valid && up.valid && down.valid && overContact > kSilhouetteOverContactMin &&
+               overContact < kSilhouetteOverContactMax;
     if (o.usable) {
         o.d = std::log(rMaxAsFe / rc.rMaxFeMm);
         o.dContact = std::log(kSilhouetteOverContactMin * face.rOuterMm / rc.rMaxFeMm);
@@ -392,6 +394,23 @@ uint32_t nominalCheck(const MuFunction &F, const SpecimenSpec &spec, double u, d
     const bool moved = std::fabs(*nominalMu - mu) > tol;
     if (!moved && risk <= kWrongRisk) return 0;
     return lead == E::ScaleOff ? uint32_t(kFlagScaleSuspect) : uint32_t(kFlagReductionNotNominal);
+}
+
+bool uncheckedViewMatters(const MuFunction &F, const SpecimenSpec &spec, double scaleRelSigma, double uMm, double mu)
+{
+    using E = Explanations;
+    Explanations prior;
+    const double pk = scaleRelSigma * scaleRelSigma;
+    prior.post[E::OtherHeight].pk = pk;
+    prior.post[E::OtherHeight].pr = kUndeclaredReductionSigma * kUndeclaredReductionSigma;
+    prior.post[E::ScaleOff].dk = kFixtureScaleMean;
+    prior.post[E::ScaleOff].pk = kFixtureScaleSigma * kFixtureScaleSigma;
+    prior.post[E::ScaleOff].pr = kNominalReductionSigma * kNominalReductionSigma;
+    prior.post[E::Nominal].pk = pk;
+    prior.post[E::Nominal].pr = kNominalReductionSigma * kNominalReductionSigma;
+    for (int h : {E::OtherHeight, E::ScaleOff, E::Nominal}) prior.weight[h] = 1.0 / 3;
+    double nominalMu = 0;
+    return nominalCheck(F, spec, uMm, mu, &prior, &nominalMu) != 0;
 }
 
 MuReading readMu(const MuFunction &F, const FrictionModel &model, const SpecimenSpec &spec, double uMm, double r,

@@ -127,6 +127,13 @@ ScaleAndReduction silhouettePosterior(const ScaleAndReduction &prior, const Silh
 uint32_t nominalCheck(const MuFunction &F, const SpecimenSpec &spec, double uDeclaredMm, double mu,
                       const Explanations *why, double *nominalMu);
 
+// A straight view without a silhouette, no final height declared: the height and the
+// declared scale go unchecked, and the explanations keep their prior weights (nominal half
+// height; another height over the undeclared range; a scale measured on the fixture). True
+// where they leave more than the nominal check's chance that μ lies beyond the tolerance:
+// then no_silhouette is a finding; where μ barely depends on them it is not.
+bool uncheckedViewMatters(const MuFunction &F, const SpecimenSpec &spec, double scaleRelSigma, double uMm, double mu);
+
 // μ at the corrected u and reduction; bias: the carry to 50 % a model that does not carry
 // itself leaves out (budgeted).
 struct MuReading {

@@ -36,6 +36,8 @@ constexpr double kInwardMovePx = 4.0;
 constexpr double kFineStepPx = 1.0;
 // A 3-grey-level step blurred to σ = 2 px gives a coarse derivative of about 1200.
 constexpr int32_t kMinCoarseStrength = 1000;
+// The contact edge's blur (Gaussian σ, pixels) taken where the profile shows none.
+constexpr double kUnknownBlurPx = 1.5;
 // Widest ICA searched, as a fraction of the initial radius.
 constexpr double kMaxU = 0.32;
 // How many rays the edge-following mean profile samples (it only names the face edge; the
@@ -564,7 +566,7 @@ double RingSearch::centreOnContactEdge(const MeanEdges &me)
     return r;
 }
 
-bool RingSearch::silhouetteOnRay(const uint16_t *row, int lo, int hi, int w, double *atSample) const
+bool RingSearch::silhouetteOnRay(const uint16_t *row, int lo, int hi, int w, int barrelFrom, double *atSample) const
 {
     // Running sums from the first sample the detector reads (lo − w): prefix[k] holds
     // Σ row[base … k − 1], so differences are the same as from sample 0.
@@ -573,10 +575,19 @@ bool RingSearch::silhouetteOnRay(const uint16_t *row, int lo, int hi, int w, dou
     const int base = lo - w;
     prefix[base] = 0;
     for (int j = base; j <= hi + w; ++j) prefix[j + 1] = prefix[j] + row[j];
-    // Step across r: mean of the w samples outside minus the w samples inside (Q8).
-    auto stepAt = [&](int j) { return (prefix[j + 1 + w] - prefix[j + 1]) - (prefix[j] - prefix[j - w]); };
+    // Step across r: mean of the h samples outside minus the h samples inside (Q8, as sums
+    // over h). The inside reads the barrel only: from barrelFrom, beyond the contact edge's
+    // blur, its mean scaled to h samples. Reading into the contact edge, the detector would
+    // take its tail for an outline at the window's start (at a 2 px step and h = 4, a
+    // window 0.04 R0 outside the contact edge reads 4 px inside it).
+    auto across = [&](int j, int h) {
+        const int from = std::max(j - h, barrelFrom);
+        const int32_t inside = (prefix[j] - prefix[from]) * h / (j - from);
+        return (prefix[j + 1 + h] - prefix[j + 1]) - inside;
+    };
+    auto stepAt = [&](int j) { return across(j, w); };
     // The same step over wn samples a side: it locates the edge the wide one detects.
-    auto narrowAt = [&](int j) { return (prefix[j + 1 + wn] - prefix[j + 1]) - (prefix[j] - prefix[j - wn]); };
+    auto narrowAt = [&](int j) { return across(j, wn); };
     // Noise: the step detector's spread over the outer quarter (background, mostly); the
     // narrow one's is that of a sum over wn samples a side rather than w: √(wn/w) of it.
     int32_t tmp[kMaxCoarse];
@@ -652,7 +663,8 @@ bool RingSearch::barrelBandLopsided(const double *radius, const bool *valid, con
     return !(sol[0] > 0) || std::hypot(sol[1], sol[2]) > 0.5 * sol[0];
 }
 
-double RingSearch::silhouetteFromRays(const double *outerR, double *coverage, double *scatterPx, bool *lopsided)
+double RingSearch::silhouetteFromRays(const double *outerR, double blurPx, double *coverage, double *scatterPx,
+                                      bool *lopsided)
 {
     *coverage = 0;
     *scatterPx = 0;
@@ -672,11 +684,13 @@ double RingSearch::silhouetteFromRays(const double *outerR, double *coverage, do
         // the contact edge's centre offset).
         const int fineIdx = i * (rays_ / kCoarse);
         const double ro = outerR[fineIdx] + (cx - coarseCx_) * rayCos_[fineIdx] + (cy - coarseCy_) * raySin_[fineIdx];
-        const int lo = std::max(w, int((ro + 0.04 * r0 - rA) / step));
+        // The barrel begins beyond the contact edge's blur (three of its σ, at least 2 px).
+        const int barrelFrom = std::max(0, int(std::ceil((ro + std::max(2.0, 3 * blurPx) - rA) / step)));
+        const int lo = std::max({w, int((ro + 0.04 * r0 - rA) / step), barrelFrom + 1});
         const int hi = count - w - 2;
         if (hi - lo < 2 * w) continue;
         double at = 0;
-        if (silhouetteOnRay(row, lo, hi, w, &at)) {
+        if (silhouetteOnRay(row, lo, hi, w, std::max(barrelFrom, lo - w), &at)) {
             radius[i] = rA + at * step;
             valid[i] = true;
         }
@@ -1021,7 +1035,8 @@ ErrorCode RingSearch::ringAbout(const MeanEdges &me, EndFaceGeometry *m)
     // The silhouette per coarse ray refines the mean profile's estimate (the mean profile
     // blurs a weak barrel/background step and can name a highlight's flank instead).
     bool lopsided = false;
-    const double perRay = silhouetteFromRays(outerR, &m->silhouetteCoverage, &m->silhouetteScatterPx, &lopsided);
+    const double perRay = silhouetteFromRays(outerR, edgeWidth >= 0 ? edgeWidth : kUnknownBlurPx,
+                                             &m->silhouetteCoverage, &m->silhouetteScatterPx, &lopsided);
     m->rMaxPx = perRay > 0 ? perRay : lopsided ? 0 : me.rMax;
     if (lopsided) m->imageFlags |= kImageBarrelOblique;
     if (m->rMaxPx > 0 && outlineRivalled(m->rMaxPx)) m->imageFlags |= kImageOutlineAmbiguous;

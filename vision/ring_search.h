@@ -96,11 +96,12 @@ struct RingSearch {
     // Silhouette R_max from the coarse rays, outside the fitted contact edge; 0 if unclear
     // (lopsided: the barrel is seen obliquely, so no silhouette is a circle about the axis).
     // coverage and scatterPx: the per-ray fit's.
-    double silhouetteFromRays(const double *outerR, double *coverage, double *scatterPx, bool *lopsided);
+    double silhouetteFromRays(const double *outerR, double blurPx, double *coverage, double *scatterPx, bool *lopsided);
     // One coarse ray's silhouette between samples lo and hi: the outermost clear step of a
     // detector w samples a side, located by one a quarter as wide (*atSample: its sample
-    // position, sub-sample); false when no step stands out of the ray's noise.
-    bool silhouetteOnRay(const uint16_t *row, int lo, int hi, int w, double *atSample) const;
+    // position, sub-sample); false when no step stands out of the ray's noise. The detector's
+    // inside reads no sample before barrelFrom (the contact edge's blur ends there).
+    bool silhouetteOnRay(const uint16_t *row, int lo, int hi, int w, int barrelFrom, double *atSample) const;
     // Whether the mean profile shows a second step of the outline's sign, as strong, just
     // outside it (the fixture's shadow edge): then the outline cannot be told from it.
     bool outlineRivalled(double rMaxPx) const;

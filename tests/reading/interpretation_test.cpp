@@ -163,6 +163,34 @@ TEST(Interpretation, ASilhouetteOnAWrongEdgeDoesNotRescaleTheRingUnseen)
     EXPECT_LT(std::fabs(w.mu - r.mu), 2 * w.muSigma) << "μ " << w.mu << " ± " << w.muSigma << " against " << r.mu;
 }
 
+// A straight view without a silhouette leaves the height and the declared scale unchecked;
+// that is a finding where they move μ, not where μ hardly depends on them. At μ 0.06 the
+// undeclared 45–55 % and a scale measured on the fixture (11 % large) stay within the
+// tolerance; at μ 0.15 the fixture's scale alone moves μ beyond it.
+TEST(Interpretation, NoSilhouetteIsAFindingWhereTheUncheckedInputsMoveMu)
+{
+    EndFaceGeometry low = face(1.0, false, kN, 0.06), high = face(1.0, false, kN, 0.15);
+    low.rMaxPx = high.rMaxPx = 0;
+    const Reading l = interpret(low), h = interpret(high);
+    EXPECT_EQ(l.status, Status::Ok) << l.flags;
+    EXPECT_TRUE(l.advice.reductionUnchecked);
+    EXPECT_NEAR(l.reductionSigma, kUndeclaredReductionSigma, 1e-12);
+    EXPECT_EQ(h.status, Status::Warn);
+    EXPECT_TRUE(h.flags & kFlagNoSilhouette);
+}
+
+// An outline on fewer than half the rays was not found: the view is one without a silhouette
+// (no_silhouette), not one whose silhouette contradicts the barrel (silhouette_unreliable).
+TEST(Interpretation, AnOutlineOnFewRaysIsNoSilhouette)
+{
+    EndFaceGeometry g = face(1.0, false);
+    g.silhouetteCoverage = 0.3;
+    const Reading m = interpret(g);
+    EXPECT_TRUE(m.flags & kFlagNoSilhouette) << m.flags;
+    EXPECT_FALSE(m.flags & kFlagSilhouetteUnreliable);
+    EXPECT_DOUBLE_EQ(m.scaleFactor, 1.0);
+}
+
 } // namespace
 // Without a silhouette nothing checks the scale or the final height, in a tilted view as in a
 // straight one: a finding (a scale measured on the fixture would otherwise pass unseen). The

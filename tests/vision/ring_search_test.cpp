@@ -128,6 +128,23 @@ TEST(RingSearch, TheSilhouetteIsTheOutlineNotAHighlightInsideIt)
     EXPECT_GT(s.m.silhouetteCoverage, 0.9);
 }
 
+// A barrel as dark as the background shows no outline; the contact edge's blurred tail just
+// outside it must not pass for one. On a small frame (R0 100 px, a 2 px coarse step) the
+// silhouette detector's window 0.04 R0 outside the contact edge reaches 4 px back inside it
+// unless it starts beyond the edge's blur: every ray then sees the 190-grey drop and the fit
+// places a silhouette 1–2 px outside the contact edge, on all rays alike.
+TEST(RingSearch, TheContactEdgesTailIsNoSilhouette)
+{
+    test::SyntheticEndFace face;
+    face.scaleTo(100);
+    face.face = 200, face.ica = 210, face.barrel = 20, face.background = 20;
+    const auto px = face.draw();
+    Search s;
+    ASSERT_EQ(s.run(face.view(px), face.r0, face.cx, face.cy), ErrorCode::None);
+    EXPECT_LT(s.m.silhouetteCoverage, 0.5);
+    if (s.m.rMaxPx > 0) { EXPECT_GT(s.m.rMaxPx - s.m.outer.rEqPx, 4.0) << s.m.rMaxPx; }
+}
+
 // A highlight band just inside the outline (the development set's devset-001: peak 14 px
 // in, a 46 → 35 outline): the outline's own step is not a second step beyond it, also where
 // the outline is placed a little inside its step (the per-ray detector, pulled by the
