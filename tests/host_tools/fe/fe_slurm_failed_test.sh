@@ -32,8 +32,12 @@ subs=$(ls "$work"/sweep.csv.slurm/jobs/*.cases | sort -V)
 
 # A task that ends without rows (here cancelled while it runs; on a cluster a time limit, a
 # lost node) is listed with its Slurm state, the sweep exits 1, and the next run submits it.
+# Its solver runs until it is stopped: a real one-element case can finish before --cancel
+# comes on a loaded machine, and the test would then judge the machine's speed.
+printf '#!/bin/sh\nexec sleep 600\n' > "$work/ccx-until-stopped"
+chmod +x "$work/ccx-until-stopped"
 lost=("$icacam" fe sweep --executor slurm --poll 1 --grid "mu=0.3" "${caseOptions[@]}" --work "$work/ccx"
-      --out "$work/lost.csv")
+      --ccx "$work/ccx-until-stopped" --out "$work/lost.csv")
 "${lost[@]}" > "$work/lost.log" 2>&1 &
 pid=$!
 name=""
