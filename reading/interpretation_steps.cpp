@@ -371,7 +371,8 @@ uint32_t nominalCheck(const MuFunction &F, const SpecimenSpec &spec, double u, d
     // is Gaussian about its own value, with the spread its posterior of scale and reduction
     // leaves (the declared inputs' other parts are U's, not the check's).
     double risk = 0;
-    int lead = -1; // the weightiest explanation other than the nominal height as seen
+    double otherMu = 0; // μ where the specimen was pressed to another height
+    int lead = -1;      // the weightiest explanation other than the nominal height as seen
     for (int h = 0; h < E::kCount; ++h) {
         if (why->weight[h] <= 0) continue;
         const ScaleAndReduction &p = why->post[h];
@@ -389,9 +390,14 @@ uint32_t nominalCheck(const MuFunction &F, const SpecimenSpec &spec, double u, d
         const bool nominal = h == E::Nominal || h == E::WrongEdge;
         if (!nominal && why->weight[h] >= kPlausibleWeight && (lead < 0 || why->weight[h] > why->weight[lead]))
             lead = h;
+        if (h == E::OtherHeight) otherMu = muH;
     }
     // The image says another height (or scale) than the nominal, by enough to move μ.
-    const bool moved = std::fabs(*nominalMu - mu) > tol;
+    // Where another height is the weightiest explanation besides the nominal one, the image
+    // says that height: μ there beyond the tolerance of μ at half height is a finding, also
+    // where the nominal explanation keeps enough weight to hold the reading's μ within it.
+    const bool moved =
+        std::fabs(*nominalMu - mu) > tol || (lead == E::OtherHeight && std::fabs(otherMu - *nominalMu) > tol);
     if (!moved && risk <= kWrongRisk) return 0;
     return lead == E::ScaleOff ? uint32_t(kFlagScaleSuspect) : uint32_t(kFlagReductionNotNominal);
 }
