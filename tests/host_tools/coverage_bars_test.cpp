@@ -81,13 +81,15 @@ TEST(CoverageBars, LowResolution)
 {
     expectBars("lowres", 9102, true, {0.9, 0.9});
 }
-// Below the half line: 38 % measured (11 of 29 right readings). A reading the silhouette
+// Below the half line: 34 % measured (10 of 29 right readings). A reading the silhouette
 // places at another height is read there and right, but warned of (reduction_not_nominal), as
 // the nominal conditions' check asks: the more readings the silhouette places right, the more
-// of the right ones warn.
+// of the right ones warn. Another height the image says first, beyond the tolerance, is a
+// finding even where the mixture's μ stays near half height's: that took one right reading
+// here, and half the silent wrong ones on drawn seeds 104 and 105.
 TEST(CoverageBars, ReductionNotDeclared)
 {
-    expectBars("reduction", 9103, false, {0, 0.35});
+    expectBars("reduction", 9103, false, {0, 0.3});
 }
 // Below the half line: a scale off and a higher height explain the silhouette alike (24 %).
 TEST(CoverageBars, ScaleMeasuredOnTheFixture)
