@@ -1,4 +1,4 @@
-// centre_start_sweep --manifest M.csv [--model NAME] [--offsets 1,3]: how far a measurement
+// centre_start_sweep --manifest M.csv [--model NAME] [--offsets 1,3] [--verbose]: how far a measurement
 // depends on where the centre search starts. Every record is measured from the locator's
 // coarse centre and from starts moved by each offset (pixels) in eight directions; per record
 // the spread (largest minus smallest) of the centre, both radii, the silhouette and μ over
@@ -45,9 +45,15 @@ int main(int argc, char **argv)
     using namespace icacam;
     std::string manifestPath, modelName = "paper";
     std::vector<double> offsets{1, 3};
-    for (int i = 1; i + 1 < argc; i += 2) {
+    bool verbose = false;
+    for (int i = 1; i < argc; i += 2) {
         const std::string a = argv[i];
-        if (a == "--manifest")
+        if (a == "--verbose") {
+            verbose = true;
+            --i;
+        } else if (i + 1 >= argc)
+            break;
+        else if (a == "--manifest")
             manifestPath = argv[i + 1];
         else if (a == "--model")
             modelName = argv[i + 1];
@@ -56,7 +62,7 @@ int main(int argc, char **argv)
     }
     const friction::FrictionModel *model = friction::frictionModel(modelName);
     if (manifestPath.empty() || !model) {
-        std::fprintf(stderr, "usage: centre_start_sweep --manifest M.csv [--model NAME] [--offsets 1,3]\n");
+        std::fprintf(stderr, "usage: centre_start_sweep --manifest M.csv [--model NAME] [--offsets 1,3] [--verbose]\n");
         return 2;
     }
     host::Manifest manifest;
@@ -88,6 +94,10 @@ int main(int argc, char **argv)
         auto measureAt = [&](double x, double y) {
             ++starts;
             const vision::EndFaceGeometry g = analyzer.measureFrom(view, search, x, y);
+            if (verbose)
+                std::printf("  start %.2f %.2f: %s centre %.3f %.3f R_i %.3f R_o %.3f R_max %.3f\n", x, y,
+                            g.found() ? "found" : "error", g.centreX, g.centreY, g.inner.rEqPx, g.outer.rEqPx,
+                            g.rMaxPx);
             if (!g.found()) return;
             ++found;
             cx.add(g.centreX);
@@ -119,6 +129,7 @@ int main(int argc, char **argv)
     }
     std::printf("%d records; largest spread: centre %.3f px, R_i %.3f px, R_o %.3f px, R_max %.3f px, mu %.5f; "
                 "mu moved on %d (by 0.0001 or more on %d), a start lost the reading on %d\n",
-                records, worstCentre.hi, worstRi.hi, worstRo.hi, worstMax.hi, worstMu.hi, muMoved, muMovedVisibly, lost);
+                records, worstCentre.hi, worstRi.hi, worstRo.hi, worstMax.hi, worstMu.hi, muMoved, muMovedVisibly,
+                lost);
     return 0;
 }
