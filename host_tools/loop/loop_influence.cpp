@@ -11,8 +11,7 @@ namespace icacam::host::loop {
 
 namespace {
 
-template <typename T>
-std::vector<T> kept(const std::vector<T> &v, const std::vector<bool> &keep)
+template <typename T> std::vector<T> kept(const std::vector<T> &v, const std::vector<bool> &keep)
 {
     std::vector<T> out;
     if (v.size() != keep.size()) return v; // not per record (an empty column)
@@ -31,7 +30,7 @@ struct Kept {
 
     Kept(const Candidate *c0, const std::vector<double> *sens0, const std::vector<double> *base0,
          const std::vector<double> &y0, const std::vector<int> &fold0, const std::vector<bool> &keep)
-        : y(kept(y0, keep)), fold(kept(fold0, keep))
+            : y(kept(y0, keep)), fold(kept(fold0, keep))
     {
         if (c0) {
             c = *c0;

@@ -17,10 +17,10 @@ namespace icacam::host::loop {
 size_t influentialCount(size_t n, double share);
 
 struct InfluenceCheck {
-    std::vector<size_t> records; // the most influential records, in the order they were left out
-    double z = 0;                // the form's nested F test without them, as a normal z
+    std::vector<size_t> records;                      // the most influential records, in the order they were left out
+    double z = 0;                                     // the form's nested F test without them, as a normal z
     double cvRmsBefore = 0, cvRmsAfter = 0, gain = 0; // k-fold without them
-    bool stands = true;          // still significant over the family without them
+    bool stands = true;                               // still significant over the family without them
 };
 
 // The candidate c in a linear form (c: nullptr for a physical change such as the form `fe`,
@@ -38,8 +38,8 @@ InfluenceCheck checkInfluence(const Candidate *c, const std::vector<double> *sen
 struct CarryingRecord {
     std::string id;
     double residual = 0;
-    std::string value; // the candidate's value at the record (a number or a level)
-    std::string flags; // the pipeline's flags, ';'-separated ("" for radii)
+    std::string value;                                    // the candidate's value at the record (a number or a level)
+    std::string flags;                                    // the pipeline's flags, ';'-separated ("" for radii)
     std::vector<std::pair<std::string, double>> outlying; // diagnostics far from the rest, farthest first
 };
 
@@ -47,9 +47,9 @@ struct CarryingRecord {
 // named instead.
 struct RecordFinding {
     std::string candidate, form;
-    int round = 1;               // 1: the model's residual; k: after k − 1 effects
-    double z = 0, zWithout = 0;  // with every record, and without the records below
-    double zFamily = 0;          // the family's critical z
+    int round = 1;              // 1: the model's residual; k: after k − 1 effects
+    double z = 0, zWithout = 0; // with every record, and without the records below
+    double zFamily = 0;         // the family's critical z
     double cvRmsAfter = 0, cvRmsAfterWithout = 0, gain = 0, gainWithout = 0;
     std::vector<CarryingRecord> records;
 };
