@@ -16,6 +16,7 @@
 #include "host_tools/fe/reduction_slope.h"
 #include "host_tools/image_file.h"
 #include "host_tools/loop/journal_records.h"
+#include "host_tools/loop/loop_fit.h"
 #include "host_tools/loop/loop_physics_report.h"
 #include "host_tools/loop/loop_records.h"
 #include "host_tools/loop/loop_report.h"
@@ -359,11 +360,13 @@ const Candidate *candidateNamed(const ResidualSet &set, const std::string &name)
 
 // The candidates a round turned down as carried by a few records, with those records (a
 // candidate turned down in several rounds is named as the last of them saw it).
-void noteCarried(const ResidualSet &round, const std::vector<RankedCandidate> &ranking, int roundNo, LoopSummary *s)
+void noteCarried(const ResidualSet &round, const std::vector<RankedCandidate> &ranking, int roundNo,
+                 const RankingOptions &opt, LoopSummary *s)
 {
     for (const RankedCandidate &r : ranking) {
         if (!r.carried) continue;
-        RecordFinding f = recordFinding(r, candidateNamed(round, r.name), round.usable, round.residual, roundNo);
+        RecordFinding f = recordFinding(r, candidateNamed(round, r.name), round.usable, round.residual, roundNo,
+                                        fit::normalUpperQuantile(opt.alpha));
         const auto it = std::find_if(s->carried.begin(), s->carried.end(),
                                      [&](const RecordFinding &o) { return o.candidate == r.name; });
         if (it == s->carried.end())
@@ -618,7 +621,7 @@ void addFurtherEffects(const FrictionModel &model, const fe::ReductionSlope *slo
             rankRound(model, slope, all, taken, carried, first.fold, first.folds, opt, &round);
         lookPastAMaskingEffect(model, slope, round, taken, carried, opt, &ranking);
         weighRivals(model, slope, round, taken, carried, opt, &ranking);
-        noteCarried(round, ranking, int(s->effects.size()) + 1, s);
+        noteCarried(round, ranking, int(s->effects.size()) + 1, opt, s);
         if (ranking.empty() || !ranking.front().significant) {
             s->lastRanking = ranking;
             s->stopped = "no further candidate is significant" + bestLeft(round, ranking);
@@ -764,7 +767,7 @@ LoopSummary runLoopOn(const Manifest &manifest, const std::string &source,
         rankCandidates(set.candidates, set.residual, opt, &set.scaleSens, &set.uSens, &physicalForms, &fittedForms);
     lookPastAMaskingEffect(*model, slopeLoaded ? &slope : nullptr, set, {}, false, opt, &s.ranking);
     weighRivals(*model, slopeLoaded ? &slope : nullptr, set, {}, false, opt, &s.ranking);
-    noteCarried(set, s.ranking, 1, &s);
+    noteCarried(set, s.ranking, 1, opt, &s);
     s.cvRmsOffset = offsetCvRms(set.residual, set.fold, set.folds);
     s.cvRmsAfter = s.rmsBefore;
     if (!s.ranking.empty() && s.ranking.front().significant) {

@@ -94,7 +94,7 @@ size_t influentialCount(size_t n, double share)
 
 InfluenceCheck checkInfluence(const Candidate *c, const std::vector<double> *sens, const std::vector<double> *baseSens,
                               const std::vector<double> &y, const std::vector<int> &fold, int folds, size_t count,
-                              double zCrit, double minRelativeGain)
+                              double zNeeded, double minRelativeGain)
 {
     InfluenceCheck out;
     const size_t n = y.size();
@@ -118,16 +118,16 @@ InfluenceCheck checkInfluence(const Candidate *c, const std::vector<double> *sen
     out.cvRmsBefore = rms(fit::cvErrors(nullptr, left.y, left.fold, folds, left.b));
     out.cvRmsAfter = rms(fit::cvErrors(left.cand, left.y, left.fold, folds, left.s));
     out.gain = out.cvRmsBefore - out.cvRmsAfter;
-    out.stands = out.gain > 0 && out.z > zCrit && out.gain >= minRelativeGain * out.cvRmsBefore;
+    out.stands = out.gain > 0 && out.z > zNeeded && out.gain >= minRelativeGain * out.cvRmsBefore;
     return out;
 }
 
 RecordFinding recordFinding(const RankedCandidate &r, const Candidate *c, const std::vector<LoopRecord> &records,
-                            const std::vector<double> &residual, int round)
+                            const std::vector<double> &residual, int round, double zNeeded)
 {
     RecordFinding f;
     f.candidate = r.name, f.form = r.form, f.round = round;
-    f.z = r.z, f.zWithout = r.zWithout, f.zFamily = r.zFamily;
+    f.z = r.z, f.zWithout = r.zWithout, f.zFamily = r.zFamily, f.zNeeded = zNeeded;
     f.cvRmsAfter = r.cvRmsAfter, f.cvRmsAfterWithout = r.cvRmsAfterWithout;
     f.gain = r.gain, f.gainWithout = r.gainWithout;
     for (size_t i : r.influential) {

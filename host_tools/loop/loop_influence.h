@@ -31,7 +31,7 @@ struct InfluenceCheck {
 // z above zCrit).
 InfluenceCheck checkInfluence(const Candidate *c, const std::vector<double> *sens, const std::vector<double> *baseSens,
                               const std::vector<double> &y, const std::vector<int> &fold, int folds, size_t count,
-                              double zCrit, double minRelativeGain);
+                              double zNeeded, double minRelativeGain);
 
 // One record named by a finding: its residual, the candidate's value there, its flags and the
 // diagnostics in which it lies far from the other records.
@@ -50,6 +50,7 @@ struct RecordFinding {
     int round = 1;              // 1: the model's residual; k: after k − 1 effects
     double z = 0, zWithout = 0; // with every record, and without the records below
     double zFamily = 0;         // the family's critical z
+    double zNeeded = 0;         // what it needed without them: a single comparison's
     double cvRmsAfter = 0, cvRmsAfterWithout = 0, gain = 0, gainWithout = 0;
     std::vector<CarryingRecord> records;
 };
@@ -57,7 +58,7 @@ struct RecordFinding {
 // The finding of a ranked candidate the check turned down (RankedCandidate::carried), on the
 // round's records and residual.
 RecordFinding recordFinding(const RankedCandidate &r, const Candidate *c, const std::vector<LoopRecord> &records,
-                            const std::vector<double> &residual, int round);
+                            const std::vector<double> &residual, int round, double zNeeded);
 
 // "loopset-023 (residual -0.0120, diag_outer_coverage 0.625, flags blurred;centre_offset)".
 std::string describe(const CarryingRecord &r, const std::string &candidate);

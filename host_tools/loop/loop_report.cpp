@@ -300,12 +300,11 @@ void writeCarried(std::ostream &f, const LoopSummary &s)
 {
     if (s.carried.empty()) return;
     f << "\n## Records that carry an effect\n\n"
-         "Each candidate below is significant over the family with every record and not without the few records "
-         "that lift it most (the influence check: the record whose leaving out lowers its z the most, left out, "
-         "then the next, "
+         "Each candidate below is significant over the family with every record, and without the record whose "
+         "leaving out lowers its z the most (then the next, "
       << s.carried.front().records.size()
-      << " in all). It is not added: what these records show is about them, not about the population. Look at "
-         "these images (and their reference values).\n";
+      << " in all) it does not pass even the test of a single comparison. It is not added: what these records "
+         "show is about them, not about the population. Look at these images (and their reference values).\n";
     for (const RecordFinding &c : s.carried) {
         f << "\n`" << c.candidate << "` (form `" << c.form << "`, "
           << (c.round == 1 ? std::string("on the residual as the model reads it")
@@ -313,8 +312,8 @@ void writeCarried(std::ostream &f, const LoopSummary &s)
                                  (c.round > 2 ? "s" : "") + " left")
           << "): z " << f4(c.z, "%.1f") << " with every record, " << f4(c.zWithout, "%.1f") << " without "
           << (c.records.size() == 1 ? "this one" : "these") << " (the family's critical z " << f4(c.zFamily, "%.1f")
-          << "); k-fold gain " << f4(c.gain, "%.5f") << " with every record, " << f4(c.gainWithout, "%.5f")
-          << " without.\n\n| record | residual | " << c.candidate
+          << ", a single comparison's " << f4(c.zNeeded, "%.1f") << "); k-fold gain " << f4(c.gain, "%.5f")
+          << " with every record, " << f4(c.gainWithout, "%.5f") << " without.\n\n| record | residual | " << c.candidate
           << " | far from the other records (diagnostics) | flags |\n|---|---|---|---|---|\n";
         for (const CarryingRecord &r : c.records) {
             std::string far;

@@ -50,9 +50,10 @@ std::string readText(const fs::path &p)
 // correlation of about `track`), and `odd` records far off in it:
 // coverage 0.60–0.70 where the rest lie near 0.985, and μ_ref raised by `shift` (their
 // residual lowered by as much), spread over the run (every 60/odd-th record, from the first,
-// so that no recorded condition, the sequence among them, groups them). Returns the loop's summary; *dir keeps the report.
-LoopSummary runWithExcursion(const std::string &name, uint32_t seed, int odd, double shift, double track,
-                             fs::path *dir, std::vector<std::string> *oddIds)
+// so that no recorded condition, the sequence among them, groups them). Returns the loop's summary; *dir keeps the
+// report.
+LoopSummary runWithExcursion(const std::string &name, uint32_t seed, int odd, double shift, double track, fs::path *dir,
+                             std::vector<std::string> *oddIds)
 {
     *dir = fs::temp_directory_path() / ("icacam_loop_influence_" + name + "_" + std::to_string(::getpid()));
     fs::remove_all(*dir);
