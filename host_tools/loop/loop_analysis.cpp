@@ -847,7 +847,7 @@ void checkCarried(const Candidate &c, const std::vector<double> &y, const std::v
     }
     const InfluenceCheck check =
         checkInfluence(cand, sens, baseSens, y, fold, folds, influentialCount(y.size(), opt.influentialShare),
-                       normalUpperQuantile(opt.alpha), opt.minRelativeGain);
+                       normalUpperQuantile(opt.alpha));
     r->influential = check.records;
     r->zWithout = check.z, r->gainWithout = check.gain, r->cvRmsAfterWithout = check.cvRmsAfter;
     if (check.stands) return;

@@ -94,7 +94,7 @@ size_t influentialCount(size_t n, double share)
 
 InfluenceCheck checkInfluence(const Candidate *c, const std::vector<double> *sens, const std::vector<double> *baseSens,
                               const std::vector<double> &y, const std::vector<int> &fold, int folds, size_t count,
-                              double zNeeded, double minRelativeGain)
+                              double zNeeded)
 {
     InfluenceCheck out;
     const size_t n = y.size();
@@ -118,7 +118,7 @@ InfluenceCheck checkInfluence(const Candidate *c, const std::vector<double> *sen
     out.cvRmsBefore = rms(fit::cvErrors(nullptr, left.y, left.fold, folds, left.b));
     out.cvRmsAfter = rms(fit::cvErrors(left.cand, left.y, left.fold, folds, left.s));
     out.gain = out.cvRmsBefore - out.cvRmsAfter;
-    out.stands = out.gain > 0 && out.z > zNeeded && out.gain >= minRelativeGain * out.cvRmsBefore;
+    out.stands = out.z > zNeeded;
     return out;
 }
 

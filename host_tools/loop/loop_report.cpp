@@ -296,15 +296,16 @@ void writeChosenEffect(std::ostream &f, const ReportContext &c, const ResidualSe
 
 // The candidates significant only through a few records, with those records: a finding
 // about the images, not about the population.
-void writeCarried(std::ostream &f, const LoopSummary &s)
+void writeCarried(std::ostream &f, const RankingOptions &options, const LoopSummary &s)
 {
     if (s.carried.empty()) return;
     f << "\n## Records that carry an effect\n\n"
-         "Each candidate below is significant over the family with every record, and without the record whose "
-         "leaving out lowers its z the most (then the next, "
-      << s.carried.front().records.size()
-      << " in all) it does not pass even the test of a single comparison. It is not added: what these records "
-         "show is about them, not about the population. Look at these images (and their reference values).\n";
+         "Each candidate below is significant over the family with every record, and its z falls below even a "
+         "single comparison's critical z without its most influential records (the record whose leaving out "
+         "lowers its z the most, then the next on the records left: "
+      << numberText("%g", 100 * options.influentialShare)
+      << " % of the records, at least one). It is not added: what these records show is about them, not about "
+         "the population. Look at these images (and their reference values).\n";
     for (const RecordFinding &c : s.carried) {
         f << "\n`" << c.candidate << "` (form `" << c.form << "`, "
           << (c.round == 1 ? std::string("on the residual as the model reads it")
@@ -313,8 +314,8 @@ void writeCarried(std::ostream &f, const LoopSummary &s)
           << "): z " << f4(c.z, "%.1f") << " with every record, " << f4(c.zWithout, "%.1f") << " without "
           << (c.records.size() == 1 ? "this one" : "these") << " (the family's critical z " << f4(c.zFamily, "%.1f")
           << ", a single comparison's " << f4(c.zNeeded, "%.1f") << "); k-fold gain " << f4(c.gain, "%.5f")
-          << " with every record, " << f4(c.gainWithout, "%.5f") << " without.\n\n| record | residual | " << c.candidate
-          << " | far from the other records (diagnostics) | flags |\n|---|---|---|---|---|\n";
+          << " with every record, " << f4(c.gainWithout, "%.5f") << " without.\n\n| record | residual left | "
+          << c.candidate << " | far from the other records (diagnostics) | flags |\n|---|---|---|---|---|\n";
         for (const CarryingRecord &r : c.records) {
             std::string far;
             for (const auto &[name, value] : r.outlying)
@@ -339,7 +340,7 @@ void writeReportMd(const ReportContext &c, const ResidualSet &set, const LoopSum
     writeRankingTable(f, s.ranking, 15);
     f << "\n(* significant; † significant only through a few records, below; a symptom is a measured quantity, the "
          "rest are recorded conditions)\n";
-    writeCarried(f, s);
+    writeCarried(f, c.options, s);
     f << "\n## Plots\n\n";
     for (const std::string &p : plots) f << "![" << p << "](" << p << ")\n\n";
 }
