@@ -108,8 +108,8 @@ struct RankedCandidate {
     std::vector<std::string> sameResidual;
     // The influence check (loop_influence.h) on a candidate significant over the family: the
     // records whose leaving out lowers its z the most (indices into the round's records), and
-    // its z and k-fold figures without them. carried: not significant without them, so not
-    // significant here: these records carry it, not the population.
+    // its z and k-fold figures without them. carried: its z falls below a single comparison's
+    // without them, so it is not significant here: these records carry it, not the population.
     std::vector<size_t> influential;
     double zWithout = 0, gainWithout = 0, cvRmsAfterWithout = 0;
     bool carried = false;
@@ -130,7 +130,7 @@ struct RankingOptions {
     double alpha = 0.01;           // family-wise, Bonferroni over the candidates and forms
     double minRelativeGain = 0.05; // a chosen effect must cut the CV RMS by at least 5 %
     // The influence check leaves out this share of the records (at least one), the most
-    // influential first, and a candidate must stay significant without them.
+    // influential first; a candidate's z must stay above a single comparison's without them.
     double influentialShare = 0.02;
 };
 
