@@ -830,9 +830,9 @@ bool slopesDiffer(const Candidate &c, const std::vector<double> &y, const std::v
 // regression in that value significant on its own. Its linear forms and the form `fe` are
 // checked; a grouping's or a drift's physical form is fitted elsewhere, and a level of fewer
 // than three records is not fitted there. A slope in one material is not checked: it is
-// fitted on that material's records alone (ten or so of 60), where the record at the fastest
-// speed always carries much of a true slope (on the hidden-effect sets the check turned down a
-// true speed within one material, z 4.0, 1.8 without its fastest record).
+// fitted on that material's records alone (10–20 of 60), where a record at either end of its
+// speeds can carry much of a true slope (on the hidden-effect sets the check turned down a
+// true speed within one material, z 4.0, 1.8 without one of its slowest records).
 void checkCarried(const Candidate &c, const std::vector<double> &y, const std::vector<int> &fold, int folds,
                   const std::vector<Form> &formList, const std::map<std::string, std::vector<double>> *physicalForms,
                   const FormScore &f, const RankingOptions &opt, RankedCandidate *r)
