@@ -23,6 +23,7 @@ struct LoopRecord {
     double uSens = 0;      // dμ/du: μ's change per mm of u
     double reduction = -1; // 1 - h_final/h0 when recorded, else -1
     double muOffset = 0;   // a correction in μ the loop applied (a process variable's regression)
+    std::string flags;     // the pipeline's flags, ';'-separated (what is odd about the image)
     bool usable = false;   // measured and with a reference
 };
 
@@ -105,6 +106,13 @@ struct RankedCandidate {
     // with either taken out the other is not significant. These records cannot say which it
     // is; they are not added after it.
     std::vector<std::string> sameResidual;
+    // The influence check (loop_influence.h) on a candidate significant over the family: the
+    // records whose leaving out lowers its z the most (indices into the round's records), and
+    // its z and k-fold figures without them. carried: its z falls below a single comparison's
+    // without them, so it is not significant here: these records carry it, not the population.
+    std::vector<size_t> influential;
+    double zWithout = 0, gainWithout = 0, cvRmsAfterWithout = 0;
+    bool carried = false;
 };
 
 // A candidate's physical form fitted outside the ranking: held-out errors per record under it
@@ -121,6 +129,9 @@ struct RankingOptions {
     uint32_t seed = 1;
     double alpha = 0.01;           // family-wise, Bonferroni over the candidates and forms
     double minRelativeGain = 0.05; // a chosen effect must cut the CV RMS by at least 5 %
+    // The influence check leaves out this share of the records (at least one), the most
+    // influential first; a candidate's z must stay above a single comparison's without them.
+    double influentialShare = 0.02;
 };
 
 // The test of a single comparison: a gain, z above the one-sided α quantile, and the minimum

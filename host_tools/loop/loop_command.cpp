@@ -16,6 +16,7 @@
 #include "host_tools/fe/reduction_slope.h"
 #include "host_tools/image_file.h"
 #include "host_tools/loop/journal_records.h"
+#include "host_tools/loop/loop_fit.h"
 #include "host_tools/loop/loop_physics_report.h"
 #include "host_tools/loop/loop_records.h"
 #include "host_tools/loop/loop_report.h"
@@ -357,6 +358,42 @@ const Candidate *candidateNamed(const ResidualSet &set, const std::string &name)
     return nullptr;
 }
 
+// The candidates a round turned down as carried by a few records, with those records (a
+// candidate turned down in several rounds is named as the last of them saw it).
+void noteCarried(const ResidualSet &round, const std::vector<RankedCandidate> &ranking, int roundNo,
+                 const RankingOptions &opt, LoopSummary *s)
+{
+    for (const RankedCandidate &r : ranking) {
+        if (!r.carried) continue;
+        RecordFinding f = recordFinding(r, candidateNamed(round, r.name), round.usable, round.residual, roundNo,
+                                        fit::normalUpperQuantile(opt.alpha));
+        const auto it = std::find_if(s->carried.begin(), s->carried.end(),
+                                     [&](const RecordFinding &o) { return o.candidate == r.name; });
+        if (it == s->carried.end())
+            s->carried.push_back(std::move(f));
+        else
+            *it = std::move(f);
+    }
+}
+
+// The best candidate a round left, for why the loop stopped: its z against the family's, and
+// where it is carried by a few records, its z without them.
+std::string bestLeft(const ResidualSet &round, const std::vector<RankedCandidate> &ranking)
+{
+    if (ranking.empty()) return "";
+    const RankedCandidate &b = ranking.front();
+    std::string s =
+        " (best left: " + b.name + ", z " + f4(b.z, "%.1f") + " against the family's " + f4(b.zFamily, "%.1f");
+    if (b.carried) {
+        std::string ids;
+        for (size_t i : b.influential)
+            if (i < round.usable.size()) ids += (ids.empty() ? "" : ", ") + round.usable[i].id;
+        s += ", " + f4(b.zWithout, "%.1f") + " without " + ids + ": carried by " +
+             (b.influential.size() == 1 ? "that record" : "those records");
+    }
+    return s + ")";
+}
+
 // What an added effect takes out of later rounds: itself, every name of the reduction when
 // it is the reduction (one cause), and the conditions it cannot be told from; the
 // reduction carried physically stays (below).
@@ -584,13 +621,10 @@ void addFurtherEffects(const FrictionModel &model, const fe::ReductionSlope *slo
             rankRound(model, slope, all, taken, carried, first.fold, first.folds, opt, &round);
         lookPastAMaskingEffect(model, slope, round, taken, carried, opt, &ranking);
         weighRivals(model, slope, round, taken, carried, opt, &ranking);
+        noteCarried(round, ranking, int(s->effects.size()) + 1, opt, s);
         if (ranking.empty() || !ranking.front().significant) {
             s->lastRanking = ranking;
-            s->stopped =
-                "no further candidate is significant" +
-                (ranking.empty() ? std::string()
-                                 : " (best left: " + ranking.front().name + ", z " + f4(ranking.front().z, "%.1f") +
-                                       " against the family's " + f4(ranking.front().zFamily, "%.1f") + ")");
+            s->stopped = "no further candidate is significant" + bestLeft(round, ranking);
             return;
         }
         const RankedCandidate &next = ranking.front();
@@ -733,6 +767,7 @@ LoopSummary runLoopOn(const Manifest &manifest, const std::string &source,
         rankCandidates(set.candidates, set.residual, opt, &set.scaleSens, &set.uSens, &physicalForms, &fittedForms);
     lookPastAMaskingEffect(*model, slopeLoaded ? &slope : nullptr, set, {}, false, opt, &s.ranking);
     weighRivals(*model, slopeLoaded ? &slope : nullptr, set, {}, false, opt, &s.ranking);
+    noteCarried(set, s.ranking, 1, opt, &s);
     s.cvRmsOffset = offsetCvRms(set.residual, set.fold, set.folds);
     s.cvRmsAfter = s.rmsBefore;
     if (!s.ranking.empty() && s.ranking.front().significant) {
@@ -758,7 +793,7 @@ LoopSummary runLoopOn(const Manifest &manifest, const std::string &source,
         correctReduction(*model, slope, &set, &s);
     }
     if (s.chosen.empty()) {
-        s.stopped = "no candidate is significant";
+        s.stopped = "no candidate is significant" + bestLeft(set, s.ranking);
     } else {
         LoopEffectStep first = readEffect(*model, set, s.ranking.front(), s.physical);
         first.cvRmsBefore = s.rmsBefore;
@@ -838,6 +873,12 @@ int loopCommand(const std::vector<std::string> &args)
               << "chosen " << (s.chosen.empty() ? "(none)" : s.chosen) << "\n"
               << "rms_after " << f4(s.cvRmsAfter) << (s.physical ? " (physical FE du/dr correction)" : "") << "\n";
     loop::printPhysical(std::cout, s);
+    for (const loop::RecordFinding &f : s.carried) {
+        std::cout << "carried_by " << f.candidate << " z " << f4(f.z, "%.1f") << " -> " << f4(f.zWithout, "%.1f")
+                  << " without";
+        for (const loop::CarryingRecord &r : f.records) std::cout << " " << loop::describe(r, f.candidate);
+        std::cout << "\n";
+    }
     if (s.physical)
         std::cout << "fe_slope_scale " << f4(s.slopeScale, "%.3f") << " cv_rms_scaled " << f4(s.cvRmsPhysicalScaled)
                   << "\n";

@@ -5,6 +5,7 @@
 #include "host_tools/loop/journal_records.h"
 #include "host_tools/loop/loop_analysis.h"
 #include "host_tools/loop/loop_effects.h"
+#include "host_tools/loop/loop_influence.h"
 #include "host_tools/loop/loop_physics.h"
 
 namespace icacam::host {
@@ -42,6 +43,9 @@ struct LoopSummary {
     LinearEffect linear;   // reading "process"
     DriftFit drift;        // reading "drift"
     JournalJoin journal;   // runJournalLoop: what the join found
+    // Candidates significant over the family only through a few records (the influence check,
+    // loop_influence.h), from every round the loop ranked: not added; the records are named.
+    std::vector<RecordFinding> carried;
 };
 
 // Runs the whole analysis on a manifest and writes the report folder. feSweeps: the FE sweep

@@ -91,6 +91,8 @@ bool readLoopRecord(const ManifestRow &row, const Manifest &manifest, RecordMeas
     } else {
         keepDiagnostics(m, r);
     }
+    for (int bit = 0; bit < kFlagCount; ++bit)
+        if (m.flags & (1u << bit)) r->flags += (r->flags.empty() ? "" : ";") + std::string(flagName(bit));
     r->muModel = m.declared.mu;
     r->scaleSens = m.declared.dMuDu * r->uMm;
     r->uSens = m.declared.dMuDu;

@@ -42,19 +42,53 @@ std::string pathIn(const ReportContext &c, const std::string &name)
     return (fs::path(c.dir) / name).string();
 }
 
-void writeRankingCsv(const ReportContext &c, const LoopSummary &s)
+// The rankings of every round: the first on the residual as the model reads it, then the
+// round that added each further effect, then the round that added nothing.
+std::vector<const std::vector<RankedCandidate> *> rounds(const LoopSummary &s)
+{
+    std::vector<const std::vector<RankedCandidate> *> out{&s.ranking};
+    for (size_t i = 1; i < s.effects.size(); ++i) out.push_back(&s.effects[i].ranking);
+    auto same = [](const std::vector<RankedCandidate> &a, const std::vector<RankedCandidate> &b) {
+        if (a.size() != b.size()) return false;
+        for (size_t k = 0; k < a.size(); ++k)
+            if (a[k].name != b[k].name || a[k].z != b[k].z) return false;
+        return true;
+    };
+    if (!s.lastRanking.empty() && !same(s.lastRanking, *out.back())) out.push_back(&s.lastRanking);
+    return out;
+}
+
+// The ids of a candidate's most influential records, ';'-separated.
+std::string influentialIds(const RankedCandidate &r, const ResidualSet &set)
+{
+    std::string ids;
+    for (size_t i : r.influential)
+        if (i < set.usable.size()) ids += (ids.empty() ? "" : ";") + set.usable[i].id;
+    return ids;
+}
+
+void writeRankingCsv(const ReportContext &c, const ResidualSet &set, const LoopSummary &s)
 {
     std::ofstream f(pathIn(c, "ranking.csv"));
-    f << "rank,candidate,kind,form,cv_rms_before,cv_rms_after,gain,z,correlation,chosen,symptom\n";
-    int k = 0;
-    for (const RankedCandidate &r : s.ranking)
-        f << ++k << "," << r.name << "," << r.kind << "," << r.form << "," << f4(r.cvRmsBefore, "%.5f") << ","
-          << f4(r.cvRmsAfter, "%.5f") << "," << f4(r.gain, "%.5f") << "," << f4(r.z, "%.2f") << ","
-          << f4(r.correlation, "%.3f") << ","
-          << (r.name == s.chosen ? "yes"
-              : r.significant    ? "significant"
-                                 : "no")
-          << "," << (r.symptom ? "yes" : "no") << "\n";
+    f << "rank,candidate,kind,form,cv_rms_before,cv_rms_after,gain,z,correlation,chosen,symptom,round,"
+         "influential,z_without,carried\n";
+    const std::vector<const std::vector<RankedCandidate> *> all = rounds(s);
+    for (size_t round = 0; round < all.size(); ++round) {
+        // The candidate a round added: the first effect, then each further one in its round.
+        const std::string added = round < s.effects.size() ? s.effects[round].name : "";
+        int k = 0;
+        for (const RankedCandidate &r : *all[round]) {
+            ++k;
+            f << k << "," << r.name << "," << r.kind << "," << r.form << "," << f4(r.cvRmsBefore, "%.5f") << ","
+              << f4(r.cvRmsAfter, "%.5f") << "," << f4(r.gain, "%.5f") << "," << f4(r.z, "%.2f") << ","
+              << f4(r.correlation, "%.3f") << ","
+              << (k == 1 && !added.empty() && (r.name == added || r.name == s.effects[round].via) ? "yes"
+                  : r.significant                                                                 ? "significant"
+                                                                                                  : "no")
+              << "," << (r.symptom ? "yes" : "no") << "," << round + 1 << "," << influentialIds(r, set) << ","
+              << (r.influential.empty() ? "" : f4(r.zWithout, "%.2f")) << "," << (r.carried ? "yes" : "no") << "\n";
+        }
+    }
 }
 
 // Per record; corrected: the physical form fitted on every record.
@@ -201,9 +235,12 @@ void writeRankingTable(std::ostream &f, const std::vector<RankedCandidate> &rank
          "|---|---|---|---|---|---|---|---|---|\n";
     for (size_t k = 0; k < ranking.size() && k < rows; ++k) {
         const RankedCandidate &r = ranking[k];
-        f << "| " << k + 1 << " | " << r.name << (r.significant ? " *" : "") << " | " << r.kind
-          << (r.symptom ? " (symptom)" : "") << " | " << r.form << " | " << f4(r.cvRmsBefore) << " | "
-          << f4(r.cvRmsAfter) << " | " << f4(r.gain, "%.5f") << " | " << f4(r.z, "%.1f") << " | "
+        f << "| " << k + 1 << " | " << r.name
+          << (r.significant ? " *"
+              : r.carried   ? " †"
+                            : "")
+          << " | " << r.kind << (r.symptom ? " (symptom)" : "") << " | " << r.form << " | " << f4(r.cvRmsBefore)
+          << " | " << f4(r.cvRmsAfter) << " | " << f4(r.gain, "%.5f") << " | " << f4(r.z, "%.1f") << " | "
           << f4(r.correlation, "%.2f") << " |\n";
     }
 }
@@ -257,6 +294,38 @@ void writeChosenEffect(std::ostream &f, const ReportContext &c, const ResidualSe
     }
 }
 
+// The candidates significant only through a few records, with those records: a finding
+// about the images, not about the population.
+void writeCarried(std::ostream &f, const RankingOptions &options, const LoopSummary &s)
+{
+    if (s.carried.empty()) return;
+    f << "\n## Records that carry an effect\n\n"
+         "Each candidate below is significant over the family with every record, and its z falls below even a "
+         "single comparison's critical z without its most influential records (the record whose leaving out "
+         "lowers its z the most, then the next on the records left: "
+      << numberText("%g", 100 * options.influentialShare)
+      << " % of the records, at least one). It is not added: what these records show is about them, not about "
+         "the population. Look at these images (and their reference values).\n";
+    for (const RecordFinding &c : s.carried) {
+        f << "\n`" << c.candidate << "` (form `" << c.form << "`, "
+          << (c.round == 1 ? std::string("on the residual as the model reads it")
+                           : "on the residual the first " + std::to_string(c.round - 1) + " effect" +
+                                 (c.round > 2 ? "s" : "") + " left")
+          << "): z " << f4(c.z, "%.1f") << " with every record, " << f4(c.zWithout, "%.1f") << " without "
+          << (c.records.size() == 1 ? "this one" : "these") << " (the family's critical z " << f4(c.zFamily, "%.1f")
+          << ", a single comparison's " << f4(c.zNeeded, "%.1f") << "); k-fold gain " << f4(c.gain, "%.5f")
+          << " with every record, " << f4(c.gainWithout, "%.5f") << " without.\n\n| record | residual left | "
+          << c.candidate << " | far from the other records (diagnostics) | flags |\n|---|---|---|---|---|\n";
+        for (const CarryingRecord &r : c.records) {
+            std::string far;
+            for (const auto &[name, value] : r.outlying)
+                if (name != c.candidate) far += (far.empty() ? "" : ", ") + name + " " + f4(value, "%.4g");
+            f << "| " << r.id << " | " << f4(r.residual, "%+.4f") << " | " << (r.value.empty() ? "—" : r.value) << " | "
+              << (far.empty() ? "—" : far) << " | " << (r.flags.empty() ? "—" : r.flags) << " |\n";
+        }
+    }
+}
+
 void writeReportMd(const ReportContext &c, const ResidualSet &set, const LoopSummary &s,
                    const std::vector<std::string> &plots)
 {
@@ -269,7 +338,10 @@ void writeReportMd(const ReportContext &c, const ResidualSet &set, const LoopSum
     writeChosenEffect(f, c, set, s);
     f << "\n## Ranking (best first; full list in ranking.csv)\n";
     writeRankingTable(f, s.ranking, 15);
-    f << "\n(* significant; a symptom is a measured quantity, the rest are recorded conditions)\n\n## Plots\n\n";
+    f << "\n(* significant; † significant only through a few records, below; a symptom is a measured quantity, the "
+         "rest are recorded conditions)\n";
+    writeCarried(f, c.options, s);
+    f << "\n## Plots\n\n";
     for (const std::string &p : plots) f << "![" << p << "](" << p << ")\n\n";
 }
 
@@ -278,7 +350,7 @@ void writeReportMd(const ReportContext &c, const ResidualSet &set, const LoopSum
 void writeLoopReport(const ReportContext &context, const ResidualSet &set, const LoopSummary &s)
 {
     writePhysicalCsv(pathIn(context, "physical.csv"), s);
-    writeRankingCsv(context, s);
+    writeRankingCsv(context, set, s);
     writeRecordsCsv(context, set, s);
     std::vector<std::string> plots = plotLeadingCandidates(context, set, s);
     plots.push_back(plotBeforeAfter(context, set, s));
