@@ -26,14 +26,8 @@ public:
     // Measures the end face in one frame: its geometry in pixels, or an error. The result's
     // point arrays stay valid until the next call.
     EndFaceGeometry measure(const LumaView &frame, const FaceSearch &search);
-    // The same from a given coarse centre instead of the locator's (startX, startY, pixels):
-    // what a measurement makes of a start a few pixels off, for tests and benches.
-    EndFaceGeometry measureFrom(const LumaView &frame, const FaceSearch &search, double startX, double startY);
 
 private:
-    // Checks the frame and the search; r0Px: the initial radius in pixels.
-    ErrorCode checkInputs(const LumaView &v, const FaceSearch &search, double *r0Px) const;
-    EndFaceGeometry measureAbout(const LumaView &v, double r0Px, double startX, double startY);
     bool refineCentre(const LumaView &v, double r0Px, double *cx, double *cy);
 
     int maxWidth_ = 0, maxHeight_ = 0;
