@@ -319,9 +319,7 @@ SilhouetteObservation observeSilhouette(const FaceInMm &face, double coverage, d
                                         const SpecimenSpec &spec, const AssumedReduction &r, double mu0, double d0OverW)
 {
     SilhouetteObservation o;
-    // An outline the rays see on fewer than half their number (or that only the mean profile
-    // shows) was not found: the view is one without a silhouette.
-    if (!(rMaxPx > 0) || coverage < kSilhouetteMinCoverage) {
+    if (!(rMaxPx > 0)) {
         o.flags = kFlagNoSilhouette;
         return o;
     }
@@ -341,15 +339,17 @@ SilhouetteObservation observeSilhouette(const FaceInMm &face, double coverage, d
     const friction::RadiiCheck up = friction::checkRadii(rMaxAsFe, n, mu0, spec.d0Mm, r.r + 0.01, spec.h0Mm, false);
     const friction::RadiiCheck down = friction::checkRadii(rMaxAsFe, n, mu0, spec.d0Mm, r.r - 0.01, spec.h0Mm, false);
     const double overContact = face.rMaxMm / face.rOuterMm;
-    o.usable = rc.valid && up.valid && down.valid && overContact > kSilhouetteOverContactMin &&
-               overContact < kSilhouetteOverContactMax;
+    o.usable = rc.valid && up.valid && down.valid && coverage >= kSilhouetteMinCoverage &&
+               overContact > kSilhouetteOverContactMin && overContact < kSilhouetteOverContactMax;
     if (o.usable) {
         o.d = std::log(rMaxAsFe / rc.rMaxFeMm);
         o.dContact = std::log(kSilhouetteOverContactMin * face.rOuterMm / rc.rMaxFeMm);
         o.beta = std::log(up.rMaxFeMm / down.rMaxFeMm) / 0.02;
         o.usable = o.beta > 0.1;
     }
-    if (!o.usable) o.flags |= kFlagSilhouetteUnreliable;
+    // An outline the rays see on fewer than half their number (or that only the mean profile
+    // shows) was not found: the view is one without a silhouette, its reduction reported only.
+    if (!o.usable) o.flags |= coverage < kSilhouetteMinCoverage ? kFlagNoSilhouette : kFlagSilhouetteUnreliable;
     return o;
 }
 
