@@ -26,9 +26,10 @@ void readFace(const SpecimenSpec &spec, const friction::FrictionModel &model, co
 {
     const MuFunction F(spec, model);
     const double u = out->face.uMm, n = spec.n;
-    ScaleAndReduction sr;
-    sr.pk = scaleRelSigma * scaleRelSigma;
-    sr.pr = assumed.sigma * assumed.sigma;
+    ScaleAndReduction declared;
+    declared.pk = scaleRelSigma * scaleRelSigma;
+    declared.pr = assumed.sigma * assumed.sigma;
+    ScaleAndReduction sr = declared;
     Explanations why;
     bool explained = false;
     if (silhouette) {
@@ -65,7 +66,7 @@ void readFace(const SpecimenSpec &spec, const friction::FrictionModel &model, co
     // undeclared range, the advice says so); a finding where they could move μ beyond the
     // tolerance, not where μ barely depends on them.
     if ((f & kFlagNoSilhouette) && !assumed.declared && !calibrated &&
-        !uncheckedViewMatters(F, spec, scaleRelSigma, u, out->mu))
+        !uncheckedViewMatters(F, spec, declared, u, out->mu))
         f &= ~kFlagNoSilhouette;
     decideStatus(spec, f | rangeChecks(model, read, assumed), out);
 }

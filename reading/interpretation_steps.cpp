@@ -127,20 +127,29 @@ ScaleAndReduction declaredPosterior(ScaleAndReduction sr, const SilhouetteObserv
 // Without one: three explanations of the silhouette's discrepancy, four in an oblique view
 // (kNominalReductionSigma, kForeshortenMean), and a wrong edge (kMisreadPrior): each one's
 // posterior, weighted by its prior and how well it predicts d, and their mixture's moments.
+// Each explanation's prior on (δk, δr) before the silhouette, from the declared one.
+void explanationPriors(const ScaleAndReduction &declared, ScaleAndReduction prior[Explanations::kCount])
+{
+    using E = Explanations;
+    prior[E::OtherHeight] = declared;
+    prior[E::ScaleOff] = ScaleAndReduction{};
+    prior[E::ScaleOff].dk = kFixtureScaleMean;
+    prior[E::ScaleOff].pk = kFixtureScaleSigma * kFixtureScaleSigma;
+    prior[E::ScaleOff].pr = kNominalReductionSigma * kNominalReductionSigma;
+    prior[E::Nominal] = ScaleAndReduction{};
+    prior[E::Nominal].pk = declared.pk;
+    prior[E::Nominal].pr = kNominalReductionSigma * kNominalReductionSigma;
+    prior[E::Foreshortened] = prior[E::Nominal];
+    prior[E::WrongEdge] = declared; // the silhouette tells nothing
+}
+
 ScaleAndReduction mixturePosterior(const ScaleAndReduction &declared, const SilhouetteObservation &o, double se2,
                                    bool oblique, uint32_t *flags, Explanations *why)
 {
     using E = Explanations;
     const double d = o.d, beta = o.beta;
     ScaleAndReduction prior[E::kCount];
-    prior[E::OtherHeight] = declared;
-    prior[E::ScaleOff].dk = kFixtureScaleMean;
-    prior[E::ScaleOff].pk = kFixtureScaleSigma * kFixtureScaleSigma;
-    prior[E::ScaleOff].pr = kNominalReductionSigma * kNominalReductionSigma;
-    prior[E::Nominal].pk = declared.pk;
-    prior[E::Nominal].pr = kNominalReductionSigma * kNominalReductionSigma;
-    prior[E::Foreshortened] = prior[E::Nominal];
-    prior[E::WrongEdge] = declared; // the silhouette tells nothing
+    explanationPriors(declared, prior);
     const double offset[E::kCount] = {0, 0, 0, kForeshortenMean, 0};
     const double offsetVar[E::kCount] = {0, 0, 0, kForeshortenSigma * kForeshortenSigma, 0};
     const double alpha[E::kCount] = {1, kSilhouetteScaleShare, 1, 1, 1};
@@ -402,18 +411,12 @@ uint32_t nominalCheck(const MuFunction &F, const SpecimenSpec &spec, double u, d
     return lead == E::ScaleOff ? uint32_t(kFlagScaleSuspect) : uint32_t(kFlagReductionNotNominal);
 }
 
-bool uncheckedViewMatters(const MuFunction &F, const SpecimenSpec &spec, double scaleRelSigma, double uMm, double mu)
+bool uncheckedViewMatters(const MuFunction &F, const SpecimenSpec &spec, const ScaleAndReduction &declared, double uMm,
+                          double mu)
 {
     using E = Explanations;
     Explanations prior;
-    const double pk = scaleRelSigma * scaleRelSigma;
-    prior.post[E::OtherHeight].pk = pk;
-    prior.post[E::OtherHeight].pr = kUndeclaredReductionSigma * kUndeclaredReductionSigma;
-    prior.post[E::ScaleOff].dk = kFixtureScaleMean;
-    prior.post[E::ScaleOff].pk = kFixtureScaleSigma * kFixtureScaleSigma;
-    prior.post[E::ScaleOff].pr = kNominalReductionSigma * kNominalReductionSigma;
-    prior.post[E::Nominal].pk = pk;
-    prior.post[E::Nominal].pr = kNominalReductionSigma * kNominalReductionSigma;
+    explanationPriors(declared, prior.post);
     for (int h : {E::OtherHeight, E::ScaleOff, E::Nominal}) prior.weight[h] = 1.0 / 3;
     double nominalMu = 0;
     return nominalCheck(F, spec, uMm, mu, &prior, &nominalMu) != 0;

@@ -132,7 +132,9 @@ uint32_t nominalCheck(const MuFunction &F, const SpecimenSpec &spec, double uDec
 // height; another height over the undeclared range; a scale measured on the fixture). True
 // where they leave more than the nominal check's chance that μ lies beyond the tolerance:
 // then no_silhouette is a finding; where μ barely depends on them it is not.
-bool uncheckedViewMatters(const MuFunction &F, const SpecimenSpec &spec, double scaleRelSigma, double uMm, double mu);
+// declared: the declared scale's and reduction's prior (as silhouettePosterior takes it).
+bool uncheckedViewMatters(const MuFunction &F, const SpecimenSpec &spec, const ScaleAndReduction &declared, double uMm,
+                          double mu);
 
 // μ at the corrected u and reduction; bias: the carry to 50 % a model that does not carry
 // itself leaves out (budgeted).

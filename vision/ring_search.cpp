@@ -581,8 +581,9 @@ bool RingSearch::silhouetteOnRay(const uint16_t *row, int lo, int hi, int w, int
     // take its tail for an outline at the window's start (at a 2 px step and h = 4, a
     // window 0.04 R0 outside the contact edge reads 4 px inside it).
     auto across = [&](int j, int h) {
-        const int from = std::max(j - h, barrelFrom);
-        const int32_t inside = (prefix[j] - prefix[from]) * h / (j - from);
+        const int from = std::max(j - h, barrelFrom), n = j - from;
+        const int32_t sum = prefix[j] - prefix[from];
+        const int32_t inside = n == h ? sum : sum * h / n; // a division only where clipped
         return (prefix[j + 1 + h] - prefix[j + 1]) - inside;
     };
     auto stepAt = [&](int j) { return across(j, w); };
