@@ -17,6 +17,12 @@ namespace icacam::friction {
 // n, μ and the reduction are held at the table's ends.
 double outlineRatioAt(double n, double mu, double reduction, double d0OverW);
 
+// How far the outline's centre is drawn towards the optical axis, per unit of the end face's
+// own distance from the axis, at (n, μ, reduction) from d0OverW (0 at a telecentric view): the
+// side below the end face is seen from farther away, so nearer the axis. An image of an end
+// face off the axis measures it, and with it the working distance.
+double outlineShiftAt(double n, double mu, double reduction, double d0OverW);
+
 // The table's own relative error (the FE side's shape, its mesh).
 double outlineRatioRelSigma();
 

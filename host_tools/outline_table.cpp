@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <numbers>
 #include <stdexcept>
 
 #include "friction/radii_consistency.h"
@@ -41,6 +42,32 @@ double outlineRatio(const photo::BarrelShape &shape, double rOuter, double rMax,
     return best / rMax;
 }
 
+// An end face X off the optical axis: the side z below it lies at X·W/(W + z) from the axis,
+// nearer than the face's centre, so the outline's centre is drawn towards the axis. In
+// direction φ (from the axis outwards at 0) the outline reaches max over z of
+// r(z)·k(z) − X·(1 − k(z))·cos φ, k = W/(W + z) (the farthest of the circles each height
+// projects to); its first harmonic is the shift. Per unit X, at X 3 mm (the shift is within
+// about 2 % of that over 0.5–10 mm: the band the outline comes from moves little with X).
+constexpr double kShiftAtMm = 3.0;
+constexpr int kShiftAngles = 180;
+double outlineShift(const photo::BarrelShape &shape, double rOuter, double rMax, double h, double x)
+{
+    if (!(x > 0)) return 0;
+    double first = 0;
+    for (int a = 0; a < kShiftAngles; ++a) {
+        const double c = std::cos(2 * std::numbers::pi * (a + 0.5) / kShiftAngles);
+        double best = -1e9;
+        for (size_t k = 0; k < shape.s.size(); ++k) {
+            const double r = rOuter + shape.s[k] * (rMax - rOuter);
+            const double z = h / 2 * (1 - shape.zeta[k]);
+            const double kz = 1 / (1 + x * z / kD0Mm);
+            best = std::max(best, r * kz - kShiftAtMm * (1 - kz) * c);
+        }
+        first += best * c;
+    }
+    return -first * 2 / kShiftAngles / kShiftAtMm;
+}
+
 } // namespace
 
 std::string outlineTableText(const std::string &profilesPath, const std::string &sourceDir, std::string *summary)
@@ -52,7 +79,7 @@ std::string outlineTableText(const std::string &profilesPath, const std::string 
             return std::fabs(p.n - n) < 1e-6 && std::fabs(p.mu - mu) < 1e-6 && std::fabs(p.reduction - r) < 1e-6;
         });
     };
-    std::string body;
+    std::string body, shiftBody;
     char b[160];
     // The ratio as the bench renders the side: the profile's shape scaled onto the FE base's
     // R_o and R_max; and as this coarse mesh alone gives it (its own radii). Their difference
@@ -61,8 +88,10 @@ std::string outlineTableText(const std::string &profilesPath, const std::string 
     int compared = 0, copied = 0;
     for (double r : rs) {
         body += "    {\n";
+        shiftBody += "    {\n";
         for (double n : ns) {
             body += "        {\n";
+            shiftBody += "        {\n";
             for (double mu : mus) {
                 // A snapshot the run did not reach takes the nearest reduction's shape.
                 double rShape = r;
@@ -90,12 +119,16 @@ std::string outlineTableText(const std::string &profilesPath, const std::string 
                 if (!(useRm > useRo && useRo > 0)) throw std::runtime_error("outline table: no radii at a grid point");
                 const double h = kH0Mm * (1 - r);
                 body += "            {";
+                shiftBody += "            {";
                 for (int i = 0; i < kXCount; ++i) {
                     const double x = i * kXStep;
                     std::snprintf(b, sizeof b, "%s%.5f", i ? ", " : "", outlineRatio(shape, useRo, useRm, h, x));
                     body += b;
+                    std::snprintf(b, sizeof b, "%s%.5f", i ? ", " : "", outlineShift(shape, useRo, useRm, h, x));
+                    shiftBody += b;
                 }
                 body += "},\n";
+                shiftBody += "},\n";
                 if (base && own != table.end()) {
                     const double x = kD0Mm / 60; // a camera 60 mm away
                     const double d =
@@ -104,8 +137,10 @@ std::string outlineTableText(const std::string &profilesPath, const std::string 
                 }
             }
             body += "        },\n";
+            shiftBody += "        },\n";
         }
         body += "    },\n";
+        shiftBody += "    },\n";
     }
     const double rms = compared ? std::sqrt(sumSq / compared) : 0;
     std::string o;
@@ -153,6 +188,9 @@ std::string outlineTableText(const std::string &profilesPath, const std::string 
     o += b;
     o += "// [reduction][n][μ][D0/W]: outline / R_max\n";
     o += "inline constexpr double kRatio[kRCount][kNCount][kMuCount][kXCount] = {\n" + body + "};\n";
+    o += "// [reduction][n][μ][D0/W]: how far the outline's centre is drawn towards the optical axis,\n"
+         "// per unit of the end face's own distance from it (first harmonic, at 3 mm off the axis)\n";
+    o += "inline constexpr double kShift[kRCount][kNCount][kMuCount][kXCount] = {\n" + shiftBody + "};\n";
     o += "} // namespace icacam::friction::outline_table\n";
     std::snprintf(b, sizeof b, "outline/R_max over %zu x %zu x %zu x %d, the shape's error %.4f (RMS)", rs.size(),
                   ns.size(), mus.size(), kXCount, rms);

@@ -123,11 +123,12 @@ Reading interpret(const EndFaceGeometry &g, const SpecimenSpec &spec, const visi
     // unchecked, which U (the undeclared reduction's range, the tilt term) and the advice
     // carry; a straight view without one stays no_silhouette.
     const bool outlineHiddenByView = !(g.rMaxPx > 0) && (g.imageFlags & vision::kImageBarrelOblique);
+    const CameraDistance camera = cameraDistance(spec, g, oblique);
     SilhouetteObservation obs;
     const SilhouetteObservation *silhouette = nullptr;
     auto observeAt = [&](double mu) {
-        obs = observeSilhouette(p.face, g.silhouetteCoverage, g.silhouetteScatterPx, g.rMaxPx, spec, assumed, mu,
-                                declaredD0OverW(spec));
+        obs =
+            observeSilhouette(p.face, g.silhouetteCoverage, g.silhouetteScatterPx, g.rMaxPx, spec, assumed, mu, camera);
         // Where the outline cannot be told from the fixture's shadow beyond it, the radius
         // taken may be either: it neither rescales nor says another height, and the reading
         // is that of a view without a silhouette (the height unchecked, U covering 45–55 %; the
@@ -167,7 +168,7 @@ Reading interpret(const FaceInMm &face, const SpecimenSpec &spec, const friction
     const double silhouetteSigma = std::hypot(friction::kFeRMaxRelSigma, friction::measuredRMaxRelSigma(0));
     SilhouetteObservation obs;
     auto readAt = [&](double mu) {
-        obs = observeSilhouette(out.face, 1, 0, face.rMaxMm, spec, assumed, mu, declaredD0OverW(spec));
+        obs = observeSilhouette(out.face, 1, 0, face.rMaxMm, spec, assumed, mu, declaredCameraDistance(spec));
         readFace(spec, model, assumed, spec.tolerances.scaleRel, 0, &obs, silhouetteSigma, false, false, 0, &out);
     };
     readAt(F.at(out.face.uMm, assumed.r, spec.n));

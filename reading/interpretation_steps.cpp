@@ -6,6 +6,7 @@
 
 #include "friction/outline_ratio.h"
 #include "friction/radii_consistency.h"
+#include "vision/ray_capacity.h"
 
 namespace icacam::reading {
 
@@ -67,6 +68,21 @@ constexpr double kMisreadMinInside = 0.03;
 // photographs, and a specimen pressed to 47 % would pass for one at half height seen from
 // 100 mm.
 constexpr double kWorkingDistanceRelSigma = 0.05;
+// The image's own word on W (CameraDistance): the perspective share s (the outline's centre
+// drawn towards the optical axis per unit of the end face's distance from it) weighed on
+// kShareSteps cells up to kShareMax (the FE's barrel seen from 40 mm: 0.03–0.07), a
+// telecentric view (a telecentric lens, a far camera, a drawing) half the prior. The
+// centres' error per axis: their fits' and a floor of 0.4 px (the development set's
+// telecentric drawings: the outline's centre lies 0.3–0.7 px off the end face's along and
+// across the axis where the rays agree; on the photographic bench the pipeline's outline
+// centre lies within 0.1–0.4 px of the rendered one). The optical axis: the frame's centre
+// to 1 % of its size (a lens seated on a sensor). A centre misread on some rays: 3 %,
+// 5 px or 5 % of the distance from the axis.
+constexpr int kShareSteps = 35, kReachSteps = 10;
+constexpr double kShareMax = 0.07;
+constexpr double kTelecentricPrior = 0.5, kCloseCameraEvidence = 0.05;
+constexpr double kShiftFloorPx = 0.4, kAxisRelSigma = 0.01, kShiftOutlierSigmas = 3;
+constexpr double kMisreadShift = 0.03, kMisreadShiftPx = 5, kMisreadShiftRel = 0.05;
 // The nominal conditions' check: a reading is ok while the silhouette's explanations leave
 // less than a 15 % chance that μ lies beyond the tolerance (and the finding names the
 // weightiest explanation other than the nominal height with at least 5 % of the weight).
@@ -304,7 +320,9 @@ ModelEstimate MuFunction::estimate(double u, double r, double n) const
     return model_.correctsReduction() ? model_.estimate(in) : carry_.estimate(in);
 }
 
-OutlineView outlineView(double n, double mu, double reduction, double d0OverW)
+namespace {
+
+OutlineView declaredView(double n, double mu, double reduction, double d0OverW)
 {
     OutlineView v;
     auto lnRatio = [&](double x) { return std::log(friction::outlineRatioAt(n, mu, reduction, x)); };
@@ -319,13 +337,122 @@ OutlineView outlineView(double n, double mu, double reduction, double d0OverW)
     return v;
 }
 
-double declaredD0OverW(const SpecimenSpec &spec)
+// The FE's barrel at the perspective share s (the outline's centre shift per unit of the end
+// face's distance from the axis): the outline over R_max is (1 − s)·c, the side seen at the
+// depth z0 where it reaches farthest (k = W/(W + z0) = 1 − s) and c = r(z0)/R_max. c from the
+// table at the D0/W whose shift is s (0.98–0.995 over the FE's grid); a barrel flatter about
+// its widest section than the FE's (a parametric barrel, a worn die) reaches R_max nearer the
+// end face, so c lies between the FE's and 1, uniform.
+struct BarrelReach {
+    double mean = 1, var = 0;
+};
+BarrelReach barrelReach(double n, double mu, double reduction, double s)
 {
-    return spec.workingDistanceMm > 0 ? spec.d0Mm / spec.workingDistanceMm : 0;
+    BarrelReach c;
+    if (!(s > 0)) return c;
+    const double xMax = friction::outlineD0OverWMax();
+    double x = xMax, prev = 0;
+    for (int j = 1; j <= kReachSteps; ++j) {
+        const double xj = xMax * j / kReachSteps, sj = friction::outlineShiftAt(n, mu, reduction, xj);
+        if (sj >= s) {
+            x = xj - xMax / kReachSteps * (sj - s) / std::max(1e-9, sj - prev);
+            break;
+        }
+        prev = sj;
+    }
+    const double fe =
+        friction::outlineRatioAt(n, mu, reduction, x) / (1 - friction::outlineShiftAt(n, mu, reduction, x));
+    const double lo = std::min(fe, 1.0);
+    c.mean = 0.5 * (lo + 1);
+    c.var = (1 - lo) * (1 - lo) / 12;
+    return c;
+}
+
+// The outline's centre shift weighs the perspective share s: a telecentric view (s 0, half the
+// prior) or a camera anywhere from far to about 40 mm (s up to kShareMax, uniform). Under each,
+// the shift is s times the end face's distance from the axis, with the centres' error and the
+// axis's (scaled by s); a centre misread by a highlight or a shadow on some rays fits none of
+// them, and a broad term keeps it from deciding. The view's part of d is then the posterior's
+// mean of ln((1 − s)·c), its variance their spread and c's own.
+OutlineView imagedView(double n, double mu, double reduction, const CameraDistance &c)
+{
+    const double off = std::hypot(c.offAxisX, c.offAxisY);
+    double wSum = 0, m1 = 0, m2 = 0, reachVar = 0, telecentric = 0;
+    for (int j = 0; j <= kShareSteps; ++j) {
+        const double share = kShareMax * j / kShareSteps;
+        const double prior = j == 0 ? kTelecentricPrior : (1 - kTelecentricPrior) / kShareSteps;
+        const double ex = c.shiftX + share * c.offAxisX, ey = c.shiftY + share * c.offAxisY;
+        const double var = c.shiftSigmaPx * c.shiftSigmaPx + share * share * c.axisSigmaPx * c.axisSigmaPx;
+        const double wide = var + kMisreadShiftPx * kMisreadShiftPx + kMisreadShiftRel * kMisreadShiftRel * off * off;
+        const double e2 = ex * ex + ey * ey;
+        const double like =
+            (1 - kMisreadShift) * std::exp(-0.5 * e2 / var) / var + kMisreadShift * std::exp(-0.5 * e2 / wide) / wide;
+        const double w = prior * like;
+        const BarrelReach reach = barrelReach(n, mu, reduction, share);
+        const double ln = std::log((1 - share) * reach.mean);
+        wSum += w, m1 += w * ln, m2 += w * ln * ln, reachVar += w * reach.var;
+        if (j == 0) telecentric = w;
+    }
+    OutlineView v;
+    // Only an image that says the camera is close is read so. Where the shift cannot tell (an
+    // end face near the axis), the view stays the telecentric one, as where nothing is known:
+    // its outline then reads as another height and the finding names working_distance_mm.
+    // (Weighed over the prior instead, W would spread d over 2 %, and the height would go
+    // unchecked on every such view, drawings and photographs alike.)
+    if (!(wSum > 0) || telecentric / wSum > kCloseCameraEvidence) return v;
+    v.offset = m1 / wSum;
+    v.var = std::max(0.0, m2 / wSum - v.offset * v.offset) + reachVar / wSum;
+    return v;
+}
+
+} // namespace
+
+OutlineView outlineView(double n, double mu, double reduction, const CameraDistance &camera)
+{
+    return camera.fromImage && !(camera.d0OverW > 0) ? imagedView(n, mu, reduction, camera)
+                                                     : declaredView(n, mu, reduction, camera.d0OverW);
+}
+
+CameraDistance declaredCameraDistance(const SpecimenSpec &spec)
+{
+    CameraDistance c;
+    c.d0OverW = spec.workingDistanceMm > 0 ? spec.d0Mm / spec.workingDistanceMm : 0;
+    return c;
+}
+
+CameraDistance cameraDistance(const SpecimenSpec &spec, const EndFaceGeometry &g, bool oblique)
+{
+    CameraDistance c = declaredCameraDistance(spec);
+    // A tilted view draws the outline off the end face's centre by its own geometry: there
+    // the foreshortened explanation speaks for the view (silhouettePosterior).
+    if (c.d0OverW > 0 || oblique || !(g.silhouetteCoverage > 0) || g.frameWidth <= 0 || g.frameHeight <= 0) return c;
+    c.fromImage = true;
+    c.offAxisX = g.outer.centreX - 0.5 * (g.frameWidth - 1);
+    c.offAxisY = g.outer.centreY - 0.5 * (g.frameHeight - 1);
+    c.shiftX = g.silhouetteCentreX - g.outer.centreX;
+    c.shiftY = g.silhouetteCentreY - g.outer.centreY;
+    // A first harmonic's error from n points of scatter σ is σ·√(2/n).
+    const double rays = std::max(1.0, g.silhouetteCoverage * vision::kCoarseRays);
+    c.shiftSigmaPx = std::hypot(kShiftFloorPx, g.silhouetteScatterPx * std::sqrt(2 / rays));
+    c.axisSigmaPx = kAxisRelSigma * std::max(g.frameWidth, g.frameHeight);
+    // A straight camera draws the outline towards the axis and nowhere else. A shift across
+    // that line, away from the axis or beyond the closest camera's share is some other view's
+    // (a tilt the boundaries do not show, a misread outline): the image then says nothing of
+    // W, and the view is taken as telecentric, as where it says nothing at all.
+    const double off = std::hypot(c.offAxisX, c.offAxisY);
+    const double along = off > 0 ? -(c.shiftX * c.offAxisX + c.shiftY * c.offAxisY) / off : 0;
+    const double across = off > 0 ? (c.shiftX * c.offAxisY - c.shiftY * c.offAxisX) / off : 0;
+    const double sigma = std::hypot(c.shiftSigmaPx, kShareMax * c.axisSigmaPx);
+    if (std::fabs(across) > kShiftOutlierSigmas * sigma || along < -kShiftOutlierSigmas * sigma ||
+        along > kShareMax * off + kShiftOutlierSigmas * sigma) {
+        return declaredCameraDistance(spec);
+    }
+    return c;
 }
 
 SilhouetteObservation observeSilhouette(const FaceInMm &face, double coverage, double scatterPx, double rMaxPx,
-                                        const SpecimenSpec &spec, const AssumedReduction &r, double mu0, double d0OverW)
+                                        const SpecimenSpec &spec, const AssumedReduction &r, double mu0,
+                                        const CameraDistance &camera)
 {
     SilhouetteObservation o;
     if (!(rMaxPx > 0)) {
@@ -333,7 +460,7 @@ SilhouetteObservation observeSilhouette(const FaceInMm &face, double coverage, d
         return o;
     }
     const double n = spec.n;
-    o.view = outlineView(n, mu0, r.r, d0OverW);
+    o.view = outlineView(n, mu0, r.r, camera);
     // The silhouette on the FE's terms (friction::kFeRMaxOverSpecimen).
     const double rMaxAsFe = face.rMaxMm * (1 + friction::kFeRMaxOverSpecimen);
     o.measuredRelSigma = friction::measuredRMaxRelSigma(coverage > 0 ? scatterPx / rMaxPx : 0);

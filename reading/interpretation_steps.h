@@ -78,12 +78,30 @@ struct ScaleAndReduction {
 // reduction, β = ∂ln R_max,FE/∂r, and whether it is usable as an observation of scale and
 // reduction. flags: scale_suspect, radii_inconsistent, silhouette_unreliable, no_silhouette.
 // The view's own part of d: ln(outline / R_max) of a camera at working distance W
-// (friction/outline_ratio.h) and its variance (the table's and W's 5 %). d0OverW: D0/W of
-// a declared working distance; 0 (telecentric) where none is declared.
+// (friction/outline_ratio.h) and its variance.
 struct OutlineView {
     double offset = 0, var = 0;
 };
-OutlineView outlineView(double n, double mu, double reduction, double d0OverW);
+// What the instrument knows of the camera's distance to the end face. Declared: D0/W, to W's
+// 5 %. Otherwise what the image says: a close camera sees the side below the end face from
+// farther away, so an end face off the optical axis has its outline's centre drawn towards
+// the axis (friction::outlineShiftAt); the shift against the end face's distance from the
+// axis weighs that share from a telecentric view (half the prior) to a camera at 40 mm (the
+// other half), and where it says the camera is close the outline is read as that camera's.
+// Neither (no silhouette centre, an oblique view, a shift no straight camera makes, an end
+// face too near the axis to tell): telecentric.
+struct CameraDistance {
+    double d0OverW = 0;                // declared D0/W; 0 where none is declared
+    bool fromImage = false;            // weigh D0/W by the outline's centre shift
+    double offAxisX = 0, offAxisY = 0; // the end face's centre less the optical axis (px)
+    double shiftX = 0, shiftY = 0;     // the outline's centre less the end face's (px)
+    double shiftSigmaPx = 0;           // the two centres' own error, per axis
+    double axisSigmaPx = 0;            // where the optical axis lies, per axis
+};
+OutlineView outlineView(double n, double mu, double reduction, const CameraDistance &camera);
+// D0/W of the spec's declared working distance, or (none declared, an uncalibrated straight
+// view with a per-ray silhouette) the image's outline centre against its end face's.
+CameraDistance cameraDistance(const SpecimenSpec &spec, const vision::EndFaceGeometry &g, bool oblique);
 
 struct SilhouetteObservation {
     bool usable = false;
@@ -96,12 +114,12 @@ struct SilhouetteObservation {
     uint32_t flags = 0;
 };
 // coverage, scatterPx: the silhouette's per-ray fit (coverage 1 and scatter 0 for a radius
-// given as a number). d0OverW: as outlineView.
+// given as a number). camera: as outlineView.
 SilhouetteObservation observeSilhouette(const FaceInMm &face, double coverage, double scatterPx, double rMaxPx,
                                         const SpecimenSpec &spec, const AssumedReduction &r, double mu0,
-                                        double d0OverW);
-// D0/W of the spec's declared working distance, or 0 (telecentric) where none is declared.
-double declaredD0OverW(const SpecimenSpec &spec);
+                                        const CameraDistance &camera);
+// The spec's declared working distance alone (radii given as numbers: no image to say more).
+CameraDistance declaredCameraDistance(const SpecimenSpec &spec);
 
 // The silhouette's explanations of its discrepancy where no final height is declared
 // (interpretation.h): each one's posterior of scale and reduction and its weight.

@@ -104,6 +104,8 @@ bool EndFaceAnalyzer::refineCentre(const LumaView &v, double r0Px, double *cx, d
 EndFaceGeometry EndFaceAnalyzer::measure(const LumaView &v, const FaceSearch &face)
 {
     EndFaceGeometry m;
+    m.frameWidth = v.width;
+    m.frameHeight = v.height;
     auto fail = [&m](ErrorCode c) {
         m.error = c;
         return m;

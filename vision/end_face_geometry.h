@@ -83,6 +83,12 @@ struct EndFaceGeometry {
     // the mean profile named it).
     double silhouetteCoverage = 0;
     double silhouetteScatterPx = 0;
+    // That fit's centre (pixels; 0 with no per-ray fit). A close camera sees the barrel's side
+    // below the end face from farther away: an end face off the optical axis has its outline's
+    // centre drawn towards the axis, by as much as the view's perspective shrinks the outline.
+    double silhouetteCentreX = 0, silhouetteCentreY = 0;
+    // The frame measured (pixels): where its optical axis lies when no calibration says.
+    int frameWidth = 0, frameHeight = 0;
 
     // Edge points of each boundary (one per ray, valid or not) for overlays and tests; they
     // stay valid until the analyzer's next measure().

@@ -664,11 +664,11 @@ bool RingSearch::barrelBandLopsided(const double *radius, const bool *valid, con
     return !(sol[0] > 0) || std::hypot(sol[1], sol[2]) > 0.5 * sol[0];
 }
 
-double RingSearch::silhouetteFromRays(const double *outerR, double blurPx, double *coverage, double *scatterPx,
-                                      bool *lopsided)
+double RingSearch::silhouetteFromRays(const double *outerR, double blurPx, EndFaceGeometry *m, bool *lopsided)
 {
-    *coverage = 0;
-    *scatterPx = 0;
+    m->silhouetteCoverage = 0;
+    m->silhouetteScatterPx = 0;
+    m->silhouetteCentreX = m->silhouetteCentreY = 0;
     *lopsided = false;
     constexpr int kCoarse = kCoarseRays;
     const double rA = kCoarseStart * r0, rB = kCoarseEnd * r0;
@@ -711,8 +711,10 @@ double RingSearch::silhouetteFromRays(const double *outerR, double blurPx, doubl
     opt.maxHarmonics = 2;
     opt.minRejectPx = 2.0;
     if (!fitBoundary(radius, valid, kCoarse, coarseCx_, coarseCy_, opt, &fit) || fit.coverage < 0.4) return 0;
-    *coverage = fit.coverage;
-    *scatterPx = fit.scatterPx;
+    m->silhouetteCoverage = fit.coverage;
+    m->silhouetteScatterPx = fit.scatterPx;
+    m->silhouetteCentreX = fit.centreX;
+    m->silhouetteCentreY = fit.centreY;
     return fit.rEqPx;
 }
 
@@ -1036,8 +1038,7 @@ ErrorCode RingSearch::ringAbout(const MeanEdges &me, EndFaceGeometry *m)
     // The silhouette per coarse ray refines the mean profile's estimate (the mean profile
     // blurs a weak barrel/background step and can name a highlight's flank instead).
     bool lopsided = false;
-    const double perRay = silhouetteFromRays(outerR, edgeWidth >= 0 ? edgeWidth : kUnknownBlurPx,
-                                             &m->silhouetteCoverage, &m->silhouetteScatterPx, &lopsided);
+    const double perRay = silhouetteFromRays(outerR, edgeWidth >= 0 ? edgeWidth : kUnknownBlurPx, m, &lopsided);
     m->rMaxPx = perRay > 0 ? perRay : lopsided ? 0 : me.rMax;
     if (lopsided) m->imageFlags |= kImageBarrelOblique;
     if (m->rMaxPx > 0 && outlineRivalled(m->rMaxPx)) m->imageFlags |= kImageOutlineAmbiguous;

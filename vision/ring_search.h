@@ -95,8 +95,8 @@ struct RingSearch {
     void sampleWindow(const double *start, double step, int count, int boxHalf, EndFaceGeometry *m);
     // Silhouette R_max from the coarse rays, outside the fitted contact edge; 0 if unclear
     // (lopsided: the barrel is seen obliquely, so no silhouette is a circle about the axis).
-    // coverage and scatterPx: the per-ray fit's.
-    double silhouetteFromRays(const double *outerR, double blurPx, double *coverage, double *scatterPx, bool *lopsided);
+    // The per-ray fit's coverage, scatter and centre go to m.
+    double silhouetteFromRays(const double *outerR, double blurPx, EndFaceGeometry *m, bool *lopsided);
     // One coarse ray's silhouette between samples lo and hi: the outermost clear step of a
     // detector w samples a side, located by one a quarter as wide (*atSample: its sample
     // position, sub-sample); false when no step stands out of the ray's noise. The detector's

@@ -64,3 +64,28 @@ TEST(OutlineRatio, ACloseCameraSeesTheOutlineThreeToSevenPerCentInside)
     EXPECT_GT(friction::outlineRatioRelSigma(), 0);
     EXPECT_LT(friction::outlineRatioRelSigma(), 0.01);
 }
+
+// The outline's centre is drawn towards the optical axis by the share of the end face's
+// distance from it that the side's depth takes off: none for a telecentric view, more the
+// closer the camera. Over the grid the outline is (1 − share)·c with c = r(z0)/R_max the
+// radius the side reaches at that depth: between the contact edge's share and R_max itself.
+TEST(OutlineShift, GrowsAsTheCameraComesCloserAndMatchesTheOutlinesDepth)
+{
+    EXPECT_DOUBLE_EQ(friction::outlineShiftAt(0.25, 0.15, 0.5, 0), 0.0);
+    const double at95 = friction::outlineShiftAt(0.25, 0.15, 0.5, 10.0 / 95);
+    const double at45 = friction::outlineShiftAt(0.25, 0.15, 0.5, 10.0 / 45);
+    EXPECT_GT(at95, 0.02);
+    EXPECT_LT(at95, at45);
+    EXPECT_LT(at45, 0.07);
+    for (int ir = 0; ir < t::kRCount; ++ir)
+        for (int in = 0; in < t::kNCount; ++in)
+            for (int im = 0; im < t::kMuCount; ++im)
+                for (int ix = 1; ix < t::kXCount; ++ix) {
+                    const double x = t::kX[ix], r = t::kR[ir], n = t::kN[in], mu = t::kMu[im];
+                    const double share = friction::outlineShiftAt(n, mu, r, x);
+                    const double c = friction::outlineRatioAt(n, mu, r, x) / (1 - share);
+                    EXPECT_GT(share, 0) << r << " " << n << " " << mu << " " << x;
+                    EXPECT_GT(c, 0.95) << r << " " << n << " " << mu << " " << x;
+                    EXPECT_LE(c, 1.0 + 1e-9) << r << " " << n << " " << mu << " " << x;
+                }
+}

@@ -133,13 +133,13 @@ TEST(SilhouetteObservation, NoneFoundAFittingOneAndOneOutsideTheBarrel)
     const SpecimenSpec s = spec();
     const AssumedReduction r = assumedReduction(s);
     FaceInMm face{5.0, 6.0, 0, 1.0};
-    EXPECT_EQ(observeSilhouette(face, 1, 0, 0, s, r, 0.15, 0).flags, uint32_t(kFlagNoSilhouette));
+    EXPECT_EQ(observeSilhouette(face, 1, 0, 0, s, r, 0.15, CameraDistance{}).flags, uint32_t(kFlagNoSilhouette));
     face.rMaxMm = 6.6;
-    const SilhouetteObservation fits = observeSilhouette(face, 1, 0, 330, s, r, 0.15, 0);
+    const SilhouetteObservation fits = observeSilhouette(face, 1, 0, 330, s, r, 0.15, CameraDistance{});
     EXPECT_TRUE(fits.usable);
     EXPECT_GT(fits.beta, 0.1) << "a further pressed barrel is wider";
     face.rMaxMm = 6.01; // hugging the contact edge: a highlight's flank, not the barrel
-    const SilhouetteObservation flank = observeSilhouette(face, 1, 0, 300.5, s, r, 0.15, 0);
+    const SilhouetteObservation flank = observeSilhouette(face, 1, 0, 300.5, s, r, 0.15, CameraDistance{});
     EXPECT_FALSE(flank.usable);
     EXPECT_TRUE(flank.flags & kFlagSilhouetteUnreliable);
 }

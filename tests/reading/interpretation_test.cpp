@@ -82,6 +82,44 @@ TEST(Interpretation, TheDeclaredWorkingDistanceTakesTheCloseCamerasOutlineForHal
     EXPECT_TRUE(atRMax.flags & kNominalFinding);
 }
 
+// Undeclared, the working distance is what the image says: an end face off the optical axis
+// has its outline's centre drawn towards the axis by the share the side's depth takes off
+// (friction::outlineShiftAt). The close camera's outline, so drawn, is the nominal half
+// height; the same outline with its centre on the end face's (a telecentric view) is a
+// specimen pressed less far; a shift across the axis is no straight camera's, and the image
+// then says nothing of W.
+TEST(Interpretation, TheOutlinesCentreShiftTellsACloseCamerasOutlineFromAnotherHeight)
+{
+    const double w = 55, x = 10.0 / w;
+    const double share = outlineShiftAt(kN, kMu, 0.5, x);
+    EndFaceGeometry g = face(outlineRatioAt(kN, kMu, 0.5, x), false);
+    g.frameWidth = 1456, g.frameHeight = 1088;
+    const double axisX = 0.5 * (g.frameWidth - 1), axisY = 0.5 * (g.frameHeight - 1);
+    const double offX = 220, offY = -90; // the end face's centre from the axis, px
+    for (BoundaryFit *b : {&g.inner, &g.outer}) b->centreX = axisX + offX, b->centreY = axisY + offY;
+    g.centreX = g.outer.centreX, g.centreY = g.outer.centreY;
+    g.silhouetteScatterPx = 0.5;
+    g.silhouetteCentreX = g.outer.centreX - share * offX;
+    g.silhouetteCentreY = g.outer.centreY - share * offY;
+    const Reading close = interpret(g);
+    ASSERT_EQ(close.status, Status::Ok) << close.flags;
+    EXPECT_NEAR(close.reduction, 0.5, 0.003);
+    EXPECT_NEAR(close.scaleFactor, 1, 0.005);
+
+    EndFaceGeometry centred = g;
+    centred.silhouetteCentreX = g.outer.centreX, centred.silhouetteCentreY = g.outer.centreY;
+    const Reading telecentric = interpret(centred);
+    EXPECT_TRUE(telecentric.flags & kNominalFinding) << telecentric.flags;
+    EXPECT_LT(telecentric.reduction, 0.49);
+
+    EndFaceGeometry across = g; // the same shift turned a quarter round: no straight camera's
+    across.silhouetteCentreX = g.outer.centreX + share * offY;
+    across.silhouetteCentreY = g.outer.centreY - share * offX;
+    const Reading skew = interpret(across);
+    EXPECT_TRUE(skew.flags & kNominalFinding) << skew.flags;
+    EXPECT_NEAR(skew.reduction, telecentric.reduction, 1e-9);
+}
+
 // Where the outline cannot be told from the fixture's shadow the silhouette neither moves the
 // reading nor says another height: the height goes unchecked, its U covers 45–55 %, and the
 // declared scale goes unchecked too (no_silhouette), as in any view without a silhouette.
