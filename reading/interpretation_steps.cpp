@@ -60,13 +60,12 @@ constexpr double kMisreadPrior = 0.02;
 constexpr double kMisreadMinInside = 0.03;
 // The outline a camera sees lies inside R_max (friction/outline_ratio.h), by a known amount
 // where the working distance is declared (to 5 %: a ruler from the lens to the end face).
-// Where it is not, the view is taken as telecentric (the silhouette at R_max, as a drawn
-// image or a long lens shows it): a close camera's outline then reads as another height
-// (reduction_not_nominal, whose words name working_distance_mm). W unknown over 40 mm … ∞
-// would spread the view's part of d over 8 %, more than the undeclared reduction's own
-// (± 3 %): the silhouette would then check the height no longer, on drawn views as on
-// photographs, and a specimen pressed to 47 % would pass for one at half height seen from
-// 100 mm.
+// Where it is not, the image's outline centre weighs it (below); where that cannot tell (an
+// end face on the axis) a telecentric and a close view both stay open, each explanation is
+// weighed under both, and the silhouette checks the height only as far as they agree. Taken as telecentric
+// throughout, a close camera's outline would read as a specimen pressed less far, and a
+// specimen pressed further seen from a close camera would pass for one at half height (a
+// rendered one at 52.9 % reads 49.3 %, ok and 0.032 high, that way).
 constexpr double kWorkingDistanceRelSigma = 0.05;
 // The image's own word on W (CameraDistance): the perspective share s (the outline's centre
 // drawn towards the optical axis per unit of the end face's distance from it) weighed on
@@ -80,7 +79,7 @@ constexpr double kWorkingDistanceRelSigma = 0.05;
 // 5 px or 5 % of the distance from the axis.
 constexpr int kShareSteps = 35, kReachSteps = 10;
 constexpr double kShareMax = 0.07;
-constexpr double kTelecentricPrior = 0.5, kCloseCameraEvidence = 0.05;
+constexpr double kTelecentricPrior = 0.5, kMinViewWeight = 0.001;
 constexpr double kShiftFloorPx = 0.4, kAxisRelSigma = 0.01, kShiftOutlierSigmas = 3;
 constexpr double kMisreadShift = 0.03, kMisreadShiftPx = 5, kMisreadShiftRel = 0.05;
 // The nominal conditions' check: a reading is ok while the silhouette's explanations leave
@@ -128,9 +127,9 @@ ScaleAndReduction update(const ScaleAndReduction &prior, double d, double beta, 
 // With a declared final height: one update (the view's part of d taken off, its spread
 // kept), or past 3 σ neither declared value corrected and each widened to explain the whole
 // discrepancy alone.
-ScaleAndReduction declaredPosterior(ScaleAndReduction sr, const SilhouetteObservation &o, double se2)
+ScaleAndReduction declaredPosteriorInView(ScaleAndReduction sr, const SilhouetteObservation &o, double se2, int c)
 {
-    const double d = o.d - o.view.offset, ve = se2 + o.view.var;
+    const double d = o.d - o.view.offset[c], ve = se2 + o.view.var[c];
     const double S = sr.pk + o.beta * o.beta * sr.pr + ve;
     if (d * d / S > kContradictionChi2) {
         sr.pk = std::max(sr.pk, d * d);
@@ -138,6 +137,39 @@ ScaleAndReduction declaredPosterior(ScaleAndReduction sr, const SilhouetteObserv
         return sr;
     }
     return update(sr, d, o.beta, ve);
+}
+
+// The posteriors of several views (or of one explanation under several), each weighed: their
+// mixture's moments.
+ScaleAndReduction mixtureOf(const ScaleAndReduction *post, const double *weight, int count)
+{
+    double wSum = 0;
+    for (int i = 0; i < count; ++i) wSum += weight[i];
+    if (!(wSum > 0)) return post[0];
+    ScaleAndReduction m;
+    for (int i = 0; i < count; ++i) {
+        m.dk += weight[i] / wSum * post[i].dk;
+        m.dr += weight[i] / wSum * post[i].dr;
+    }
+    for (int i = 0; i < count; ++i) {
+        const double w = weight[i] / wSum, gk = post[i].dk - m.dk, gr = post[i].dr - m.dr;
+        m.pk += w * (post[i].pk + gk * gk);
+        m.pr += w * (post[i].pr + gr * gr);
+        m.pkr += w * (post[i].pkr + gk * gr);
+    }
+    return m;
+}
+
+ScaleAndReduction declaredPosterior(const ScaleAndReduction &sr, const SilhouetteObservation &o, double se2)
+{
+    ScaleAndReduction post[OutlineView::kMax];
+    double weight[OutlineView::kMax];
+    for (int c = 0; c < o.view.count; ++c) {
+        post[c] = declaredPosteriorInView(sr, o, se2, c);
+        const double d = o.d - o.view.offset[c], S = sr.pk + o.beta * o.beta * sr.pr + se2 + o.view.var[c];
+        weight[c] = o.view.weight[c] * std::exp(-0.5 * d * d / S) / std::sqrt(S);
+    }
+    return mixtureOf(post, weight, o.view.count);
 }
 
 // Without one: three explanations of the silhouette's discrepancy, four in an oblique view
@@ -173,21 +205,34 @@ ScaleAndReduction mixturePosterior(const ScaleAndReduction &declared, const Silh
     E e;
     double wSum = 0;
     for (int h = 0; h < E::WrongEdge; ++h) {
-        // The camera's part of d added to the explanation's own.
-        const double off = offset[h] + o.view.offset, offVar = offsetVar[h] + o.view.var;
-        const double S = alpha[h] * alpha[h] * prior[h].pk + beta * beta * prior[h].pr + se2 + offVar;
-        const double v = d - off - alpha[h] * prior[h].dk;
-        // Densities up to the common 1/√(2π).
-        e.weight[h] =
-            h != E::Foreshortened || oblique ? gaussianPrior * std::exp(-0.5 * v * v / S) / std::sqrt(S) : 0.0;
+        // The camera's part of d added to the explanation's own, in each view the image
+        // leaves open; the explanation's posterior is their mixture.
+        ScaleAndReduction post[OutlineView::kMax];
+        double weight[OutlineView::kMax];
+        e.weight[h] = 0;
+        for (int c = 0; c < o.view.count; ++c) {
+            const double off = offset[h] + o.view.offset[c], offVar = offsetVar[h] + o.view.var[c];
+            const double S = alpha[h] * alpha[h] * prior[h].pk + beta * beta * prior[h].pr + se2 + offVar;
+            const double v = d - off - alpha[h] * prior[h].dk;
+            // Densities up to the common 1/√(2π).
+            weight[c] = h != E::Foreshortened || oblique
+                            ? gaussianPrior * o.view.weight[c] * std::exp(-0.5 * v * v / S) / std::sqrt(S)
+                            : 0.0;
+            post[c] = update(prior[h], d, beta, se2, off, offVar, alpha[h]);
+            e.weight[h] += weight[c];
+        }
         wSum += e.weight[h];
-        e.post[h] = update(prior[h], d, beta, se2, off, offVar, alpha[h]);
+        e.post[h] = mixtureOf(post, weight, o.view.count);
     }
     // A wrong edge lies inside the outline the camera sees.
-    const double dSeen = d - o.view.offset;
     const double misreadSpan = -kMisreadMinInside - o.dContact;
-    const bool misreadPossible = misreadSpan > 0 && dSeen >= o.dContact && dSeen <= -kMisreadMinInside;
-    e.weight[E::WrongEdge] = misreadPossible ? kMisreadPrior * std::sqrt(2 * std::numbers::pi) / misreadSpan : 0.0;
+    e.weight[E::WrongEdge] = 0;
+    for (int c = 0; c < o.view.count; ++c) {
+        const double dSeen = d - o.view.offset[c];
+        const bool misreadPossible = misreadSpan > 0 && dSeen >= o.dContact && dSeen <= -kMisreadMinInside;
+        if (misreadPossible)
+            e.weight[E::WrongEdge] += o.view.weight[c] * kMisreadPrior * std::sqrt(2 * std::numbers::pi) / misreadSpan;
+    }
     wSum += e.weight[E::WrongEdge];
     e.post[E::WrongEdge] = prior[E::WrongEdge];
     ScaleAndReduction sr;
@@ -327,12 +372,12 @@ OutlineView declaredView(double n, double mu, double reduction, double d0OverW)
     OutlineView v;
     auto lnRatio = [&](double x) { return std::log(friction::outlineRatioAt(n, mu, reduction, x)); };
     const double table = friction::outlineRatioRelSigma();
-    v.offset = lnRatio(d0OverW);
+    v.offset[0] = lnRatio(d0OverW);
     if (d0OverW > 0) { // a telecentric view's outline is R_max itself
-        v.var = table * table;
+        v.var[0] = table * table;
         const double dx = d0OverW * kWorkingDistanceRelSigma;
         const double slope = (lnRatio(d0OverW + dx) - lnRatio(d0OverW - dx)) / (2 * dx);
-        v.var += slope * slope * dx * dx;
+        v.var[0] += slope * slope * dx * dx;
     }
     return v;
 }
@@ -372,12 +417,13 @@ BarrelReach barrelReach(double n, double mu, double reduction, double s)
 // prior) or a camera anywhere from far to about 40 mm (s up to kShareMax, uniform). Under each,
 // the shift is s times the end face's distance from the axis, with the centres' error and the
 // axis's (scaled by s); a centre misread by a highlight or a shadow on some rays fits none of
-// them, and a broad term keeps it from deciding. The view's part of d is then the posterior's
-// mean of ln((1 − s)·c), its variance their spread and c's own.
+// them, and a broad term keeps it from deciding. Two views come out: the telecentric one with
+// its posterior weight, and the close camera's, ln((1 − s)·c) averaged over the cells with
+// s > 0, its variance their spread and c's. A view under 0.1 % of the weight is left out.
 OutlineView imagedView(double n, double mu, double reduction, const CameraDistance &c)
 {
     const double off = std::hypot(c.offAxisX, c.offAxisY);
-    double wSum = 0, m1 = 0, m2 = 0, reachVar = 0, telecentric = 0;
+    double w0 = 0, wSum = 0, m1 = 0, m2 = 0, reachVar = 0;
     for (int j = 0; j <= kShareSteps; ++j) {
         const double share = kShareMax * j / kShareSteps;
         const double prior = j == 0 ? kTelecentricPrior : (1 - kTelecentricPrior) / kShareSteps;
@@ -388,20 +434,25 @@ OutlineView imagedView(double n, double mu, double reduction, const CameraDistan
         const double like =
             (1 - kMisreadShift) * std::exp(-0.5 * e2 / var) / var + kMisreadShift * std::exp(-0.5 * e2 / wide) / wide;
         const double w = prior * like;
+        if (j == 0) {
+            w0 = w;
+            continue;
+        }
         const BarrelReach reach = barrelReach(n, mu, reduction, share);
         const double ln = std::log((1 - share) * reach.mean);
         wSum += w, m1 += w * ln, m2 += w * ln * ln, reachVar += w * reach.var;
-        if (j == 0) telecentric = w;
     }
     OutlineView v;
-    // Only an image that says the camera is close is read so. Where the shift cannot tell (an
-    // end face near the axis), the view stays the telecentric one, as where nothing is known:
-    // its outline then reads as another height and the finding names working_distance_mm.
-    // (Weighed over the prior instead, W would spread d over 2 %, and the height would go
-    // unchecked on every such view, drawings and photographs alike.)
-    if (!(wSum > 0) || telecentric / wSum > kCloseCameraEvidence) return v;
-    v.offset = m1 / wSum;
-    v.var = std::max(0.0, m2 / wSum - v.offset * v.offset) + reachVar / wSum;
+    const double total = w0 + wSum;
+    if (!(total > 0) || !(wSum > kMinViewWeight * total)) return v; // telecentric
+    const double mean = m1 / wSum, var = std::max(0.0, m2 / wSum - mean * mean) + reachVar / wSum;
+    if (w0 < kMinViewWeight * total) {
+        v.offset[0] = mean, v.var[0] = var;
+        return v;
+    }
+    v.count = 2;
+    v.weight[0] = w0 / total, v.weight[1] = wSum / total;
+    v.offset[1] = mean, v.var[1] = var;
     return v;
 }
 
@@ -436,9 +487,10 @@ CameraDistance cameraDistance(const SpecimenSpec &spec, const EndFaceGeometry &g
     c.shiftSigmaPx = std::hypot(kShiftFloorPx, g.silhouetteScatterPx * std::sqrt(2 / rays));
     c.axisSigmaPx = kAxisRelSigma * std::max(g.frameWidth, g.frameHeight);
     // A straight camera draws the outline towards the axis and nowhere else. A shift across
-    // that line, away from the axis or beyond the closest camera's share is some other view's
-    // (a tilt the boundaries do not show, a misread outline): the image then says nothing of
-    // W, and the view is taken as telecentric, as where it says nothing at all.
+    // that line, away from the axis or beyond the closest camera's share is some other view's:
+    // a tilt the boundaries do not show (the barrel band then swings with the tilt, and the
+    // silhouette's own explanations, a wrong edge among them, speak for it) or a misread
+    // outline. The view is then taken as telecentric, as without a per-ray silhouette.
     const double off = std::hypot(c.offAxisX, c.offAxisY);
     const double along = off > 0 ? -(c.shiftX * c.offAxisX + c.shiftY * c.offAxisY) / off : 0;
     const double across = off > 0 ? (c.shiftX * c.offAxisY - c.shiftY * c.offAxisX) / off : 0;
@@ -464,9 +516,13 @@ SilhouetteObservation observeSilhouette(const FaceInMm &face, double coverage, d
     // The silhouette on the FE's terms (friction::kFeRMaxOverSpecimen).
     const double rMaxAsFe = face.rMaxMm * (1 + friction::kFeRMaxOverSpecimen);
     o.measuredRelSigma = friction::measuredRMaxRelSigma(coverage > 0 ? scatterPx / rMaxPx : 0);
-    // z and the reduction it implies are R_max's: the outline the view sees, scaled back.
-    const friction::RadiiCheck rc = friction::checkRadii(rMaxAsFe * std::exp(-o.view.offset), n, mu0, spec.d0Mm, r.r,
-                                                         spec.h0Mm, true, o.measuredRelSigma);
+    // z and the reduction it implies are R_max's: the outline the view sees, scaled back. Of
+    // two views, the one the image itself favours (the telecentric one where it cannot tell):
+    // a silhouette 4 % small beside a declared height is then a contradiction to report, not
+    // a close camera the image never showed (the posteriors weigh both).
+    const int seen = o.view.count > 1 && o.view.weight[1] > o.view.weight[0] ? 1 : 0;
+    const friction::RadiiCheck rc = friction::checkRadii(rMaxAsFe * std::exp(-o.view.offset[seen]), n, mu0, spec.d0Mm,
+                                                         r.r, spec.h0Mm, true, o.measuredRelSigma);
     o.rMaxZ = rc.z;
     o.reductionEst = rc.reductionEst;
     // Without a declared final height a discrepancy is weighed by its explanations, and

@@ -78,18 +78,22 @@ struct ScaleAndReduction {
 // reduction, β = ∂ln R_max,FE/∂r, and whether it is usable as an observation of scale and
 // reduction. flags: scale_suspect, radii_inconsistent, silhouette_unreliable, no_silhouette.
 // The view's own part of d: ln(outline / R_max) of a camera at working distance W
-// (friction/outline_ratio.h) and its variance.
+// (friction/outline_ratio.h) and its variance. Where the image leaves both open, two views,
+// each with its weight: a telecentric one and a close camera's (the share s weighed by the
+// outline's centre shift); the silhouette's explanations then weigh each against d.
 struct OutlineView {
-    double offset = 0, var = 0;
+    static constexpr int kMax = 2;
+    int count = 1;
+    double weight[kMax] = {1, 0};
+    double offset[kMax] = {0, 0}, var[kMax] = {0, 0};
 };
 // What the instrument knows of the camera's distance to the end face. Declared: D0/W, to W's
 // 5 %. Otherwise what the image says: a close camera sees the side below the end face from
 // farther away, so an end face off the optical axis has its outline's centre drawn towards
 // the axis (friction::outlineShiftAt); the shift against the end face's distance from the
 // axis weighs that share from a telecentric view (half the prior) to a camera at 40 mm (the
-// other half), and where it says the camera is close the outline is read as that camera's.
-// Neither (no silhouette centre, an oblique view, a shift no straight camera makes, an end
-// face too near the axis to tell): telecentric.
+// other half); an end face on the axis leaves the prior's spread. Neither (no silhouette
+// centre, an oblique view, a shift no straight camera makes): telecentric.
 struct CameraDistance {
     double d0OverW = 0;                // declared D0/W; 0 where none is declared
     bool fromImage = false;            // weigh D0/W by the outline's centre shift
