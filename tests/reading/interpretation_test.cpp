@@ -120,6 +120,41 @@ TEST(Interpretation, TheOutlinesCentreShiftTellsACloseCamerasOutlineFromAnotherH
     EXPECT_NEAR(skew.reduction, telecentric.reduction, 0.002);
 }
 
+// An end face on the optical axis shows no shift whatever W is: the close camera's outline is
+// then one of two views the reading weighs, beside another height seen telecentrically. It
+// cannot tell them apart, so its U covers both and, where they part by more than the
+// tolerance, it says so: never a silent wrong reading. Off the axis, the shift decides.
+TEST(Interpretation, AnEndFaceOnTheAxisIsNeverASilentWrongReading)
+{
+    const double w = 55, x = 10.0 / w;
+    const double share = outlineShiftAt(kN, kMu, 0.5, x);
+    auto seenFrom = [&](double offX) {
+        EndFaceGeometry g = face(outlineRatioAt(kN, kMu, 0.5, x), false);
+        g.frameWidth = 1456, g.frameHeight = 1088;
+        const double axisX = 0.5 * (g.frameWidth - 1), axisY = 0.5 * (g.frameHeight - 1);
+        for (BoundaryFit *b : {&g.inner, &g.outer}) b->centreX = axisX + offX, b->centreY = axisY;
+        g.centreX = g.outer.centreX, g.centreY = g.outer.centreY;
+        g.silhouetteScatterPx = 0.5;
+        g.silhouetteCentreX = g.outer.centreX - share * offX, g.silhouetteCentreY = g.outer.centreY;
+        return interpret(g);
+    };
+    const Reading onAxis = seenFrom(3), offAxis = seenFrom(300);
+    // The same face with the working distance declared: what the reading should come to.
+    SpecimenSpec declared;
+    declared.n = kN, declared.mmPerPx = kMmPerPx, declared.workingDistanceMm = w;
+    const Reading truth = reading::interpret(face(outlineRatioAt(kN, kMu, 0.5, x), false), declared, nullptr,
+                                             *frictionModel(kDefaultModel));
+    ASSERT_EQ(offAxis.status, Status::Ok) << offAxis.flags;
+    EXPECT_NEAR(offAxis.mu, truth.mu, 0.002);
+    EXPECT_NEAR(offAxis.reduction, 0.5, 0.003);
+    ASSERT_TRUE(onAxis.hasValue());
+    EXPECT_GT(onAxis.muSigma, offAxis.muSigma);
+    EXPECT_LT(std::fabs(onAxis.mu - truth.mu), 2 * onAxis.muSigma) << "U covers what the image could not tell";
+    if (std::fabs(onAxis.mu - truth.mu) > std::max(0.01, 0.05 * truth.mu)) {
+        EXPECT_TRUE(onAxis.flags & kNominalFinding) << "a wrong reading warns: " << onAxis.flags;
+    }
+}
+
 // Where the outline cannot be told from the fixture's shadow the silhouette neither moves the
 // reading nor says another height: the height goes unchecked, its U covers 45–55 %, and the
 // declared scale goes unchecked too (no_silhouette), as in any view without a silhouette.
