@@ -93,6 +93,8 @@ void adviceLine(const reading::Advice &a, char *line, size_t size)
         std::snprintf(line, size, "h unchecked U->%.4f", a.uThen); // 21 columns
     else if (a.input == AdviceInput::HFinal)
         std::snprintf(line, size, "h_final_mm U->%.4f", a.uThen);
+    else if (a.input == AdviceInput::WorkingDistance)
+        std::snprintf(line, size, "distance U->%.4f", a.uThen); // working_distance_mm
     else
         std::snprintf(line, size, "%s %g U->%.4f", reading::adviceInputName(a.input), a.value, a.uThen);
 }

@@ -32,6 +32,8 @@ void readFace(const SpecimenSpec &spec, const friction::FrictionModel &model, co
     ScaleAndReduction sr = declared;
     Explanations why;
     bool explained = false;
+    ScaleAndReduction withDistance;
+    bool distanceAdvice = false;
     if (silhouette) {
         out->rMaxZ = silhouette->rMaxZ;
         out->reductionEst = silhouette->reductionEst;
@@ -41,6 +43,14 @@ void readFace(const SpecimenSpec &spec, const friction::FrictionModel &model, co
         if (silhouette->usable) {
             sr = silhouettePosterior(sr, *silhouette, silhouetteSigma, assumed.declared, oblique, &f, &why);
             explained = !assumed.declared;
+            // Had the working distance been declared: the close camera's outline, to the table.
+            SilhouetteObservation atDistance = *silhouette;
+            if (declaredDistanceView(silhouette->view, &atDistance.view)) {
+                uint32_t ignored = 0;
+                withDistance =
+                    silhouettePosterior(declared, atDistance, silhouetteSigma, assumed.declared, oblique, &ignored);
+                distanceAdvice = true;
+            }
         }
     }
     const double uF = u * std::exp(-sr.dk), rF = assumed.r + sr.dr;
@@ -53,8 +63,8 @@ void readFace(const SpecimenSpec &spec, const friction::FrictionModel &model, co
     out->mu = read.estimate.mu;
     out->budget = budgetOf(F, model, spec, uF, rF, sr, uSigmaEdgesMm, read.bias);
     out->muSigma = combinedSigma(out->budget);
-    out->advice =
-        adviseInput(F, model, spec, uF, rF, sr, uSigmaEdgesMm, read.bias, assumed.declared, calibrated, scaleRelSigma);
+    out->advice = adviseInput(F, model, spec, uF, rF, sr, uSigmaEdgesMm, read.bias, assumed.declared, calibrated,
+                              scaleRelSigma, distanceAdvice ? &withDistance : nullptr);
     out->advice.reductionUnchecked = !assumed.declared && !explained;
     const ModelEstimate asDeclared = model.estimate({u, n, spec.kMpa, spec.d0Mm, spec.h0Mm, spec.hFinalMm});
     out->declared = {asDeclared.mu, asDeclared.dMuDu};

@@ -443,6 +443,7 @@ OutlineView imagedView(double n, double mu, double reduction, const CameraDistan
         wSum += w, m1 += w * ln, m2 += w * ln * ln, reachVar += w * reach.var;
     }
     OutlineView v;
+    v.estimated = true;
     const double total = w0 + wSum;
     if (!(total > 0) || !(wSum > kMinViewWeight * total)) return v; // telecentric
     const double mean = m1 / wSum, var = std::max(0.0, m2 / wSum - mean * mean) + reachVar / wSum;
@@ -462,6 +463,18 @@ OutlineView outlineView(double n, double mu, double reduction, const CameraDista
 {
     return camera.fromImage && !(camera.d0OverW > 0) ? imagedView(n, mu, reduction, camera)
                                                      : declaredView(n, mu, reduction, camera.d0OverW);
+}
+
+bool declaredDistanceView(const OutlineView &estimated, OutlineView *declared)
+{
+    if (!estimated.estimated) return false;
+    const int close = estimated.count - 1;
+    if (!(estimated.offset[close] < 0)) return false; // the image left only a telecentric view
+    const double table = friction::outlineRatioRelSigma();
+    *declared = OutlineView{};
+    declared->offset[0] = estimated.offset[close];
+    declared->var[0] = table * table;
+    return true;
 }
 
 CameraDistance declaredCameraDistance(const SpecimenSpec &spec)
@@ -670,7 +683,7 @@ uint32_t rangeChecks(const FrictionModel &model, const MuReading &m, const Assum
 
 Advice adviseInput(const MuFunction &F, const FrictionModel &model, const SpecimenSpec &spec, double uF, double rF,
                    const ScaleAndReduction &sr, double uSigmaEdgesMm, double bias, bool declared, bool calibrated,
-                   double scaleRelSigma)
+                   double scaleRelSigma, const ScaleAndReduction *withDistance)
 {
     const double k = spec.tolerance.coverage;
     auto expandedWith = [&](const ScaleAndReduction &what) {
@@ -702,6 +715,8 @@ Advice adviseInput(const MuFunction &F, const FrictionModel &model, const Specim
         closer.pk = std::max(0.0, sr.pk - declaredScaleVar) + kAdvisedScaleRel * kAdvisedScaleRel;
         consider(AdviceInput::ScaleTol, kAdvisedScaleRel, expandedWith(closer));
     }
+    // The camera's working distance, measured once for the set-up.
+    if (withDistance) consider(AdviceInput::WorkingDistance, 0, expandedWith(*withDistance));
     // n from a flow curve fitted over the test's own strain range.
     if (spec.tolerances.n > kAdvisedNTol) {
         SpecimenSpec closer = spec;

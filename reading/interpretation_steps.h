@@ -84,6 +84,7 @@ struct ScaleAndReduction {
 struct OutlineView {
     static constexpr int kMax = 2;
     int count = 1;
+    bool estimated = false; // from the image (no working distance declared)
     double weight[kMax] = {1, 0};
     double offset[kMax] = {0, 0}, var[kMax] = {0, 0};
 };
@@ -103,6 +104,9 @@ struct CameraDistance {
     double axisSigmaPx = 0;            // where the optical axis lies, per axis
 };
 OutlineView outlineView(double n, double mu, double reduction, const CameraDistance &camera);
+// The view had the working distance been declared (the advice): the close camera's outline the
+// image weighed, to the table's own error; false where the view was declared or not weighed.
+bool declaredDistanceView(const OutlineView &estimated, OutlineView *declared);
 // D0/W of the spec's declared working distance, or (none declared, an uncalibrated straight
 // view with a per-ray silhouette) the image's outline centre against its end face's.
 CameraDistance cameraDistance(const SpecimenSpec &spec, const vision::EndFaceGeometry &g, bool oblique);
@@ -173,12 +177,13 @@ UncertaintyBudget budgetOf(const MuFunction &F, const friction::FrictionModel &m
 double combinedSigma(const UncertaintyBudget &b);
 
 // The declared input that would shrink U the most: the budget again with that input declared
-// or declared closer (h_final_mm where none is, h_final_tol_mm, mm_per_px_tol, n_tol).
-// scaleRelSigma: the declared scale's part of sr.pk; calibrated: the scale is the
-// calibration's (no mm_per_px_tol to advise).
+// or declared closer (h_final_mm where none is, h_final_tol_mm, mm_per_px_tol, n_tol,
+// working_distance_mm where the image weighed it). scaleRelSigma: the declared scale's part
+// of sr.pk; calibrated: the scale is the calibration's (no mm_per_px_tol to advise).
+// withDistance: the posterior had the working distance been declared (nullptr: no such advice).
 Advice adviseInput(const MuFunction &F, const friction::FrictionModel &model, const SpecimenSpec &spec, double uMm,
                    double r, const ScaleAndReduction &sr, double uSigmaEdgesMm, double bias, bool declared,
-                   bool calibrated, double scaleRelSigma);
+                   bool calibrated, double scaleRelSigma, const ScaleAndReduction *withDistance = nullptr);
 
 // The model's range flags and the reduction's; the status from the checks' flags alone, and
 // the decision of U against the tolerance.

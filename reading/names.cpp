@@ -51,6 +51,7 @@ const char *adviceInputName(AdviceInput a)
     case AdviceInput::HFinalTol: return "h_final_tol_mm";
     case AdviceInput::ScaleTol: return "mm_per_px_tol";
     case AdviceInput::NTol: return "n_tol";
+    case AdviceInput::WorkingDistance: return "working_distance_mm";
     default: return "none";
     }
 }

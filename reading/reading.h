@@ -55,7 +55,7 @@ const char *decisionName(Decision d);
 
 // The one declared input that would shrink U the most, and U before and after. None: no
 // declared input shrinks U by a tenth; U is then mostly the model's own or the edges'.
-enum class AdviceInput : uint8_t { None, HFinal, HFinalTol, ScaleTol, NTol };
+enum class AdviceInput : uint8_t { None, HFinal, HFinalTol, ScaleTol, NTol, WorkingDistance };
 struct Advice {
     AdviceInput input = AdviceInput::None;
     double value = 0; // the input's value to declare (a tolerance), 0 for h_final_mm itself

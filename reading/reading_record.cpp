@@ -122,8 +122,8 @@ void adviceText(const Advice &a, char *buf, size_t size)
     else if (a.input == AdviceInput::HFinal && a.reductionUnchecked)
         std::snprintf(buf, size, "h_final_mm: U %.4f \xE2\x86\x92 %.4f (height unchecked: U covers 45-55 %%)", a.uNow,
                       a.uThen);
-    else if (a.input == AdviceInput::HFinal)
-        std::snprintf(buf, size, "h_final_mm: U %.4f \xE2\x86\x92 %.4f", a.uNow, a.uThen);
+    else if (a.input == AdviceInput::HFinal || a.input == AdviceInput::WorkingDistance)
+        std::snprintf(buf, size, "%s: U %.4f \xE2\x86\x92 %.4f", adviceInputName(a.input), a.uNow, a.uThen);
     else
         std::snprintf(buf, size, "%s %g: U %.4f \xE2\x86\x92 %.4f", adviceInputName(a.input), a.value, a.uNow, a.uThen);
     if (a.scaleUnchecked) {

@@ -286,5 +286,40 @@ TEST(Advice, NamesTheInputThatShrinksUTheMost)
     EXPECT_EQ(none.uThen, none.uNow);
 }
 
+// Where the image weighed the camera's distance and that left the scale and the height wide,
+// declaring working_distance_mm is advised with the U it leaves; a view that was declared, or
+// one the image found telecentric, has no such advice.
+TEST(Advice, NamesTheWorkingDistanceWhereTheImageWeighedIt)
+{
+    OutlineView declaredView;
+    OutlineView asDeclared;
+    EXPECT_FALSE(declaredDistanceView(declaredView, &asDeclared));
+    OutlineView telecentric;
+    telecentric.estimated = true;
+    EXPECT_FALSE(declaredDistanceView(telecentric, &asDeclared));
+    OutlineView both;
+    both.estimated = true, both.count = 2;
+    both.weight[0] = 0.4, both.weight[1] = 0.6;
+    both.offset[1] = -0.045, both.var[1] = 0.012 * 0.012;
+    ASSERT_TRUE(declaredDistanceView(both, &asDeclared));
+    EXPECT_EQ(asDeclared.count, 1);
+    EXPECT_DOUBLE_EQ(asDeclared.offset[0], -0.045);
+    EXPECT_LT(asDeclared.var[0], 0.002 * 0.002);
+
+    const friction::FrictionModel &model = *friction::frictionModel(friction::kDefaultModel);
+    const SpecimenSpec s = spec(7.5);
+    const MuFunction F(s, model);
+    ScaleAndReduction open; // the scale wide where the view was not known
+    open.pk = 0.04 * 0.04, open.pr = (0.05 / 15) * (0.05 / 15);
+    ScaleAndReduction pinned = open;
+    pinned.pk = 0.005 * 0.005;
+    const Advice a = adviseInput(F, model, s, 0.5, 0.5, open, 0.003, 0, true, false, 0.005, &pinned);
+    EXPECT_EQ(a.input, AdviceInput::WorkingDistance);
+    EXPECT_LT(a.uThen, 0.9 * a.uNow);
+    EXPECT_EQ(adviseInput(F, model, s, 0.5, 0.5, open, 0.003, 0, true, false, 0.005).input ==
+                  AdviceInput::WorkingDistance,
+              false);
+}
+
 } // namespace
 } // namespace icacam::reading
