@@ -235,21 +235,12 @@ ScaleAndReduction mixturePosterior(const ScaleAndReduction &declared, const Silh
     }
     wSum += e.weight[E::WrongEdge];
     e.post[E::WrongEdge] = prior[E::WrongEdge];
-    ScaleAndReduction sr;
-    for (int h = 0; h < E::kCount; ++h) {
-        e.weight[h] = wSum > 0 ? e.weight[h] / wSum : 1.0 / int(E::kCount);
-        sr.dk += e.weight[h] * e.post[h].dk;
-        sr.dr += e.weight[h] * e.post[h].dr;
-    }
+    if (!(wSum > 0)) std::fill_n(e.weight, int(E::kCount), 1.0); // nothing fits: equally likely
+    const ScaleAndReduction sr = mixtureOf(e.post, e.weight, E::kCount);
+    for (int h = 0; h < E::kCount; ++h) e.weight[h] = wSum > 0 ? e.weight[h] / wSum : 1.0 / int(E::kCount);
     // A silhouette more likely a wrong edge than the barrel's outline is not relied on.
     if (e.weight[E::WrongEdge] >= *std::max_element(e.weight, e.weight + E::WrongEdge))
         *flags |= kFlagSilhouetteUnreliable;
-    for (int h = 0; h < E::kCount; ++h) {
-        const double gk = e.post[h].dk - sr.dk, gr = e.post[h].dr - sr.dr;
-        sr.pk += e.weight[h] * (e.post[h].pk + gk * gk);
-        sr.pr += e.weight[h] * (e.post[h].pr + gr * gr);
-        sr.pkr += e.weight[h] * (e.post[h].pkr + gk * gr);
-    }
     if (why) *why = e;
     return sr;
 }

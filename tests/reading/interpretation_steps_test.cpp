@@ -316,9 +316,8 @@ TEST(Advice, NamesTheWorkingDistanceWhereTheImageWeighedIt)
     const Advice a = adviseInput(F, model, s, 0.5, 0.5, open, 0.003, 0, true, false, 0.005, &pinned);
     EXPECT_EQ(a.input, AdviceInput::WorkingDistance);
     EXPECT_LT(a.uThen, 0.9 * a.uNow);
-    EXPECT_EQ(adviseInput(F, model, s, 0.5, 0.5, open, 0.003, 0, true, false, 0.005).input ==
-                  AdviceInput::WorkingDistance,
-              false);
+    EXPECT_NE(adviseInput(F, model, s, 0.5, 0.5, open, 0.003, 0, true, false, 0.005).input,
+              AdviceInput::WorkingDistance);
 }
 
 } // namespace
