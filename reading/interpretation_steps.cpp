@@ -382,27 +382,36 @@ OutlineView declaredView(double n, double mu, double reduction, double d0OverW)
 struct BarrelReach {
     double mean = 1, var = 0;
 };
-BarrelReach barrelReach(double n, double mu, double reduction, double s)
-{
-    BarrelReach c;
-    if (!(s > 0)) return c;
-    const double xMax = friction::outlineD0OverWMax();
-    double x = xMax, prev = 0;
-    for (int j = 1; j <= kReachSteps; ++j) {
-        const double xj = xMax * j / kReachSteps, sj = friction::outlineShiftAt(n, mu, reduction, xj);
-        if (sj >= s) {
-            x = xj - xMax / kReachSteps * (sj - s) / std::max(1e-9, sj - prev);
-            break;
+// The FE's shift and c = outline/(R_max·(1 − shift)) on the table's D0/W cells, taken once per
+// view: each share s then finds its D0/W and c between two cells.
+struct BarrelReachTable {
+    double shift[kReachSteps + 1], c[kReachSteps + 1];
+    BarrelReachTable(double n, double mu, double reduction)
+    {
+        const double xMax = friction::outlineD0OverWMax();
+        for (int j = 0; j <= kReachSteps; ++j) {
+            const double x = xMax * j / kReachSteps;
+            shift[j] = friction::outlineShiftAt(n, mu, reduction, x);
+            c[j] = friction::outlineRatioAt(n, mu, reduction, x) / (1 - shift[j]);
         }
-        prev = sj;
     }
-    const double fe =
-        friction::outlineRatioAt(n, mu, reduction, x) / (1 - friction::outlineShiftAt(n, mu, reduction, x));
-    const double lo = std::min(fe, 1.0);
-    c.mean = 0.5 * (lo + 1);
-    c.var = (1 - lo) * (1 - lo) / 12;
-    return c;
-}
+    BarrelReach at(double s) const
+    {
+        BarrelReach r;
+        if (!(s > 0)) return r;
+        double fe = c[kReachSteps]; // beyond the closest camera's shift: its c
+        for (int j = 1; j <= kReachSteps; ++j)
+            if (shift[j] >= s) {
+                const double t = (s - shift[j - 1]) / std::max(1e-9, shift[j] - shift[j - 1]);
+                fe = c[j - 1] + t * (c[j] - c[j - 1]);
+                break;
+            }
+        const double lo = std::min(fe, 1.0);
+        r.mean = 0.5 * (lo + 1);
+        r.var = (1 - lo) * (1 - lo) / 12;
+        return r;
+    }
+};
 
 // The outline's centre shift weighs the perspective share s: a telecentric view (s 0, half the
 // prior) or a camera anywhere from far to about 40 mm (s up to kShareMax, uniform). Under each,
@@ -414,6 +423,7 @@ BarrelReach barrelReach(double n, double mu, double reduction, double s)
 OutlineView imagedView(double n, double mu, double reduction, const CameraDistance &c)
 {
     const double off = std::hypot(c.offAxisX, c.offAxisY);
+    const BarrelReachTable reachTable(n, mu, reduction);
     double w0 = 0, wSum = 0, m1 = 0, m2 = 0, reachVar = 0;
     for (int j = 0; j <= kShareSteps; ++j) {
         const double share = kShareMax * j / kShareSteps;
@@ -429,7 +439,7 @@ OutlineView imagedView(double n, double mu, double reduction, const CameraDistan
             w0 = w;
             continue;
         }
-        const BarrelReach reach = barrelReach(n, mu, reduction, share);
+        const BarrelReach reach = reachTable.at(share);
         const double ln = std::log((1 - share) * reach.mean);
         wSum += w, m1 += w * ln, m2 += w * ln * ln, reachVar += w * reach.var;
     }
