@@ -35,7 +35,7 @@ const char *shortFlag(int bit)
         "low contrast",       "edge coverage low", "edges scatter",      "image blurred",  "saturated",
         "specimen clipped",   "elliptical",        "not concentric",     "check scale",    "narrow ring",
         "no silhouette",      "reduction outside", "radii inconsistent", "H0/D0 outside",  "silhouette unusable",
-        "not pressed to 50%", "edges undecided"};
+        "not pressed to 50%", "edges undecided",   "contact edge ramp"};
     return bit >= 0 && bit < reading::kFlagCount ? kWords[bit] : "check";
 }
 

@@ -95,6 +95,15 @@ constexpr double kAdvisedHFinalTolMm = 0.01, kAdvisedScaleRel = 0.001, kAdvisedN
 // cameras tilted 6–15° (shared ellipticity up to about 0.035 with distortion). Beyond 0.05
 // (a tilt of about 18°) the term is unchecked and the ellipse is a finding.
 constexpr double kTiltEllipticityMax = 0.05;
+// The original face's edge is a step in the surface's finish that the optics alone blur; the
+// contact edge is where the flat face ends and the barrel's surface turns away from the
+// light. Where the barrel's shading falls off gradually beyond it, the contact edge's step is
+// wider than the original face's and its steepest point lies outside the edge, by up to about
+// the excess width (rendered photographs: the excess 1.6–3.0 px where R_o read 0.5–4 px
+// outside; drawn steps and the development set's and the reference photographs' edges: at
+// most 1.6 px). Beyond kContactRampFindingPx that excess is a finding, and u's error takes it
+// as one standard deviation.
+constexpr double kContactRampFindingPx = 1.6;
 // The edge model's own error, beyond the fits' scatter: against the drawn boundaries of the
 // development set's photographs the pipeline's R_i lies 0.005 mm (1 σ) off the truth's
 // equivalent radius and R_o 0.001 mm (a ragged texture boundary, not a step, on the inside).
@@ -316,6 +325,8 @@ EdgeSigma edgeSigma(const EndFaceGeometry &g, const PlaneMapping &p, bool calibr
     const double axisDiff = std::fabs(std::remainder(p.inner.axisDeg - p.outer.axisDeg, 180.0));
     e.sharedEllipse = p.inner.ellipticity > 0.012 && p.outer.ellipticity > 0.012 && axisDiff < 20;
     e.uSigmaEdgesMm = std::hypot(e.uSigmaMm, std::hypot(kInnerEdgeModelMm, kOuterEdgeModelMm));
+    if (g.contactRampPx > kContactRampFindingPx)
+        e.uSigmaEdgesMm = std::hypot(e.uSigmaEdgesMm, g.contactRampPx * p.mmPerPx);
     if (!calibrated && e.sharedEllipse) {
         const double ell = std::min(p.inner.ellipticity, p.outer.ellipticity);
         e.uSigmaEdgesMm = std::hypot(e.uSigmaEdgesMm, p.face.uMm * ell / (2 * std::sqrt(3.0)));
@@ -342,6 +353,7 @@ uint32_t imageChecks(const EndFaceGeometry &g, const PlaneMapping &p, const Edge
         f |= kFlagElliptical;
     if (g.outer.rEqPx - g.inner.rEqPx < kNarrowRingFindingPx) f |= kFlagNarrowRing;
     if (g.edgeWidthPx > 2.6) f |= kFlagBlurred;
+    if (g.contactRampPx > kContactRampFindingPx) f |= kFlagContactEdgeRamp;
     if (g.saturatedFraction > 0.02) f |= kFlagSaturated;
     return f;
 }

@@ -35,7 +35,8 @@ const char *flagName(int bit)
                                                    "aspect_outside_model",
                                                    "silhouette_unreliable",
                                                    "reduction_not_nominal",
-                                                   "contact_edge_undecided"};
+                                                   "contact_edge_undecided",
+                                                   "contact_edge_ramp"};
     return bit >= 0 && bit < kFlagCount ? kNames[bit] : "unknown";
 }
 

@@ -44,8 +44,11 @@ enum ReadingFlag : uint32_t {
     // edge taken opens a band that may as well be a highlight on the barrel (vision's
     // kImageContactEdgeUndecided); R_i and R_o may both be one edge out.
     kFlagContactEdgeUndecided = 1u << 21,
+    // The contact edge's step is wider than the original face's by a ramp: the barrel's
+    // shading falls away beyond the flat face, and R_o is read up to that ramp outside it.
+    kFlagContactEdgeRamp = 1u << 22,
 };
-constexpr int kFlagCount = 22;
+constexpr int kFlagCount = 23;
 const char *flagName(int bit);
 
 // The expanded uncertainty U = k·σ_μ against the lab's tolerance on μ (a decision rule in the

@@ -58,6 +58,8 @@ const FieldSpec kFields[] = {
     {"centre_y_px", Field::Number, 2, [](const Reading &m) { return m.geometry.centreY; }},
     {"centre_offset_px", Field::Number, 3, [](const Reading &m) { return m.centreOffsetPx; }},
     {"edge_width_px", Field::Number, 3, [](const Reading &m) { return m.geometry.edgeWidthPx; }},
+    {"inner_edge_width_px", Field::Number, 3, [](const Reading &m) { return m.geometry.innerEdgeWidthPx; }},
+    {"contact_ramp_px", Field::Number, 3, [](const Reading &m) { return m.geometry.contactRampPx; }},
     {"saturated_fraction", Field::Number, 4, [](const Reading &m) { return m.geometry.saturatedFraction; }},
     {"inner_contrast", Field::Number, 2, [](const Reading &m) { return m.geometry.inner.contrast; }},
     {"outer_contrast", Field::Number, 2, [](const Reading &m) { return m.geometry.outer.contrast; }},
@@ -108,6 +110,8 @@ const char *findingWords(int bit)
         "R_max: declare working_distance_mm)",
         "the profile does not tell which edge ends the flat face: R_i and R_o may be one edge out; check the image "
         "(a diffuse ring light or a matt barrel removes the band)",
+        "the contact edge ramps away wider than the original face's edge: R_o may read up to that ramp outside; "
+        "a diffuse ring light or a matt barrel gives a step",
     };
     return bit >= 0 && bit < kFlagCount && kWords[bit] ? kWords[bit] : "check";
 }

@@ -78,6 +78,13 @@ struct EndFaceGeometry {
     BoundaryFit inner, outer;
     double rMaxPx = 0;      // barrel silhouette radius (equivalent circle); 0 if not found
     double edgeWidthPx = 0; // blur of the contact edge (Gaussian σ estimate)
+    // The same measure on the original face's edge, a step in the surface's finish that the
+    // optics alone blur, and how much wider the contact edge is than it (√(w_o² − w_i²)), both
+    // within half the ring: the barrel's shading ramping away from the flat face beyond the
+    // contact edge (reading: contact_edge_ramp). 0 where the rays did not locate the original
+    // face's edge (a ring read on the mean profile alone, or narrower than two blurs).
+    double innerEdgeWidthPx = 0;
+    double contactRampPx = 0;
     double saturatedFraction = 0;
     // The silhouette's per-ray fit: coverage and the points' robust RMS about it (0 when only
     // the mean profile named it).

@@ -729,7 +729,7 @@ struct RingSearch::AlignedProfile {
     int count() const { return K + M + 1; }
 };
 
-bool RingSearch::alignedProfile(const double *outerR, AlignedProfile *p) const
+bool RingSearch::alignedProfile(const double *outerR, AlignedProfile *p, bool onInner) const
 {
     p->K = int(kMaxU * r0 + 2);
     if (p->count() > AlignedProfile::kSpan) return false;
@@ -739,7 +739,7 @@ bool RingSearch::alignedProfile(const double *outerR, AlignedProfile *p) const
     std::fill_n(n, count, 0u);
     uint16_t row[AlignedProfile::kSpan];
     for (int i = 0; i < rays_; i += rays_ / kAlignRays) {
-        if (!outerPts[i].valid) continue;
+        if (!(onInner ? innerPts[i] : outerPts[i]).valid) continue;
         const double ro = outerR[i];
         RaySpec ray{Q16_16::fromDouble(cx),     Q16_16::fromDouble(cy), rayCosQ_[i], raySinQ_[i],
                     Q16_16::fromDouble(ro - K), Q16_16::fromDouble(1.0)};
@@ -763,12 +763,17 @@ bool RingSearch::alignedProfile(const double *outerR, AlignedProfile *p) const
 
 double RingSearch::contactEdgeWidth(const AlignedProfile &p, int signOuter) const
 {
+    return stepWidth(p, signOuter, 6);
+}
+
+double RingSearch::stepWidth(const AlignedProfile &p, int sign, double reachPx) const
+{
     // The second moment of the derivative peak (the kernel adds 0.75 px² and bilinear
     // sampling about 0.17 px²).
     double s0 = 0, s1 = 0, s2 = 0;
-    const int w = std::min(p.K, int(6 / kFineStepPx) + 1);
+    const int w = std::min(p.K, int(reachPx / kFineStepPx) + 1);
     for (int k = -w; k <= std::min(w, p.M); ++k) {
-        const double val = std::max(0, signOuter * p.deriv[k + p.K]);
+        const double val = std::max(0, sign * p.deriv[k + p.K]);
         s0 += val;
         s1 += val * k * kFineStepPx;
         s2 += val * k * k * kFineStepPx * kFineStepPx;
@@ -922,6 +927,8 @@ ErrorCode RingSearch::run(EndFaceGeometry *m)
         m->imageFlags = 0;
         m->saturatedFraction = 0;
         m->edgeWidthPx = 0;
+        m->innerEdgeWidthPx = 0;
+        m->contactRampPx = 0;
         return ringAbout(about, m);
     };
     const bool staircase = me.rNext > 0 && me.signNext == me.signOuter;
@@ -1020,8 +1027,20 @@ ErrorCode RingSearch::ringAbout(const MeanEdges &me, EndFaceGeometry *m)
     // that the derivative happened to peak on, not the original face.
     if (originalFaceOnRays(name, profile, outerR, m, &inner, innerR, &contrastInner) &&
         std::fabs(contrastInner) >= kMinInnerContrast) {
-        if (outer.rEqPx - inner.rEqPx < kNarrowRingPx)
+        if (outer.rEqPx - inner.rEqPx < kNarrowRingPx) {
             narrowRingFromProfile(profile, me.signOuter, outer.rEqPx - inner.rEqPx, &outer, &inner, &contrastInner);
+        } else {
+            // The original face's blur against the contact edge's, both within half the ring
+            // (at most 6 px) so that neither reaches the other edge.
+            AlignedProfile atInner;
+            const double reach = std::min(6.0, 0.5 * (outer.rEqPx - inner.rEqPx));
+            const double wi = alignedProfile(innerR, &atInner, true) ? stepWidth(atInner, name.sign, reach) : -1;
+            const double wo = stepWidth(profile, me.signOuter, reach);
+            if (wi > 0 && wo >= 0) {
+                m->innerEdgeWidthPx = wi;
+                m->contactRampPx = std::sqrt(std::max(0.0, wo * wo - wi * wi));
+            }
+        }
     } else if (narrowRingFromProfile(profile, me.signOuter, 0.0, &outer, &inner, &contrastInner)) {
         // No ray saw the original face's edge: the profile alone says the ring is narrow,
         // and the reading says so (warn).

@@ -70,9 +70,13 @@ struct RingSearch {
     // kAlignStride-th fine ray (those with a contact-edge point) sampled at fixed offsets from
     // the fitted curve outerR; false when the widest ring searched does not fit the buffer.
     struct AlignedProfile;
-    bool alignedProfile(const double *outerR, AlignedProfile *p) const;
+    // onInner: the same about the original face's fitted curve, on the rays that located it.
+    bool alignedProfile(const double *outerR, AlignedProfile *p, bool onInner = false) const;
     // The contact edge's blur (Gaussian σ, pixels) from the aligned profile; −1 if none shows.
     double contactEdgeWidth(const AlignedProfile &p, int signOuter) const;
+    // The blur of the step at the aligned radius, its derivative's moments taken within
+    // reachPx either side; −1 if none shows.
+    double stepWidth(const AlignedProfile &p, int sign, double reachPx) const;
     // The original face's edge as the aligned profile names it: the strongest derivative
     // extremum inside the contact edge that separates two levels (sign 0: none).
     struct OriginalFaceName {

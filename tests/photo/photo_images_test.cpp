@@ -105,6 +105,41 @@ TEST_P(PhotoImages, FindsTheOutlineNotTheShadow)
     EXPECT_NEAR(p.g.rMaxPx, num(p.truth, "outline_px"), 0.01 * num(p.truth, "outline_px"));
 }
 
+// Where the barrel's shading ramps away from the contact edge, the pipeline's R_o lies 2–3 px
+// outside the projected edge, and the contact edge's step is wider than the original face's
+// by a ramp of 2.3–2.7 px (the reading's contact_edge_ramp: beyond 1.6 px). The others'
+// ramps stay under 2 px (straight-0016's staircase, 1.96 px with R_o 0.5 px outside, is
+// flagged all the same). straight-0005 is the case this does not see: the barrel's fall is
+// one S-shaped step no wider than the original face's edge, 3.6 px outside a faint rim
+// highlight at the true edge.
+TEST_P(PhotoImages, AContactEdgeOnARampShowsItsWidth)
+{
+    const Photo p = measure(GetParam());
+    ASSERT_EQ(p.g.error, vision::ErrorCode::None);
+    const double outside = p.g.outer.rEqPx - num(p.truth, "r_outer_px");
+    const bool ramp = GetParam() == "straight-0011" || GetParam() == "tilted-0002";
+    if (ramp) {
+        EXPECT_GT(outside, 2.0);
+        EXPECT_GT(p.g.contactRampPx, 2.0);
+    } else {
+        EXPECT_LT(p.g.contactRampPx, 2.0);
+    }
+}
+
+TEST_P(NarrowRingPhotos, AContactEdgeOnARampShowsItsWidth)
+{
+    const Photo p = measure(GetParam());
+    ASSERT_EQ(p.g.error, vision::ErrorCode::None);
+    const double outside = p.g.outer.rEqPx - num(p.truth, "r_outer_px");
+    if (GetParam() == "straight-s1-0008") { // a lit shoulder beyond a burnished ring: a step
+        EXPECT_LT(std::fabs(outside), 1.0);
+        EXPECT_LT(p.g.contactRampPx, 1.6);
+    } else { // a barrel ramping away into a black fixture
+        EXPECT_GT(outside, 2.0);
+        EXPECT_GT(p.g.contactRampPx, 2.0);
+    }
+}
+
 // The contact edge to a pixel: not met yet. Where the barrel's brightness ramps away from
 // the contact edge rather than stepping (a lit shoulder, a steep dark barrel), the
 // derivative's peak lies 0.5–3.5 px outside the projected edge (straight-0005, -0011).

@@ -126,6 +126,27 @@ TEST(ImageChecks, EachConditionRaisesItsFlag)
     EXPECT_EQ(flagsOf(g), 0u);
     g.inner.ellipticity = g.outer.ellipticity = 0.08;
     EXPECT_EQ(flagsOf(g), uint32_t(kFlagElliptical));
+    // A contact edge about as wide as the original face's is a step; one wider by a ramp of
+    // 2 px is the barrel's shading falling away beyond it.
+    g = circularFace(250, 300), g.innerEdgeWidthPx = 1.2, g.contactRampPx = 1.0;
+    EXPECT_EQ(flagsOf(g), 0u);
+    g.contactRampPx = 2.0;
+    EXPECT_EQ(flagsOf(g), uint32_t(kFlagContactEdgeRamp));
+}
+
+// Where the contact edge ramps away, R_o may lie anywhere within the ramp: u's error takes it
+// (in millimetres at the plane's scale); a step's edge keeps the fits' and the edge model's.
+TEST(EdgeSigma, AContactEdgeOnARampWidensU)
+{
+    const AssumedReduction r = assumedReduction(spec());
+    EndFaceGeometry g = circularFace(250, 300);
+    const PlaneMapping p = mapFace(g, spec(), nullptr, r);
+    const double step = edgeSigma(g, p, false).uSigmaEdgesMm;
+    g.innerEdgeWidthPx = 1.2, g.contactRampPx = 1.0;
+    EXPECT_EQ(edgeSigma(g, p, false).uSigmaEdgesMm, step);
+    g.contactRampPx = 2.5;
+    const double ramp = edgeSigma(g, p, false).uSigmaEdgesMm;
+    EXPECT_NEAR(ramp, std::hypot(step, 2.5 * p.mmPerPx), 1e-12);
 }
 
 TEST(SilhouetteObservation, NoneFoundAFittingOneAndOneOutsideTheBarrel)
