@@ -213,6 +213,8 @@ ScaleAndReduction mixturePosterior(const ScaleAndReduction &declared, const Silh
     const double gaussianPrior = (1.0 - kMisreadPrior) / (oblique ? 4 : 3);
     E e;
     double wSum = 0;
+    ScaleAndReduction byView[OutlineView::kMax][E::kCount];
+    double weightByView[OutlineView::kMax][E::kCount] = {};
     for (int h = 0; h < E::WrongEdge; ++h) {
         // The camera's part of d added to the explanation's own, in each view the image
         // leaves open; the explanation's posterior is their mixture.
@@ -229,6 +231,7 @@ ScaleAndReduction mixturePosterior(const ScaleAndReduction &declared, const Silh
                             : 0.0;
             post[c] = update(prior[h], d, beta, se2, off, offVar, alpha[h]);
             e.weight[h] += weight[c];
+            byView[c][h] = post[c], weightByView[c][h] = weight[c];
         }
         wSum += e.weight[h];
         e.post[h] = mixtureOf(post, weight, o.view.count);
@@ -239,14 +242,22 @@ ScaleAndReduction mixturePosterior(const ScaleAndReduction &declared, const Silh
     for (int c = 0; c < o.view.count; ++c) {
         const double dSeen = d - o.view.offset[c];
         const bool misreadPossible = misreadSpan > 0 && dSeen >= o.dContact && dSeen <= -kMisreadMinInside;
-        if (misreadPossible)
-            e.weight[E::WrongEdge] += o.view.weight[c] * kMisreadPrior * std::sqrt(2 * std::numbers::pi) / misreadSpan;
+        const double w =
+            misreadPossible ? o.view.weight[c] * kMisreadPrior * std::sqrt(2 * std::numbers::pi) / misreadSpan : 0.0;
+        e.weight[E::WrongEdge] += w;
+        byView[c][E::WrongEdge] = prior[E::WrongEdge], weightByView[c][E::WrongEdge] = w;
     }
     wSum += e.weight[E::WrongEdge];
     e.post[E::WrongEdge] = prior[E::WrongEdge];
     if (!(wSum > 0)) std::fill_n(e.weight, int(E::kCount), 1.0); // nothing fits: equally likely
     const ScaleAndReduction sr = mixtureOf(e.post, e.weight, E::kCount);
     for (int h = 0; h < E::kCount; ++h) e.weight[h] = wSum > 0 ? e.weight[h] / wSum : 1.0 / int(E::kCount);
+    if (o.view.count > 1 && wSum > 0) {
+        e.viewCount = o.view.count;
+        for (int c = 0; c < o.view.count; ++c)
+            for (int h = 0; h < E::kCount; ++h)
+                e.part[c][h] = byView[c][h], e.partWeight[c][h] = weightByView[c][h] / wSum;
+    }
     // A silhouette more likely a wrong edge than the barrel's outline is not relied on.
     if (e.weight[E::WrongEdge] >= *std::max_element(e.weight, e.weight + E::WrongEdge))
         *flags |= kFlagSilhouetteUnreliable;
@@ -580,15 +591,17 @@ ScaleAndReduction silhouettePosterior(const ScaleAndReduction &prior, const Silh
 }
 
 uint32_t nominalCheck(const MuFunction &F, const SpecimenSpec &spec, double u, double mu, const Explanations *why,
-                      double *nominalMu)
+                      double *nominalMu, bool weighRisk)
 {
     using E = Explanations;
     const double n = spec.n, tol = spec.tolerance.at(std::fabs(mu));
     *nominalMu = F.at(u, kNominalReduction, n);
-    // The chance that μ lies beyond the tolerance from the reading: under each explanation μ
-    // is Gaussian about its own value, with the spread its posterior of scale and reduction
-    // leaves (the declared inputs' other parts are U's, not the check's).
-    double risk = 0;
+    // Where nothing checked the height (weighRisk): the chance that μ lies beyond the
+    // tolerance from the reading, under each explanation μ Gaussian about its own value with
+    // the spread its posterior of scale and reduction leaves (the declared inputs' other
+    // parts are U's, not the check's). The same for a silhouette that may be a wrong edge:
+    // that share of the reading is unchecked.
+    double risk = 0, uncheckedRisk = 0;
     double otherMu = 0; // μ where the specimen was pressed to another height
     int lead = -1;      // the weightiest explanation other than the nominal height as seen
     for (int h = 0; h < E::kCount; ++h) {
@@ -596,14 +609,18 @@ uint32_t nominalCheck(const MuFunction &F, const SpecimenSpec &spec, double u, d
         const ScaleAndReduction &p = why->post[h];
         const double uh = u * std::exp(-p.dk), rh = kNominalReduction + p.dr;
         const double muH = F.at(uh, rh, n);
-        const double hu = std::max(1e-4, 0.01 * uh), hr = 0.005;
-        const double a = -uh * (F.at(uh + hu, rh, n) - F.at(uh - hu, rh, n)) / (2 * hu);
-        const double g = (F.at(uh, rh + hr, n) - F.at(uh, rh - hr, n)) / (2 * hr);
-        const double s = std::sqrt(std::max(1e-12, a * a * p.pk + g * g * p.pr + 2 * a * g * p.pkr));
-        const double off = std::fabs(muH - mu);
-        risk +=
-            why->weight[h] * 0.5 *
-            (std::erfc((tol - off) / (s * std::numbers::sqrt2)) + std::erfc((tol + off) / (s * std::numbers::sqrt2)));
+        if (weighRisk || h == E::WrongEdge) {
+            const double hu = std::max(1e-4, 0.01 * uh), hr = 0.005;
+            const double a = -uh * (F.at(uh + hu, rh, n) - F.at(uh - hu, rh, n)) / (2 * hu);
+            const double g = (F.at(uh, rh + hr, n) - F.at(uh, rh - hr, n)) / (2 * hr);
+            const double s = std::sqrt(std::max(1e-12, a * a * p.pk + g * g * p.pr + 2 * a * g * p.pkr));
+            const double off = std::fabs(muH - mu);
+            const double beyond = why->weight[h] * 0.5 *
+                                  (std::erfc((tol - off) / (s * std::numbers::sqrt2)) +
+                                   std::erfc((tol + off) / (s * std::numbers::sqrt2)));
+            risk += beyond;
+            if (h == E::WrongEdge) uncheckedRisk = beyond;
+        }
         // A foreshortened view leads the scale off: the finding then names no scale.
         const bool nominal = h == E::Nominal || h == E::WrongEdge;
         if (!nominal && why->weight[h] >= kPlausibleWeight && (lead < 0 || why->weight[h] > why->weight[lead]))
@@ -616,8 +633,27 @@ uint32_t nominalCheck(const MuFunction &F, const SpecimenSpec &spec, double u, d
     // where the nominal explanation keeps enough weight to hold the reading's μ within it.
     const bool moved =
         std::fabs(*nominalMu - mu) > tol || (lead == E::OtherHeight && std::fabs(otherMu - *nominalMu) > tol);
-    if (!moved && risk <= kWrongRisk) return 0;
-    return lead == E::ScaleOff ? uint32_t(kFlagScaleSuspect) : uint32_t(kFlagReductionNotNominal);
+    const uint32_t named = lead == E::ScaleOff ? uint32_t(kFlagScaleSuspect) : uint32_t(kFlagReductionNotNominal);
+    if (moved || (weighRisk ? risk : uncheckedRisk) > kWrongRisk) return named;
+    if (weighRisk) return 0;
+    // What the silhouette says, explanation by explanation and, where the image left a
+    // telecentric and a close view open, view by view: the share of the weight whose μ lies
+    // beyond the tolerance from the reading's is the chance the reading is wrong for what the
+    // image cannot tell apart; beyond kWrongRisk a finding. The spread each part leaves is U's.
+    // Where that share lies in one view alone, the camera's distance decides it.
+    const int views = std::max(1, why->viewCount);
+    double share = 0, shareInView[OutlineView::kMax] = {};
+    for (int c = 0; c < views; ++c)
+        for (int h = 0; h < E::WrongEdge; ++h) {
+            const double w = why->viewCount ? why->partWeight[c][h] : why->weight[h];
+            if (!(w > 0)) continue;
+            const ScaleAndReduction &p = why->viewCount ? why->part[c][h] : why->post[h];
+            if (std::fabs(F.at(u * std::exp(-p.dk), kNominalReduction + p.dr, n) - mu) <= tol) continue;
+            share += w, shareInView[c] += w;
+        }
+    if (!(share > kWrongRisk)) return 0;
+    const bool oneView = why->viewCount > 1 && (shareInView[0] == 0 || shareInView[1] == 0);
+    return oneView ? uint32_t(kFlagWorkingDistanceDecides) : named;
 }
 
 bool uncheckedViewMatters(const MuFunction &F, const SpecimenSpec &spec, const ScaleAndReduction &declared, double uMm,
@@ -628,7 +664,7 @@ bool uncheckedViewMatters(const MuFunction &F, const SpecimenSpec &spec, const S
     explanationPriors(declared, prior.post);
     for (int h : {E::OtherHeight, E::ScaleOff, E::Nominal}) prior.weight[h] = 1.0 / 3;
     double nominalMu = 0;
-    return nominalCheck(F, spec, uMm, mu, &prior, &nominalMu) != 0;
+    return nominalCheck(F, spec, uMm, mu, &prior, &nominalMu, true) != 0;
 }
 
 MuReading readMu(const MuFunction &F, const FrictionModel &model, const SpecimenSpec &spec, double uMm, double r,

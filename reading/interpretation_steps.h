@@ -135,6 +135,12 @@ struct Explanations {
     enum Which { OtherHeight, ScaleOff, Nominal, Foreshortened, WrongEdge, kCount };
     ScaleAndReduction post[kCount];
     double weight[kCount] = {};
+    // Each explanation within each view the image left open (a telecentric and a close
+    // camera): its share of the weight and its scale and reduction (viewCount 0: one view,
+    // the explanations as above).
+    int viewCount = 0;
+    double partWeight[OutlineView::kMax][kCount] = {};
+    ScaleAndReduction part[OutlineView::kMax][kCount];
 };
 
 // The posterior of scale and reduction given the silhouette (interpretation.h): a linear
@@ -149,9 +155,15 @@ ScaleAndReduction silhouettePosterior(const ScaleAndReduction &prior, const Silh
 // nominal half height with the declared scale, and under every explanation of the silhouette
 // that keeps some weight, against the reading's μ. Any of them beyond the tolerance is a
 // finding: reduction_not_nominal, or scale_suspect where a scale off explains the silhouette
-// best. *nominalMu: μ at the nominal conditions.
+// best. Where the silhouette was seen (weighRisk false) what it says is the finding: the share
+// of the weight whose explanations (within each view the image left open) read μ beyond the
+// tolerance, by their means; the spread each leaves is U's. Where that share lies in a close
+// or a telecentric view alone the camera's distance decides it: working_distance_decides.
+// Where nothing checked the height (weighRisk true) the chance that μ lies beyond the
+// tolerance under the explanations' priors, spreads and all, is the finding.
+// *nominalMu: μ at the nominal conditions.
 uint32_t nominalCheck(const MuFunction &F, const SpecimenSpec &spec, double uDeclaredMm, double mu,
-                      const Explanations *why, double *nominalMu);
+                      const Explanations *why, double *nominalMu, bool weighRisk = false);
 
 // A straight view without a silhouette, no final height declared: the height and the
 // declared scale go unchecked, and the explanations keep their prior weights (nominal half

@@ -36,7 +36,8 @@ const char *flagName(int bit)
                                                    "silhouette_unreliable",
                                                    "reduction_not_nominal",
                                                    "contact_edge_undecided",
-                                                   "contact_edge_ramp"};
+                                                   "contact_edge_ramp",
+                                                   "working_distance_decides"};
     return bit >= 0 && bit < kFlagCount ? kNames[bit] : "unknown";
 }
 

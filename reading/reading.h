@@ -47,8 +47,11 @@ enum ReadingFlag : uint32_t {
     // The contact edge's step is wider than the original face's by a ramp: the barrel's
     // shading falls away beyond the flat face, and R_o is read up to that ramp outside it.
     kFlagContactEdgeRamp = 1u << 22,
+    // No final height or working distance given, and the silhouette reads a height from a close
+    // camera other than from a far one, by enough to move μ beyond the tolerance.
+    kFlagWorkingDistanceDecides = 1u << 23,
 };
-constexpr int kFlagCount = 23;
+constexpr int kFlagCount = 24;
 const char *flagName(int bit);
 
 // The expanded uncertainty U = k·σ_μ against the lab's tolerance on μ (a decision rule in the

@@ -112,6 +112,8 @@ const char *findingWords(int bit)
         "(a diffuse ring light or a matt barrel removes the band)",
         "the contact edge ramps away wider than the original face's edge: R_o may read up to that ramp outside; "
         "a diffuse ring light or a matt barrel gives a step",
+        "the silhouette reads another height from a close camera than from a far one: declare working_distance_mm "
+        "(or h_final_mm)",
     };
     return bit >= 0 && bit < kFlagCount && kWords[bit] ? kWords[bit] : "check";
 }

@@ -282,6 +282,53 @@ TEST(NominalCheck, AnExplanationBeyondTheToleranceIsAFinding)
     EXPECT_EQ(nominalCheck(F, s, u, mu, &why, &nominal), 0u);
 }
 
+// A silhouette that agrees with half height leaves the reading ok however wide the spread it
+// leaves (that is U's, and the decision's); where nothing checked the height, the chance that
+// μ lies beyond the tolerance under the priors is the finding.
+TEST(NominalCheck, TheSpreadAnAgreeingSilhouetteLeavesIsUsNotAFinding)
+{
+    const friction::FrictionModel &model = *friction::frictionModel(friction::kDefaultModel);
+    const SpecimenSpec s = spec();
+    const MuFunction F(s, model);
+    const double u = 0.5, mu = F.at(u, 0.5, s.n);
+    Explanations why;
+    why.weight[Explanations::Nominal] = 0.5, why.weight[Explanations::OtherHeight] = 0.5;
+    why.post[Explanations::OtherHeight].pr = 0.02 * 0.02; // centred on half height, wide
+    double nominal = 0;
+    EXPECT_EQ(nominalCheck(F, s, u, mu, &why, &nominal), 0u);
+    EXPECT_EQ(nominalCheck(F, s, u, mu, &why, &nominal, true), uint32_t(kFlagReductionNotNominal));
+}
+
+// Where the image left a telecentric and a close view open and each reads its own height, the
+// share of the weight whose μ lies beyond the tolerance is the chance the reading is wrong:
+// over 15 % a finding, and where that share lies in one view alone, the camera's distance
+// decides it; a view that reads the reading's height is no finding however wide it is.
+TEST(NominalCheck, AViewThatReadsAnotherHeightNamesTheWorkingDistance)
+{
+    const friction::FrictionModel &model = *friction::frictionModel(friction::kDefaultModel);
+    const SpecimenSpec s = spec();
+    const MuFunction F(s, model);
+    const double u = 0.5, mu = F.at(u, 0.5, s.n);
+    ASSERT_GT(std::fabs(F.at(u, 0.53, s.n) - mu), s.tolerance.at(mu)) << "the test needs a view apart";
+    Explanations why;
+    why.weight[Explanations::Nominal] = 1;
+    why.viewCount = 2;
+    why.partWeight[0][Explanations::Nominal] = 0.7;
+    why.partWeight[1][Explanations::Nominal] = 0.3;
+    why.part[1][Explanations::Nominal].pr = 0.02 * 0.02;
+    double nominal = 0;
+    EXPECT_EQ(nominalCheck(F, s, u, mu, &why, &nominal), 0u);
+    why.part[1][Explanations::Nominal].dr = 0.03; // the close camera reads 53 %
+    EXPECT_EQ(nominalCheck(F, s, u, mu, &why, &nominal), uint32_t(kFlagWorkingDistanceDecides));
+    why.partWeight[0][Explanations::Nominal] = 0.9, why.partWeight[1][Explanations::Nominal] = 0.1;
+    EXPECT_EQ(nominalCheck(F, s, u, mu, &why, &nominal), 0u) << "a view with a tenth of the weight";
+    why.partWeight[0][Explanations::Nominal] = 0.5, why.partWeight[1][Explanations::Nominal] = 0.3;
+    why.partWeight[0][Explanations::OtherHeight] = 0.2, why.part[0][Explanations::OtherHeight].dr = 0.03;
+    why.weight[Explanations::OtherHeight] = 0.2, why.post[Explanations::OtherHeight].dr = 0.03;
+    EXPECT_EQ(nominalCheck(F, s, u, mu, &why, &nominal), uint32_t(kFlagReductionNotNominal))
+        << "both views hold another height open";
+}
+
 // The advice names the declared input that shrinks U the most: the final height where the
 // undeclared reduction leads, none where the model's own error does.
 TEST(Advice, NamesTheInputThatShrinksUTheMost)
