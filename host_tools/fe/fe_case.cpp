@@ -27,7 +27,7 @@ std::string FeCase::label() const
     if (rateSensitive()) {
         s += "_v" + numberText("%g", pressSpeedMmS) + "_m" + numberText("%g", m);
         if (rate0 != 1) s += "_e0" + numberText("%g", rate0);
-        if (creepTol != 1e-3) s += "_ct" + numberText("%g", creepTol);
+        if (creepTol != 1e-2) s += "_ct" + numberText("%g", creepTol);
     }
     return s;
 }
@@ -38,6 +38,9 @@ double stepTime(const FeCase &c)
 }
 
 namespace {
+// The first increment of a *VISCO step, of its step time (at most; incInit if smaller).
+constexpr double kViscoIncInit = 1e-4;
+
 // Node positions on [0, len]: uniform `elem`, or graded from `fine` at len to `elem`.
 std::vector<double> axisNodes(double len, double elem, double fine, double zone = 0)
 {
@@ -192,11 +195,13 @@ std::string makeDeck(const FeCase &c)
     const double stroke = z0 * 2 * c.reductionMax / 2; // quarter model: half the stroke
     if (c.rateSensitive()) {
         // *VISCO applies a boundary without an amplitude in full at its first increment: the
-        // stroke runs under a ramp, a constant press speed over the step time.
+        // stroke runs under a ramp, a constant press speed over the step time. Time hardening's
+        // rate A σ^N t^M is singular at t = 0 (M < 0): a first increment of 0.005 of the step
+        // diverges as the end face meets the platen, one of kViscoIncInit does not.
         o << "*AMPLITUDE,NAME=PRESS\n0, 0\n"
           << t << ", 1\n"
           << "*STEP,NLGEOM,INC=100000\n*VISCO,CETOL=" << c.creepTol << "\n"
-          << c.incInit * t << ", " << t << ", " << c.incMin * t << ", " << c.incMax * t << "\n"
+          << std::min(c.incInit, kViscoIncInit) * t << ", " << t << ", " << c.incMin * t << ", " << c.incMax * t << "\n"
           << "*BOUNDARY,AMPLITUDE=PRESS\nPLATENN, 2, 2, " << -stroke << "\n";
     } else
         o << "*STEP,NLGEOM,INC=100000\n*STATIC\n"
