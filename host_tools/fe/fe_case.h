@@ -49,7 +49,7 @@ struct FeCase {
     double m = 0;     // strain-rate sensitivity (needs pressSpeedMmS > 0 when not 0)
     double rate0 = 1; // ε̇₀, 1/s: the rate at which σ = K ε^n
     // *VISCO's CETOL: the largest difference in viscous strain over an increment between the
-    // rates at its start and end (ccx manual, *VISCO). 1e-3 costs about four times as much on
+    // rates at its start and end (ccx manual, *VISCO). 1e-3 costs about three times as much on
     // the upsetting case (data/fe/studies/rate/README.md).
     double creepTol = 1e-2;
     bool rateSensitive() const { return pressSpeedMmS > 0; }

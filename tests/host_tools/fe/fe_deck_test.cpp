@@ -235,4 +235,12 @@ TEST(FeDeck, RateSensitiveMaterialRunsAsNortonTimeHardeningInAViscoStep)
     m0.m = 0;
     EXPECT_NE(makeDeck(m0).find("*VISCO"), std::string::npos);
     EXPECT_NE(m0.label(), c.label());
+    // ccx 2.20 integrates Norton's law wrongly for A below 1e-18: such a case is refused, not run.
+    FeCase low = r;
+    low.n = 0.125;
+    low.m = 0;
+    low.rate0 = 1;
+    EXPECT_THROW(makeDeck(low), std::invalid_argument) << "A = 500^-8 = 2.6e-22";
+    low.m = 0.05;
+    EXPECT_NO_THROW(makeDeck(low)) << "A = 500^-5.7 = 3.7e-16";
 }
