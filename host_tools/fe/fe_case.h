@@ -1,7 +1,8 @@
 #pragma once
 // One upsetting case for CalculiX: the deck (axisymmetric quarter model, CAX4R, Coulomb
-// friction against a rigid platen row, NLGEOM, σ = K(0.002 + ε_p)^n) and the
-// post-processing of its results into R_i, R_o, R_max, u and the force–stroke curve.
+// friction against a rigid platen row, NLGEOM, σ = K(0.002 + ε_p)^n, or with a press speed
+// the rate-sensitive σ = K ε^n (ε̇/ε̇₀)^m) and the post-processing of its results into R_i,
+// R_o, R_max, u and the force–stroke curve.
 #include <map>
 #include <string>
 #include <vector>
@@ -40,8 +41,24 @@ struct FeCase {
     // > 0: extra output frames every trackStep of reduction, so the contact edge can be
     // tracked between the nodes' touchdowns (fe_contact_track.h); 0: the 5 % snapshots only.
     double trackStep = 0;
+    // > 0: the press closes at this speed (mm/s, the whole stroke H0 · reductionMax in
+    // stroke / speed seconds) and the material is rate-sensitive, σ = K ε^n (ε̇/ε̇₀)^m, run
+    // as Norton time hardening in a *VISCO step (docs/fe.md, "Rate dependence"); m = 0 is
+    // that form without a rate term. 0: the rate-independent *PLASTIC table in a *STATIC step.
+    double pressSpeedMmS = 0;
+    double m = 0;     // strain-rate sensitivity (needs pressSpeedMmS > 0 when not 0)
+    double rate0 = 1; // ε̇₀, 1/s: the rate at which σ = K ε^n
+    // *VISCO's CETOL: the largest difference in viscous strain over an increment between the
+    // rates at its start and end (ccx manual, *VISCO). 1e-3 costs about three times as much on
+    // the upsetting case (data/fe/studies/rate/README.md).
+    double creepTol = 1e-2;
+    bool rateSensitive() const { return pressSpeedMmS > 0; }
     std::string label() const; // a file-safe name from the inputs
 };
+
+// The step time of the deck: 1 for the *STATIC step, stroke / press speed (s) for *VISCO.
+// Output frames and force totals come back in it; reduction = time / stepTime · reductionMax.
+double stepTime(const FeCase &c);
 
 // Node numbering of the generated mesh (needed to post-process). Nodes sit on a grid of
 // q·nr + 1 by q·nz + 1 points (q = 2 for quadratic elements: mid-side nodes; the element

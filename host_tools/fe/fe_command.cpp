@@ -92,6 +92,10 @@ std::string usage()
            "  --track-step " +
            g(c.trackStep) +
            " (reduction between frames that track the contact edge; 0: none)\n"
+           "  --press-speed " +
+           g(c.pressSpeedMmS) + " (mm/s; > 0: a *VISCO step at this speed, the material σ = K ε^n (ε̇/ε̇₀)^m) --m " +
+           g(c.m) + " --rate0 " + g(c.rate0) + " (ε̇₀, 1/s) --creep-tol " + g(c.creepTol) +
+           " (*VISCO CETOL)\n"
            "  --preset coarse|base (default coarse): base starts from the setup of the models' FE base\n"
            "  (data/fe/README.md), minutes a case: " +
            settingsText(baseSetupCase(), baseSetupRun()) +
@@ -158,6 +162,14 @@ bool setCaseKey(FeCase &c, const std::string &key, double v)
         c.incMax = v;
     else if (key == "track-step")
         c.trackStep = v;
+    else if (key == "press-speed")
+        c.pressSpeedMmS = v;
+    else if (key == "m")
+        c.m = v;
+    else if (key == "rate0")
+        c.rate0 = v;
+    else if (key == "creep-tol")
+        c.creepTol = v;
     else
         return false;
     return true;

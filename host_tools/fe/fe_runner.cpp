@@ -129,9 +129,10 @@ RunResult runOnce(FeCase c, const RunOptions &o)
     const size_t usable = !bestSolution || frd.steps.empty() ? frd.steps.size() : frd.steps.size() - 1;
     std::vector<SideFrame> frames;
     std::vector<size_t> snapshotFrame;
+    const double toReduction = c.reductionMax / stepTime(c); // 1 for a *STATIC step
     for (size_t k = 0; k < usable; ++k) {
         const FrdStep &s = frd.steps[k];
-        const double red = s.time * c.reductionMax;
+        const double red = s.time * toReduction;
         if (c.trackStep > 0) frames.push_back(sideFrame(c, mesh, frd.coords, s.disp, red));
         // Rows only for the snapshots; the tracking frames in between feed roTrackMm.
         const bool snapshot =
@@ -167,7 +168,7 @@ RunResult runOnce(FeCase c, const RunOptions &o)
         // Axisymmetric elements: CalculiX reports forces for a 2° segment.
         f.fx *= 180.0 / 1000.0;
         f.fy *= -180.0 / 1000.0; // compressive force on the specimen, positive, kN
-        f.time *= c.reductionMax;
+        f.time *= toReduction;
         res.force.push_back(f);
     }
     const bool complete = !res.radii.empty() && std::fabs(res.radii.back().reduction - c.reductionMax) < 1e-6;

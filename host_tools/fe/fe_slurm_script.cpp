@@ -49,6 +49,9 @@ std::vector<std::string> caseOptions(const FeCase &c)
         a.push_back(exact(v));
     }
     a.insert(a.end(), {"--element", c.element, "--contact", c.contact});
+    if (c.rateSensitive())
+        a.insert(a.end(), {"--press-speed", exact(c.pressSpeedMmS), "--m", exact(c.m), "--rate0", exact(c.rate0),
+                           "--creep-tol", exact(c.creepTol)});
     return a;
 }
 

@@ -366,9 +366,10 @@ double functionShare(const Candidate &a, const Candidate &b)
 }
 
 // A recorded numeric condition that varies within a material (press speed, temperature) as
-// a slope in one material: an effect confined to one material (a rate-sensitive material among
-// others) is not read as that material. Rate and temperature sensitivity are properties of
-// a material, so only material groupings get one. Declared properties of a level (n, K of a
+// a slope in one material: an effect confined to one material (its lubricant's regime or its
+// heating changing with speed, among others) is not read as that material. How friction and
+// heating change with speed and temperature goes with a material (its lubricant pairing, its
+// flow curve), so only material groupings get one. Declared properties of a level (n, K of a
 // material: a function of some grouping), the reduction and a condition that orders the
 // records in time (what moves along the run is the instrument's, a drift) are left out.
 void addInteractions(const std::vector<LoopRecord> &usable, std::vector<Candidate> *out)

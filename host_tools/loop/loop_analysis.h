@@ -46,9 +46,9 @@ struct Candidate {
 // column named after one of them (r_outer_px, u_over_r0, ...).
 bool isSymptom(const std::string &name);
 
-// A recorded rate (press speed, strain rate, velocity: a word of the name): a rate-sensitive
-// flow curve σ = K ε^n (ε̇/ε̇₀)^m moves u with ln ε̇, so a rate enters as its logarithm where
-// every recorded value is positive.
+// A recorded rate (press speed, strain rate, velocity: a word of the name): it enters as its
+// logarithm where every recorded value is positive, as rate effects go (a lubricant's regime,
+// heating). Not the flow curve's (ε̇/ε̇₀)^m: that leaves u as it is (docs/fe.md).
 bool isRate(const std::string &name);
 
 // The specimen's height reduction as a candidate: recorded (h_final_mm, the derived

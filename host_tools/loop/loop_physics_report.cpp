@@ -39,15 +39,17 @@ std::string list(const std::vector<std::string> &v)
     return s;
 }
 
-// The FE study that would model a process variable: by what the column records.
+// What would model a process variable: by what the column records. A rate is not the flow
+// curve's: in CalculiX a rate-sensitive flow curve leaves u as it is over a decade of press
+// speed (docs/fe.md, "Rate dependence").
 std::string nextStudy(const std::string &name)
 {
     auto has = [&](const char *w) { return name.find(w) != std::string::npos; };
     if (has("speed") || has("rate") || has("velocity"))
-        return "a rate-dependent flow curve: FE runs in CalculiX with a viscoplastic material (*PLASTIC with a "
-               "*CREEP rate term, fitted to the material's flow curves at two or more strain rates) at the recorded "
-               "press speeds, giving du/dv(n, μ) as the sweep gives du/dr; then the model carries u to the reference "
-               "speed as it carries u to 50 %";
+        return "not the material's rate sensitivity: with σ = K ε^n (ε̇/ε̇₀)^m the FE's u moves by less than 2 % "
+               "over a decade of press speed (m 0.05, docs/fe.md), while m itself acts on u as a constant of the "
+               "material read with its n; look for friction that depends on speed (the lubricant's regime: μ_ref "
+               "measured at the recorded speeds) or for heating of the specimen and the dies at the faster speeds";
     if (has("temp") || has("ambient") || has("_c"))
         return "temperature-dependent flow curves (*PLASTIC tables per temperature in CalculiX) and, if the "
                "lubricant is the suspect, μ measured at those temperatures: FE runs at the recorded temperatures "

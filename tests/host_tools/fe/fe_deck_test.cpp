@@ -166,3 +166,81 @@ TEST(FeDeck, SurfaceToSurfaceContactIsItsOwnCase)
     EXPECT_THROW(makeDeck(c), std::invalid_argument);
     EXPECT_NE(nodeDeck.find("TYPE=NODE TO SURFACE"), std::string::npos);
 }
+
+TEST(FeDeck, RateSensitiveMaterialRunsAsNortonTimeHardeningInAViscoStep)
+{
+    FeCase c;
+    c.reductionMax = 0.6;
+    const std::string plain = makeDeck(c);
+    // Without a press speed ε̇₀ and CETOL are inert: the rate-independent deck.
+    FeCase inert = c;
+    inert.rate0 = 10;
+    inert.creepTol = 1e-3;
+    EXPECT_EQ(makeDeck(inert), plain);
+    EXPECT_EQ(inert.label(), c.label());
+    EXPECT_DOUBLE_EQ(stepTime(c), 1.0);
+    EXPECT_EQ(plain.find("*VISCO"), std::string::npos);
+    EXPECT_EQ(plain.find("*CREEP"), std::string::npos);
+    EXPECT_EQ(plain.find("*AMPLITUDE"), std::string::npos);
+    FeCase m = c;
+    m.m = 0.05;
+    EXPECT_THROW(makeDeck(m), std::invalid_argument) << "a rate sensitivity needs a press speed";
+
+    FeCase r = c;
+    r.n = 0.25;
+    r.kMpa = 500;
+    r.m = 0.05;
+    r.rate0 = 2;
+    r.pressSpeedMmS = 0.5;
+    const std::string deck = makeDeck(r);
+    // The whole stroke, 0.6 · 15 = 9 mm, at 0.5 mm/s: 18 s.
+    EXPECT_DOUBLE_EQ(stepTime(r), 18.0);
+    EXPECT_EQ(deck.find("*PLASTIC"), std::string::npos) << "the creep law replaces the table";
+    // Norton: N = 1/(m + n), M = −n/(m + n), A = (K ε̇₀^(−m))^(−N).
+    const auto p = deck.find("*CREEP,LAW=NORTON\n");
+    ASSERT_NE(p, std::string::npos);
+    std::istringstream law(deck.substr(p + 18));
+    double a = 0, n = 0, mm = 0;
+    char comma = 0;
+    law >> a >> comma >> n >> comma >> mm;
+    EXPECT_NEAR(n, 1 / 0.3, 1e-8);
+    EXPECT_NEAR(mm, -0.25 / 0.3, 1e-8);
+    EXPECT_NEAR(a / std::pow(500 * std::pow(2.0, -0.05), -1 / 0.3), 1, 1e-8);
+    // A ramp over the step time: a constant press speed.
+    EXPECT_NE(deck.find("*AMPLITUDE,NAME=PRESS\n0, 0\n18, 1\n*STEP"), std::string::npos);
+    // Increments in step time (a first one of 1e-4, then 1e-7 and 0.01 of 18 s); the stroke
+    // under the amplitude.
+    EXPECT_NE(
+        deck.find("*VISCO,CETOL=0.01\n0.0018, 18, 1.8e-06, 0.18\n*BOUNDARY,AMPLITUDE=PRESS\nPLATENN, 2, 2, -4.5\n"),
+        std::string::npos);
+    // Snapshots in step time: 0.45 of 0.6 at 13.5 s.
+    EXPECT_NE(deck.find("\n13.5\n"), std::string::npos);
+    EXPECT_EQ(deck.find("\n0.75\n"), std::string::npos);
+    // The rest of the deck (mesh, contact, output) is the rate-independent deck's.
+    const auto tail = [](const std::string &d) { return d.substr(d.find("*NODE FILE")); };
+    EXPECT_EQ(tail(deck), tail(plain));
+    const auto head = [](const std::string &d) {
+        const auto at = d.find("\n*NODE,");
+        return d.substr(at, d.find("*MATERIAL,NAME=WORK") - at);
+    };
+    EXPECT_EQ(head(deck), head(plain));
+    // Each speed and m is its own case (the sweep's resume key); m = 0 with a speed is the
+    // time-hardening form without a rate term, not the rate-independent case.
+    EXPECT_EQ(r.label(), c.label() + "_v0.5_m0.05_e02");
+    FeCase fast = r;
+    fast.pressSpeedMmS = 5;
+    EXPECT_NE(fast.label(), r.label());
+    EXPECT_DOUBLE_EQ(stepTime(fast), 1.8);
+    FeCase m0 = r;
+    m0.m = 0;
+    EXPECT_NE(makeDeck(m0).find("*VISCO"), std::string::npos);
+    EXPECT_NE(m0.label(), c.label());
+    // ccx 2.20 integrates Norton's law wrongly for A below 1e-18: such a case is refused, not run.
+    FeCase low = r;
+    low.n = 0.125;
+    low.m = 0;
+    low.rate0 = 1;
+    EXPECT_THROW(makeDeck(low), std::invalid_argument) << "A = 500^-8 = 2.6e-22";
+    low.m = 0.05;
+    EXPECT_NO_THROW(makeDeck(low)) << "A = 500^-5.7 = 3.7e-16";
+}

@@ -1,6 +1,7 @@
 // One coarse FE case end to end through ccx (skipped when ccx is not installed).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
@@ -54,5 +55,39 @@ TEST(FeSmoke, CoarseCaseEndToEnd)
     FeCase other = c;
     other.mu = 0.2;
     EXPECT_FALSE(hasReusableResults(other, again)) << "another case's deck never reuses these results";
+    std::filesystem::remove_all(o.workDir);
+}
+
+// The rate-sensitive material end to end: the same coarse case at two press speeds a decade
+// apart. σ = K ε^n (ε̇/ε̇₀)^m scales by 10^m wherever every rate scales by 10, so the force at
+// each snapshot scales by it and the shape stays (docs/fe.md, "Rate dependence"); a wrong step
+// time, amplitude or creep card breaks one of them.
+TEST(FeSmoke, RateSensitiveCaseScalesWithPressSpeed)
+{
+    if (std::system("command -v ccx > /dev/null 2>&1") != 0) GTEST_SKIP() << "ccx (calculix-ccx) not installed";
+    RunOptions o;
+    o.workDir = (std::filesystem::temp_directory_path() / ("icacam-fe-rate-" + std::to_string(getpid()))).string();
+    o.timeoutS = 170;
+    RunResult r[2];
+    const double speed[2] = {0.5, 5};
+    for (int k = 0; k < 2; ++k) {
+        FeCase c;
+        c.n = 0.25;
+        c.mu = 0.3;
+        c.elemMm = 0.5;
+        c.m = 0.05;
+        c.pressSpeedMmS = speed[k];
+        r[k] = runCase(c, o);
+        ASSERT_EQ(r[k].status, "ok") << r[k].message << " in " << r[k].dir;
+        ASSERT_EQ(r[k].radii.size(), 10u) << "every snapshot found at its step time";
+        ASSERT_FALSE(r[k].force.empty());
+        EXPECT_NEAR(r[k].force.back().time, 0.5, 1e-6) << "force totals at their reduction";
+    }
+    const Radii &slow = r[0].radii.back(), &fast = r[1].radii.back();
+    // Not exactly: elasticity and the contact penalty do not scale with the flow stress (on
+    // this coarse mesh R_i moves 0.6 %, R_max 0.03 %).
+    EXPECT_NEAR(fast.rMaxMm / slow.rMaxMm, 1, 0.005);
+    EXPECT_NEAR(fast.riMm / slow.riMm, 1, 0.01);
+    EXPECT_NEAR(r[1].force.back().fy / r[0].force.back().fy, std::pow(10.0, 0.05), 0.02);
     std::filesystem::remove_all(o.workDir);
 }

@@ -59,6 +59,21 @@ TEST(SlurmScript, CaseOptionsReadBackExactly)
     EXPECT_EQ(std::stod(value("mu")), c.mu);
     EXPECT_EQ(value("n"), "0.125") << "short where short reads back";
     EXPECT_EQ(value("element"), "CAX8R");
+    EXPECT_EQ(value("press-speed"), "") << "a rate-independent case's options are the ones it always had";
+    FeCase r = c;
+    r.pressSpeedMmS = 0.5;
+    r.m = 0.05;
+    r.rate0 = 0.01;
+    const auto b = caseOptions(r);
+    auto valueOf = [&](const std::string &key) {
+        for (size_t i = 0; i + 1 < b.size(); ++i)
+            if (b[i] == "--" + key) return std::stod(b[i + 1]);
+        return -1.0;
+    };
+    EXPECT_EQ(valueOf("press-speed"), 0.5);
+    EXPECT_EQ(valueOf("m"), 0.05);
+    EXPECT_EQ(valueOf("rate0"), 0.01);
+    EXPECT_EQ(valueOf("creep-tol"), r.creepTol);
 }
 
 TEST(SlurmScript, OneCasePerArrayTask)
