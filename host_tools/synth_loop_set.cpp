@@ -109,7 +109,7 @@ std::string writeLoopSet(const std::string &dir, const LoopSetOptions &opt)
         const double hFinalRecorded = 15 * (1 - r) + U(-0.015, 0.015);
         // Geometry from the FE: the ring's width from the paper's model at 50 % carried by the
         // FE du/dr (the physics the model lacks), the contact edge and the silhouette from the
-        // FE snapshots at (n, μ, r). A rate-sensitive material's ring widens with the speed.
+        // FE snapshots at (n, μ, r). A speed effect (the lubricant's friction) widens the ring with the speed.
         double speedFactor = 1.0;
         if (has(opt.effect, LoopEffect::Speed))
             speedFactor *= 1 + kSpeedLogSlope * std::log(speed / kSpeedReferenceMmS);

@@ -17,9 +17,9 @@ enum class LoopEffect : unsigned {
     Camera = 1 << 2,          // one of three cameras measures every length 4 % large (a stale calibration)
     Material = 1 << 3,        // one material's declared n is off by 0.06–0.10 (its flow curve fitted over the
                               // wrong strain range); its specimens deformed with the true n
-    Speed = 1 << 4,           // a rate-sensitive material: u grows with the press speed, u·(1 + 0.06 ln(v/1.6))
+    Speed = 1 << 4,           // u grows with the press speed (friction that depends on it), u·(1 + 0.06 ln(v/1.6))
     Drift = 1 << 5,           // the scale drifts along the run: 0 at the first record to +8 % at the last
-    SpeedInMaterial = 1 << 6, // one material only is rate-sensitive: its u·(1 + 0.10 ln(v/2.4))
+    SpeedInMaterial = 1 << 6, // in one material only u grows with the speed: its u·(1 + 0.10 ln(v/2.4))
 };
 constexpr LoopEffect operator|(LoopEffect a, LoopEffect b)
 {
@@ -51,7 +51,7 @@ struct LoopSetOptions {
 // The hidden effects' sizes (truth.csv carries them per record).
 constexpr double kCameraScaleError = 0.04;
 constexpr double kSpeedLogSlope = 0.06, kSpeedReferenceMmS = 1.6;
-// SpeedInMaterial: the one rate-sensitive material, about the run's typical speed (the
+// SpeedInMaterial: the one material whose u moves with the speed, about the run's typical speed (the
 // geometric mean of the speeds drawn), so that the effect is a slope and not a shift of that
 // material's u (which would read as its n).
 constexpr double kMaterialSpeedLogSlope = 0.10, kMaterialSpeedReferenceMmS = 2.4;

@@ -129,7 +129,7 @@ const char *shiftColumn(LoopEffect e)
 
 // What the records can show of one hidden effect: the nested F test's z (Wilson–Hilferty) of its
 // plain form (a value per camera or material; a line in the sequence; a line in ln v, within the
-// rate-sensitive material for SpeedInMaterial) on the run's residual with every other hidden
+// speed-sensitive material for SpeedInMaterial) on the run's residual with every other hidden
 // effect's μ taken out exactly. Below the family's critical z no procedure shows it on these
 // records.
 double zAlone(const SetRun &run, LoopEffect effects, LoopEffect e)
@@ -160,7 +160,7 @@ double zAlone(const SetRun &run, LoopEffect effects, LoopEffect e)
         }
         params = int(sums.size());
     } else {
-        // A rate acts about the run's typical speed (the mean of ln v), in the rate-sensitive
+        // A rate acts about the run's typical speed (the mean of ln v), in the speed-sensitive
         // material only for SpeedInMaterial.
         std::vector<double> x(n);
         double typical = 0;
