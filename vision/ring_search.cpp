@@ -729,9 +729,10 @@ struct RingSearch::AlignedProfile {
     int count() const { return K + M + 1; }
 };
 
-bool RingSearch::alignedProfile(const double *outerR, AlignedProfile *p, bool onInner) const
+bool RingSearch::alignedProfile(const double *outerR, AlignedProfile *p, bool onInner, int halfSpan) const
 {
-    p->K = int(kMaxU * r0 + 2);
+    p->K = halfSpan > 0 ? halfSpan : int(kMaxU * r0 + 2);
+    if (halfSpan > 0) p->M = halfSpan;
     if (p->count() > AlignedProfile::kSpan) return false;
     const int K = p->K, count = p->count();
     uint32_t sum[AlignedProfile::kSpan], n[AlignedProfile::kSpan];
@@ -1034,7 +1035,10 @@ ErrorCode RingSearch::ringAbout(const MeanEdges &me, EndFaceGeometry *m)
             // (at most 6 px) so that neither reaches the other edge.
             AlignedProfile atInner;
             const double reach = std::min(6.0, 0.5 * (outer.rEqPx - inner.rEqPx));
-            const double wi = alignedProfile(innerR, &atInner, true) ? stepWidth(atInner, name.sign, reach) : -1;
+            // The derivative's kernel reaches two samples: the moments' window stays three inside.
+            const int halfSpan = int(reach / kFineStepPx) + 4;
+            const double wi =
+                alignedProfile(innerR, &atInner, true, halfSpan) ? stepWidth(atInner, name.sign, reach) : -1;
             const double wo = stepWidth(profile, me.signOuter, reach);
             if (wi > 0 && wo >= 0) {
                 m->innerEdgeWidthPx = wi;

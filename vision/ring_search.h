@@ -70,8 +70,9 @@ struct RingSearch {
     // kAlignStride-th fine ray (those with a contact-edge point) sampled at fixed offsets from
     // the fitted curve outerR; false when the widest ring searched does not fit the buffer.
     struct AlignedProfile;
-    // onInner: the same about the original face's fitted curve, on the rays that located it.
-    bool alignedProfile(const double *outerR, AlignedProfile *p, bool onInner = false) const;
+    // onInner: the same about the original face's fitted curve, on the rays that located it;
+    // halfSpan > 0: only that many samples either side of the curve.
+    bool alignedProfile(const double *outerR, AlignedProfile *p, bool onInner = false, int halfSpan = 0) const;
     // The contact edge's blur (Gaussian σ, pixels) from the aligned profile; −1 if none shows.
     double contactEdgeWidth(const AlignedProfile &p, int signOuter) const;
     // The blur of the step at the aligned radius, its derivative's moments taken within
