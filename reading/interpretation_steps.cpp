@@ -111,7 +111,11 @@ constexpr double kInnerEdgeModelMm = 0.005, kOuterEdgeModelMm = 0.001;
 // Under about 3 px the two edges' blurs merge, and the two-step fit reads such a ring up to
 // 0.9 px wide (drawn 640 × 480 rings of 2.6–2.9 px read 3.1–3.4 px, with Δμ up to 0.012):
 // a ring read under 3.5 px may be one of those, a finding whichever path measured it.
-constexpr double kNarrowRingFindingPx = 3.5;
+constexpr double kNarrowRingFindingPx = 3.5, kNarrowRingWidenPx = 0.9;
+// A photograph's narrow-ring fit may instead read two steps of a wide ring's surroundings (a
+// lit shoulder beyond a dark ring: μ 0.1–0.2 low). The barrel's outline, which the FE ties
+// to μ at the height, then disagrees with the μ read; within 2 σ of it the outline agrees.
+constexpr double kNarrowRingOutlineZ = 2.0;
 
 // The silhouette's observation d = α·δk + β·δr + o + e (α the share of a scale error the
 // silhouette sees; e of variance se2: silhouetteRelSigma; o an offset of the silhouette alone,
@@ -336,6 +340,7 @@ EdgeSigma edgeSigma(const EndFaceGeometry &g, const PlaneMapping &p, bool calibr
     const double axisDiff = std::fabs(std::remainder(p.inner.axisDeg - p.outer.axisDeg, 180.0));
     e.sharedEllipse = p.inner.ellipticity > 0.012 && p.outer.ellipticity > 0.012 && axisDiff < 20;
     e.uSigmaEdgesMm = std::hypot(e.uSigmaMm, std::hypot(kInnerEdgeModelMm, kOuterEdgeModelMm));
+    e.narrowWidenMm = kNarrowRingWidenPx * p.mmPerPx;
     if (g.contactRampPx > kContactRampFindingPx)
         e.uSigmaEdgesMm = std::hypot(e.uSigmaEdgesMm, g.contactRampPx * p.mmPerPx);
     if (!calibrated && e.sharedEllipse) {
@@ -367,6 +372,14 @@ uint32_t imageChecks(const EndFaceGeometry &g, const PlaneMapping &p, const Edge
     if (g.contactRampPx > kContactRampFindingPx) f |= kFlagContactEdgeRamp;
     if (g.saturatedFraction > 0.02) f |= kFlagSaturated;
     return f;
+}
+
+bool narrowRingCorroborated(const MuFunction &F, const SpecimenSpec &spec, double uMm, double r, double mu,
+                            double narrowWidenMm, const SilhouetteObservation *silhouette)
+{
+    if (!silhouette || !silhouette->usable || std::fabs(silhouette->rMaxZ) > kNarrowRingOutlineZ) return false;
+    const double narrower = F.at(std::max(0.0, uMm - narrowWidenMm), r, spec.n);
+    return std::fabs(narrower - mu) <= spec.tolerance.at(std::fabs(mu));
 }
 
 MuFunction::MuFunction(const SpecimenSpec &spec, const FrictionModel &model)
