@@ -104,6 +104,10 @@ constexpr double kTiltEllipticityMax = 0.05;
 // most 1.6 px). Beyond kContactRampFindingPx that excess is a finding, and u's error takes it
 // as one standard deviation.
 constexpr double kContactRampFindingPx = 1.6;
+bool contactEdgeOnRamp(const EndFaceGeometry &g)
+{
+    return g.contactRampPx > kContactRampFindingPx;
+}
 // The edge model's own error, beyond the fits' scatter: against the drawn boundaries of the
 // development set's photographs the pipeline's R_i lies 0.005 mm (1 σ) off the truth's
 // equivalent radius and R_o 0.001 mm (a ragged texture boundary, not a step, on the inside).
@@ -341,8 +345,7 @@ EdgeSigma edgeSigma(const EndFaceGeometry &g, const PlaneMapping &p, bool calibr
     e.sharedEllipse = p.inner.ellipticity > 0.012 && p.outer.ellipticity > 0.012 && axisDiff < 20;
     e.uSigmaEdgesMm = std::hypot(e.uSigmaMm, std::hypot(kInnerEdgeModelMm, kOuterEdgeModelMm));
     e.narrowWidenMm = kNarrowRingWidenPx * p.mmPerPx;
-    if (g.contactRampPx > kContactRampFindingPx)
-        e.uSigmaEdgesMm = std::hypot(e.uSigmaEdgesMm, g.contactRampPx * p.mmPerPx);
+    if (contactEdgeOnRamp(g)) e.uSigmaEdgesMm = std::hypot(e.uSigmaEdgesMm, g.contactRampPx * p.mmPerPx);
     if (!calibrated && e.sharedEllipse) {
         const double ell = std::min(p.inner.ellipticity, p.outer.ellipticity);
         e.uSigmaEdgesMm = std::hypot(e.uSigmaEdgesMm, p.face.uMm * ell / (2 * std::sqrt(3.0)));
@@ -369,7 +372,7 @@ uint32_t imageChecks(const EndFaceGeometry &g, const PlaneMapping &p, const Edge
         f |= kFlagElliptical;
     if (g.outer.rEqPx - g.inner.rEqPx < kNarrowRingFindingPx) f |= kFlagNarrowRing;
     if (g.edgeWidthPx > 2.6) f |= kFlagBlurred;
-    if (g.contactRampPx > kContactRampFindingPx) f |= kFlagContactEdgeRamp;
+    if (contactEdgeOnRamp(g)) f |= kFlagContactEdgeRamp;
     if (g.saturatedFraction > 0.02) f |= kFlagSaturated;
     return f;
 }
