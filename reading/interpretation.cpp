@@ -136,7 +136,12 @@ Reading interpret(const EndFaceGeometry &g, const SpecimenSpec &spec, const visi
     // unchecked, which U (the undeclared reduction's range, the tilt term) and the advice
     // carry; a straight view without one stays no_silhouette.
     const bool outlineHiddenByView = !(g.rMaxPx > 0) && (g.imageFlags & vision::kImageBarrelOblique);
-    const CameraDistance camera = cameraDistance(spec, g, oblique);
+    // The outline's centre weighs the working distance unless the boundaries are off-centre: an
+    // ellipse they share alone is as often the specimen's own (a body 0.8 % oval, an original
+    // face 1–2 % out of round: ellipticities 0.012–0.03 on straight rendered photographs) as a
+    // tilt, and a tilt's shift of the outline across or beyond the perspective's line is
+    // caught there as some other view's.
+    const CameraDistance camera = cameraDistance(spec, g, (f & kFlagCentreOffset) != 0);
     SilhouetteObservation obs;
     const SilhouetteObservation *silhouette = nullptr;
     auto observeAt = [&](double mu) {

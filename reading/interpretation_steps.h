@@ -108,8 +108,8 @@ OutlineView outlineView(double n, double mu, double reduction, const CameraDista
 // The view had the working distance been declared (the advice): the close camera's outline the
 // image weighed, to the table's own error; false where the view was declared or not weighed.
 bool declaredDistanceView(const OutlineView &estimated, OutlineView *declared);
-// D0/W of the spec's declared working distance, or (none declared, an uncalibrated straight
-// view with a per-ray silhouette) the image's outline centre against its end face's.
+// D0/W of the spec's declared working distance, or (none declared, a view whose boundaries
+// are concentric, with a per-ray silhouette) the image's outline centre against its end face's.
 CameraDistance cameraDistance(const SpecimenSpec &spec, const vision::EndFaceGeometry &g, bool oblique);
 
 struct SilhouetteObservation {
