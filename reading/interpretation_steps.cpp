@@ -221,8 +221,6 @@ ScaleAndReduction mixturePosterior(const ScaleAndReduction &declared, const Silh
     const double gaussianPrior = (1.0 - kMisreadPrior) / (oblique ? 4 : 3);
     E e;
     double wSum = 0;
-    ScaleAndReduction byView[OutlineView::kMax][E::kCount];
-    double weightByView[OutlineView::kMax][E::kCount] = {};
     for (int h = 0; h < E::WrongEdge; ++h) {
         // The camera's part of d added to the explanation's own, in each view the image
         // leaves open; the explanation's posterior is their mixture.
@@ -239,7 +237,7 @@ ScaleAndReduction mixturePosterior(const ScaleAndReduction &declared, const Silh
                             : 0.0;
             post[c] = update(prior[h], d, beta, se2, off, offVar, alpha[h]);
             e.weight[h] += weight[c];
-            byView[c][h] = post[c], weightByView[c][h] = weight[c];
+            e.part[c][h] = post[c], e.partWeight[c][h] = weight[c];
         }
         wSum += e.weight[h];
         e.post[h] = mixtureOf(post, weight, o.view.count);
@@ -253,7 +251,7 @@ ScaleAndReduction mixturePosterior(const ScaleAndReduction &declared, const Silh
         const double w =
             misreadPossible ? o.view.weight[c] * kMisreadPrior * std::sqrt(2 * std::numbers::pi) / misreadSpan : 0.0;
         e.weight[E::WrongEdge] += w;
-        byView[c][E::WrongEdge] = prior[E::WrongEdge], weightByView[c][E::WrongEdge] = w;
+        e.part[c][E::WrongEdge] = prior[E::WrongEdge], e.partWeight[c][E::WrongEdge] = w;
     }
     wSum += e.weight[E::WrongEdge];
     e.post[E::WrongEdge] = prior[E::WrongEdge];
@@ -263,8 +261,7 @@ ScaleAndReduction mixturePosterior(const ScaleAndReduction &declared, const Silh
     if (o.view.count > 1 && wSum > 0) {
         e.viewCount = o.view.count;
         for (int c = 0; c < o.view.count; ++c)
-            for (int h = 0; h < E::kCount; ++h)
-                e.part[c][h] = byView[c][h], e.partWeight[c][h] = weightByView[c][h] / wSum;
+            for (int h = 0; h < E::kCount; ++h) e.partWeight[c][h] /= wSum;
     }
     // A silhouette more likely a wrong edge than the barrel's outline is not relied on.
     if (e.weight[E::WrongEdge] >= *std::max_element(e.weight, e.weight + E::WrongEdge))
