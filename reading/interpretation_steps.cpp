@@ -116,6 +116,8 @@ constexpr double kInnerEdgeModelMm = 0.005, kOuterEdgeModelMm = 0.001;
 // 0.9 px wide (drawn 640 × 480 rings of 2.6–2.9 px read 3.1–3.4 px, with Δμ up to 0.012):
 // a ring read under 3.5 px may be one of those, a finding whichever path measured it.
 constexpr double kNarrowRingFindingPx = 3.5, kNarrowRingWidenPx = 0.9;
+// An edge blurred beyond σ 2.6 px: the two-step fit of a ring under 6 px loses its edges.
+constexpr double kBlurredPx = 2.6;
 // A photograph's narrow-ring fit may instead read two steps of a wide ring's surroundings (a
 // lit shoulder beyond a dark ring: μ 0.1–0.2 low). The barrel's outline, which the FE ties
 // to μ at the height, then disagrees with the μ read; within 2 σ of it the outline agrees.
@@ -368,7 +370,12 @@ uint32_t imageChecks(const EndFaceGeometry &g, const PlaneMapping &p, const Edge
     if (e.sharedEllipse && std::min(p.inner.ellipticity, p.outer.ellipticity) > kTiltEllipticityMax)
         f |= kFlagElliptical;
     if (g.outer.rEqPx - g.inner.rEqPx < kNarrowRingFindingPx) f |= kFlagNarrowRing;
-    if (g.edgeWidthPx > 2.6) f |= kFlagBlurred;
+    // The optics blur both edges alike, so the narrower one's width is theirs where the rays
+    // located both: the contact edge's takes in the barrel's ramp beyond it (contact_edge_ramp)
+    // and, across a ring of a few pixels, the other edge's flank; a drawn original face's
+    // ragged texture boundary widens its own.
+    const double blurPx = g.innerEdgeWidthPx > 0 ? std::min(g.innerEdgeWidthPx, g.edgeWidthPx) : g.edgeWidthPx;
+    if (blurPx > kBlurredPx) f |= kFlagBlurred;
     if (contactEdgeOnRamp(g)) f |= kFlagContactEdgeRamp;
     if (g.saturatedFraction > 0.02) f |= kFlagSaturated;
     return f;

@@ -114,6 +114,12 @@ TEST(ImageChecks, EachConditionRaisesItsFlag)
     EXPECT_EQ(flagsOf(g), uint32_t(kFlagLowContrast));
     g = circularFace(250, 300), g.edgeWidthPx = 3;
     EXPECT_EQ(flagsOf(g), uint32_t(kFlagBlurred));
+    // A sharp original face's edge beside a wide contact edge: the optics are sharp, the width
+    // is the barrel's (its ramp measured within reach judges it), or the inner edge's flank.
+    g.innerEdgeWidthPx = 1.2;
+    EXPECT_EQ(flagsOf(g), 0u);
+    g.innerEdgeWidthPx = 2.9;
+    EXPECT_EQ(flagsOf(g), uint32_t(kFlagBlurred));
     g = circularFace(250, 300), g.inner.centreX += 6;
     EXPECT_EQ(flagsOf(g), uint32_t(kFlagCentreOffset));
     g = circularFace(250, 252);
