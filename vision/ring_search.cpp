@@ -6,6 +6,7 @@
 
 #include "vision/angle_table.h"
 #include "vision/boundary_fit.h"
+#include "vision/contact_knee.h"
 #include "vision/edge_profile.h"
 #include "vision/narrow_ring.h"
 #include "vision/profile_zones.h"
@@ -46,6 +47,18 @@ constexpr int kAlignRays = kFineRays / 8;
 // Below this fraction of rays a boundary's fit counts as low coverage (the reading flags
 // low_coverage at the same fraction).
 constexpr double kLowCoverage = 0.6;
+// The contact edge's ramp (√(w_o² − w_i²), pixels) above which R_o is taken where the ring's
+// level ends rather than at the derivative's peak: rendered barrels ramping away measure
+// 1.5–3.5 px; drawn steps under 1.0, the development set's and the reference photographs'
+// contact edges under 1.6, the reading's contact_edge_ramp threshold
+// (data/photobench/README.md).
+constexpr double kKneeRampPx = 1.6;
+// How far beyond the derivative's peak the knee's fit reads the profile (pixels): the fall up
+// to its steepest point and a little past it, where a straight fall still holds.
+constexpr int kKneeOutsidePx = 3;
+// Bilinear sampling's own blur on a profile's levels (px²; stepWidth removes it with the
+// derivative kernel's).
+constexpr double kBilinearBlurSq = 0.17;
 
 double robustSigma(const int32_t *d, int lo, int hi)
 {
@@ -784,6 +797,29 @@ double RingSearch::stepWidth(const AlignedProfile &p, int sign, double reachPx) 
     return std::sqrt(std::max(0.0, var));
 }
 
+void RingSearch::contactEdgeAtKnee(const AlignedProfile &p, int signOuter, double blurPx, double rampPx, double reachPx,
+                                   BoundaryFit *outer)
+{
+    ContactKneeWindow w;
+    w.insideSamples = int(reachPx / kFineStepPx);
+    w.outsideSamples = int(kKneeOutsidePx / kFineStepPx);
+    w.blurPx = std::sqrt(blurPx * blurPx + kBilinearBlurSq);
+    w.samplePx = kFineStepPx;
+    // The knee lies inside the derivative's peak by up to about the ramp's width: twice it is
+    // searched, short of the window's first sample (a knee there has no level to end).
+    w.searchInPx = std::min((w.insideSamples - 1) * kFineStepPx, 2 * rampPx);
+    const ContactKnee knee = locateContactKnee(p.level, p.count(), p.K, signOuter, w);
+    if (!knee.found) return;
+    outer->a0 += knee.offsetPx;
+    outer->rEqPx += knee.offsetPx;
+    for (int i = 0; i < rays_; ++i) {
+        const double r = outerPts[i].radius.toDouble() + knee.offsetPx;
+        outerPts[i].radius = Q16_16::fromDouble(r);
+        outerPts[i].x = Q16_16::fromDouble(cx + r * rayCos_[i]);
+        outerPts[i].y = Q16_16::fromDouble(cy + r * raySin_[i]);
+    }
+}
+
 RingSearch::OriginalFaceName RingSearch::nameOriginalFace(const AlignedProfile &p) const
 {
     // Noise of the aligned derivative on the inner part of the window (mostly original
@@ -1043,6 +1079,8 @@ ErrorCode RingSearch::ringAbout(const MeanEdges &me, EndFaceGeometry *m)
             if (wi > 0 && wo >= 0) {
                 m->innerEdgeWidthPx = wi;
                 m->contactRampPx = std::sqrt(std::max(0.0, wo * wo - wi * wi));
+                if (m->contactRampPx > kKneeRampPx)
+                    contactEdgeAtKnee(profile, me.signOuter, wi, m->contactRampPx, reach, &outer);
             }
         }
     } else if (narrowRingFromProfile(profile, me.signOuter, 0.0, &outer, &inner, &contrastInner)) {
