@@ -11,16 +11,16 @@
 namespace icacam::vision {
 
 struct ContactKneeWindow {
-    int insideSamples = 6;     // samples fitted inside the located edge (short of the ring's far edge)
-    int outsideSamples = 3;    // samples fitted beyond it
-    double blurPx = 1.0;       // the optics' Gaussian σ on the profile, pixels
-    double searchInPx = 3.0;   // how far inside the located edge the knee may lie
-    double searchOutPx = 1.0;  // how far beyond it
-    double samplePx = 1.0;     // the profile's sample spacing, pixels
+    int insideSamples = 6;    // samples fitted inside the located edge (short of the ring's far edge)
+    int outsideSamples = 3;   // samples fitted beyond it
+    double blurPx = 1.0;      // the optics' Gaussian σ on the profile, pixels
+    double searchInPx = 3.0;  // how far inside the located edge the knee may lie
+    double searchOutPx = 1.0; // how far beyond it
+    double samplePx = 1.0;    // the profile's sample spacing, pixels
 };
 
 struct ContactKnee {
-    double offsetPx = 0; // the knee's position relative to sample `at` (negative: inside)
+    double offsetPx = 0;             // the knee's position relative to sample `at` (negative: inside)
     double stepLevel = 0, slope = 0; // the fit's step and fall beyond the knee (profile units, per px)
     bool found = false;
 };

@@ -797,17 +797,20 @@ double RingSearch::stepWidth(const AlignedProfile &p, int sign, double reachPx) 
     return std::sqrt(std::max(0.0, var));
 }
 
-void RingSearch::contactEdgeAtKnee(const AlignedProfile &p, int signOuter, double blurPx, double rampPx, double reachPx,
+void RingSearch::contactEdgeAtKnee(const AlignedProfile &p, int signOuter, double blurPx, double rampPx, double ringPx,
                                    BoundaryFit *outer)
 {
+    // The knee lies inside the derivative's peak by up to about the ramp's width: twice it is
+    // searched, and the profile read that far in and the blur's reach beyond, for the ring's
+    // level, but not past half the ring (the original face's edge); the search stays short of
+    // the window's first sample (a knee there has no level to end).
     ContactKneeWindow w;
-    w.insideSamples = int(reachPx / kFineStepPx);
+    const double searchPx = 2 * rampPx;
+    w.insideSamples = int(std::min(0.5 * ringPx, searchPx + 3 * blurPx + 1) / kFineStepPx);
     w.outsideSamples = int(kKneeOutsidePx / kFineStepPx);
     w.blurPx = std::sqrt(blurPx * blurPx + kBilinearBlurSq);
     w.samplePx = kFineStepPx;
-    // The knee lies inside the derivative's peak by up to about the ramp's width: twice it is
-    // searched, short of the window's first sample (a knee there has no level to end).
-    w.searchInPx = std::min((w.insideSamples - 1) * kFineStepPx, 2 * rampPx);
+    w.searchInPx = std::min((w.insideSamples - 1) * kFineStepPx, searchPx);
     const ContactKnee knee = locateContactKnee(p.level, p.count(), p.K, signOuter, w);
     if (!knee.found) return;
     outer->a0 += knee.offsetPx;
@@ -1080,7 +1083,7 @@ ErrorCode RingSearch::ringAbout(const MeanEdges &me, EndFaceGeometry *m)
                 m->innerEdgeWidthPx = wi;
                 m->contactRampPx = std::sqrt(std::max(0.0, wo * wo - wi * wi));
                 if (m->contactRampPx > kKneeRampPx)
-                    contactEdgeAtKnee(profile, me.signOuter, wi, m->contactRampPx, reach, &outer);
+                    contactEdgeAtKnee(profile, me.signOuter, wi, m->contactRampPx, outer.rEqPx - inner.rEqPx, &outer);
             }
         }
     } else if (narrowRingFromProfile(profile, me.signOuter, 0.0, &outer, &inner, &contrastInner)) {

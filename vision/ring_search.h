@@ -81,9 +81,9 @@ struct RingSearch {
     // Where the barrel's shading ramps away beyond the contact edge, the derivative peaks
     // where it falls fastest, outside the edge: moves `outer` (and the rays' points) to where
     // the ring's level ends, the knee fitted across the aligned profile with the optics' blur
-    // blurPx (contact_knee.h) for a contact edge rampPx wider than the original face's, the
-    // profile read within reachPx inside; left alone where no knee is found.
-    void contactEdgeAtKnee(const AlignedProfile &p, int signOuter, double blurPx, double rampPx, double reachPx,
+    // blurPx (contact_knee.h) for a contact edge rampPx wider than the original face's, on a
+    // ring ringPx wide; left alone where no knee is found.
+    void contactEdgeAtKnee(const AlignedProfile &p, int signOuter, double blurPx, double rampPx, double ringPx,
                            BoundaryFit *outer);
     // The original face's edge as the aligned profile names it: the strongest derivative
     // extremum inside the contact edge that separates two levels (sign 0: none).

@@ -16,11 +16,11 @@ using namespace icacam::vision;
 namespace {
 
 struct Barrel {
-    double ring = 180;   // the ring's level, grey
-    double step = 0;     // a drop at the edge itself, grey
-    double kink = 8;     // the barrel's fall just beyond the edge, grey per px
+    double ring = 180;    // the ring's level, grey
+    double step = 0;      // a drop at the edge itself, grey
+    double kink = 8;      // the barrel's fall just beyond the edge, grey per px
     double steepest = 14; // its fall where it is steepest, grey per px
-    double length = 2.5; // how far out that is, px; the fall ends 3 × as far out
+    double length = 2.5;  // how far out that is, px; the fall ends 3 × as far out
 };
 
 // The barrel's slope at x ≥ 0 px from the contact edge: from `kink` up to `steepest` at
@@ -120,9 +120,7 @@ TEST(ContactKneeStep, ADrawnStepStaysWhereItIs)
             ContactKneeWindow w;
             w.blurPx = sigma;
             const ContactKnee knee = locateContactKnee(level.data(), count, peakAt, -1, w);
-            if (knee.found) {
-                EXPECT_NEAR(peakAt + knee.offsetPx, at + edge, 0.1) << sigma << " " << edge;
-            }
+            if (knee.found) { EXPECT_NEAR(peakAt + knee.offsetPx, at + edge, 0.1) << sigma << " " << edge; }
         }
 }
 
