@@ -122,6 +122,7 @@ ContactKnee locateContactKnee(const int32_t *level, int count, int at, int sign,
     out.offsetPx = t;
     out.stepLevel = bestTrial.step;
     out.slope = bestTrial.slope;
+    out.residual = std::sqrt(bestTrial.sse / n);
     out.found = true;
     return out;
 }

@@ -22,13 +22,15 @@ struct ContactKneeWindow {
 struct ContactKnee {
     double offsetPx = 0;             // the knee's position relative to sample `at` (negative: inside)
     double stepLevel = 0, slope = 0; // the fit's step and fall beyond the knee (profile units, per px)
+    double residual = 0;             // the fit's RMS residual (profile units)
     bool found = false;
 };
 
 // level: the profile across the contact edge in any linear unit, samples outwards, the located
-// edge at sample `at`; sign: −1 where the profile falls outwards across the edge, +1 where it
-// rises. Not found when the window leaves the profile, the best knee lies on the search's
-// bound, or the fit's fall beyond the knee goes against the edge's sign.
+// edge at sample `at`; sign: the way the profile goes beyond the knee, −1 falling outwards, +1
+// rising (the step at the knee may go either way: a lit shoulder steps up and falls). Not
+// found when the window leaves the profile, the best knee lies on the search's bound, or the
+// fit's fall beyond the knee goes against `sign`.
 ContactKnee locateContactKnee(const int32_t *level, int count, int at, int sign, const ContactKneeWindow &w);
 
 } // namespace icacam::vision

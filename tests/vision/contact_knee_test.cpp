@@ -107,6 +107,32 @@ TEST(ContactKnee, FindsWhereTheLevelEndsNotWhereTheFallIsSteepest)
     EXPECT_EQ(cases, 54);
 }
 
+TEST(ContactKnee, ALitShoulderDoesNotPullTheStepInside)
+{
+    // A dark ring rising onto a lit shoulder that falls again within a few pixels: the fall,
+    // blurred into the step, moves the derivative's peak inside; the step and the fall beyond
+    // it fitted together (the fall going the other way) read the step where it is.
+    const int count = 40, at = 20;
+    for (double sigma : {0.8, 1.1, 1.5})
+        for (double edge : {-0.4, 0.0, 0.3})
+            for (double length : {1.5, 2.5}) {
+                Barrel b;
+                b.ring = 70, b.step = -60, b.kink = 12, b.steepest = 12, b.length = length;
+                const std::vector<int32_t> level = profile(b, count, at, edge, sigma);
+                const double peak = derivativePeak(level, +1) - at - edge;
+                EXPECT_LT(peak, -0.2) << "sigma " << sigma << " length " << length;
+                ContactKneeWindow w;
+                w.blurPx = sigma;
+                w.searchInPx = w.searchOutPx = 1.5;
+                const int peakAt = int(std::lround(peak + at + edge));
+                const ContactKnee knee = locateContactKnee(level.data(), count, peakAt, -1, w);
+                ASSERT_TRUE(knee.found) << "sigma " << sigma << " edge " << edge << " length " << length;
+                EXPECT_NEAR(peakAt + knee.offsetPx, at + edge, 0.15)
+                    << "sigma " << sigma << " edge " << edge << " length " << length;
+                EXPECT_GT(knee.stepLevel, 0);
+            }
+}
+
 TEST(ContactKneeStep, ADrawnStepStaysWhereItIs)
 {
     // A pure blurred step (no fall behind it): its knee is the step itself, or none.
