@@ -6,6 +6,7 @@
 
 #include "vision/angle_table.h"
 #include "vision/boundary_fit.h"
+#include "vision/contact_knee.h"
 #include "vision/edge_profile.h"
 #include "vision/narrow_ring.h"
 #include "vision/profile_zones.h"
@@ -46,6 +47,28 @@ constexpr int kAlignRays = kFineRays / 8;
 // Below this fraction of rays a boundary's fit counts as low coverage (the reading flags
 // low_coverage at the same fraction).
 constexpr double kLowCoverage = 0.6;
+// The contact edge's ramp (√(w_o² − w_i²), pixels) above which R_o is taken where the ring's
+// level ends rather than at the derivative's peak: rendered barrels ramping away measure
+// 1.5–3.5 px; drawn steps under 1.0, the development set's and the reference photographs'
+// contact edges under 1.6, the reading's contact_edge_ramp threshold
+// (data/photobench/README.md).
+constexpr double kKneeRampPx = 1.6;
+// How far beyond the derivative's peak the knee's fit reads the profile (pixels): the fall up
+// to its steepest point and a little past it, where a straight fall still holds.
+constexpr int kKneeOutsidePx = 3;
+// Beside a lit shoulder (a contact edge rising onto a band that falls again) the fit reads
+// the profile this far inside the derivative's peak (pixels, at most half the ring) and
+// searches the step this far either side of it; the shoulder's fall over kKneeOutsidePx
+// must be at least kShoulderFall of the step. On the bench's dark_ring photographs the peak
+// lies 0.4–0.9 px inside the edge; no drawn ring, development-set or reference photograph
+// rising onto its barrel shows such a fall (they read as the derivative locates them).
+constexpr double kShoulderInsidePx = 6.0, kShoulderSearchPx = 1.5, kShoulderFall = 0.3;
+// The bench's shoulders fit with an RMS residual of 0.2–1.2 % of their step; a tilted view
+// whose ring varies by ±7 grey levels inside the edge, 2.6 %.
+constexpr double kShoulderResidual = 0.02;
+// Bilinear sampling's own blur on a profile's levels (px²; stepWidth removes it with the
+// derivative kernel's).
+constexpr double kBilinearBlurSq = 0.17;
 
 double robustSigma(const int32_t *d, int lo, int hi)
 {
@@ -784,6 +807,51 @@ double RingSearch::stepWidth(const AlignedProfile &p, int sign, double reachPx) 
     return std::sqrt(std::max(0.0, var));
 }
 
+void RingSearch::contactEdgeAtKnee(const AlignedProfile &p, int signOuter, double blurPx, double rampPx, double ringPx,
+                                   BoundaryFit *outer)
+{
+    ContactKneeWindow w;
+    w.outsideSamples = int(kKneeOutsidePx / kFineStepPx);
+    w.blurPx = std::sqrt(blurPx * blurPx + kBilinearBlurSq);
+    w.samplePx = kFineStepPx;
+    int fallSign = signOuter;
+    if (rampPx > kKneeRampPx) {
+        // The knee lies inside the derivative's peak by up to about the ramp's width: twice it
+        // is searched, and the profile read that far in and the blur's reach beyond, for the
+        // ring's level, but not past half the ring (the original face's edge); the search
+        // stays short of the window's first sample (a knee there has no level to end).
+        const double searchPx = 2 * rampPx;
+        w.insideSamples = int(std::min(0.5 * ringPx, searchPx + 3 * blurPx + 1) / kFineStepPx);
+        w.searchInPx = std::min((w.insideSamples - 1) * kFineStepPx, searchPx);
+    } else if (signOuter > 0) {
+        // A contact edge rising onto a lit shoulder: the shoulder falls again just beyond, and
+        // its fall, blurred into the step, moves the derivative's peak inside the edge. The
+        // step and the fall beyond it are fitted alike, the fall going the other way.
+        w.insideSamples = int(std::min(0.5 * ringPx, kShoulderInsidePx) / kFineStepPx);
+        w.searchInPx = w.searchOutPx = kShoulderSearchPx;
+        fallSign = -signOuter;
+    } else {
+        return;
+    }
+    const ContactKnee knee = locateContactKnee(p.level, p.count(), p.K, fallSign, w);
+    if (!knee.found) return;
+    // A shoulder that falls by less than kShoulderFall of the step within the window is no
+    // shoulder, and a ring that is no level inside the step (the fit's residual beyond
+    // kShoulderResidual of the step) not the model fitted: the step stands as the derivative
+    // located it.
+    if (fallSign != signOuter && !(std::fabs(knee.slope) * kKneeOutsidePx > kShoulderFall * std::fabs(knee.stepLevel) &&
+                                   knee.residual < kShoulderResidual * std::fabs(knee.stepLevel)))
+        return;
+    outer->a0 += knee.offsetPx;
+    outer->rEqPx += knee.offsetPx;
+    for (int i = 0; i < rays_; ++i) {
+        const double r = outerPts[i].radius.toDouble() + knee.offsetPx;
+        outerPts[i].radius = Q16_16::fromDouble(r);
+        outerPts[i].x = Q16_16::fromDouble(cx + r * rayCos_[i]);
+        outerPts[i].y = Q16_16::fromDouble(cy + r * raySin_[i]);
+    }
+}
+
 RingSearch::OriginalFaceName RingSearch::nameOriginalFace(const AlignedProfile &p) const
 {
     // Noise of the aligned derivative on the inner part of the window (mostly original
@@ -1043,6 +1111,7 @@ ErrorCode RingSearch::ringAbout(const MeanEdges &me, EndFaceGeometry *m)
             if (wi > 0 && wo >= 0) {
                 m->innerEdgeWidthPx = wi;
                 m->contactRampPx = std::sqrt(std::max(0.0, wo * wo - wi * wi));
+                contactEdgeAtKnee(profile, me.signOuter, wi, m->contactRampPx, outer.rEqPx - inner.rEqPx, &outer);
             }
         }
     } else if (narrowRingFromProfile(profile, me.signOuter, 0.0, &outer, &inner, &contrastInner)) {

@@ -78,6 +78,14 @@ struct RingSearch {
     // The blur of the step at the aligned radius, its derivative's moments taken within
     // reachPx either side; −1 if none shows.
     double stepWidth(const AlignedProfile &p, int sign, double reachPx) const;
+    // Where the barrel's shading ramps away beyond the contact edge (rampPx beyond
+    // kKneeRampPx), the derivative peaks where it falls fastest, outside the edge; where the
+    // edge rises onto a lit shoulder, the shoulder's fall pulls the peak inside. Moves `outer`
+    // (and the rays' points) to where the ring's level ends, the step and the fall beyond it
+    // fitted across the aligned profile with the optics' blur blurPx (contact_knee.h), on a
+    // ring ringPx wide; left alone where neither shows or no knee is found.
+    void contactEdgeAtKnee(const AlignedProfile &p, int signOuter, double blurPx, double rampPx, double ringPx,
+                           BoundaryFit *outer);
     // The original face's edge as the aligned profile names it: the strongest derivative
     // extremum inside the contact edge that separates two levels (sign 0: none).
     struct OriginalFaceName {
