@@ -158,10 +158,12 @@ void writeRateSection(std::ostream &md, const RateSensitivity &rate)
     md << "\n## Rate sensitivity from the press's force\n\n"
           "u does not move with the press speed under a rate-sensitive flow curve (every stress scales by the "
           "same factor, friction with the pressure): the speed shows in the force. Per material, ln of `"
-       << rate.forceColumn << "` over the FE's rate-independent force at the record's n, μ_ref and height against ln ε̇ = ln(`"
+       << rate.forceColumn
+       << "` over the FE's rate-independent force at the record's n, μ_ref and height against ln ε̇ = ln(`"
        << (rate.speedColumn.empty() ? std::string("—") : rate.speedColumn)
        << "` / h_final): the slope is m, the intercept K at 1 /s over the declared K.\n\n"
-          "| material | records | speeds, mm/s | m | U (95 %, k from Student's t) | K(1 /s) / K declared | scatter of ln F |\n"
+          "| material | records | speeds, mm/s | m | U (95 %, k from Student's t) | K(1 /s) / K declared | scatter of "
+          "ln F |\n"
           "|---|---|---|---|---|---|---|\n";
     for (const RateFit &r : rate.materials) {
         md << "| " << r.material << " | " << r.records << " | ";
@@ -187,9 +189,8 @@ void writeRateCsv(const std::string &path, const RateSensitivity &rate)
     for (const RateFit &r : rate.materials)
         csv << r.material << ',' << r.records << ',' << f("%.4g", r.speedMin) << ',' << f("%.4g", r.speedMax) << ','
             << f("%.5f", r.m) << ',' << f("%.5f", r.mSigma) << ',' << f("%.3f", r.coverage) << ','
-            << f("%.5f", r.kRatio) << ','
-            << f("%.5f", r.kRatioSigma) << ',' << f("%.5f", r.scatter) << ',' << (r.fitted ? 1 : 0) << ',' << r.why
-            << '\n';
+            << f("%.5f", r.kRatio) << ',' << f("%.5f", r.kRatioSigma) << ',' << f("%.5f", r.scatter) << ','
+            << (r.fitted ? 1 : 0) << ',' << r.why << '\n';
 }
 
 } // namespace icacam::host::loop

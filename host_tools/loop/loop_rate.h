@@ -20,9 +20,9 @@ namespace icacam::host::loop {
 
 struct RateFit {
     std::string material;
-    int records = 0;                  // with a force, a speed and the FE's force
+    int records = 0;                   // with a force, a speed and the FE's force
     double speedMin = 0, speedMax = 0; // mm/s
-    double m = 0, mSigma = 0;         // the slope and its standard uncertainty
+    double m = 0, mSigma = 0;          // the slope and its standard uncertainty
     // The coverage factor for 95 % from Student's t at the fit's records − 2 degrees of
     // freedom (a few records: k 2.3–4.3, not 2): U = coverage · σ.
     double coverage = 2;
