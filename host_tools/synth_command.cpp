@@ -32,7 +32,7 @@ std::string usage()
            "       icacam synth --out DIR --condition all|NAME[,NAME...] [--count N] [--seed S] [--hard]\n"
            "       icacam synth --renderer povray --out DIR ... (photographs: icacam synth --renderer povray --help)\n"
            "       icacam synth --out DIR --effect "
-           "process|optical|camera|material|speed|drift|speed_material|null[,...]\n"
+           "process|optical|camera|material|speed|drift|speed_material|rate|null[,...]\n"
            "                    [--radii] [--count N] [--seed S]\n"
            "  --out DIR     where DIR/images/*, DIR/manifest.csv and DIR/truth.csv are written\n"
            "  --count N     records (default " +
@@ -87,11 +87,12 @@ int synthCommand(const std::vector<std::string> &args)
     if (!effect.empty()) {
         LoopSetOptions opt;
         if (!parseLoopEffect(effect, &opt.effect))
-            throw cli::UsageError("--effect: process, optical, camera, material, speed, drift, speed_material or null, "
-                                  "or a comma list of "
-                                  "them, not '" +
-                                      effect + "'",
-                                  usage());
+            throw cli::UsageError(
+                "--effect: process, optical, camera, material, speed, drift, speed_material, rate or null, "
+                "or a comma list of "
+                "them, not '" +
+                    effect + "'",
+                usage());
         if (hard) throw cli::UsageError("--hard does not apply to --effect sets", usage());
         opt.count = int(count);
         opt.seed = uint32_t(seed);

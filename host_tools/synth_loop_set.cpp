@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <random>
 #include <stdexcept>
 
@@ -44,7 +45,8 @@ constexpr EffectName kEffectNames[] = {
     {"null", LoopEffect::Null},         {"process", LoopEffect::Process},
     {"optical", LoopEffect::Optical},   {"camera", LoopEffect::Camera},
     {"material", LoopEffect::Material}, {"speed", LoopEffect::Speed},
-    {"drift", LoopEffect::Drift},       {"speed_material", LoopEffect::SpeedInMaterial}};
+    {"drift", LoopEffect::Drift},       {"speed_material", LoopEffect::SpeedInMaterial},
+    {"rate", LoopEffect::Rate}};
 
 } // namespace
 
@@ -77,14 +79,17 @@ std::string writeLoopSet(const std::string &dir, const LoopSetOptions &opt)
 {
     fs::create_directories(fs::path(dir) / (opt.radii ? "" : "images"));
     const std::string manifestPath = (fs::path(dir) / "manifest.csv").string();
+    const bool rate = has(opt.effect, LoopEffect::Rate);
     std::ofstream man(manifestPath), truth(fs::path(dir) / "truth.csv");
     if (!man || !truth) throw std::runtime_error("cannot write to '" + dir + "'");
     man << "id," << (opt.radii ? "r_inner_mm,r_outer_mm,r_bulge_mm" : "image,mm_per_px")
         << ",n,k_mpa,d0_mm,h0_mm,mu_ref,h_final_mm,material,camera_id,lens,operator,press_speed_mm_s,ambient_c,"
-           "sequence\n";
+           "sequence"
+        << (rate ? ",force_kn" : "") << "\n";
     truth << "id,mu,n_true,n_declared,reduction,scale_error,speed_factor,u_mm,r_inner_mm,r_outer_mm,r_bulge_mm,"
              "material,camera_id,effects,camera_error,drift_error,mu_camera_shift,mu_drift_shift,mu_speed_shift,"
-             "mu_n_shift\n";
+             "mu_n_shift"
+          << (rate ? ",m_true" : "") << "\n";
     const std::string effects = loopEffectNames(opt.effect);
     std::mt19937 rng(opt.seed);
     auto U = [&](double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); };
@@ -96,6 +101,11 @@ std::string writeLoopSet(const std::string &dir, const LoopSetOptions &opt)
     double wrongN = kMaterials[badMaterial].n + (rng() % 2 ? 1 : -1) * U(0.06, 0.10);
     if (wrongN < 0.06 || wrongN > 0.5) wrongN = kMaterials[badMaterial].n + (wrongN < 0.06 ? 1 : -1) * 0.08;
     const friction::PaperModel paper; // the truth: μ from u at 50 %
+    // The rate effect draws from its own stream: every other set stays as it was.
+    std::mt19937 rateRng(opt.seed * 7919u + 17u);
+    double mOf[kMaterialCount] = {};
+    for (double &m : mOf) m = rate ? std::uniform_real_distribution<double>(0, kRateMMax)(rateRng) : 0.0;
+    std::normal_distribution<double> forceNoise(0, kForceRelSigma);
     for (int i = 0; i < opt.count; ++i) {
         const int m = int(rng() % uint32_t(kMaterialCount)), cam = int(rng() % 3);
         const Material &mat = kMaterials[m];
@@ -173,16 +183,30 @@ std::string writeLoopSet(const std::string &dir, const LoopSetOptions &opt)
             measured = line;
             ri = s.rInnerEqMm(), roEq = s.rOuterEqMm();
         }
-        std::snprintf(line, sizeof line, "%s,%s,%.4f,%d,10,15,%.4f,%.3f,%s,%s,%s,%s,%.2f,%.1f,%d\n", id,
-                      measured.c_str(), nDeclared, mat.kMpa, mu + refNoise(rng), hFinalRecorded, mat.name,
-                      kCameras[cam], lens.c_str(), op.c_str(), speed, ambient, i + 1);
+        std::snprintf(line, sizeof line, "%s,%s,%.4f,%d,10,15,%.4f,%.3f,%s,%s,%s,%s,%.2f,%.1f,%d", id, measured.c_str(),
+                      nDeclared, mat.kMpa, mu + refNoise(rng), hFinalRecorded, mat.name, kCameras[cam], lens.c_str(),
+                      op.c_str(), speed, ambient, i + 1);
         man << line;
+        if (rate) {
+            // The slab method's upsetting force at the final height, the flow stress at the
+            // strain rate the press's speed gives there.
+            const double h = 15 * (1 - r), radius = 5 * std::sqrt(15 / h), strain = std::log(15 / h);
+            const double flow = mat.kMpa * std::pow(strain, n) * std::pow(speed / h, mOf[m]);
+            const double kN = flow * std::numbers::pi * radius * radius * (1 + 2 * mu * radius / (3 * h)) / 1000;
+            std::snprintf(line, sizeof line, ",%.3f", kN * (1 + forceNoise(rateRng)));
+            man << line;
+        }
+        man << "\n";
         std::snprintf(line, sizeof line,
-                      "%s,%.5f,%.4f,%.4f,%.4f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%s,%s,%s,%.5f,%.5f,%.6f,%.6f,%.6f,%.6f\n",
-                      id, mu, n, nDeclared, r, scaleError, speedFactor, roEq - ri, ri, roEq, rMax, mat.name,
-                      kCameras[cam], effects.c_str(), cameraError, driftError, muCameraShift, muDriftShift,
-                      muSpeedShift, muNShift);
+                      "%s,%.5f,%.4f,%.4f,%.4f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%s,%s,%s,%.5f,%.5f,%.6f,%.6f,%.6f,%.6f", id,
+                      mu, n, nDeclared, r, scaleError, speedFactor, roEq - ri, ri, roEq, rMax, mat.name, kCameras[cam],
+                      effects.c_str(), cameraError, driftError, muCameraShift, muDriftShift, muSpeedShift, muNShift);
         truth << line;
+        if (rate) {
+            std::snprintf(line, sizeof line, ",%.4f", mOf[m]);
+            truth << line;
+        }
+        truth << "\n";
     }
     return manifestPath;
 }

@@ -20,6 +20,8 @@ enum class LoopEffect : unsigned {
     Speed = 1 << 4,           // u grows with the press speed (friction that depends on it), u·(1 + 0.06 ln(v/1.6))
     Drift = 1 << 5,           // the scale drifts along the run: 0 at the first record to +8 % at the last
     SpeedInMaterial = 1 << 6, // in one material only u grows with the speed: its u·(1 + 0.10 ln(v/2.4))
+    Rate = 1 << 7,            // each material's flow stress rises with the strain rate, σ = K ε^n (ε̇/1 s⁻¹)^m,
+                              // m 0–0.12 per material: u does not move, the press's force (force_kn) does
 };
 constexpr LoopEffect operator|(LoopEffect a, LoopEffect b)
 {
@@ -29,7 +31,7 @@ constexpr bool has(LoopEffect set, LoopEffect e)
 {
     return (unsigned(set) & unsigned(e)) != 0;
 }
-// One name (null, process, optical, camera, material, speed, drift, speed_material) or a
+// One name (null, process, optical, camera, material, speed, drift, speed_material, rate) or a
 // comma-separated list of them.
 bool parseLoopEffect(const std::string &names, LoopEffect *out);
 // The set's effects as the names above, joined by '+' ("null" for none).
@@ -56,6 +58,8 @@ constexpr double kSpeedLogSlope = 0.06, kSpeedReferenceMmS = 1.6;
 // material's u (which would read as its n).
 constexpr double kMaterialSpeedLogSlope = 0.10, kMaterialSpeedReferenceMmS = 2.4;
 constexpr double kDriftScaleError = 0.08; // Drift: the last record's scale error
+// Rate: each material's m uniform in [0, kRateMMax]; the load cell's reading to kForceRelSigma.
+constexpr double kRateMMax = 0.12, kForceRelSigma = 0.01;
 
 // Writes DIR/manifest.csv (what the lab recorded: id, image + mm_per_px or the three radii, n,
 // k_mpa, d0_mm, h0_mm, mu_ref, h_final_mm, material, camera_id, lens, operator,
@@ -63,7 +67,10 @@ constexpr double kDriftScaleError = 0.08; // Drift: the last record's scale erro
 // record: the true μ, n and reduction, the declared n, the length scale error, the speed
 // factor of u, the true radii, the set's effects, the camera's and the drift's share of the
 // scale error, and the μ each of the camera, the drift, the speed and a wrong declared n adds
-// to the paper model's μ at the record). Returns the manifest's path.
+// to the paper model's μ at the record). With the rate effect the manifest also carries the
+// press's peak force at the final height (force_kn: the slab method's K ε^n (ε̇/1 s⁻¹)^m ·
+// πR²·(1 + 2μR/3h), ε̇ the speed over the final height) and truth.csv each record's m (m_true).
+// Returns the manifest's path.
 std::string writeLoopSet(const std::string &dir, const LoopSetOptions &opt);
 
 } // namespace icacam::host

@@ -21,11 +21,11 @@ double silhouetteMeasuredRelSigma(double coverage, double scatterPx, double rMax
 
 // The steps after the face is in millimetres, shared by images and radii.
 void readFace(const SpecimenSpec &spec, const friction::FrictionModel &model, const AssumedReduction &assumed,
-              double scaleRelSigma, double uSigmaEdgesMm, const SilhouetteObservation *silhouette,
+              double scaleRelSigma, const EdgeSigma &edges, const SilhouetteObservation *silhouette,
               double silhouetteSigma, bool calibrated, bool oblique, uint32_t f, Reading *out)
 {
     const MuFunction F(spec, model);
-    const double u = out->face.uMm, n = spec.n;
+    const double u = out->face.uMm, n = spec.n, uSigmaEdgesMm = edges.uSigmaEdgesMm;
     ScaleAndReduction declared;
     declared.pk = scaleRelSigma * scaleRelSigma;
     declared.pr = assumed.sigma * assumed.sigma;
@@ -66,6 +66,9 @@ void readFace(const SpecimenSpec &spec, const friction::FrictionModel &model, co
     out->advice = adviseInput(F, model, spec, uF, rF, sr, uSigmaEdgesMm, read.bias, assumed.declared, calibrated,
                               scaleRelSigma, distanceAdvice ? &withDistance : nullptr);
     out->advice.reductionUnchecked = !assumed.declared && !explained;
+    if ((f & kFlagNarrowRing) &&
+        narrowRingCorroborated(F, spec, uF, rF, out->mu, edges.narrowWidenMm * uF / u, silhouette))
+        f &= ~kFlagNarrowRing;
     const ModelEstimate asDeclared = model.estimate({u, n, spec.kMpa, spec.d0Mm, spec.h0Mm, spec.hFinalMm});
     out->declared = {asDeclared.mu, asDeclared.dMuDu};
     out->nominalMu = F.at(u, kNominalReduction, n);
@@ -133,7 +136,12 @@ Reading interpret(const EndFaceGeometry &g, const SpecimenSpec &spec, const visi
     // unchecked, which U (the undeclared reduction's range, the tilt term) and the advice
     // carry; a straight view without one stays no_silhouette.
     const bool outlineHiddenByView = !(g.rMaxPx > 0) && (g.imageFlags & vision::kImageBarrelOblique);
-    const CameraDistance camera = cameraDistance(spec, g, oblique);
+    // The outline's centre weighs the working distance unless the boundaries are off-centre: an
+    // ellipse they share alone is as often the specimen's own (a body 0.8 % oval, an original
+    // face 1–2 % out of round: ellipticities 0.012–0.03 on straight rendered photographs) as a
+    // tilt, and a tilt's shift of the outline across or beyond the perspective's line is
+    // caught there as some other view's.
+    const CameraDistance camera = cameraDistance(spec, g, (f & kFlagCentreOffset) != 0);
     SilhouetteObservation obs;
     const SilhouetteObservation *silhouette = nullptr;
     auto observeAt = [&](double mu) {
@@ -153,8 +161,8 @@ Reading interpret(const EndFaceGeometry &g, const SpecimenSpec &spec, const visi
         silhouette = &obs;
     }
     auto read = [&] {
-        readFace(spec, model, assumed, p.scaleRelSigma, e.uSigmaEdgesMm, silhouette, silhouetteRelSigma(g),
-                 calibration != nullptr, oblique, f, &out);
+        readFace(spec, model, assumed, p.scaleRelSigma, e, silhouette, silhouetteRelSigma(g), calibration != nullptr,
+                 oblique, f, &out);
     };
     read();
     if (silhouette && reobserve(assumed, obs, out)) {
@@ -179,7 +187,8 @@ Reading interpret(const FaceInMm &face, const SpecimenSpec &spec, const friction
     SilhouetteObservation obs;
     auto readAt = [&](double mu) {
         obs = observeSilhouette(out.face, 1, 0, face.rMaxMm, spec, assumed, mu, declaredCameraDistance(spec));
-        readFace(spec, model, assumed, spec.tolerances.scaleRel, 0, &obs, silhouetteSigma, false, false, 0, &out);
+        readFace(spec, model, assumed, spec.tolerances.scaleRel, EdgeSigma{}, &obs, silhouetteSigma, false, false, 0,
+                 &out);
     };
     readAt(F.at(out.face.uMm, assumed.r, spec.n));
     if (reobserve(assumed, obs, out)) readAt(specimenMu(spec, model, out));

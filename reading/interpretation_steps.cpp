@@ -104,6 +104,10 @@ constexpr double kTiltEllipticityMax = 0.05;
 // most 1.6 px). Beyond kContactRampFindingPx that excess is a finding, and u's error takes it
 // as one standard deviation.
 constexpr double kContactRampFindingPx = 1.6;
+bool contactEdgeOnRamp(const EndFaceGeometry &g)
+{
+    return g.contactRampPx > kContactRampFindingPx;
+}
 // The edge model's own error, beyond the fits' scatter: against the drawn boundaries of the
 // development set's photographs the pipeline's R_i lies 0.005 mm (1 σ) off the truth's
 // equivalent radius and R_o 0.001 mm (a ragged texture boundary, not a step, on the inside).
@@ -111,7 +115,13 @@ constexpr double kInnerEdgeModelMm = 0.005, kOuterEdgeModelMm = 0.001;
 // Under about 3 px the two edges' blurs merge, and the two-step fit reads such a ring up to
 // 0.9 px wide (drawn 640 × 480 rings of 2.6–2.9 px read 3.1–3.4 px, with Δμ up to 0.012):
 // a ring read under 3.5 px may be one of those, a finding whichever path measured it.
-constexpr double kNarrowRingFindingPx = 3.5;
+constexpr double kNarrowRingFindingPx = 3.5, kNarrowRingWidenPx = 0.9;
+// An edge blurred beyond σ 2.6 px: the two-step fit of a ring under 6 px loses its edges.
+constexpr double kBlurredPx = 2.6;
+// A photograph's narrow-ring fit may instead read two steps of a wide ring's surroundings (a
+// lit shoulder beyond a dark ring: μ 0.1–0.2 low). The barrel's outline, which the FE ties
+// to μ at the height, then disagrees with the μ read; within 2 σ of it the outline agrees.
+constexpr double kNarrowRingOutlineZ = 2.0;
 
 // The silhouette's observation d = α·δk + β·δr + o + e (α the share of a scale error the
 // silhouette sees; e of variance se2: silhouetteRelSigma; o an offset of the silhouette alone,
@@ -213,8 +223,6 @@ ScaleAndReduction mixturePosterior(const ScaleAndReduction &declared, const Silh
     const double gaussianPrior = (1.0 - kMisreadPrior) / (oblique ? 4 : 3);
     E e;
     double wSum = 0;
-    ScaleAndReduction byView[OutlineView::kMax][E::kCount];
-    double weightByView[OutlineView::kMax][E::kCount] = {};
     for (int h = 0; h < E::WrongEdge; ++h) {
         // The camera's part of d added to the explanation's own, in each view the image
         // leaves open; the explanation's posterior is their mixture.
@@ -231,7 +239,7 @@ ScaleAndReduction mixturePosterior(const ScaleAndReduction &declared, const Silh
                             : 0.0;
             post[c] = update(prior[h], d, beta, se2, off, offVar, alpha[h]);
             e.weight[h] += weight[c];
-            byView[c][h] = post[c], weightByView[c][h] = weight[c];
+            e.part[c][h] = post[c], e.partWeight[c][h] = weight[c];
         }
         wSum += e.weight[h];
         e.post[h] = mixtureOf(post, weight, o.view.count);
@@ -245,7 +253,7 @@ ScaleAndReduction mixturePosterior(const ScaleAndReduction &declared, const Silh
         const double w =
             misreadPossible ? o.view.weight[c] * kMisreadPrior * std::sqrt(2 * std::numbers::pi) / misreadSpan : 0.0;
         e.weight[E::WrongEdge] += w;
-        byView[c][E::WrongEdge] = prior[E::WrongEdge], weightByView[c][E::WrongEdge] = w;
+        e.part[c][E::WrongEdge] = prior[E::WrongEdge], e.partWeight[c][E::WrongEdge] = w;
     }
     wSum += e.weight[E::WrongEdge];
     e.post[E::WrongEdge] = prior[E::WrongEdge];
@@ -255,8 +263,7 @@ ScaleAndReduction mixturePosterior(const ScaleAndReduction &declared, const Silh
     if (o.view.count > 1 && wSum > 0) {
         e.viewCount = o.view.count;
         for (int c = 0; c < o.view.count; ++c)
-            for (int h = 0; h < E::kCount; ++h)
-                e.part[c][h] = byView[c][h], e.partWeight[c][h] = weightByView[c][h] / wSum;
+            for (int h = 0; h < E::kCount; ++h) e.partWeight[c][h] /= wSum;
     }
     // A silhouette more likely a wrong edge than the barrel's outline is not relied on.
     if (e.weight[E::WrongEdge] >= *std::max_element(e.weight, e.weight + E::WrongEdge))
@@ -336,8 +343,8 @@ EdgeSigma edgeSigma(const EndFaceGeometry &g, const PlaneMapping &p, bool calibr
     const double axisDiff = std::fabs(std::remainder(p.inner.axisDeg - p.outer.axisDeg, 180.0));
     e.sharedEllipse = p.inner.ellipticity > 0.012 && p.outer.ellipticity > 0.012 && axisDiff < 20;
     e.uSigmaEdgesMm = std::hypot(e.uSigmaMm, std::hypot(kInnerEdgeModelMm, kOuterEdgeModelMm));
-    if (g.contactRampPx > kContactRampFindingPx)
-        e.uSigmaEdgesMm = std::hypot(e.uSigmaEdgesMm, g.contactRampPx * p.mmPerPx);
+    e.narrowWidenMm = kNarrowRingWidenPx * p.mmPerPx;
+    if (contactEdgeOnRamp(g)) e.uSigmaEdgesMm = std::hypot(e.uSigmaEdgesMm, g.contactRampPx * p.mmPerPx);
     if (!calibrated && e.sharedEllipse) {
         const double ell = std::min(p.inner.ellipticity, p.outer.ellipticity);
         e.uSigmaEdgesMm = std::hypot(e.uSigmaEdgesMm, p.face.uMm * ell / (2 * std::sqrt(3.0)));
@@ -363,10 +370,23 @@ uint32_t imageChecks(const EndFaceGeometry &g, const PlaneMapping &p, const Edge
     if (e.sharedEllipse && std::min(p.inner.ellipticity, p.outer.ellipticity) > kTiltEllipticityMax)
         f |= kFlagElliptical;
     if (g.outer.rEqPx - g.inner.rEqPx < kNarrowRingFindingPx) f |= kFlagNarrowRing;
-    if (g.edgeWidthPx > 2.6) f |= kFlagBlurred;
-    if (g.contactRampPx > kContactRampFindingPx) f |= kFlagContactEdgeRamp;
+    // The optics blur both edges alike, so the narrower one's width is theirs where the rays
+    // located both: the contact edge's takes in the barrel's ramp beyond it (contact_edge_ramp)
+    // and, across a ring of a few pixels, the other edge's flank; a drawn original face's
+    // ragged texture boundary widens its own.
+    const double blurPx = g.innerEdgeWidthPx > 0 ? std::min(g.innerEdgeWidthPx, g.edgeWidthPx) : g.edgeWidthPx;
+    if (blurPx > kBlurredPx) f |= kFlagBlurred;
+    if (contactEdgeOnRamp(g)) f |= kFlagContactEdgeRamp;
     if (g.saturatedFraction > 0.02) f |= kFlagSaturated;
     return f;
+}
+
+bool narrowRingCorroborated(const MuFunction &F, const SpecimenSpec &spec, double uMm, double r, double mu,
+                            double narrowWidenMm, const SilhouetteObservation *silhouette)
+{
+    if (!silhouette || !silhouette->usable || std::fabs(silhouette->rMaxZ) > kNarrowRingOutlineZ) return false;
+    const double narrower = F.at(std::max(0.0, uMm - narrowWidenMm), r, spec.n);
+    return std::fabs(narrower - mu) <= spec.tolerance.at(std::fabs(mu));
 }
 
 MuFunction::MuFunction(const SpecimenSpec &spec, const FrictionModel &model)

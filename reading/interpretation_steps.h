@@ -44,6 +44,7 @@ struct EdgeSigma {
     double uSigmaMm = 0;
     double uSigmaEdgesMm = 0;
     bool sharedEllipse = false; // both boundaries elliptical along one axis
+    double narrowWidenMm = 0;   // how much wider a ring read narrow may read than it is
 };
 EdgeSigma edgeSigma(const vision::EndFaceGeometry &g, const PlaneMapping &p, bool calibrated);
 
@@ -107,8 +108,8 @@ OutlineView outlineView(double n, double mu, double reduction, const CameraDista
 // The view had the working distance been declared (the advice): the close camera's outline the
 // image weighed, to the table's own error; false where the view was declared or not weighed.
 bool declaredDistanceView(const OutlineView &estimated, OutlineView *declared);
-// D0/W of the spec's declared working distance, or (none declared, an uncalibrated straight
-// view with a per-ray silhouette) the image's outline centre against its end face's.
+// D0/W of the spec's declared working distance, or (none declared, a view whose boundaries
+// are concentric, with a per-ray silhouette) the image's outline centre against its end face's.
 CameraDistance cameraDistance(const SpecimenSpec &spec, const vision::EndFaceGeometry &g, bool oblique);
 
 struct SilhouetteObservation {
@@ -128,6 +129,12 @@ SilhouetteObservation observeSilhouette(const FaceInMm &face, double coverage, d
                                         const CameraDistance &camera);
 // The spec's declared working distance alone (radii given as numbers: no image to say more).
 CameraDistance declaredCameraDistance(const SpecimenSpec &spec);
+
+// A ring read narrow (narrow_ring) may read up to narrowWidenMm too wide, or, on a photograph,
+// on the wrong steps altogether. Where the barrel's outline agrees with the μ it reads and
+// that widening cannot move μ beyond the tolerance, the narrow ring is no finding: true.
+bool narrowRingCorroborated(const MuFunction &F, const SpecimenSpec &spec, double uMm, double r, double mu,
+                            double narrowWidenMm, const SilhouetteObservation *silhouette);
 
 // The silhouette's explanations of its discrepancy where no final height is declared
 // (interpretation.h): each one's posterior of scale and reduction and its weight.

@@ -476,7 +476,8 @@ std::vector<Candidate> buildCandidates(const std::vector<LoopRecord> &usable)
 {
     std::vector<Candidate> out;
     if (usable.empty()) return out;
-    static const std::set<std::string> kSkip = {"id", "image", "mu_ref", "calibration"};
+    // The press's force measures the flow stress, not the ring: it gives m (loop_rate.h).
+    static const std::set<std::string> kSkip = {"id", "image", "mu_ref", "calibration", "force_kn", "peak_force_kn"};
     std::set<std::string> names;
     for (const LoopRecord &r : usable)
         for (const auto &[k, v] : r.columns) names.insert(k);

@@ -740,6 +740,22 @@ LoopSummary runJournalLoop(const std::string &journalDir, const std::string &ref
     return s;
 }
 
+// Each material's m where the records carry the press's force (none: an empty section).
+RateSensitivity rateFromForces(const std::vector<LoopRecord> &usable, const std::vector<std::string> &feSweeps)
+{
+    fe::UpsettingForce force;
+    std::string e;
+    for (const LoopRecord &r : usable)
+        if (r.columns.count("force_kn") || r.columns.count("peak_force_kn")) {
+            if (!force.load(feSweeps, &e)) {
+                std::cerr << "icacam loop: no rate sensitivity: " << e << "\n";
+                return {};
+            }
+            return fitRateSensitivity(usable, force);
+        }
+    return {};
+}
+
 LoopSummary runLoopOn(const Manifest &manifest, const std::string &source,
                       const std::vector<std::string> &skippedBefore, const std::string &reportDir,
                       const std::string &modelName, const RankingOptions &opt, const std::vector<std::string> &feSweeps)
@@ -757,6 +773,7 @@ LoopSummary runLoopOn(const Manifest &manifest, const std::string &source,
     set.folds = std::clamp(opt.folds, 2, int(set.usable.size()));
     set.fold = foldAssignment(set.usable.size(), set.folds, opt.seed);
     set.candidates = buildCandidates(set.usable);
+    s.rate = rateFromForces(set.usable, feSweeps);
 
     fe::ReductionSlope slope;
     bool slopeLoaded = false;
@@ -882,6 +899,14 @@ int loopCommand(const std::vector<std::string> &args)
     if (s.physical)
         std::cout << "fe_slope_scale " << f4(s.slopeScale, "%.3f") << " cv_rms_scaled " << f4(s.cvRmsPhysicalScaled)
                   << "\n";
+    for (const loop::RateFit &r : s.rate.materials) {
+        std::cout << "rate_m " << r.material << " ";
+        if (r.fitted)
+            std::cout << f4(r.m, "%.3f") << " +- " << f4(r.coverage * r.mSigma, "%.3f")
+                      << " (k=" << f4(r.coverage, "%.2f") << ", " << r.records << " records)\n";
+        else
+            std::cout << "- (" << r.why << ")\n";
+    }
     std::cout << "report " << reportDir << "/report.md\n";
     return 0;
 }

@@ -7,6 +7,7 @@
 #include "host_tools/loop/loop_effects.h"
 #include "host_tools/loop/loop_influence.h"
 #include "host_tools/loop/loop_physics.h"
+#include "host_tools/loop/loop_rate.h"
 
 namespace icacam::host {
 // `icacam loop --manifest FILE --report DIR [--model paper] [--folds 5] [--seed S] [--fe-sweep CSV]`
@@ -46,6 +47,8 @@ struct LoopSummary {
     // Candidates significant over the family only through a few records (the influence check,
     // loop_influence.h), from every round the loop ranked: not added; the records are named.
     std::vector<RecordFinding> carried;
+    // Where the records carry the press's force: each material's m (loop_rate.h).
+    RateSensitivity rate;
 };
 
 // Runs the whole analysis on a manifest and writes the report folder. feSweeps: the FE sweep

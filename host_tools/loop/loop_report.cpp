@@ -341,6 +341,7 @@ void writeReportMd(const ReportContext &c, const ResidualSet &set, const LoopSum
     f << "\n(* significant; † significant only through a few records, below; a symptom is a measured quantity, the "
          "rest are recorded conditions)\n";
     writeCarried(f, c.options, s);
+    writeRateSection(f, s.rate);
     f << "\n## Plots\n\n";
     for (const std::string &p : plots) f << "![" << p << "](" << p << ")\n\n";
 }
@@ -352,6 +353,7 @@ void writeLoopReport(const ReportContext &context, const ResidualSet &set, const
     writePhysicalCsv(pathIn(context, "physical.csv"), s);
     writeRankingCsv(context, set, s);
     writeRecordsCsv(context, set, s);
+    writeRateCsv(pathIn(context, "rate.csv"), s.rate);
     std::vector<std::string> plots = plotLeadingCandidates(context, set, s);
     plots.push_back(plotBeforeAfter(context, set, s));
     writeReportMd(context, set, s, plots);

@@ -114,6 +114,12 @@ TEST(ImageChecks, EachConditionRaisesItsFlag)
     EXPECT_EQ(flagsOf(g), uint32_t(kFlagLowContrast));
     g = circularFace(250, 300), g.edgeWidthPx = 3;
     EXPECT_EQ(flagsOf(g), uint32_t(kFlagBlurred));
+    // A sharp original face's edge beside a wide contact edge: the optics are sharp, the width
+    // is the barrel's (its ramp measured within reach judges it), or the inner edge's flank.
+    g.innerEdgeWidthPx = 1.2;
+    EXPECT_EQ(flagsOf(g), 0u);
+    g.innerEdgeWidthPx = 2.9;
+    EXPECT_EQ(flagsOf(g), uint32_t(kFlagBlurred));
     g = circularFace(250, 300), g.inner.centreX += 6;
     EXPECT_EQ(flagsOf(g), uint32_t(kFlagCentreOffset));
     g = circularFace(250, 252);
@@ -147,6 +153,30 @@ TEST(EdgeSigma, AContactEdgeOnARampWidensU)
     g.contactRampPx = 2.5;
     const double ramp = edgeSigma(g, p, false).uSigmaEdgesMm;
     EXPECT_NEAR(ramp, std::hypot(step, 2.5 * p.mmPerPx), 1e-12);
+}
+
+// A ring read narrow is a finding unless the outline agrees with the μ it reads and the
+// widening a narrow read may carry cannot move μ beyond the tolerance.
+TEST(NarrowRing, CorroboratedByTheOutlineWhereItsWideningCannotMoveMu)
+{
+    const friction::FrictionModel &model = *friction::frictionModel(friction::kDefaultModel);
+    const SpecimenSpec s = spec();
+    const MuFunction F(s, model);
+    const double u = 0.06, mu = F.at(u, 0.5, s.n), tol = s.tolerance.at(mu);
+    SilhouetteObservation agrees;
+    agrees.usable = true, agrees.rMaxZ = 0.5;
+    const double small = 0.2 * u, large = 0.9 * u;
+    ASSERT_LT(std::fabs(F.at(u - small, 0.5, s.n) - mu), tol) << "the test needs a harmless widening";
+    ASSERT_GT(std::fabs(F.at(u - large, 0.5, s.n) - mu), tol) << "and one that moves μ beyond it";
+    EXPECT_TRUE(narrowRingCorroborated(F, s, u, 0.5, mu, small, &agrees));
+    EXPECT_FALSE(narrowRingCorroborated(F, s, u, 0.5, mu, large, &agrees));
+    EXPECT_FALSE(narrowRingCorroborated(F, s, u, 0.5, mu, small, nullptr)) << "no outline to agree";
+    SilhouetteObservation disagrees = agrees;
+    disagrees.rMaxZ = -3.0; // the barrel of another μ: the ring may be two other steps
+    EXPECT_FALSE(narrowRingCorroborated(F, s, u, 0.5, mu, small, &disagrees));
+    SilhouetteObservation unusable = agrees;
+    unusable.usable = false;
+    EXPECT_FALSE(narrowRingCorroborated(F, s, u, 0.5, mu, small, &unusable));
 }
 
 TEST(SilhouetteObservation, NoneFoundAFittingOneAndOneOutsideTheBarrel)

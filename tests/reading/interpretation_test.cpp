@@ -106,6 +106,13 @@ TEST(Interpretation, TheOutlinesCentreShiftTellsACloseCamerasOutlineFromAnotherH
     EXPECT_NEAR(close.reduction, 0.5, 0.003);
     EXPECT_NEAR(close.scaleFactor, 1, 0.005);
 
+    // A specimen 2 % oval shows both boundaries elliptical along one axis: its own shape, not
+    // the camera's. The outline's shift still says the close camera.
+    EndFaceGeometry oval = g;
+    for (BoundaryFit *b : {&oval.inner, &oval.outer}) b->ellipticity = 0.02, b->axisDeg = 35;
+    const Reading ovalClose = interpret(oval);
+    EXPECT_NEAR(ovalClose.reduction, 0.5, 0.003) << ovalClose.flags;
+
     EndFaceGeometry centred = g;
     centred.silhouetteCentreX = g.outer.centreX, centred.silhouetteCentreY = g.outer.centreY;
     const Reading telecentric = interpret(centred);
