@@ -102,14 +102,17 @@ ContactKnee locateContactKnee(const int32_t *level, int count, int at, int sign,
     if (best <= 0 || best >= coarse) return out;
     const double centre = -w.searchInPx + best * kCoarseStepPx;
     const int fineHalf = int(kCoarseStepPx / kFineStepPx + 0.5);
-    double sse[2 * 5 + 1] = {};
     static_assert(kCoarseStepPx / kFineStepPx < 5.5, "the fine trials fit their buffer");
-    int fineBest = fineHalf;
-    for (int j = -fineHalf; j <= fineHalf; ++j) {
-        const KneeTrial tr = fitAt(x, p, n, centre + j * kFineStepPx, w.blurPx);
-        sse[j + fineHalf] = tr.ok ? tr.sse : HUGE_VAL;
-        if (tr.ok && sse[j + fineHalf] < sse[fineBest]) fineBest = j + fineHalf, bestTrial = tr;
+    KneeTrial fine[2 * 5 + 1];
+    double sse[2 * 5 + 1];
+    int fineBest = fineHalf; // the coarse trial itself
+    for (int j = 0; j <= 2 * fineHalf; ++j) {
+        fine[j] = fitAt(x, p, n, centre + (j - fineHalf) * kFineStepPx, w.blurPx);
+        sse[j] = fine[j].ok ? fine[j].sse : HUGE_VAL;
     }
+    for (int j = 0; j <= 2 * fineHalf; ++j)
+        if (sse[j] < sse[fineBest]) fineBest = j;
+    if (fine[fineBest].ok) bestTrial = fine[fineBest];
     double t = centre + (fineBest - fineHalf) * kFineStepPx;
     if (fineBest > 0 && fineBest < 2 * fineHalf) {
         // The parabola through the best fine trial and its neighbours.
@@ -117,7 +120,7 @@ ContactKnee locateContactKnee(const int32_t *level, int count, int at, int sign,
         const double den = sm - 2 * s0 + sp;
         if (den > 0) t += 0.5 * kFineStepPx * (sm - sp) / den;
     }
-    // The fall beyond the knee goes the edge's way, or the fit found no ramp behind the edge.
+    // The fall beyond the knee goes `sign`'s way, or the fit found none.
     if (!(sign * bestTrial.slope > 0)) return out;
     out.offsetPx = t;
     out.stepLevel = bestTrial.step;

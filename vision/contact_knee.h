@@ -28,9 +28,10 @@ struct ContactKnee {
 
 // level: the profile across the contact edge in any linear unit, samples outwards, the located
 // edge at sample `at`; sign: the way the profile goes beyond the knee, −1 falling outwards, +1
-// rising (the step at the knee may go either way: a lit shoulder steps up and falls). Not
-// found when the window leaves the profile, the best knee lies on the search's bound, or the
-// fit's fall beyond the knee goes against `sign`.
+// rising (the step at the knee may go either way: a lit shoulder steps up and falls); a
+// level of 0 is a sample off the frame. Not found when the window leaves the profile or the
+// frame or holds more than 40 samples, the best knee lies on the search's bound, or the fit's
+// fall beyond the knee goes against `sign`.
 ContactKnee locateContactKnee(const int32_t *level, int count, int at, int sign, const ContactKneeWindow &w);
 
 } // namespace icacam::vision
