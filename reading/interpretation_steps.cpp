@@ -101,12 +101,12 @@ constexpr double kTiltEllipticityMax = 0.05;
 // wider than the original face's and its steepest point lies outside the edge, by up to about
 // the excess width (rendered photographs: the excess 1.6–3.0 px where R_o read 0.5–4 px
 // outside; drawn steps and the development set's and the reference photographs' edges: at
-// most 1.6 px). Beyond kContactRampFindingPx that excess is a finding, and u's error takes it
-// as one standard deviation.
-constexpr double kContactRampFindingPx = 1.6;
+// most 1.6 px). Beyond vision::kContactRampPx that excess is a finding (R_o, taken where the
+// ring's level ends, still reads up to 3 px outside on a few rendered ramps), and u's error
+// takes it as one standard deviation.
 bool contactEdgeOnRamp(const EndFaceGeometry &g)
 {
-    return g.contactRampPx > kContactRampFindingPx;
+    return g.contactRampPx > vision::kContactRampPx;
 }
 // The edge model's own error, beyond the fits' scatter: against the drawn boundaries of the
 // development set's photographs the pipeline's R_i lies 0.005 mm (1 σ) off the truth's

@@ -67,6 +67,13 @@ struct FaceSearch {
     double mmPerPx = 0;
 };
 
+// The contact edge's ramp (√(w_o² − w_i²), pixels) beyond which the barrel's shading ramps away
+// from the flat face rather than stepping: rendered barrels ramping away measure 1.5–3.5 px;
+// drawn steps under 1.0, the development set's and the reference photographs' contact edges
+// under 1.6 (data/photobench/README.md). Beyond it the pipeline takes R_o where the ring's
+// level ends, and the reading warns (contact_edge_ramp) with the ramp in u's error.
+inline constexpr double kContactRampPx = 1.6;
+
 // The end face as the image shows it, in pixels: the specimen's centre, the two boundaries'
 // fits, the barrel's silhouette, the contact edge's blur and the clipped share. No scale, no
 // specimen, no model: the reading interprets it (reading/interpretation.h).
@@ -84,7 +91,7 @@ struct EndFaceGeometry {
     // contact edge (reading: contact_edge_ramp). 0 where the rays did not locate the original
     // face's edge (a ring read on the mean profile alone, or narrower than two blurs).
     double innerEdgeWidthPx = 0;
-    double contactRampPx = 0;
+    double contactRampPx = 0; // beyond kContactRampPx: the contact edge on the barrel's ramp
     double saturatedFraction = 0;
     // The silhouette's per-ray fit: coverage and the points' robust RMS about it (0 when only
     // the mean profile named it).

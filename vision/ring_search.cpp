@@ -47,12 +47,6 @@ constexpr int kAlignRays = kFineRays / 8;
 // Below this fraction of rays a boundary's fit counts as low coverage (the reading flags
 // low_coverage at the same fraction).
 constexpr double kLowCoverage = 0.6;
-// The contact edge's ramp (√(w_o² − w_i²), pixels) above which R_o is taken where the ring's
-// level ends rather than at the derivative's peak: rendered barrels ramping away measure
-// 1.5–3.5 px; drawn steps under 1.0, the development set's and the reference photographs'
-// contact edges under 1.6, the reading's contact_edge_ramp threshold
-// (data/photobench/README.md).
-constexpr double kKneeRampPx = 1.6;
 // How far beyond the derivative's peak the knee's fit reads the profile (pixels): the fall up
 // to its steepest point and a little past it, where a straight fall still holds.
 constexpr int kKneeOutsidePx = 3;
@@ -815,7 +809,7 @@ void RingSearch::contactEdgeAtKnee(const AlignedProfile &p, int signOuter, doubl
     w.blurPx = std::sqrt(blurPx * blurPx + kBilinearBlurSq);
     w.samplePx = kFineStepPx;
     int fallSign = signOuter;
-    if (rampPx > kKneeRampPx) {
+    if (rampPx > kContactRampPx) {
         // The knee lies inside the derivative's peak by up to about the ramp's width: twice it
         // is searched, and the profile read that far in and the blur's reach beyond, for the
         // ring's level, but not past half the ring (the original face's edge); the search

@@ -79,7 +79,7 @@ struct RingSearch {
     // reachPx either side; −1 if none shows.
     double stepWidth(const AlignedProfile &p, int sign, double reachPx) const;
     // Where the barrel's shading ramps away beyond the contact edge (rampPx beyond
-    // kKneeRampPx), the derivative peaks where it falls fastest, outside the edge; where the
+    // kContactRampPx), the derivative peaks where it falls fastest, outside the edge; where the
     // edge rises onto a lit shoulder, the shoulder's fall pulls the peak inside. Moves `outer`
     // (and the rays' points) to where the ring's level ends, the step and the fall beyond it
     // fitted across the aligned profile with the optics' blur blurPx (contact_knee.h), on a
