@@ -68,6 +68,8 @@ std::string tail(const fs::path &p, size_t chars)
     return t.size() > chars ? t.substr(t.size() - chars) : t;
 }
 
+constexpr int kPovrayStartAttempts = 5;
+
 // Renders scenes/<id>.pov into scenes/<id>.png (16-bit, linear): POV-Ray writes only below
 // its working directory (Debian's povray.conf), so it runs in scenes/.
 cv::Mat render(const fs::path &scenes, const std::string &id, const PinholeCamera &cam, const PhotoBenchOptions &opt,
@@ -76,8 +78,17 @@ cv::Mat render(const fs::path &scenes, const std::string &id, const PinholeCamer
     const std::string cmd = "cd " + shellQuote(scenes.string()) + " && " + opt.povray + " +I" + id + ".pov +O" + id +
                             ".png +W" + std::to_string(cam.width) + " +H" + std::to_string(cam.height) +
                             " +FN16 File_Gamma=1.0 +WT1 -D -V " + quality + " > " + id + ".log 2>&1";
-    const int rc = std::system(cmd.c_str());
     const fs::path png = scenes / (id + ".png");
+    // POV-Ray gives its render thread a fixed time to start and gives up on a busy machine
+    // ("Timed out waiting for worker thread startup", vfeInitializeTimedOut): nothing was
+    // rendered, so it is run again, a few times.
+    int rc = 0;
+    for (int attempt = 0; attempt < kPovrayStartAttempts; ++attempt) {
+        rc = std::system(cmd.c_str());
+        if (rc == 0 ||
+            tail(scenes / (id + ".log"), 800).find("Timed out waiting for worker thread startup") == std::string::npos)
+            break;
+    }
     cv::Mat img = cv::imread(png.string(), cv::IMREAD_UNCHANGED);
     if (rc != 0 || img.empty())
         throw std::runtime_error("povray failed on " + (scenes / (id + ".pov")).string() + ":\n" +
