@@ -177,7 +177,8 @@ void writeRateSection(std::ostream &md, const RateSensitivity &rate)
            << f("%.3f", r.scatter) << " |\n";
     }
     if (rate.outsideFe > 0)
-        md << "\n" << rate.outsideFe << " record(s) outside the FE base's n, μ or reductions: not used.\n";
+        md << "\n"
+           << rate.outsideFe << " record(s) outside the FE base's n, μ or reductions, or without k_mpa: not used.\n";
 }
 
 void writeRateCsv(const std::string &path, const RateSensitivity &rate)

@@ -36,7 +36,7 @@ struct RateFit {
 struct RateSensitivity {
     std::string forceColumn, speedColumn, materialColumn; // empty forceColumn: no force recorded
     std::vector<RateFit> materials;
-    int outsideFe = 0; // records whose n, μ or reduction lie outside the FE base
+    int outsideFe = 0; // records outside the FE base (n, μ, reduction) or without a K
 };
 
 // The columns: force_kn (or peak_force_kn), the first recorded rate (isRate) with every value
