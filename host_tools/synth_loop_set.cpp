@@ -106,6 +106,9 @@ std::string writeLoopSet(const std::string &dir, const LoopSetOptions &opt)
     double mOf[kMaterialCount] = {};
     for (double &m : mOf) m = rate ? std::uniform_real_distribution<double>(0, kRateMMax)(rateRng) : 0.0;
     std::normal_distribution<double> forceNoise(0, kForceRelSigma);
+    // The specimens' own barrels, from a stream of their own: every other column stays as it was.
+    std::mt19937 bulgeRng(opt.seed * 7057u + 29u);
+    std::normal_distribution<double> bulgeNoise(0, opt.bulgeRelSigma);
     for (int i = 0; i < opt.count; ++i) {
         const int m = int(rng() % uint32_t(kMaterialCount)), cam = int(rng() % 3);
         const Material &mat = kMaterials[m];
@@ -161,7 +164,7 @@ std::string writeLoopSet(const std::string &dir, const LoopSetOptions &opt)
         if (opt.radii) {
             const double k = 1 + scaleError;
             std::snprintf(line, sizeof line, "%.5f,%.5f,%.5f", (ri + radiusNoise(rng)) * k, (ro + radiusNoise(rng)) * k,
-                          (rMax + radiusNoise(rng)) * k);
+                          (rMax * (1 + bulgeNoise(bulgeRng)) + radiusNoise(rng)) * k);
             measured = line;
         } else {
             EndFaceScene s = nominalScene(u);

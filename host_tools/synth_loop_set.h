@@ -46,6 +46,10 @@ struct LoopSetOptions {
     // measurement scatter) instead of rendered images.
     bool radii = false;
     double radiusSigmaMm = 0.003;
+    // The barrel's widest radius varies from specimen to specimen about the FE's (the bar's
+    // anisotropy, the friction not quite uniform, the end face's tilt) and a silhouette is read
+    // to about half a per cent (friction::kMeasuredRMaxRelSigma): relative, on r_bulge_mm.
+    double bulgeRelSigma = 0.005;
     // Small frames keep a test's run time down; the pipeline is scale-free.
     int width = 720, height = 560;
 };

@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
 """How often `icacam loop` finds the hidden effects of `icacam synth --effect ... --radii` sets.
 
-    python3 data/loop/hidden_effects.py EFFECTS FIRST_SEED LAST_SEED [ICACAM]
+    python3 data/loop/hidden_effects.py EFFECTS FIRST_SEED LAST_SEED [ICACAM [SYNTH_ICACAM]]
 
-EFFECTS is one --effect value (camera,material); ICACAM defaults to build/host_tools/icacam.
+EFFECTS is one --effect value (camera,material); ICACAM defaults to build/host_tools/icacam;
+SYNTH_ICACAM (default ICACAM) draws the sets, so that two builds' loops can be run on one draw.
 Per seed: the effects the loop added (name, reading, held-out RMS after it), the candidates it
 could not separate from them, and why it stopped; for a run that missed an effect, what the
 records could show of it (below). Then in how many runs it added exactly the true effects, each
@@ -102,9 +103,9 @@ def shown(d, effects):
     return out
 
 
-def run(icacam, effects, seed, work):
+def run(icacam, effects, seed, work, synth):
     d = os.path.join(work, f'{effects.replace(",", "_")}_{seed}')
-    subprocess.run([icacam, 'synth', '--out', d, '--effect', effects, '--count', '60', '--seed', str(seed),
+    subprocess.run([synth, 'synth', '--out', d, '--effect', effects, '--count', '60', '--seed', str(seed),
                     '--radii'], check=True, capture_output=True)
     out = subprocess.run([icacam, 'loop', '--manifest', d + '/manifest.csv', '--report', d + '/report',
                           '--model', 'paper'], check=True, capture_output=True, text=True).stdout
@@ -114,12 +115,13 @@ def run(icacam, effects, seed, work):
 def main():
     effects, first, last = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
     icacam = sys.argv[4] if len(sys.argv) > 4 else 'build/host_tools/icacam'
+    synth = sys.argv[5] if len(sys.argv) > 5 else icacam
     names = [e for e in effects.split(',') if e != 'null']
     want = [EXPECTED[e] for e in names]
     exact = false_runs = estimates = within = 0
     with tempfile.TemporaryDirectory() as work:
         for seed in range(first, last + 1):
-            d, out, added = run(icacam, effects, seed, work)
+            d, out, added = run(icacam, effects, seed, work, synth)
             hit = [any(n in cands and r == reading for n, r, _ in added) for cands, reading in want]
             true_added = sum(any(n in cands and r == reading for cands, reading in want) for n, r, _ in added)
             ok = all(hit) and len(added) == len(want)

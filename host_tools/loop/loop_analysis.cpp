@@ -666,6 +666,7 @@ struct FormScore {
     std::string form = "mu";
     double sse0 = 0, sse1 = 0;
     int p0 = 0, p1 = 0;
+    double witnessZ = kNaN; // FittedForm::witnessZ of the form taken
     bool better(const std::vector<double> &base, const std::vector<double> &with) const
     {
         return rms(base) - rms(with) > rms(*e0) - rms(e1);
@@ -701,7 +702,7 @@ FormScore bestLinearForm(const Candidate &c, const std::vector<double> &y, const
 void tryPhysicalForms(const Candidate &c, const std::vector<double> &y, const std::vector<int> &fold, int folds,
                       const std::vector<Form> &formList,
                       const std::map<std::string, std::vector<double>> *physicalForms,
-                      const std::map<std::string, FittedForm> *fittedForms, FormScore *f)
+                      const std::map<std::string, FittedForm> *fittedForms, double minRelativeGain, FormScore *f)
 {
     if (physicalForms) {
         const auto it = physicalForms->find(c.name);
@@ -718,13 +719,19 @@ void tryPhysicalForms(const Candidate &c, const std::vector<double> &y, const st
     }
     if (fittedForms) {
         const auto it = fittedForms->find(c.name);
+        // A form an independent witness supports is read wherever μ's held-out error confirms
+        // it (by the minimum relative gain), also where a free regression fits μ a little better.
+        const auto confirmed = [&](const FittedForm &w) {
+            return std::isfinite(w.witnessZ) && rms(w.baseline) - rms(w.errors) >= minRelativeGain * rms(w.baseline);
+        };
         if (it != fittedForms->end() && it->second.errors.size() == y.size() &&
-            f->better(it->second.baseline, it->second.errors)) {
+            (f->better(it->second.baseline, it->second.errors) || confirmed(it->second))) {
             f->e1 = it->second.errors;
             f->e0 = &it->second.baseline;
             f->form = it->second.form;
             f->sse0 = sumSquares(it->second.baselineFit), f->p0 = it->second.params0;
             f->sse1 = sumSquares(it->second.errorsFit), f->p1 = it->second.params1;
+            f->witnessZ = it->second.witnessZ;
         }
     }
 }
@@ -809,6 +816,23 @@ void putTheAddedEffectFirst(std::vector<RankedCandidate> &out, std::vector<size_
     const size_t moved = o[k];
     o.erase(o.begin() + long(k));
     o.insert(o.begin(), moved);
+}
+
+// A length factor the outline witnesses is taken out first where it is significant: it is
+// read from the geometry, not from μ, and a material's n or a process fitted to μ before it
+// would take up part of that camera's error (each material's records include its images).
+void putTheWitnessedScaleFirst(std::vector<RankedCandidate> &out, std::vector<size_t> *order)
+{
+    std::vector<size_t> &o = *order;
+    if (o.empty() || !out[o[0]].significant || out[o[0]].witnessed) return;
+    for (size_t k = 1; k < o.size(); ++k) {
+        RankedCandidate &c = out[o[k]];
+        if (!c.witnessed || !c.significant || c.symptom || c.carried) continue;
+        const size_t moved = o[k];
+        o.erase(o.begin() + long(k));
+        o.insert(o.begin(), moved);
+        return;
+    }
 }
 
 // A slope in one level counts only where it differs from the others': the acting level's
@@ -910,7 +934,7 @@ std::vector<RankedCandidate> rankCandidates(const std::vector<Candidate> &candid
         RankedCandidate r;
         r.patchForm = f.form;
         r.cvRmsPatch = rms(f.e1);
-        tryPhysicalForms(c, y, fold, folds, formList, physicalForms, fittedForms, &f);
+        tryPhysicalForms(c, y, fold, folds, formList, physicalForms, fittedForms, opt.minRelativeGain, &f);
         r.name = c.name;
         r.kind = c.kind;
         r.symptom = c.symptom;
@@ -919,6 +943,9 @@ std::vector<RankedCandidate> rankCandidates(const std::vector<Candidate> &candid
         r.cvRmsAfter = rms(f.e1);
         r.gain = r.cvRmsBefore - r.cvRmsAfter;
         r.z = nestedZ(f.sse0, f.p0, f.sse1, f.p1, y.size());
+        if (std::isfinite(f.witnessZ)) r.z = f.witnessZ, r.witnessed = true;
+        if (fittedForms)
+            if (const auto w = fittedForms->find(c.name); w != fittedForms->end()) r.witnessZ = w->second.witnessZ;
         if (c.kind != "categorical") r.correlation = correlation(c, y);
         r.zFamily = zCrit;
         r.significant = r.gain > 0 && r.z > zCrit && r.gain >= opt.minRelativeGain * r.cvRmsBefore;
@@ -935,6 +962,7 @@ std::vector<RankedCandidate> rankCandidates(const std::vector<Candidate> &candid
     putCausesBeforeSymptoms(out, errors, &order);
     nameTheLeadingSymptomsCause(candidates, out, errors, opt, &order);
     putTheAddedEffectFirst(out, &order);
+    putTheWitnessedScaleFirst(out, &order);
     // The measurements that point to each significant cause: the significant symptoms, best
     // first (a symptom answers to the cause; alone it does not name it).
     for (size_t k = 0; k < order.size(); ++k) {

@@ -5,6 +5,7 @@
 // Pure computation (no image I/O): the command (loop_command.cpp) measures the records and
 // fills LoopRecord; the tests build record sets directly.
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -75,6 +76,10 @@ struct RankedCandidate {
     double z = 0;           // nested F test of the form against its baseline, as a normal z
     double correlation = 0; // numeric: Pearson r with the residual (for reading only)
     bool significant = false;
+    // Its form's z is an independent witness's (FittedForm::witnessZ: a length factor the
+    // barrel's outline shows), μ's held-out error confirming it.
+    bool witnessed = false;
+    double witnessZ = std::numeric_limits<double>::quiet_NaN(); // FittedForm::witnessZ, taken or not
     double zFamily = 0; // the critical z of its round's family (Bonferroni over every try)
     bool symptom = false;
     // Significant through a significant symptom it cannot be told from (rankCandidates): on its
@@ -122,6 +127,10 @@ struct FittedForm {
     std::vector<double> baseline, errors;       // held out (k-fold)
     std::vector<double> baselineFit, errorsFit; // fitted on every record (the nested F test)
     int params0 = 1, params1 = 1;               // parameters of the baseline and of the form
+    // An independent witness's test of the same effect, as a normal z (a length factor's
+    // outline: loop_silhouette.h); NaN where none agreed with the form. The form's z is then
+    // the two's combined (Stouffer's) z.
+    double witnessZ = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct RankingOptions {

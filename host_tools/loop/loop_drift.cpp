@@ -156,7 +156,7 @@ void applyDrift(const friction::FrictionModel &model, std::vector<LoopRecord> *r
 {
     const Params p = fit(model, *records, x, train);
     for (size_t i = 0; i < records->size(); ++i)
-        (*records)[i].uMm /= std::clamp(p.a + p.b * xOf(x, i, p.xMean), kFactorMin, kFactorMax);
+        takeOutLengthFactor(&(*records)[i], std::clamp(p.a + p.b * xOf(x, i, p.xMean), kFactorMin, kFactorMax));
 }
 
 } // namespace icacam::host::loop

@@ -63,6 +63,11 @@ EffectShare shareOf(const std::vector<LoopRecord> &before, const std::vector<Loo
         e.uFactor.push_back(after[i].uMm > 0 ? before[i].uMm / after[i].uMm : 1.0);
         e.nShift.push_back(after[i].n - before[i].n);
         e.muShift.push_back(after[i].muOffset - before[i].muOffset);
+        const auto b = before[i].diagnostics.find("diag_rmax_over_r0"),
+                   a = after[i].diagnostics.find("diag_rmax_over_r0");
+        e.outlineFactor.push_back(b != before[i].diagnostics.end() && a != after[i].diagnostics.end() && a->second > 0
+                                      ? b->second / a->second
+                                      : 1.0);
     }
     return e;
 }
@@ -76,6 +81,8 @@ std::vector<LoopRecord> withShares(const friction::FrictionModel &model, const f
         if (j == skip) continue;
         for (size_t i = 0; i < out.size(); ++i) {
             out[i].uMm /= shares[j].uFactor[i];
+            if (const auto it = out[i].diagnostics.find("diag_rmax_over_r0"); it != out[i].diagnostics.end())
+                it->second /= shares[j].outlineFactor[i];
             out[i].n += shares[j].nShift[i];
             out[i].muOffset += shares[j].muShift[i];
         }

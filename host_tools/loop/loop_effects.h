@@ -39,6 +39,10 @@ struct LoopEffectStep {
     std::vector<LinearEffect> levelSlopes; // each level's slope
     DriftFit drift;                        // drift
     std::vector<RankedCandidate> ranking;  // the round it led (after the first: on the residual left)
+    // A length factor the outline witnesses, taken out before the effects added ahead of it
+    // (the held-out RMS with it so refitted): those had taken up part of it.
+    bool takenFirst = false;
+    double witnessZ = 0; // the outline's z of a length factor (RankedCandidate::witnessZ)
 };
 
 // μ of every record as its inputs and applied corrections now give it (μ = model + muOffset),
@@ -66,6 +70,7 @@ void applyEffect(const friction::FrictionModel &model, const fe::ReductionSlope 
 // fitted).
 struct EffectShare {
     std::vector<double> uFactor, nShift, muShift;
+    std::vector<double> outlineFactor; // a length factor's share of the outline (1: none)
 };
 // The share an effect took: records before and after applyEffect.
 EffectShare shareOf(const std::vector<LoopRecord> &before, const std::vector<LoopRecord> &after);

@@ -6,7 +6,7 @@
 #include <map>
 #include <set>
 
-#include "friction/radii_consistency.h"
+#include "host_tools/loop/loop_silhouette.h"
 
 namespace icacam::host::loop {
 
@@ -78,7 +78,22 @@ double fitParameter(const friction::FrictionModel &model, const std::vector<Loop
     return p;
 }
 
-// Fits every level on the records where `train` holds.
+// The jackknife's σ of each level where it exceeds the pooled scatter's.
+void jackknifeSigma(const friction::FrictionModel &model, const std::vector<LoopRecord> &usable, GroupReading reading,
+                    const std::map<std::string, std::vector<size_t>> &members, std::map<std::string, GroupFit> *levels);
+
+double typical(std::vector<double> values, double declared);
+
+// A length factor per level as the outline sees it relative to the typical level, times one
+// factor common to every level fitted to μ (loop_silhouette.h): the outline tells the groups
+// apart far more sharply than μ's residual, and μ's held-out error judges whether it was the
+// scale that told them apart. Levels the outline does not cover keep μ's fit.
+void factorsFromOutline(const friction::FrictionModel &model, const std::vector<LoopRecord> &usable,
+                        const std::map<std::string, std::vector<size_t>> &members, const OutlineLevels &outline,
+                        std::map<std::string, GroupFit> *levels);
+
+// Fits every level on the records where `train` holds; a length factor from the outline where
+// the records have one (factorsFromOutline).
 std::map<std::string, GroupFit> fitLevels(const friction::FrictionModel &model, const std::vector<LoopRecord> &usable,
                                           const Candidate &g, GroupReading reading, const std::vector<bool> &train,
                                           double *scatter, bool jackknife = false)
@@ -110,12 +125,75 @@ std::map<std::string, GroupFit> fitLevels(const friction::FrictionModel &model, 
     *scatter = dof > 0 ? std::sqrt(sse / dof) : 0;
     for (auto &[level, f] : out)
         if (f.fitted && sumJ2[level] > 0) f.sigma = *scatter / std::sqrt(sumJ2[level]);
-    if (!jackknife) return out;
+    if (jackknife) jackknifeSigma(model, usable, reading, members, &out);
+    if (reading == GroupReading::Scale)
+        factorsFromOutline(model, usable, members, outlineLevels(usable, g, train), &out);
+    return out;
+}
+
+void factorsFromOutline(const friction::FrictionModel &model, const std::vector<LoopRecord> &usable,
+                        const std::map<std::string, std::vector<size_t>> &members, const OutlineLevels &outline,
+                        std::map<std::string, GroupFit> *levels)
+{
+    if (outline.mean.size() < 2) return;
+    // The levels relative to their typical one, as the outline sees them.
+    std::vector<double> q;
+    for (const auto &[level, m] : outline.mean) q.push_back(m);
+    const double typicalQ = typical(q, 0.0);
+    // One factor common to every level, from μ (Gauss–Newton): the records' scale as a whole.
+    struct Sums {
+        double jr = 0, jj = 0, sse = 0;
+        int n = 0;
+    };
+    auto sums = [&](double common) {
+        Sums t;
+        const double h = 1e-4;
+        for (const auto &[level, idx] : members) {
+            const auto m = outline.mean.find(level);
+            if (m == outline.mean.end()) continue;
+            const double rel = std::exp(m->second - typicalQ);
+            for (size_t i : idx) {
+                const LoopRecord &r = usable[i];
+                const double res = muWith(model, r, GroupReading::Scale, rel * common) - r.muRef;
+                const double j = (muWith(model, r, GroupReading::Scale, rel * (common + h)) -
+                                  muWith(model, r, GroupReading::Scale, rel * (common - h))) /
+                                 (2 * h);
+                t.jr += j * res, t.jj += j * j, t.sse += res * res, ++t.n;
+            }
+        }
+        return t;
+    };
+    double common = 1;
+    for (int it = 0; it < 30; ++it) {
+        const Sums t = sums(common);
+        if (!(t.jj > 0)) return;
+        const double next = std::clamp(common - t.jr / t.jj, kScaleMin, kScaleMax);
+        const bool done = std::fabs(next - common) < 1e-9;
+        common = next;
+        if (done) break;
+    }
+    // The common factor's own uncertainty (μ's scatter about it) enters every level's.
+    const Sums t = sums(common);
+    const double commonRel = t.n > 1 && t.jj > 0 ? std::sqrt(t.sse / (t.n - 1) / t.jj) / common : 0;
+    for (auto &[level, f] : *levels) {
+        const auto m = outline.mean.find(level);
+        if (m == outline.mean.end()) continue;
+        f.value = std::exp(m->second - typicalQ) * common;
+        f.sigma = f.value * std::hypot(outline.se.at(level), commonRel);
+        f.fitted = true;
+        f.withOutline = true;
+    }
+}
+
+void jackknifeSigma(const friction::FrictionModel &model, const std::vector<LoopRecord> &usable, GroupReading reading,
+                    const std::map<std::string, std::vector<size_t>> &members, std::map<std::string, GroupFit> *levels)
+{
+    std::map<std::string, GroupFit> &out = *levels;
     // The scatter-based σ assumes every record's μ error alike; the radii's own noise and the
     // reference's act unequally with u. The jackknife over a group's records carries whatever
     // acts: the larger of the two is stated.
     for (auto &[level, f] : out) {
-        const std::vector<size_t> &idx = members[level];
+        const std::vector<size_t> &idx = members.at(level);
         if (!f.fitted || idx.size() < 4) continue;
         std::vector<double> theta;
         for (size_t leave = 0; leave < idx.size(); ++leave) {
@@ -132,7 +210,6 @@ std::map<std::string, GroupFit> fitLevels(const friction::FrictionModel &model, 
         const double m = double(theta.size());
         f.sigma = std::max(f.sigma, std::sqrt((m - 1) / m * var));
     }
-    return out;
 }
 
 // The value a group reports: the factor, or the declared n plus the fitted shift.
@@ -149,14 +226,8 @@ void silhouetteCheck(const std::vector<LoopRecord> &usable, const Candidate &g, 
 {
     std::map<std::string, std::vector<double>> ratios;
     for (size_t i = 0; i < usable.size(); ++i) {
-        const LoopRecord &r = usable[i];
-        const auto it = r.diagnostics.find("diag_rmax_over_r0");
-        double fe = 0;
-        if (it == r.diagnostics.end() ||
-            !friction::feRadiusAt(friction::FeRadius::Max, r.n, r.muRef, r.reduction >= 0 ? r.reduction : 0.5, &fe) ||
-            !(fe > 0))
-            continue;
-        ratios[g.levels[i]].push_back(it->second * 5.0 / fe); // R_max/R0 · 5 mm against the D0 = 10 FE
+        double y = 0;
+        if (silhouetteLogRatio(usable[i], &y)) ratios[g.levels[i]].push_back(std::exp(y));
     }
     auto meanSe = [](const std::vector<double> &v, double *se) {
         double m = 0, q = 0;
@@ -227,7 +298,7 @@ void applyGrouping(const friction::FrictionModel &model, std::vector<LoopRecord>
         const auto it = fit.find(g.levels[i]);
         const double p = it != fit.end() ? it->second.value : neutral(reading);
         if (reading == GroupReading::Scale)
-            r.uMm /= p;
+            takeOutLengthFactor(&r, p);
         else
             r.n = std::clamp(r.n + p, kNMin, kNMax);
     }
@@ -276,8 +347,22 @@ FittedForm groupingForm(const friction::FrictionModel &model, const std::vector<
     }
     f.params0 = 1;
     f.params1 = 0;
-    for (const GroupFit &g : per.groups) f.params1 += g.fitted ? 1 : 0;
+    bool withOutline = false;
+    for (const GroupFit &g : per.groups) {
+        f.params1 += g.fitted ? 1 : 0;
+        withOutline = withOutline || g.withOutline;
+    }
+    // The factors are the outline's: its test of the groups is the form's (μ's held-out error
+    // confirms it in the ranking).
+    if (withOutline) f.witnessZ = outlineLevels(usable, grouping, std::vector<bool>(usable.size(), true)).z;
     return f;
+}
+
+void takeOutLengthFactor(LoopRecord *r, double factor)
+{
+    r->uMm /= factor;
+    const auto it = r->diagnostics.find("diag_rmax_over_r0");
+    if (it != r->diagnostics.end()) it->second /= factor;
 }
 
 friction::ModelInputs inputsOf(const LoopRecord &r)

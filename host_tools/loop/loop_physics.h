@@ -35,6 +35,8 @@ struct GroupFit {
     // records' n, μ_ref and reduction, relative to the other groups whose factor is consistent
     // with 1 (a check from the geometry alone, independent of μ); 0 when there is none.
     double silhouette = 0, silhouetteSigma = 0;
+    // Scale reading: value and sigma are μ's and the outline's together (loop_silhouette.h).
+    bool withOutline = false;
 };
 
 struct PhysicalFit {
@@ -83,6 +85,10 @@ struct LinearEffect {
 };
 LinearEffect fitLinearEffect(const Candidate &c, const std::vector<double> &residual, const std::string &form,
                              const std::vector<double> &scaleSens, const std::vector<double> &uSens);
+
+// A length factor taken out of a record: every length its image gave (u and the outline's
+// R_max) divided by it.
+void takeOutLengthFactor(LoopRecord *r, double factor);
 
 // The model inputs of a record as it was measured.
 friction::ModelInputs inputsOf(const LoopRecord &r);

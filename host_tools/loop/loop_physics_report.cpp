@@ -131,12 +131,23 @@ void writePhysicalSection(std::ostream &f, const LoopEffectStep &e, bool first, 
           << (first ? "" : ", with the effects above") << "** | **" << fmt(e.cvRmsAfter) << "** |\n";
     f << "\n";
     if (e.reading == "scale") {
+        bool outline = false;
+        for (const GroupFit &g : e.grouping.groups) outline = outline || g.withOutline;
         f << "Read as a length scale per group of images (`" << e.name
           << "`): every length a group's camera measures is off by one factor s (measured/true), so μ = "
-             "model(u/s, n). s fitted per group by least squares against μ_ref; σ the larger of the pooled "
-             "scatter's (after the fit, "
-          << fmt(e.grouping.scatter) << " in μ) and the jackknife's over the group's records; U = " << kCoverage
-          << " σ (≈ 95 %).\n\n";
+             "model(u/s, n). ";
+        if (outline)
+            f << "The barrel's outline is off by the same s: s per group is the outline's R_max against the FE's "
+                 "(at each record's n, μ_ref and reduction) relative to the typical group, times one factor for "
+                 "every group fitted to μ_ref; σ the outline's standard error of the group's mean (z "
+              << fmt(e.witnessZ, "%.1f")
+              << " for the groups differing), μ's held-out error confirming the factors; U = " << kCoverage
+              << " σ (≈ 95 %).\n\n";
+        else
+            f << "s fitted per group by least squares against μ_ref; σ the larger of the pooled scatter's (after "
+                 "the fit, "
+              << fmt(e.grouping.scatter) << " in μ) and the jackknife's over the group's records; U = " << kCoverage
+              << " σ (≈ 95 %).\n\n";
         f << "| " << e.name
           << " | records | factor s (measured/true) | σ | U (k = 2) | fix mm_per_px by × | verdict | "
              "silhouette check: R_max against the consistent groups' (± 2σ) |\n"
@@ -242,6 +253,11 @@ void writePhysicalSection(std::ostream &f, const LoopEffectStep &e, bool first, 
                           "working distance), form `u` to the upsetting.\n"
                         : "\n");
     }
+    if (e.takenFirst)
+        f << "\nTaken out before the effects added ahead of it: the outline shows it (z " << fmt(e.witnessZ, "%.1f")
+          << "), and those effects, fitted to μ with its images among their records, had taken up part of it. The "
+             "held-out RMS is with it taken out first and every other effect refitted after it on each fold's "
+             "training records.\n";
     if (!e.given.empty())
         f << "\nNot significant over the family on its own: with `" << e.given << "` taken out it is (z "
           << fmt(e.givenZ, "%.1f") << "), and `" << e.given
@@ -300,6 +316,11 @@ void printPhysical(std::ostream &out, const LoopSummary &s)
         const LoopEffectStep &e = s.effects[i];
         out << "effect " << i + 1 << " " << e.name << " " << e.reading << " cv_rms " << fmt(e.cvRmsBefore) << " -> "
             << fmt(e.cvRmsAfter) << "\n";
+        bool outline = false;
+        for (const GroupFit &g : e.grouping.groups) outline = outline || (e.reading == "scale" && g.withOutline);
+        if (outline)
+            out << "witnessed " << e.name << " by the outline, z " << fmt(e.witnessZ, "%.1f")
+                << (e.takenFirst ? ", taken out before the effects above" : "") << "\n";
         for (const GroupFit &g : e.grouping.groups)
             out << (e.reading == "scale" ? "factor " : "n ") << g.level << " " << fmt(g.value) << " +- "
                 << fmt(kCoverage * g.sigma) << " (k=2)" << (e.reading == "n" ? " declared " + fmt(g.declared) : "")

@@ -263,6 +263,7 @@ TEST(LoopSeveral, CameraAndMaterialEachInItsPhysicalForm)
 {
     const Tally t = runSeeds("camera_material", LoopEffect::Camera | LoopEffect::Material, 1, 10);
     expectTheLine(t);
+    EXPECT_GE(t.exact, 9); // of every run, not only those judged: the outline shows a stale camera
     EXPECT_GE(t.withinU, 0.9 * t.estimates);
     EXPECT_GE(t.estimates, 60); // three cameras and four materials in (nearly) every run
 }
@@ -271,6 +272,7 @@ TEST(LoopSeveral, ThreeEffectsAtOnce)
 {
     const Tally t = runSeeds("three", LoopEffect::Camera | LoopEffect::Material | LoopEffect::Speed, 1, 10);
     expectTheLine(t);
+    EXPECT_GE(t.exact, 9);
     EXPECT_GE(t.withinU, 0.9 * t.estimates);
 }
 
@@ -305,12 +307,90 @@ TEST(LoopSeveral, SpeedWithinOneMaterialIsNotReadAsTheMaterial)
     EXPECT_GE(t.exact, 9);
 }
 
-// A camera and a speed within one material that hide each other (seed 26 of the set: neither is
+// Every column of the manifest's text through `cell(header, cells)`.
+template <typename Cell> void editCells(std::string &text, Cell cell)
+{
+    std::istringstream in(text);
+    std::string line, out;
+    std::vector<std::string> header;
+    while (std::getline(in, line)) {
+        std::vector<std::string> cells;
+        std::stringstream cs(line);
+        for (std::string c; std::getline(cs, c, ',');) cells.push_back(c);
+        if (header.empty())
+            header = cells;
+        else
+            cell(header, cells);
+        std::string joined;
+        for (size_t i = 0; i < cells.size(); ++i) joined += (i ? "," : "") + cells[i];
+        out += joined + "\n";
+    }
+    text = out;
+}
+
+size_t columnOf(const std::vector<std::string> &header, const std::string &name)
+{
+    for (size_t i = 0; i < header.size(); ++i)
+        if (header[i] == name) return i;
+    return header.size();
+}
+
+// Records without the barrel's outline (r_bulge_mm left empty): μ's residual alone.
+void withoutOutline(std::string &text)
+{
+    editCells(text, [](const std::vector<std::string> &header, std::vector<std::string> &cells) {
+        cells[columnOf(header, "r_bulge_mm")].clear();
+    });
+}
+
+// A camera 4 % off whose records' μ alone cannot show it (seeds 8 and 10 of camera,material: z
+// alone 2.2 and 2.3 against the family's 3.6): the barrel's outline, 4 % large on that camera's
+// records only, witnesses the factor, μ's held-out error confirms it, and both effects are added.
+TEST(LoopSeveral, AStaleCameraTheOutlineWitnessesIsAddedWhereMuAloneCannotShowIt)
+{
+    for (uint32_t seed : {8u, 10u}) {
+        const SetRun alone = runSet("mu_alone", LoopEffect::Camera | LoopEffect::Material, seed, withoutOutline);
+        std::string what;
+        std::printf("seed %u, μ alone: %s\n", seed,
+                    foundExactly(alone.summary, LoopEffect::Camera | LoopEffect::Material, &what) ? "exact"
+                                                                                                  : what.c_str());
+        const SetRun run = runSet("witnessed", LoopEffect::Camera | LoopEffect::Material, seed);
+        what.clear();
+        EXPECT_TRUE(foundExactly(run.summary, LoopEffect::Camera | LoopEffect::Material, &what))
+            << "seed " << seed << ": " << what;
+    }
+}
+
+// A camera whose outlines read 2 % small while its lengths are right (a camera closer to the
+// specimen sees the barrel's side from nearer; a shadow taken for the outline): the outline
+// tells that camera apart, but μ's held-out error does not confirm a length factor, and nothing
+// is added to a set with no hidden effect.
+TEST(LoopSeveral, AnOutlineTheScaleDoesNotExplainIsNotReadAsACamerasFactor)
+{
+    int added = 0;
+    for (uint32_t seed = 1; seed <= 5; ++seed) {
+        const SetRun run = runSet("outline_only", LoopEffect::Null, seed, [](std::string &text) {
+            editCells(text, [](const std::vector<std::string> &header, std::vector<std::string> &cells) {
+                if (cells[columnOf(header, "camera_id")] != "cam-2") return;
+                std::string &bulge = cells[columnOf(header, "r_bulge_mm")];
+                char buf[32];
+                std::snprintf(buf, sizeof buf, "%.5f", std::stod(bulge) * 0.98);
+                bulge = buf;
+            });
+        });
+        for (const LoopEffectStep &e : run.summary.effects) std::printf("seed %u: added %s\n", seed, e.name.c_str());
+        added += !run.summary.effects.empty();
+    }
+    EXPECT_EQ(added, 0);
+}
+
+// A camera and a speed within one material that hide each other in μ's residual (seed 26 of the
+// set, records without the outline, which would show the camera on its own: neither is
 // significant over the family alone): the leading cause is taken out, the camera is then
 // significant, and the speed is with the camera taken out; both are added.
 TEST(LoopSeveral, TwoEffectsThatHideEachOtherAreBothAdded)
 {
-    const SetRun run = runSet("masking", LoopEffect::Camera | LoopEffect::SpeedInMaterial, 26);
+    const SetRun run = runSet("masking", LoopEffect::Camera | LoopEffect::SpeedInMaterial, 26, withoutOutline);
     std::string what;
     EXPECT_TRUE(foundExactly(run.summary, LoopEffect::Camera | LoopEffect::SpeedInMaterial, &what)) << what;
     ASSERT_FALSE(run.summary.effects.empty());
@@ -342,27 +422,9 @@ TEST(LoopSeveral, DriftReadAsAMovingLengthFactor)
 TEST(LoopSeveral, ConfoundedCameraAndLensNamedAsInseparable)
 {
     const SetRun run = runSet("confounded", LoopEffect::Camera, 1, [](std::string &text) {
-        std::istringstream in(text);
-        std::string line, out;
-        std::vector<std::string> header;
-        size_t camera = 0, lens = 0;
-        while (std::getline(in, line)) {
-            std::vector<std::string> cells;
-            std::stringstream cs(line);
-            for (std::string c; std::getline(cs, c, ',');) cells.push_back(c);
-            if (header.empty()) {
-                header = cells;
-                for (size_t i = 0; i < cells.size(); ++i) {
-                    if (cells[i] == "camera_id") camera = i;
-                    if (cells[i] == "lens") lens = i;
-                }
-            } else {
-                cells[lens] = "L-" + cells[camera];
-            }
-            for (size_t i = 0; i < cells.size(); ++i) out += (i ? "," : "") + cells[i];
-            out += "\n";
-        }
-        text = out;
+        editCells(text, [](const std::vector<std::string> &header, std::vector<std::string> &cells) {
+            cells[columnOf(header, "lens")] = "L-" + cells[columnOf(header, "camera_id")];
+        });
     });
     const LoopSummary &s = run.summary;
     ASSERT_EQ(s.effects.size(), 1u);
