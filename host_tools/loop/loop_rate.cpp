@@ -21,12 +21,6 @@ bool numberIn(const LoopRecord &r, const std::string &column, double *v)
     return it != r.columns.end() && parseNumber(it->second, v);
 }
 
-std::string lower(std::string s)
-{
-    for (char &c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
-    return s;
-}
-
 // The columns every usable record may carry, by name.
 std::vector<std::string> columnNames(const std::vector<LoopRecord> &usable)
 {
@@ -77,14 +71,13 @@ RateSensitivity fitRateSensitivity(const std::vector<LoopRecord> &usable, const 
         if (std::find(names.begin(), names.end(), c) != names.end()) out.forceColumn = c;
     if (out.forceColumn.empty()) return out;
     out.speedColumn = speedColumnOf(usable, names);
-    for (const std::string &name : names) {
-        const std::string l = lower(name);
-        if (l.find("material") != std::string::npos || l.find("alloy") != std::string::npos ||
-            l.find("grade") != std::string::npos) {
-            out.materialColumn = name;
+    // The materials as the ranking reads them (isMaterialGrouping): a column named so, or one
+    // whose every level declares one n.
+    for (const Candidate &c : buildCandidates(usable))
+        if (isMaterialGrouping(usable, c)) {
+            out.materialColumn = c.name;
             break;
         }
-    }
     struct Point {
         double x, y, v;
     };
