@@ -19,11 +19,29 @@ double silhouetteMeasuredRelSigma(double coverage, double scatterPx, double rMax
     return friction::measuredRMaxRelSigma(coverage > 0 && rMaxPx > 0 ? scatterPx / rMaxPx : 0);
 }
 
-// The steps after the face is in millimetres, shared by images and radii.
-void readFace(const SpecimenSpec &spec, const friction::FrictionModel &model, const AssumedReduction &assumed,
-              double scaleRelSigma, const EdgeSigma &edges, const SilhouetteObservation *silhouette,
-              double silhouetteSigma, bool calibrated, bool oblique, uint32_t f, Reading *out)
+// What the steps after the face is in millimetres read it with, images and radii alike.
+struct FaceInputs {
+    const SpecimenSpec &spec;
+    const friction::FrictionModel &model;
+    const AssumedReduction &assumed;
+    double scaleRelSigma;                    // the declared scale's relative σ
+    const EdgeSigma &edges;                  // the edges' part of u's error
+    const SilhouetteObservation *silhouette; // nullptr: none held against the model (calibrated)
+    double silhouetteSigma;                  // the silhouette's relative σ
+    bool calibrated, oblique;
+};
+
+// The steps after the face is in millimetres, shared by images and radii; f: the image's own
+// findings so far.
+void readFace(const FaceInputs &in, uint32_t f, Reading *out)
 {
+    const SpecimenSpec &spec = in.spec;
+    const friction::FrictionModel &model = in.model;
+    const AssumedReduction &assumed = in.assumed;
+    const EdgeSigma &edges = in.edges;
+    const SilhouetteObservation *silhouette = in.silhouette;
+    const double scaleRelSigma = in.scaleRelSigma, silhouetteSigma = in.silhouetteSigma;
+    const bool calibrated = in.calibrated, oblique = in.oblique;
     const MuFunction F(spec, model);
     const double u = out->face.uMm, n = spec.n, uSigmaEdgesMm = edges.uSigmaEdgesMm;
     ScaleAndReduction declared;
@@ -161,8 +179,9 @@ Reading interpret(const EndFaceGeometry &g, const SpecimenSpec &spec, const visi
         silhouette = &obs;
     }
     auto read = [&] {
-        readFace(spec, model, assumed, p.scaleRelSigma, e, silhouette, silhouetteRelSigma(g), calibration != nullptr,
-                 oblique, f, &out);
+        readFace({spec, model, assumed, p.scaleRelSigma, e, silhouette, silhouetteRelSigma(g), calibration != nullptr,
+                  oblique},
+                 f, &out);
     };
     read();
     if (silhouette && reobserve(assumed, obs, out)) {
@@ -187,7 +206,8 @@ Reading interpret(const FaceInMm &face, const SpecimenSpec &spec, const friction
     SilhouetteObservation obs;
     auto readAt = [&](double mu) {
         obs = observeSilhouette(out.face, 1, 0, face.rMaxMm, spec, assumed, mu, declaredCameraDistance(spec));
-        readFace(spec, model, assumed, spec.tolerances.scaleRel, EdgeSigma{}, &obs, silhouetteSigma, false, false, 0,
+        const EdgeSigma noEdges;
+        readFace({spec, model, assumed, spec.tolerances.scaleRel, noEdges, &obs, silhouetteSigma, false, false}, 0,
                  &out);
     };
     readAt(F.at(out.face.uMm, assumed.r, spec.n));
