@@ -20,6 +20,24 @@ template <typename T> T *carve(uint8_t *&p, size_t count)
     p += (count * sizeof(T) + 15) & ~size_t(15);
     return out;
 }
+
+// The innermost extremum of |d| in [lo, hi] at least a quarter as strong as the strongest,
+// either sign. Walking out from inside the end face, the first clear step is the original
+// face's edge or the contact edge, both on the end face's plane; the outline, often the
+// strongest (a dark barrel against a lit fixture), lies beyond them. A quarter: the original
+// face's edge steps 30–50 grey levels where the outline steps 80 (rendered photographs).
+EdgePeak innermostClearEdgeEitherSign(const int32_t *d, int count, int lo, int hi)
+{
+    const EdgePeak strongest = strongestEdgeEitherSign(d, count, lo, hi);
+    if (!strongest.found) return strongest;
+    for (int i = std::max(lo, 1); i <= std::min(hi, count - 2); ++i) {
+        const int32_t a = std::abs(d[i]);
+        if (4 * a < strongest.value || a < std::abs(d[i - 1]) || a < std::abs(d[i + 1])) continue;
+        const int sign = d[i] > 0 ? 1 : -1;
+        return {Q16_16::fromInt(i) + parabolaVertex(sign * d[i - 1], sign * d[i], sign * d[i + 1]), a, true};
+    }
+    return strongest;
+}
 } // namespace
 
 ErrorCode EndFaceAnalyzer::configure(int maxWidth, int maxHeight)
@@ -50,16 +68,24 @@ ErrorCode EndFaceAnalyzer::configure(int maxWidth, int maxHeight)
 // first-harmonic fit, and the centre moved by the fitted offset.
 bool EndFaceAnalyzer::refineCentre(const LumaView &v, double r0Px, double *cx, double *cy)
 {
-    // Pass 1: the strongest edge on each of 32 rays at 2 px steps (usually the contact edge
-    // or the silhouette, both circles about the specimen's axis), a robust first-harmonic
-    // fit, and the centre moved by the fitted offset.
+    // Pass 1: the strongest edge on each of 32 rays at 2 px steps. The Hough centre can be a
+    // cell or two off (a distractor circle in the fixture pulls the votes): while the fit
+    // still moves the centre by more than 6 % of the radius, the rays are cast again from the
+    // moved centre (rarely more than once).
+    if (!centreByRays(v, r0Px, RayEdge::Strongest, std::max(3.0, 0.06 * r0Px), cx, cy)) return false;
+    // Pass 2: 64 rays about the refined centre, kept for the mean profile and the
+    // silhouette (the fine stage's contact-edge fit absorbs what offset remains).
+    castCoarseRays(v, r0Px, *cx, *cy);
+    return true;
+}
+
+bool EndFaceAnalyzer::centreByRays(const LumaView &v, double r0Px, RayEdge edge, double settlePx, double *cx,
+                                   double *cy)
+{
     int32_t d[kMaxCoarseSamples];
     double radius[kCoarseRays];
     bool valid[kCoarseRays];
     const double rA = kCoarseStart * r0Px, rB = kCoarseEnd * r0Px;
-    // The Hough centre can be a cell or two off (a distractor circle in the fixture pulls
-    // the votes): while the fit still moves the centre by more than 6 % of the radius, the
-    // rays are cast again from the moved centre (rarely more than once).
     for (int iteration = 0; iteration < 3; ++iteration) {
         const int rays = kCoarseRays / 2;
         // Coarser than the kept pass: a centre, not a profile, is wanted (2–4 px, about
@@ -73,7 +99,8 @@ bool EndFaceAnalyzer::refineCentre(const LumaView &v, double r0Px, double *cx, d
             uint16_t *row = coarse_ + size_t(i) * kMaxCoarseSamples;
             sampleRay(v, ray, count, row);
             profileDerivative(row, count, d);
-            const EdgePeak e = strongestEdgeEitherSign(d, count, 2, count - 3);
+            const EdgePeak e = edge == RayEdge::Strongest ? strongestEdgeEitherSign(d, count, 2, count - 3)
+                                                          : innermostClearEdgeEitherSign(d, count, 2, count - 3);
             valid[i] = e.found;
             radius[i] = rA + e.position.toDouble() * step;
         }
@@ -86,19 +113,22 @@ bool EndFaceAnalyzer::refineCentre(const LumaView &v, double r0Px, double *cx, d
         const double moved = std::hypot(fit.centreX - *cx, fit.centreY - *cy);
         *cx = fit.centreX;
         *cy = fit.centreY;
-        if (moved < std::max(3.0, 0.06 * r0Px)) break;
+        if (moved < settlePx) break;
     }
-    // Pass 2: 64 rays about the refined centre, kept for the mean profile and the
-    // silhouette (the fine stage's contact-edge fit absorbs what offset remains).
+    return true;
+}
+
+void EndFaceAnalyzer::castCoarseRays(const LumaView &v, double r0Px, double cx, double cy)
+{
+    const double rA = kCoarseStart * r0Px, rB = kCoarseEnd * r0Px;
     const double step = coarseStep(r0Px);
     const int count = std::min(kMaxCoarseSamples, int((rB - rA) / step));
     for (int i = 0; i < kCoarseRays; ++i) {
-        RaySpec ray{Q16_16::fromDouble(*cx), Q16_16::fromDouble(*cy), {}, {},
-                    Q16_16::fromDouble(rA),  Q16_16::fromDouble(step)};
+        RaySpec ray{Q16_16::fromDouble(cx), Q16_16::fromDouble(cy),  {}, {},
+                    Q16_16::fromDouble(rA), Q16_16::fromDouble(step)};
         rayDirection(i, kCoarseRays, &ray.cosT, &ray.sinT);
         sampleRay(v, ray, count, coarse_ + size_t(i) * kMaxCoarseSamples);
     }
-    return true;
 }
 
 EndFaceGeometry EndFaceAnalyzer::measure(const LumaView &v, const FaceSearch &face)
@@ -131,7 +161,34 @@ EndFaceGeometry EndFaceAnalyzer::measure(const LumaView &v, const FaceSearch &fa
     m.centreY = cy;
 
     RingSearch search{&v, r0, cx, cy, coarse_, fine_, deriv_, meanProfile_, meanDeriv_, innerPts_, outerPts_};
-    const ErrorCode e = search.run(&m);
+    ErrorCode e = search.run(&m);
+    // A tilted camera sees the barrel wide on the side facing it and not at all on the far
+    // side, where the contact edge bounds the specimen: the strongest edge on each ray is the
+    // outline on one side and the contact edge on the other, and their fit's centre lies off
+    // the end face's by up to the barrel band's width (rendered photographs tilted 6–14°: up
+    // to 21 px). About it the mean profile smears the end face's edges, and the search may
+    // find no original face's edge. The end face's own centre is that of the innermost clear
+    // edge on each ray; where it lies more than max(3 px, 3 % R0) away, the end face is
+    // searched again about it, as a view that sees the barrel on one side (the first search's
+    // answer stands where that one finds nothing either).
+    if (e == ErrorCode::InnerEdgeNotFound) {
+        double fx = cx, fy = cy;
+        if (centreByRays(v, r0, RayEdge::Innermost, 1.0, &fx, &fy) &&
+            std::hypot(fx - cx, fy - cy) > std::max(3.0, 0.03 * r0)) {
+            castCoarseRays(v, r0, fx, fy);
+            EndFaceGeometry about;
+            about.frameWidth = v.width;
+            about.frameHeight = v.height;
+            about.centreX = fx;
+            about.centreY = fy;
+            search = RingSearch{&v,     r0,           fx,         fy,        coarse_,   fine_,
+                                deriv_, meanProfile_, meanDeriv_, innerPts_, outerPts_, true};
+            if (search.run(&about) == ErrorCode::None) {
+                m = about;
+                e = ErrorCode::None;
+            }
+        }
+    }
     if (e != ErrorCode::None) return fail(e);
     m.error = ErrorCode::None;
     return m;

@@ -29,6 +29,15 @@ public:
 
 private:
     bool refineCentre(const LumaView &v, double r0Px, double *cx, double *cy);
+    // Which edge on each ray the centre is fitted to: the strongest (the contact edge or the
+    // outline), or the innermost clear one (the original face's edge or the contact edge).
+    enum class RayEdge { Strongest, Innermost };
+    // Rays from (cx, cy), `edge` on each, a robust first-harmonic fit and the centre moved by
+    // its offset, three times at most while it still moves by settlePx or more; false where
+    // the fit fails or covers under a quarter of the rays. Uses the coarse rows as scratch.
+    bool centreByRays(const LumaView &v, double r0Px, RayEdge edge, double settlePx, double *cx, double *cy);
+    // The coarse rays about (cx, cy) that the ring search reads its mean profile from.
+    void castCoarseRays(const LumaView &v, double r0Px, double cx, double cy);
 
     int maxWidth_ = 0, maxHeight_ = 0;
     size_t workBytes_ = 0;

@@ -63,6 +63,9 @@ constexpr double kShoulderResidual = 0.02;
 // Bilinear sampling's own blur on a profile's levels (px²; stepWidth removes it with the
 // derivative kernel's).
 constexpr double kBilinearBlurSq = 0.17;
+// Seen obliquely, the contact edge's ramp is measured and its knee located on this many arcs
+// of the ring apiece (16 or 32 fine rays each).
+constexpr int kRampSectors = 8;
 
 double robustSigma(const int32_t *d, int lo, int hi)
 {
@@ -304,7 +307,12 @@ RingSearch::MeanEdges RingSearch::meanProfileEdges()
             const ProfileEdge &o = edges.edge[k];
             const double r = radiusOf(o.index);
             if (o.flankLo <= at || r < e.rOuter + 1.5 * step) continue;
-            if (k == edges.count - 1) break; // the outermost step: the outline
+            if (k == edges.count - 1) { // the outermost step: the outline (but see run())
+                e.rOutline = r;
+                e.signOutline = o.sign;
+                e.strengthOutline = o.strength / 16;
+                break;
+            }
             e.rNext = r;
             e.signNext = o.sign;
             e.strengthNext = o.strength / 16;
@@ -746,8 +754,12 @@ struct RingSearch::AlignedProfile {
     int count() const { return K + M + 1; }
 };
 
-bool RingSearch::alignedProfile(const double *outerR, AlignedProfile *p, bool onInner, int halfSpan) const
+bool RingSearch::alignedProfile(const double *outerR, AlignedProfile *p, bool onInner, int halfSpan, int sector) const
 {
+    const int first = sector < 0 ? 0 : sector * (rays_ / kRampSectors);
+    const int end = sector < 0 ? rays_ : first + rays_ / kRampSectors;
+    const int stride = sector < 0 ? rays_ / kAlignRays : 1;
+    const int rays = (end - first) / stride; // both divide: rays_ is a power of two of 64 or more
     p->K = halfSpan > 0 ? halfSpan : int(kMaxU * r0 + 2);
     if (halfSpan > 0) p->M = halfSpan;
     if (p->count() > AlignedProfile::kSpan) return false;
@@ -756,7 +768,7 @@ bool RingSearch::alignedProfile(const double *outerR, AlignedProfile *p, bool on
     std::fill_n(sum, count, 0u);
     std::fill_n(n, count, 0u);
     uint16_t row[AlignedProfile::kSpan];
-    for (int i = 0; i < rays_; i += rays_ / kAlignRays) {
+    for (int i = first; i < end; i += stride) {
         if (!(onInner ? innerPts[i] : outerPts[i]).valid) continue;
         const double ro = outerR[i];
         RaySpec ray{Q16_16::fromDouble(cx),     Q16_16::fromDouble(cy), rayCosQ_[i], raySinQ_[i],
@@ -770,7 +782,7 @@ bool RingSearch::alignedProfile(const double *outerR, AlignedProfile *p, bool on
     }
     uint16_t mean[AlignedProfile::kSpan] = {}; // count ≤ kSpan are set; zeroed for GCC's flow analysis at -O0
     for (int k = 0; k < count; ++k) {
-        mean[k] = n[k] * 2 >= uint32_t(kAlignRays) ? uint16_t(sum[k] / n[k]) : kOutsideFrame;
+        mean[k] = n[k] * 2 >= uint32_t(rays) ? uint16_t(sum[k] / n[k]) : kOutsideFrame;
         p->level[k] = mean[k] == kOutsideFrame ? 0 : mean[k];
     }
     // Same units as the fine derivative rows (the [1 2 1] angular weights sum to 4).
@@ -801,20 +813,21 @@ double RingSearch::stepWidth(const AlignedProfile &p, int sign, double reachPx) 
     return std::sqrt(std::max(0.0, var));
 }
 
-void RingSearch::contactEdgeAtKnee(const AlignedProfile &p, int signOuter, double blurPx, double rampPx, double ringPx,
-                                   BoundaryFit *outer)
+bool RingSearch::kneeOffset(const AlignedProfile &p, int signOuter, double blurPx, double rampPx, double ringPx,
+                            bool onRamp, double *offsetPx) const
 {
     ContactKneeWindow w;
     w.outsideSamples = int(kKneeOutsidePx / kFineStepPx);
     w.blurPx = std::sqrt(blurPx * blurPx + kBilinearBlurSq);
     w.samplePx = kFineStepPx;
     int fallSign = signOuter;
-    if (rampPx > kContactRampPx) {
+    if (onRamp) {
         // The knee lies inside the derivative's peak by up to about the ramp's width: twice it
-        // is searched, and the profile read that far in and the blur's reach beyond, for the
-        // ring's level, but not past half the ring (the original face's edge); the search
-        // stays short of the window's first sample (a knee there has no level to end).
-        const double searchPx = 2 * rampPx;
+        // (twice kContactRampPx at least) is searched, and the profile read that far in and
+        // the blur's reach beyond, for the ring's level, but not past half the ring (the
+        // original face's edge); the search stays short of the window's first sample (a knee
+        // there has no level to end).
+        const double searchPx = 2 * std::max(rampPx, kContactRampPx);
         w.insideSamples = int(std::min(0.5 * ringPx, searchPx + 3 * blurPx + 1) / kFineStepPx);
         w.searchInPx = std::min((w.insideSamples - 1) * kFineStepPx, searchPx);
     } else if (signOuter > 0) {
@@ -825,25 +838,87 @@ void RingSearch::contactEdgeAtKnee(const AlignedProfile &p, int signOuter, doubl
         w.searchInPx = w.searchOutPx = kShoulderSearchPx;
         fallSign = -signOuter;
     } else {
-        return;
+        return false;
     }
     const ContactKnee knee = locateContactKnee(p.level, p.count(), p.K, fallSign, w);
-    if (!knee.found) return;
+    if (!knee.found) return false;
     // A shoulder that falls by less than kShoulderFall of the step within the window is no
     // shoulder, and a ring that is no level inside the step (the fit's residual beyond
     // kShoulderResidual of the step) not the model fitted: the step stands as the derivative
     // located it.
     if (fallSign != signOuter && !(std::fabs(knee.slope) * kKneeOutsidePx > kShoulderFall * std::fabs(knee.stepLevel) &&
                                    knee.residual < kShoulderResidual * std::fabs(knee.stepLevel)))
-        return;
-    outer->a0 += knee.offsetPx;
-    outer->rEqPx += knee.offsetPx;
+        return false;
+    *offsetPx = knee.offsetPx;
+    return true;
+}
+
+void RingSearch::contactEdgeAtKnee(const AlignedProfile &p, int signOuter, double blurPx, double rampPx, double ringPx,
+                                   BoundaryFit *outer)
+{
+    double offset = 0;
+    if (!kneeOffset(p, signOuter, blurPx, rampPx, ringPx, rampPx > kContactRampPx, &offset)) return;
+    outer->a0 += offset;
+    outer->rEqPx += offset;
     for (int i = 0; i < rays_; ++i) {
-        const double r = outerPts[i].radius.toDouble() + knee.offsetPx;
+        const double r = outerPts[i].radius.toDouble() + offset;
         outerPts[i].radius = Q16_16::fromDouble(r);
         outerPts[i].x = Q16_16::fromDouble(cx + r * rayCos_[i]);
         outerPts[i].y = Q16_16::fromDouble(cy + r * raySin_[i]);
     }
+}
+
+double RingSearch::contactEdgeAtKneeBySector(const double *outerR, int signOuter, double blurPx, double reachPx,
+                                             double ringPx, BoundaryFit *outer)
+{
+    // Seen obliquely, the barrel's shoulder (the rounded corner between the end face and the
+    // barrel, a few pixels wide) spreads out on the side facing the camera and shows edge-on
+    // on the far side. Where it spreads, its shading falls off gradually beyond the contact
+    // edge and the derivative peaks outside the edge; where it shows edge-on, a thin dark
+    // line between the ring and a lighter background, the peak lies on the edge. The bench's
+    // tilted-s1 record 6 (12.5°), against its projected contact edge: 1.7–3.3 px outside on
+    // the side facing the camera, 0.3–0.5 px on the far side; the arcs' ramps 2.4–2.6 px
+    // there and 0 here, the whole ring's 1.0, under kContactRampPx, so that neither the knee
+    // nor the reading's finding would see it. Each arc of the ring is judged on its own.
+    const int span = rays_ / kRampSectors;
+    double offset[kRampSectors] = {}, widest = 0;
+    bool moved = false;
+    for (int s = 0; s < kRampSectors; ++s) {
+        AlignedProfile p;
+        if (!alignedProfile(outerR, &p, false, 0, s)) continue;
+        const double wo = stepWidth(p, signOuter, reachPx);
+        if (wo < 0) continue;
+        const double ramp = std::sqrt(std::max(0.0, wo * wo - blurPx * blurPx));
+        widest = std::max(widest, ramp);
+        // A sector's few rays measure its ramp too noisily to decide on it: every sector whose
+        // contact edge falls is followed to where its level ends. Where the shoulder is seen
+        // edge-on the level ends at the step itself, and the fit finds the knee there or none.
+        if (kneeOffset(p, signOuter, blurPx, ramp, ringPx, ramp > kContactRampPx || signOuter < 0, &offset[s]))
+            moved = true;
+    }
+    if (!moved) return widest;
+    // Between the sectors' middles the offset follows the ring linearly.
+    double radius[kRays];
+    bool valid[kRays];
+    for (int i = 0; i < rays_; ++i) {
+        const double at = (i + 0.5) / span - 0.5; // in sectors from sector 0's middle
+        const int s0 = int(std::floor(at));
+        const double f = at - s0;
+        const double o = (1 - f) * offset[(s0 + kRampSectors) % kRampSectors] + f * offset[(s0 + 1) % kRampSectors];
+        radius[i] = outerPts[i].radius.toDouble() + o;
+        valid[i] = outerPts[i].valid;
+        outerPts[i].radius = Q16_16::fromDouble(radius[i]);
+        outerPts[i].x = Q16_16::fromDouble(cx + radius[i] * rayCos_[i]);
+        outerPts[i].y = Q16_16::fromDouble(cy + radius[i] * raySin_[i]);
+    }
+    BoundaryFit fit;
+    if (fitBoundary(radius, valid, rays_, cx, cy, FitOptions{}, &fit)) {
+        // The first fit's σ may hold a low coverage's share (locateOnRays), which a fit
+        // through the same points moved does not see again.
+        fit.rEqSigmaPx = std::max(fit.rEqSigmaPx, outer->rEqSigmaPx);
+        *outer = fit;
+    }
+    return widest;
 }
 
 RingSearch::OriginalFaceName RingSearch::nameOriginalFace(const AlignedProfile &p) const
@@ -995,13 +1070,31 @@ ErrorCode RingSearch::run(EndFaceGeometry *m)
         return ringAbout(about, m);
     };
     const bool staircase = me.rNext > 0 && me.signNext == me.signOuter;
-    MeanEdges next = me;
-    next.rOuter = me.rNext;
-    next.signOuter = me.signNext;
-    next.strengthOuter = me.strengthNext;
-    next.reachInPx = 0.5 * (me.rNext - me.rOuter);
-    next.namedByZones = true; // by elimination: the centring must not go back to the drop
-    next.rNext = 0;
+    // The ring about the profile's next step beyond the named one, at radius r.
+    auto nextStep = [&me](double r, int sign, int32_t strength) {
+        MeanEdges next = me;
+        next.rOuter = r;
+        next.signOuter = sign;
+        next.strengthOuter = strength;
+        next.reachInPx = 0.5 * (r - me.rOuter);
+        next.namedByZones = true; // by elimination: the centring must not go back to the drop
+        next.rNext = 0;
+        return next;
+    };
+    const MeanEdges next = nextStep(me.rNext, me.signNext, me.strengthNext);
+    // The largest drop named an edge with no original face's edge inside it, and the only
+    // step of its sign beyond it is the one taken for the outline. Seen obliquely, the barrel
+    // shows on the side facing the camera and hides behind the end face on the far side,
+    // where the contact edge bounds the specimen: the mean profile then shows the contact
+    // edge's step where it expects the outline, and the outline's own smeared into the
+    // background. The ring is searched once more about that step, as an oblique view's.
+    auto onOutlineStep = [&] {
+        if (me.rNext > 0 || !(me.rOutline > 0) || me.signOutline != me.signOuter) return e;
+        MeanEdges onOutline = nextStep(me.rOutline, me.signOutline, me.strengthOutline);
+        onOutline.seenObliquely = true;
+        const ErrorCode e2 = again(onOutline);
+        return e2 == ErrorCode::None ? e2 : e;
+    };
     if (e == ErrorCode::None && staircase && (m->imageFlags & kImageNarrowRingFit)) {
         // No ray saw an original face's edge inside the largest drop, and only the profile's
         // two-step fit read a ring there: on a staircase the drop is as likely the original
@@ -1013,7 +1106,7 @@ ErrorCode RingSearch::run(EndFaceGeometry *m)
     }
     if (e != ErrorCode::InnerEdgeNotFound) return e;
     if (!staircase) {
-        if (me.namedByZones || !(centredRadius_ < me.rOuter - kInwardMovePx)) return e;
+        if (me.namedByZones || !(centredRadius_ < me.rOuter - kInwardMovePx)) return onOutlineStep();
         // The largest drop named an edge, the centring took a sharper step of its sign inside
         // it instead, and no original face's edge lies inside that one: it is the original
         // face's edge itself. A ring whose barrel ramps away into a dark fixture shows so, its
@@ -1105,7 +1198,13 @@ ErrorCode RingSearch::ringAbout(const MeanEdges &me, EndFaceGeometry *m)
             if (wi > 0 && wo >= 0) {
                 m->innerEdgeWidthPx = wi;
                 m->contactRampPx = std::sqrt(std::max(0.0, wo * wo - wi * wi));
-                contactEdgeAtKnee(profile, me.signOuter, wi, m->contactRampPx, outer.rEqPx - inner.rEqPx, &outer);
+                const double ringPx = outer.rEqPx - inner.rEqPx;
+                if (obliqueView || me.seenObliquely) {
+                    const double widest = contactEdgeAtKneeBySector(outerR, me.signOuter, wi, reach, ringPx, &outer);
+                    m->contactRampPx = std::max(m->contactRampPx, widest);
+                } else {
+                    contactEdgeAtKnee(profile, me.signOuter, wi, m->contactRampPx, ringPx, &outer);
+                }
             }
         }
     } else if (narrowRingFromProfile(profile, me.signOuter, 0.0, &outer, &inner, &contrastInner)) {

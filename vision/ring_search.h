@@ -23,6 +23,10 @@ struct RingSearch {
     int32_t *meanDeriv;
     EdgeSample *innerPts;
     EdgeSample *outerPts;
+    // The analyzer found the end face's own centre off the strongest edges': the camera sees
+    // the barrel on one side only, and the contact edge's ramp is judged arc by arc
+    // (contactEdgeAtKneeBySector).
+    bool obliqueView = false;
 
     ErrorCode run(EndFaceGeometry *m);
 
@@ -48,6 +52,12 @@ struct RingSearch {
         double rNext = 0;
         int signNext = 0;
         int32_t strengthNext = 0;
+        // The same for the profile's outermost edge beyond it, taken for the outline (0: none).
+        double rOutline = 0;
+        int signOutline = 0;
+        int32_t strengthOutline = 0;
+        // The ring is searched as an oblique view's, the contact edge's ramp judged arc by arc.
+        bool seenObliquely = false;
     };
     MeanEdges meanProfileEdges();
     // The mean of the coarse rays' directions sampled again, count samples from fromPx at
@@ -72,7 +82,9 @@ struct RingSearch {
     struct AlignedProfile;
     // onInner: the same about the original face's fitted curve, on the rays that located it;
     // halfSpan > 0: only that many samples either side of the curve.
-    bool alignedProfile(const double *outerR, AlignedProfile *p, bool onInner = false, int halfSpan = 0) const;
+    // sector ≥ 0: every ray of that arc of the ring (kRampSectors arcs) instead.
+    bool alignedProfile(const double *outerR, AlignedProfile *p, bool onInner = false, int halfSpan = 0,
+                        int sector = -1) const;
     // The contact edge's blur (Gaussian σ, pixels) from the aligned profile; −1 if none shows.
     double contactEdgeWidth(const AlignedProfile &p, int signOuter) const;
     // The blur of the step at the aligned radius, its derivative's moments taken within
@@ -86,6 +98,18 @@ struct RingSearch {
     // ring ringPx wide; left alone where neither shows or no knee is found.
     void contactEdgeAtKnee(const AlignedProfile &p, int signOuter, double blurPx, double rampPx, double ringPx,
                            BoundaryFit *outer);
+    // Where the ring's level ends relative to the aligned profile's edge sample (pixels,
+    // negative: inside), the fit contactEdgeAtKnee makes: on a ramp (onRamp, the search twice
+    // rampPx deep and at least twice kContactRampPx) or beside a lit shoulder (signOuter > 0);
+    // false where neither applies or no knee is found.
+    bool kneeOffset(const AlignedProfile &p, int signOuter, double blurPx, double rampPx, double ringPx, bool onRamp,
+                    double *offsetPx) const;
+    // The same, seen obliquely: the ramp measured and the knee located on each of kRampSectors
+    // arcs of the ring, the rays' points moved by their arc's offset (interpolated between
+    // the arcs' middles) and the contact edge fitted again through them. Returns the widest
+    // arc's ramp (pixels): the contact edge's, where part of it lies on the barrel's ramp.
+    double contactEdgeAtKneeBySector(const double *outerR, int signOuter, double blurPx, double reachPx, double ringPx,
+                                     BoundaryFit *outer);
     // The original face's edge as the aligned profile names it: the strongest derivative
     // extremum inside the contact edge that separates two levels (sign 0: none).
     struct OriginalFaceName {

@@ -5,6 +5,8 @@
 #include "host_tools/end_face_renderer.h"
 #include "reading/instrument.h"
 #include "tests/support/allocation_counter.h"
+#include "tests/vision/oblique_end_face.h"
+#include "vision/end_face_analyzer.h"
 
 using namespace icacam;
 
@@ -30,4 +32,19 @@ TEST(Allocation, NoneDuringMeasurement)
     const long b2 = icacam::test::allocationCount();
     m = analyzer.read(blank, spec);
     EXPECT_EQ(icacam::test::allocationCount() - b2, 0);
+}
+
+// A tilted camera's view, read only on the second search about the end face's own centre
+// (tests/vision/oblique_view_test.cpp): that search allocates nothing either.
+TEST(Allocation, NoneReadingAnObliqueViewAgain)
+{
+    const test::ObliqueEndFace f;
+    const auto px = f.draw();
+    vision::EndFaceAnalyzer analyzer;
+    ASSERT_EQ(analyzer.configure(f.width, f.height), vision::ErrorCode::None);
+    const long before = icacam::test::allocationCount();
+    const vision::EndFaceGeometry g = analyzer.measure(f.view(px), {10, 5.0 / f.r0});
+    const long after = icacam::test::allocationCount();
+    ASSERT_EQ(g.error, vision::ErrorCode::None) << vision::errorMessage(g.error);
+    EXPECT_EQ(after - before, 0) << "heap allocations during measure()";
 }
