@@ -654,6 +654,24 @@ void addFurtherEffects(const FrictionModel &model, const fe::ReductionSlope *slo
     markTaken(lead, &taken);
     bool carried = lead.reading == "fe_slope";
     double cvNow = rms(heldOut(perFold, first.fold));
+    // An effect added: taken out of the records (fitted on all of them) and of each fold's,
+    // with its held-out records per fold.
+    auto add = [&](LoopEffectStep step, const Candidate &cand, std::vector<std::vector<LoopRecord>> trial) {
+        perFold = std::move(trial);
+        const std::vector<LoopRecord> before = all;
+        applyEffect(model, slope, step, cand, &all, first.fold, -1);
+        shares->push_back(shareOf(before, all));
+        markTaken(step, &taken);
+        carried = carried || step.reading == "fe_slope";
+        cvNow = step.cvRmsAfter;
+        s->cvRmsAfter = cvNow;
+        s->effects.push_back(std::move(step));
+        // The next round looks at what every effect so far leaves fitted together: an effect
+        // fitted while a later one was still in the records carries part of it, and that part
+        // would read as a further effect.
+        backfit(model, slope, first, s->effects, shares);
+        all = withShares(model, slope, first.usable, *shares, shares->size(), false);
+    };
     while (s->effects.size() < kMaxEffects) {
         ResidualSet round;
         std::vector<RankedCandidate> ranking =
@@ -666,17 +684,8 @@ void addFurtherEffects(const FrictionModel &model, const fe::ReductionSlope *slo
             std::vector<std::vector<LoopRecord>> trial;
             if (witnessedFactorFirst(model, slope, first, round, ranking, taken, *s, cvNow, opt, &step, &trial)) {
                 step.ranking = ranking;
-                perFold = std::move(trial);
                 const Candidate *cand = candidateNamed(round, step.name);
-                const std::vector<LoopRecord> before = all;
-                applyEffect(model, slope, step, *cand, &all, first.fold, -1);
-                shares->push_back(shareOf(before, all));
-                markTaken(step, &taken);
-                s->effects.push_back(step);
-                backfit(model, slope, first, s->effects, shares);
-                all = withShares(model, slope, first.usable, *shares, shares->size(), false);
-                cvNow = step.cvRmsAfter;
-                s->cvRmsAfter = cvNow;
+                add(std::move(step), *cand, std::move(trial));
                 continue;
             }
             s->lastRanking = ranking;
@@ -701,22 +710,7 @@ void addFurtherEffects(const FrictionModel &model, const fe::ReductionSlope *slo
                          f4(100 * opt.minRelativeGain, "%.0f") + " %";
             return;
         }
-        perFold = std::move(trial);
-        const std::vector<LoopRecord> before = all;
-        applyEffect(model, slope, step, *cand, &all, first.fold, -1);
-        shares->push_back(shareOf(before, all));
-        markTaken(step, &taken);
-        s->effects.push_back(step);
-        // The next round looks at what every effect so far leaves fitted together: an effect
-        // fitted while a later one was still in the records carries part of it, and that part
-        // would read as a further effect.
-        backfit(model, slope, first, s->effects, shares);
-        all = withShares(model, slope, first.usable, *shares, shares->size(), false);
-        s->effects.pop_back();
-        carried = carried || step.reading == "fe_slope";
-        cvNow = step.cvRmsAfter;
-        s->cvRmsAfter = cvNow;
-        s->effects.push_back(std::move(step));
+        add(std::move(step), *cand, std::move(trial));
     }
     s->stopped = "the most effects one run adds (" + std::to_string(kMaxEffects) + ")";
 }
