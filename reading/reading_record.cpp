@@ -176,10 +176,18 @@ void readingMessage(const Reading &m, char *buf, size_t size)
     size_t n = 0;
     for (int bit = 0; bit < kFlagCount; ++bit) {
         if (!(m.flags & (1u << bit))) continue;
-        const int w = (1u << bit) == kFlagReductionNotNominal
-                          ? std::snprintf(buf + n, size - n, "%s%s (%.1f %%; mu %.4f at 50 %%)", n ? "; " : "",
-                                          findingWords(bit), 100 * m.reduction, m.nominalMu)
-                          : std::snprintf(buf + n, size - n, "%s%s", n ? "; " : "", findingWords(bit));
+        int w = 0;
+        if ((1u << bit) != kFlagReductionNotNominal) {
+            w = std::snprintf(buf + n, size - n, "%s%s", n ? "; " : "", findingWords(bit));
+        } else if (std::fabs(m.scaleFactor - 1) < 0.0005) {
+            w = std::snprintf(buf + n, size - n, "%s%s (%.1f %%; mu %.4f at 50 %%)", n ? "; " : "", findingWords(bit),
+                              100 * m.reduction, m.nominalMu);
+        } else {
+            // The reading took part of the silhouette's discrepancy as the scale's: μ moved by
+            // both, and the height alone would leave the reader wondering why μ moved.
+            w = std::snprintf(buf + n, size - n, "%s%s (%.1f %%, scale x%.3f; mu %.4f at 50 %% and the declared scale)",
+                              n ? "; " : "", findingWords(bit), 100 * m.reduction, m.scaleFactor, m.nominalMu);
+        }
         if (w < 0 || size_t(w) >= size - n) {
             buf[n] = 0; // a finding that does not fit is left out whole
             break;
