@@ -6,14 +6,15 @@
 
 #include "vision/angle_table.h"
 #include "vision/boundary_fit.h"
-#include "vision/contact_knee.h"
 #include "vision/edge_profile.h"
-#include "vision/narrow_ring.h"
 #include "vision/profile_zones.h"
 #include "vision/radial_profile.h"
 #include "vision/ray_capacity.h"
+#include "vision/ring_search_detail.h"
 
 namespace icacam::vision {
+
+using namespace ring_search_detail;
 
 namespace {
 // Ring width (px) below which the per-ray search's edges are biased by each other's blur
@@ -22,60 +23,21 @@ constexpr double kNarrowRingPx = 6.0;
 // Grey levels between the two sides of the original face's edge below which the rays' edge
 // is not taken (low_contrast warns below 5; no rendered or photographed face shows under 6).
 constexpr double kMinInnerContrast = 2.0;
-constexpr int kRays = kFineRays; // the most fine rays a search casts
 // Arc between neighbouring fine rays (pixels, at the initial radius) below which more rays
 // add little: each ray's derivative is the [1 2 1] sum of it and its neighbours, and with
 // the edge's blur and the bilinear footprint, rays closer than this read mostly the same
 // pixels. The ray count halves (down to kCoarseRays) until the arc is at least this.
 constexpr double kMinRayArcPx = 5.0;
-constexpr int kMaxFine = kMaxFineSamples;
-constexpr int kMaxCoarse = kMaxCoarseSamples;
 // How far inside the named drop (pixels) the centring must have moved before the drop
 // itself is tried again as the contact edge: more than the coarse step's reach.
 constexpr double kInwardMovePx = 4.0;
-// The fine rays' sample spacing (pixels).
-constexpr double kFineStepPx = 1.0;
 // A 3-grey-level step blurred to σ = 2 px gives a coarse derivative of about 1200.
 constexpr int32_t kMinCoarseStrength = 1000;
 // The contact edge's blur (Gaussian σ, pixels) taken where the profile shows none.
 constexpr double kUnknownBlurPx = 1.5;
-// Widest ICA searched, as a fraction of the initial radius.
-constexpr double kMaxU = 0.32;
-// How many rays the edge-following mean profile samples (it only names the face edge; the
-// fine rays locate it).
-constexpr int kAlignRays = kFineRays / 8;
 // Below this fraction of rays a boundary's fit counts as low coverage (the reading flags
 // low_coverage at the same fraction).
 constexpr double kLowCoverage = 0.6;
-// How far beyond the derivative's peak the knee's fit reads the profile (pixels): the fall up
-// to its steepest point and a little past it, where a straight fall still holds.
-constexpr int kKneeOutsidePx = 3;
-// Beside a lit shoulder (a contact edge rising onto a band that falls again) the fit reads
-// the profile this far inside the derivative's peak (pixels, at most half the ring) and
-// searches the step this far either side of it; the shoulder's fall over kKneeOutsidePx
-// must be at least kShoulderFall of the step. On the bench's dark_ring photographs the peak
-// lies 0.4–0.9 px inside the edge; no drawn ring, development-set or reference photograph
-// rising onto its barrel shows such a fall (they read as the derivative locates them).
-constexpr double kShoulderInsidePx = 6.0, kShoulderSearchPx = 1.5, kShoulderFall = 0.3;
-// The bench's shoulders fit with an RMS residual of 0.2–1.2 % of their step; a tilted view
-// whose ring varies by ±7 grey levels inside the edge, 2.6 %.
-constexpr double kShoulderResidual = 0.02;
-// Bilinear sampling's own blur on a profile's levels (px²; stepWidth removes it with the
-// derivative kernel's).
-constexpr double kBilinearBlurSq = 0.17;
-// Seen obliquely, the contact edge's ramp is measured and its knee located on this many arcs
-// of the ring apiece (16 or 32 fine rays each).
-constexpr int kRampSectors = 8;
-
-double robustSigma(const int32_t *d, int lo, int hi)
-{
-    int32_t tmp[kMaxCoarse + kMaxFine];
-    int n = 0;
-    for (int i = lo; i <= hi; ++i) tmp[n++] = std::abs(d[i]);
-    if (n == 0) return 0;
-    std::nth_element(tmp, tmp + n / 2, tmp + n);
-    return 1.4826 * tmp[n / 2];
-}
 
 // Box step detector: mean of the w samples outside minus the w samples inside sample j,
 // for rows of 4×Q8 sums (angular [1 2 1]); out in 1/32 grey level. Ridges (turning marks,
@@ -153,12 +115,6 @@ EdgePeak innermostClearEdge(const int32_t *d, int count, int lo, int hi, int sig
     return strongest;
 }
 
-bool isExtremum(const int32_t *d, int i)
-{
-    const int32_t a = std::abs(d[i]);
-    return a > 0 && a >= std::abs(d[i - 1]) && a > std::abs(d[i + 1]) && (d[i] > 0) == (d[i - 1] >= 0) &&
-           (d[i] > 0) == (d[i + 1] >= 0);
-}
 } // namespace
 
 RingSearch::MeanEdges RingSearch::meanProfileEdges()
@@ -337,31 +293,6 @@ void RingSearch::finerMeanProfile(double fromPx, double stepPx, int count, uint1
             }
     }
     for (int j = 0; j < count; ++j) mean[j] = n[j] * 4 >= kCoarseRays ? uint16_t(sum[j] / n[j]) : kOutsideFrame;
-}
-
-bool RingSearch::outlineRivalled(double rMaxPx) const
-{
-    // The fixture's shadow around the foot is a second step of the outline's sign outside
-    // it (lit fixture beyond a dark shadow beyond a dark barrel): where the mean profile
-    // shows one at least half as strong within a third of R0, the step taken for the
-    // outline could be either. The outline's own step is the strongest within the
-    // derivative's reach of it (which may be a highlight's flank just inside); a rival lies
-    // beyond that reach of the outline itself, so that the outline's own step is not one.
-    const double rA = kCoarseStart * r0, step = coarseStep(r0);
-    const int count = std::min(kMaxCoarse, int((kCoarseEnd * r0 - rA) / step));
-    const int at = int((rMaxPx - rA) / step + 0.5);
-    if (at < 2 || at > count - 3) return false;
-    int k = at;
-    for (int j = std::max(2, at - 2); j <= std::min(count - 3, at + 2); ++j)
-        if (std::abs(meanDeriv[j]) > std::abs(meanDeriv[k])) k = j;
-    const int32_t outline = meanDeriv[k];
-    if (outline == 0) return false;
-    const int end = std::min(count - 3, int((rMaxPx + r0 / 3 - rA) / step));
-    for (int j = std::max(k, at) + 3; j <= end; ++j)
-        if (isExtremum(meanDeriv, j) && (meanDeriv[j] > 0) == (outline > 0) &&
-            2 * std::abs(meanDeriv[j]) >= std::abs(outline))
-            return true;
-    return false;
 }
 
 void RingSearch::sampleWindow(const double *start, double step, int count, int boxHalf, EndFaceGeometry *m)
@@ -589,455 +520,6 @@ double RingSearch::centreOnContactEdge(const MeanEdges &me)
         cx = fit.centreX, cy = fit.centreY;
     }
     return r;
-}
-
-bool RingSearch::silhouetteOnRay(const uint16_t *row, int lo, int hi, int w, int barrelFrom, double *atSample) const
-{
-    // Running sums from the first sample the detector reads (lo − w): prefix[k] holds
-    // Σ row[base … k − 1], so differences are the same as from sample 0.
-    int32_t prefix[kMaxCoarse + 1];
-    const int wn = std::max(1, w / 4); // the locating detector's half-width
-    const int base = lo - w;
-    prefix[base] = 0;
-    for (int j = base; j <= hi + w; ++j) prefix[j + 1] = prefix[j] + row[j];
-    // Step across r: mean of the h samples outside minus the h samples inside (Q8, as sums
-    // over h). The inside reads the barrel only: from barrelFrom, beyond the contact edge's
-    // blur, its mean scaled to h samples. Reading into the contact edge, the detector would
-    // take its tail for an outline at the window's start (at a 2 px step and h = 4, a
-    // window 0.04 R0 outside the contact edge reads 4 px inside it).
-    auto across = [&](int j, int h) {
-        const int from = std::max(j - h, barrelFrom), n = j - from;
-        const int32_t sum = prefix[j] - prefix[from];
-        const int32_t inside = n == h ? sum : sum * h / n; // a division only where clipped
-        return (prefix[j + 1 + h] - prefix[j + 1]) - inside;
-    };
-    auto stepAt = [&](int j) { return across(j, w); };
-    // The same step over wn samples a side: it locates the edge the wide one detects.
-    auto narrowAt = [&](int j) { return across(j, wn); };
-    // Noise: the step detector's spread over the outer quarter (background, mostly); the
-    // narrow one's is that of a sum over wn samples a side rather than w: √(wn/w) of it.
-    int32_t tmp[kMaxCoarse];
-    int nt = 0;
-    for (int j = std::max(lo, hi - (hi - lo) / 4); j <= hi; ++j) tmp[nt++] = std::abs(stepAt(j));
-    std::nth_element(tmp, tmp + nt / 2, tmp + nt);
-    const double noise = 1.4826 * tmp[nt / 2];
-    const double threshold = std::max(3.0 * noise, 4.0 * 256 * w);
-    const double narrowThreshold = std::max(3.0 * noise * std::sqrt(double(wn) / w), 4.0 * 256 * wn);
-    for (int j = hi; j >= lo; --j) {
-        if (std::abs(stepAt(j)) < threshold) continue;
-        // The outermost clear step lies within w samples inside where the wide detector
-        // first sees it. A highlight band on the barrel just inside its outline is a
-        // stronger step of the same sign, and the wide detector's peak would slide onto
-        // its flank (1–2 % short): the edge is the narrow detector's strongest peak over
-        // those w samples. Only where the narrow one sees nothing clear there does the
-        // wide one's own peak stand.
-        const int sign = stepAt(j) > 0 ? 1 : -1;
-        int best = -1;
-        int32_t bestA = 0;
-        for (int k = std::min(hi - 1, j + 1); k >= std::max(lo + 1, j - w); --k) {
-            const int32_t a = sign * narrowAt(k);
-            if (a > bestA && a >= sign * narrowAt(k - 1) && a >= sign * narrowAt(k + 1)) {
-                best = k;
-                bestA = a;
-            }
-        }
-        if (bestA < narrowThreshold) best = -1;
-        double offset = 0;
-        if (best >= 0) {
-            offset =
-                parabolaVertex(sign * narrowAt(best - 1), sign * narrowAt(best), sign * narrowAt(best + 1)).toDouble();
-        } else {
-            best = j;
-            while (best - 1 >= lo && std::abs(stepAt(best - 1)) >= std::abs(stepAt(best))) --best;
-        }
-        // The detectors are centred on sample k (samples k + 1 … against … k − 1).
-        *atSample = best + offset;
-        return true;
-    }
-    return false;
-}
-
-bool RingSearch::barrelBandLopsided(const double *radius, const bool *valid, const double *outerR) const
-{
-    // Least squares of width = w0 + a cos θ + b sin θ over the coarse rays with a silhouette.
-    constexpr int kCoarse = kCoarseRays;
-    double n = 0, sc = 0, ss = 0, scc = 0, sss = 0, scs = 0, sw = 0, swc = 0, sws = 0;
-    for (int i = 0; i < kCoarse; ++i) {
-        if (!valid[i]) continue;
-        const int fineIdx = i * (rays_ / kCoarse);
-        const double c = rayCos_[fineIdx], sn = raySin_[fineIdx];
-        const double width = radius[i] - (outerR[fineIdx] + (cx - coarseCx_) * c + (cy - coarseCy_) * sn);
-        n += 1, sc += c, ss += sn, scc += c * c, sss += sn * sn, scs += c * sn;
-        sw += width, swc += width * c, sws += width * sn;
-    }
-    // Solve the 3 × 3 normal equations by Cramer's rule.
-    const double m[3][3] = {{n, sc, ss}, {sc, scc, scs}, {ss, scs, sss}};
-    auto det3 = [](const double a[3][3]) {
-        return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
-               a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
-    };
-    const double det = det3(m);
-    if (!(n >= 8 && std::fabs(det) > 1e-9)) return false;
-    const double rhs[3] = {sw, swc, sws};
-    double sol[3];
-    for (int k = 0; k < 3; ++k) {
-        double mk[3][3];
-        for (int r = 0; r < 3; ++r)
-            for (int c = 0; c < 3; ++c) mk[r][c] = c == k ? rhs[r] : m[r][c];
-        sol[k] = det3(mk) / det;
-    }
-    return !(sol[0] > 0) || std::hypot(sol[1], sol[2]) > 0.5 * sol[0];
-}
-
-double RingSearch::silhouetteFromRays(const double *outerR, double blurPx, EndFaceGeometry *m, bool *lopsided)
-{
-    m->silhouetteCoverage = 0;
-    m->silhouetteScatterPx = 0;
-    m->silhouetteCentreX = m->silhouetteCentreY = 0;
-    *lopsided = false;
-    constexpr int kCoarse = kCoarseRays;
-    const double rA = kCoarseStart * r0, rB = kCoarseEnd * r0;
-    const double step = coarseStep(r0);
-    const int count = std::min(kMaxCoarse, int((rB - rA) / step));
-    const int w = std::max(4, int(0.035 * r0 / step)); // step detector half-width
-    double radius[kCoarse];
-    bool valid[kCoarse];
-    for (int i = 0; i < kCoarse; ++i) {
-        valid[i] = false;
-        const uint16_t *row = coarse + size_t(i) * kMaxCoarse;
-        if (anyOutsideFrame(row, count)) continue; // a ray leaving the frame is not used
-        // The contact edge's radius seen from the coarse rays' centre (to first order in
-        // the contact edge's centre offset).
-        const int fineIdx = i * (rays_ / kCoarse);
-        const double ro = outerR[fineIdx] + (cx - coarseCx_) * rayCos_[fineIdx] + (cy - coarseCy_) * raySin_[fineIdx];
-        // The barrel begins beyond the contact edge's blur (three of its σ, at least 2 px).
-        const int barrelFrom = std::max(0, int(std::ceil((ro + std::max(2.0, 3 * blurPx) - rA) / step)));
-        const int lo = std::max({w, int((ro + 0.04 * r0 - rA) / step), barrelFrom + 1});
-        const int hi = count - w - 2;
-        if (hi - lo < 2 * w) continue;
-        double at = 0;
-        if (silhouetteOnRay(row, lo, hi, w, std::max(barrelFrom, lo - w), &at)) {
-            radius[i] = rA + at * step;
-            valid[i] = true;
-        }
-    }
-    // Seen straight on, the barrel shows as a band of even width outside the contact edge.
-    // Seen obliquely (a tilted camera, or one close enough that the rays fan out by tens of
-    // degrees), it shows wide on the side facing the camera and hides behind the end face on
-    // the far side: what bounds the specimen there is the contact edge itself, and no circle
-    // through it is the barrel's widest one. A band whose width swings by more than half its
-    // mean around the ring is not taken.
-    if (barrelBandLopsided(radius, valid, outerR)) {
-        *lopsided = true;
-        return 0;
-    }
-    BoundaryFit fit;
-    FitOptions opt;
-    opt.maxHarmonics = 2;
-    opt.minRejectPx = 2.0;
-    if (!fitBoundary(radius, valid, kCoarse, coarseCx_, coarseCy_, opt, &fit) || fit.coverage < 0.4) return 0;
-    m->silhouetteCoverage = fit.coverage;
-    m->silhouetteScatterPx = fit.scatterPx;
-    m->silhouetteCentreX = fit.centreX;
-    m->silhouetteCentreY = fit.centreY;
-    return fit.rEqPx;
-}
-
-// The profile across the ring, following the contact edge: sample K lies on it, K samples
-// inside and M outside.
-struct RingSearch::AlignedProfile {
-    static constexpr int kSpan = kMaxCoarse;
-    int K = 0, M = 10;
-    // Only the first count() samples are written and read: nothing clears the rest.
-    int32_t level[kSpan]; // mean grey level (0 where fewer than half the rays saw the frame)
-    int32_t deriv[kSpan]; // its derivative, in the fine derivative rows' units
-    int count() const { return K + M + 1; }
-};
-
-bool RingSearch::alignedProfile(const double *outerR, AlignedProfile *p, bool onInner, int halfSpan, int sector) const
-{
-    const int first = sector < 0 ? 0 : sector * (rays_ / kRampSectors);
-    const int end = sector < 0 ? rays_ : first + rays_ / kRampSectors;
-    const int stride = sector < 0 ? rays_ / kAlignRays : 1;
-    const int rays = (end - first) / stride; // both divide: rays_ is a power of two of 64 or more
-    p->K = halfSpan > 0 ? halfSpan : int(kMaxU * r0 + 2);
-    if (halfSpan > 0) p->M = halfSpan;
-    if (p->count() > AlignedProfile::kSpan) return false;
-    const int K = p->K, count = p->count();
-    uint32_t sum[AlignedProfile::kSpan], n[AlignedProfile::kSpan];
-    std::fill_n(sum, count, 0u);
-    std::fill_n(n, count, 0u);
-    uint16_t row[AlignedProfile::kSpan];
-    for (int i = first; i < end; i += stride) {
-        if (!(onInner ? innerPts[i] : outerPts[i]).valid) continue;
-        const double ro = outerR[i];
-        RaySpec ray{Q16_16::fromDouble(cx),     Q16_16::fromDouble(cy), rayCosQ_[i], raySinQ_[i],
-                    Q16_16::fromDouble(ro - K), Q16_16::fromDouble(1.0)};
-        sampleRay(*frame, ray, count, row);
-        for (int k = 0; k < count; ++k)
-            if (row[k] != kOutsideFrame) {
-                sum[k] += row[k];
-                n[k]++;
-            }
-    }
-    uint16_t mean[AlignedProfile::kSpan] = {}; // count ≤ kSpan are set; zeroed for GCC's flow analysis at -O0
-    for (int k = 0; k < count; ++k) {
-        mean[k] = n[k] * 2 >= uint32_t(rays) ? uint16_t(sum[k] / n[k]) : kOutsideFrame;
-        p->level[k] = mean[k] == kOutsideFrame ? 0 : mean[k];
-    }
-    // Same units as the fine derivative rows (the [1 2 1] angular weights sum to 4).
-    profileDerivative(mean, count, p->deriv);
-    for (int k = 0; k < count; ++k) p->deriv[k] = (p->deriv[k] * 4) >> 6;
-    return true;
-}
-
-double RingSearch::contactEdgeWidth(const AlignedProfile &p, int signOuter) const
-{
-    return stepWidth(p, signOuter, 6);
-}
-
-double RingSearch::stepWidth(const AlignedProfile &p, int sign, double reachPx) const
-{
-    // The second moment of the derivative peak (the kernel adds 0.75 px² and bilinear
-    // sampling about 0.17 px²).
-    double s0 = 0, s1 = 0, s2 = 0;
-    const int w = std::min(p.K, int(reachPx / kFineStepPx) + 1);
-    for (int k = -w; k <= std::min(w, p.M); ++k) {
-        const double val = std::max(0, sign * p.deriv[k + p.K]);
-        s0 += val;
-        s1 += val * k * kFineStepPx;
-        s2 += val * k * k * kFineStepPx * kFineStepPx;
-    }
-    if (!(s0 > 0)) return -1;
-    const double var = s2 / s0 - (s1 / s0) * (s1 / s0) - 0.92;
-    return std::sqrt(std::max(0.0, var));
-}
-
-bool RingSearch::kneeOffset(const AlignedProfile &p, int signOuter, double blurPx, double rampPx, double ringPx,
-                            bool onRamp, double *offsetPx) const
-{
-    ContactKneeWindow w;
-    w.outsideSamples = int(kKneeOutsidePx / kFineStepPx);
-    w.blurPx = std::sqrt(blurPx * blurPx + kBilinearBlurSq);
-    w.samplePx = kFineStepPx;
-    int fallSign = signOuter;
-    if (onRamp) {
-        // The knee lies inside the derivative's peak by up to about the ramp's width: twice it
-        // (twice kContactRampPx at least) is searched, and the profile read that far in and
-        // the blur's reach beyond, for the ring's level, but not past half the ring (the
-        // original face's edge); the search stays short of the window's first sample (a knee
-        // there has no level to end).
-        const double searchPx = 2 * std::max(rampPx, kContactRampPx);
-        w.insideSamples = int(std::min(0.5 * ringPx, searchPx + 3 * blurPx + 1) / kFineStepPx);
-        w.searchInPx = std::min((w.insideSamples - 1) * kFineStepPx, searchPx);
-    } else if (signOuter > 0) {
-        // A contact edge rising onto a lit shoulder: the shoulder falls again just beyond, and
-        // its fall, blurred into the step, moves the derivative's peak inside the edge. The
-        // step and the fall beyond it are fitted alike, the fall going the other way.
-        w.insideSamples = int(std::min(0.5 * ringPx, kShoulderInsidePx) / kFineStepPx);
-        w.searchInPx = w.searchOutPx = kShoulderSearchPx;
-        fallSign = -signOuter;
-    } else {
-        return false;
-    }
-    const ContactKnee knee = locateContactKnee(p.level, p.count(), p.K, fallSign, w);
-    if (!knee.found) return false;
-    // A shoulder that falls by less than kShoulderFall of the step within the window is no
-    // shoulder, and a ring that is no level inside the step (the fit's residual beyond
-    // kShoulderResidual of the step) not the model fitted: the step stands as the derivative
-    // located it.
-    if (fallSign != signOuter && !(std::fabs(knee.slope) * kKneeOutsidePx > kShoulderFall * std::fabs(knee.stepLevel) &&
-                                   knee.residual < kShoulderResidual * std::fabs(knee.stepLevel)))
-        return false;
-    *offsetPx = knee.offsetPx;
-    return true;
-}
-
-void RingSearch::contactEdgeAtKnee(const AlignedProfile &p, int signOuter, double blurPx, double rampPx, double ringPx,
-                                   BoundaryFit *outer)
-{
-    double offset = 0;
-    if (!kneeOffset(p, signOuter, blurPx, rampPx, ringPx, rampPx > kContactRampPx, &offset)) return;
-    outer->a0 += offset;
-    outer->rEqPx += offset;
-    for (int i = 0; i < rays_; ++i) {
-        const double r = outerPts[i].radius.toDouble() + offset;
-        outerPts[i].radius = Q16_16::fromDouble(r);
-        outerPts[i].x = Q16_16::fromDouble(cx + r * rayCos_[i]);
-        outerPts[i].y = Q16_16::fromDouble(cy + r * raySin_[i]);
-    }
-}
-
-double RingSearch::contactEdgeAtKneeBySector(const double *outerR, int signOuter, double blurPx, double reachPx,
-                                             double ringPx, BoundaryFit *outer)
-{
-    // Seen obliquely, the barrel's shoulder (the rounded corner between the end face and the
-    // barrel, a few pixels wide) spreads out on the side facing the camera and shows edge-on
-    // on the far side. Where it spreads, its shading falls off gradually beyond the contact
-    // edge and the derivative peaks outside the edge; where it shows edge-on, a thin dark
-    // line between the ring and a lighter background, the peak lies on the edge. The bench's
-    // tilted-s1 record 6 (12.5°), against its projected contact edge: 1.7–3.3 px outside on
-    // the side facing the camera, 0.3–0.5 px on the far side; the arcs' ramps 2.4–2.6 px
-    // there and 0 here, the whole ring's 1.0, under kContactRampPx, so that neither the knee
-    // nor the reading's finding would see it. Each arc of the ring is judged on its own.
-    const int span = rays_ / kRampSectors;
-    double offset[kRampSectors] = {}, widest = 0;
-    bool moved = false;
-    for (int s = 0; s < kRampSectors; ++s) {
-        AlignedProfile p;
-        if (!alignedProfile(outerR, &p, false, 0, s)) continue;
-        const double wo = stepWidth(p, signOuter, reachPx);
-        if (wo < 0) continue;
-        const double ramp = std::sqrt(std::max(0.0, wo * wo - blurPx * blurPx));
-        widest = std::max(widest, ramp);
-        // A sector's few rays measure its ramp too noisily to decide on it: every sector whose
-        // contact edge falls is followed to where its level ends. Where the shoulder is seen
-        // edge-on the level ends at the step itself, and the fit finds the knee there or none.
-        if (kneeOffset(p, signOuter, blurPx, ramp, ringPx, ramp > kContactRampPx || signOuter < 0, &offset[s]))
-            moved = true;
-    }
-    if (!moved) return widest;
-    // Between the sectors' middles the offset follows the ring linearly.
-    double radius[kRays];
-    bool valid[kRays];
-    for (int i = 0; i < rays_; ++i) {
-        const double at = (i + 0.5) / span - 0.5; // in sectors from sector 0's middle
-        const int s0 = int(std::floor(at));
-        const double f = at - s0;
-        const double o = (1 - f) * offset[(s0 + kRampSectors) % kRampSectors] + f * offset[(s0 + 1) % kRampSectors];
-        radius[i] = outerPts[i].radius.toDouble() + o;
-        valid[i] = outerPts[i].valid;
-        outerPts[i].radius = Q16_16::fromDouble(radius[i]);
-        outerPts[i].x = Q16_16::fromDouble(cx + radius[i] * rayCos_[i]);
-        outerPts[i].y = Q16_16::fromDouble(cy + radius[i] * raySin_[i]);
-    }
-    BoundaryFit fit;
-    if (fitBoundary(radius, valid, rays_, cx, cy, FitOptions{}, &fit)) {
-        // The first fit's σ may hold a low coverage's share (locateOnRays), which a fit
-        // through the same points moved does not see again.
-        fit.rEqSigmaPx = std::max(fit.rEqSigmaPx, outer->rEqSigmaPx);
-        *outer = fit;
-    }
-    return widest;
-}
-
-RingSearch::OriginalFaceName RingSearch::nameOriginalFace(const AlignedProfile &p) const
-{
-    // Noise of the aligned derivative on the inner part of the window (mostly original
-    // face: the ICA's turning marks would inflate it).
-    const int K = p.K;
-    const double noise = robustSigma(p.deriv, 0, K / 2);
-    const double innerMin = std::max(3.0 * noise, 40.0);
-    OriginalFaceName name;
-    // The contact edge's own hump of the derivative is not an edge inside it: a barrel
-    // ramping away behind the step gives the descent two humps, the step's and the ramp's,
-    // and the profile, aligned between them, would otherwise offer the step's hump as the
-    // original face's. Walking in from sample K, the hump rises to its top and falls to the
-    // valley before the next one, or below a quarter of its top, or to the other sign.
-    const int signAtEdge = p.deriv[K] > 0 ? 1 : p.deriv[K] < 0 ? -1 : 0;
-    int flank = K;
-    if (signAtEdge) {
-        int32_t top = signAtEdge * p.deriv[K];
-        while (flank > 0 && signAtEdge * p.deriv[flank - 1] >= top) top = signAtEdge * p.deriv[--flank];
-        while (flank > 0 && signAtEdge * p.deriv[flank - 1] <= signAtEdge * p.deriv[flank] &&
-               4 * signAtEdge * p.deriv[flank - 1] >= top)
-            --flank;
-    }
-    for (int k = -K + 2; k <= std::min(-2, flank - 1 - K); ++k) {
-        const int idx = k + K;
-        if (!isExtremum(p.deriv, idx) || std::abs(p.deriv[idx]) < innerMin || std::abs(p.deriv[idx]) <= name.strength)
-            continue;
-        // A real edge separates two levels; a turning mark or a scratch line is a ridge with
-        // the same level on both sides. Compare the levels a few pixels either side.
-        const int sign = p.deriv[idx] > 0 ? 1 : -1;
-        const int g = std::max(2, int(2.5 / kFineStepPx + 0.5));
-        const int fa = std::max(0, idx - g - int(8 / kFineStepPx)), fb = std::max(0, idx - g);
-        const int ia = std::min(idx + g, K - 2), ib = std::min(idx + g + int(8 / kFineStepPx), K - 2);
-        double lf = 0, li = 0;
-        int nf = 0, ni = 0;
-        for (int j = fa; j <= fb; ++j) {
-            lf += p.level[j];
-            ++nf;
-        }
-        for (int j = ia; j <= ib; ++j) {
-            li += p.level[j];
-            ++ni;
-        }
-        if (nf && ni && sign * (li / ni - lf / nf) < 0.5 * 256) continue;
-        name.k = k;
-        name.strength = std::abs(p.deriv[idx]);
-        name.sign = sign;
-    }
-    return name;
-}
-
-bool RingSearch::originalFaceOnRays(OriginalFaceName name, const AlignedProfile &p, const double *outerR,
-                                    EndFaceGeometry *m, BoundaryFit *inner, double *innerR, double *contrast)
-{
-    if (!name.sign) return false;
-    const int K = p.K;
-    // The derivative names the edge; its position is taken from a box step detector half
-    // as wide as the ring (up to 12 px), which turning marks next to the edge cannot pull.
-    // On a ring narrower than 12 px a box would reach across the contact edge's blur: there
-    // the derivative itself locates the edge (W = 0).
-    const int W = -name.k >= 12 ? std::min(-name.k / 2, 12) : 0;
-    int32_t boxV = W ? 0 : name.strength;
-    if (W) {
-        int64_t prefix[AlignedProfile::kSpan + 1];
-        prefix[0] = 0;
-        for (int k = 0; k < p.count(); ++k) prefix[k + 1] = prefix[k] + p.level[k];
-        const int idx0 = name.k + K;
-        for (int j = std::max(W, idx0 - W); j <= std::min(K - 2 - W, idx0 + W); ++j) {
-            const int64_t diff = (prefix[j + W + 1] - prefix[j + 1]) - (prefix[j] - prefix[j - W]);
-            const int32_t v = int32_t(name.sign * diff / (int64_t(W) * 8)); // 1/32 grey
-            if (v > boxV) {
-                boxV = v;
-                name.k = j - K;
-            }
-        }
-    }
-    if (boxV <= 0) return false;
-    const double uGuess = -name.k * kFineStepPx;
-    const double half = std::max(3.0, std::min(0.025 * r0, 0.5 * uGuess));
-    const int32_t innerStrength = std::max<int32_t>(W ? 4 : 6, int32_t(0.3 * boxV));
-    const double reach = std::max(1.0, std::min(3.0, 0.5 * uGuess));
-    // A window following the contact edge at the named offset. The search spans ±half about
-    // the guess (pass 2: ±2.5 about the fit); the detector needs W (or 2 for the derivative)
-    // more on each side.
-    const int pad = std::max(W, 2) + 3;
-    const int innerCount = std::min(kMaxFine, int(2 * half) + 2 * pad + 1);
-    double start[kRays], lo[kRays], hi[kRays];
-    for (int i = 0; i < rays_; ++i) start[i] = outerR[i] - uGuess - half - pad;
-    sampleWindow(start, kFineStepPx, innerCount, W, m);
-    for (int pass = 0; pass < 2; ++pass) {
-        for (int i = 0; i < rays_; ++i) {
-            const double ro = outerR[i];
-            const double c = pass == 0 ? ro - uGuess : innerR[i];
-            const double h = pass == 0 ? half : 2.5;
-            lo[i] = c - h;
-            hi[i] = std::min(c + h, ro - (W ? 1.0 + W : 2.0));
-        }
-        if (!locateOnRays(name.sign, 0, lo, hi, innerStrength, pass == 0 ? nullptr : innerPts, true, reach, inner,
-                          innerR, contrast) ||
-            inner->coverage < 0.25)
-            return false;
-    }
-    return true;
-}
-
-bool RingSearch::narrowRingFromProfile(const AlignedProfile &p, int signOuter, double startWidthPx, BoundaryFit *outer,
-                                       BoundaryFit *inner, double *contrastInner)
-{
-    const NarrowRingFit nf = fitNarrowRing(p.level, p.count(), p.K, signOuter, startWidthPx);
-    if (!nf.found) return false;
-    *inner = *outer;
-    outer->a0 += nf.outerPx, outer->rEqPx += nf.outerPx;
-    inner->a0 += nf.innerPx, inner->rEqPx += nf.innerPx;
-    inner->rEqSigmaPx = nf.sigmaWidthPx;
-    inner->used = 0; // no per-ray point: the edge is the profile's
-    *contrastInner = nf.innerStep / 256.0;
-    for (int i = 0; i < rays_; ++i) innerPts[i].valid = false;
-    return true;
 }
 
 ErrorCode RingSearch::run(EndFaceGeometry *m)

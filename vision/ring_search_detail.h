@@ -1,0 +1,58 @@
+#pragma once
+// What the ring search's parts share (ring_search.cpp, ring_search_outline.cpp,
+// ring_search_contact_edge.cpp, ring_search_original_face.cpp): the rays' and profiles' sizes,
+// two statistics of a derivative row, and the profile aligned on the contact edge. Private to
+// the search: nothing outside vision/ includes it.
+#include <algorithm>
+#include <cstdint>
+#include <cstdlib>
+
+#include "vision/ray_capacity.h"
+#include "vision/ring_search.h"
+
+namespace icacam::vision::ring_search_detail {
+
+constexpr int kRays = kFineRays; // the most fine rays a search casts
+constexpr int kMaxFine = kMaxFineSamples;
+constexpr int kMaxCoarse = kMaxCoarseSamples;
+// The fine rays' sample spacing (pixels).
+constexpr double kFineStepPx = 1.0;
+// Seen obliquely, the contact edge's ramp is measured and its knee located on this many arcs
+// of the ring apiece (16 or 32 fine rays each).
+constexpr int kRampSectors = 8;
+
+// The robust σ (1.4826 × the median absolute value) of d[lo … hi].
+inline double robustSigma(const int32_t *d, int lo, int hi)
+{
+    int32_t tmp[kMaxCoarse + kMaxFine];
+    int n = 0;
+    for (int i = lo; i <= hi; ++i) tmp[n++] = std::abs(d[i]);
+    if (n == 0) return 0;
+    std::nth_element(tmp, tmp + n / 2, tmp + n);
+    return 1.4826 * tmp[n / 2];
+}
+
+// Whether d[i] is a peak of |d| that keeps its sign across its neighbours.
+inline bool isExtremum(const int32_t *d, int i)
+{
+    const int32_t a = std::abs(d[i]);
+    return a > 0 && a >= std::abs(d[i - 1]) && a > std::abs(d[i + 1]) && (d[i] > 0) == (d[i - 1] >= 0) &&
+           (d[i] > 0) == (d[i + 1] >= 0);
+}
+
+} // namespace icacam::vision::ring_search_detail
+
+namespace icacam::vision {
+
+// The profile across the ring, following the contact edge: sample K lies on it, K samples
+// inside and M outside.
+struct RingSearch::AlignedProfile {
+    static constexpr int kSpan = ring_search_detail::kMaxCoarse;
+    int K = 0, M = 10;
+    // Only the first count() samples are written and read: nothing clears the rest.
+    int32_t level[kSpan]; // mean grey level (0 where fewer than half the rays saw the frame)
+    int32_t deriv[kSpan]; // its derivative, in the fine derivative rows' units
+    int count() const { return K + M + 1; }
+};
+
+} // namespace icacam::vision

@@ -1,0 +1,134 @@
+// The original face's edge: named on the aligned profile (which step ends the original face),
+// located on every fine ray, or, for a ring too narrow for the rays, fitted on the profile.
+#include "vision/ring_search.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "vision/narrow_ring.h"
+#include "vision/ring_search_detail.h"
+
+namespace icacam::vision {
+
+using namespace ring_search_detail;
+
+RingSearch::OriginalFaceName RingSearch::nameOriginalFace(const AlignedProfile &p) const
+{
+    // Noise of the aligned derivative on the inner part of the window (mostly original
+    // face: the ICA's turning marks would inflate it).
+    const int K = p.K;
+    const double noise = robustSigma(p.deriv, 0, K / 2);
+    const double innerMin = std::max(3.0 * noise, 40.0);
+    OriginalFaceName name;
+    // The contact edge's own hump of the derivative is not an edge inside it: a barrel
+    // ramping away behind the step gives the descent two humps, the step's and the ramp's,
+    // and the profile, aligned between them, would otherwise offer the step's hump as the
+    // original face's. Walking in from sample K, the hump rises to its top and falls to the
+    // valley before the next one, or below a quarter of its top, or to the other sign.
+    const int signAtEdge = p.deriv[K] > 0 ? 1 : p.deriv[K] < 0 ? -1 : 0;
+    int flank = K;
+    if (signAtEdge) {
+        int32_t top = signAtEdge * p.deriv[K];
+        while (flank > 0 && signAtEdge * p.deriv[flank - 1] >= top) top = signAtEdge * p.deriv[--flank];
+        while (flank > 0 && signAtEdge * p.deriv[flank - 1] <= signAtEdge * p.deriv[flank] &&
+               4 * signAtEdge * p.deriv[flank - 1] >= top)
+            --flank;
+    }
+    for (int k = -K + 2; k <= std::min(-2, flank - 1 - K); ++k) {
+        const int idx = k + K;
+        if (!isExtremum(p.deriv, idx) || std::abs(p.deriv[idx]) < innerMin || std::abs(p.deriv[idx]) <= name.strength)
+            continue;
+        // A real edge separates two levels; a turning mark or a scratch line is a ridge with
+        // the same level on both sides. Compare the levels a few pixels either side.
+        const int sign = p.deriv[idx] > 0 ? 1 : -1;
+        const int g = std::max(2, int(2.5 / kFineStepPx + 0.5));
+        const int fa = std::max(0, idx - g - int(8 / kFineStepPx)), fb = std::max(0, idx - g);
+        const int ia = std::min(idx + g, K - 2), ib = std::min(idx + g + int(8 / kFineStepPx), K - 2);
+        double lf = 0, li = 0;
+        int nf = 0, ni = 0;
+        for (int j = fa; j <= fb; ++j) {
+            lf += p.level[j];
+            ++nf;
+        }
+        for (int j = ia; j <= ib; ++j) {
+            li += p.level[j];
+            ++ni;
+        }
+        if (nf && ni && sign * (li / ni - lf / nf) < 0.5 * 256) continue;
+        name.k = k;
+        name.strength = std::abs(p.deriv[idx]);
+        name.sign = sign;
+    }
+    return name;
+}
+
+bool RingSearch::originalFaceOnRays(OriginalFaceName name, const AlignedProfile &p, const double *outerR,
+                                    EndFaceGeometry *m, BoundaryFit *inner, double *innerR, double *contrast)
+{
+    if (!name.sign) return false;
+    const int K = p.K;
+    // The derivative names the edge; its position is taken from a box step detector half
+    // as wide as the ring (up to 12 px), which turning marks next to the edge cannot pull.
+    // On a ring narrower than 12 px a box would reach across the contact edge's blur: there
+    // the derivative itself locates the edge (W = 0).
+    const int W = -name.k >= 12 ? std::min(-name.k / 2, 12) : 0;
+    int32_t boxV = W ? 0 : name.strength;
+    if (W) {
+        int64_t prefix[AlignedProfile::kSpan + 1];
+        prefix[0] = 0;
+        for (int k = 0; k < p.count(); ++k) prefix[k + 1] = prefix[k] + p.level[k];
+        const int idx0 = name.k + K;
+        for (int j = std::max(W, idx0 - W); j <= std::min(K - 2 - W, idx0 + W); ++j) {
+            const int64_t diff = (prefix[j + W + 1] - prefix[j + 1]) - (prefix[j] - prefix[j - W]);
+            const int32_t v = int32_t(name.sign * diff / (int64_t(W) * 8)); // 1/32 grey
+            if (v > boxV) {
+                boxV = v;
+                name.k = j - K;
+            }
+        }
+    }
+    if (boxV <= 0) return false;
+    const double uGuess = -name.k * kFineStepPx;
+    const double half = std::max(3.0, std::min(0.025 * r0, 0.5 * uGuess));
+    const int32_t innerStrength = std::max<int32_t>(W ? 4 : 6, int32_t(0.3 * boxV));
+    const double reach = std::max(1.0, std::min(3.0, 0.5 * uGuess));
+    // A window following the contact edge at the named offset. The search spans ±half about
+    // the guess (pass 2: ±2.5 about the fit); the detector needs W (or 2 for the derivative)
+    // more on each side.
+    const int pad = std::max(W, 2) + 3;
+    const int innerCount = std::min(kMaxFine, int(2 * half) + 2 * pad + 1);
+    double start[kRays], lo[kRays], hi[kRays];
+    for (int i = 0; i < rays_; ++i) start[i] = outerR[i] - uGuess - half - pad;
+    sampleWindow(start, kFineStepPx, innerCount, W, m);
+    for (int pass = 0; pass < 2; ++pass) {
+        for (int i = 0; i < rays_; ++i) {
+            const double ro = outerR[i];
+            const double c = pass == 0 ? ro - uGuess : innerR[i];
+            const double h = pass == 0 ? half : 2.5;
+            lo[i] = c - h;
+            hi[i] = std::min(c + h, ro - (W ? 1.0 + W : 2.0));
+        }
+        if (!locateOnRays(name.sign, 0, lo, hi, innerStrength, pass == 0 ? nullptr : innerPts, true, reach, inner,
+                          innerR, contrast) ||
+            inner->coverage < 0.25)
+            return false;
+    }
+    return true;
+}
+
+bool RingSearch::narrowRingFromProfile(const AlignedProfile &p, int signOuter, double startWidthPx, BoundaryFit *outer,
+                                       BoundaryFit *inner, double *contrastInner)
+{
+    const NarrowRingFit nf = fitNarrowRing(p.level, p.count(), p.K, signOuter, startWidthPx);
+    if (!nf.found) return false;
+    *inner = *outer;
+    outer->a0 += nf.outerPx, outer->rEqPx += nf.outerPx;
+    inner->a0 += nf.innerPx, inner->rEqPx += nf.innerPx;
+    inner->rEqSigmaPx = nf.sigmaWidthPx;
+    inner->used = 0; // no per-ray point: the edge is the profile's
+    *contrastInner = nf.innerStep / 256.0;
+    for (int i = 0; i < rays_; ++i) innerPts[i].valid = false;
+    return true;
+}
+
+} // namespace icacam::vision

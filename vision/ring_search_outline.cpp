@@ -1,0 +1,194 @@
+// The barrel's outline on the coarse rays: where each ray leaves the barrel for the background,
+// whether the band is lopsided (an oblique view), whether the fixture's shadow rivals it.
+#include "vision/ring_search.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "vision/boundary_fit.h"
+#include "vision/edge_profile.h"
+#include "vision/radial_profile.h"
+#include "vision/ring_search_detail.h"
+
+namespace icacam::vision {
+
+using namespace ring_search_detail;
+
+bool RingSearch::outlineRivalled(double rMaxPx) const
+{
+    // The fixture's shadow around the foot is a second step of the outline's sign outside
+    // it (lit fixture beyond a dark shadow beyond a dark barrel): where the mean profile
+    // shows one at least half as strong within a third of R0, the step taken for the
+    // outline could be either. The outline's own step is the strongest within the
+    // derivative's reach of it (which may be a highlight's flank just inside); a rival lies
+    // beyond that reach of the outline itself, so that the outline's own step is not one.
+    const double rA = kCoarseStart * r0, step = coarseStep(r0);
+    const int count = std::min(kMaxCoarse, int((kCoarseEnd * r0 - rA) / step));
+    const int at = int((rMaxPx - rA) / step + 0.5);
+    if (at < 2 || at > count - 3) return false;
+    int k = at;
+    for (int j = std::max(2, at - 2); j <= std::min(count - 3, at + 2); ++j)
+        if (std::abs(meanDeriv[j]) > std::abs(meanDeriv[k])) k = j;
+    const int32_t outline = meanDeriv[k];
+    if (outline == 0) return false;
+    const int end = std::min(count - 3, int((rMaxPx + r0 / 3 - rA) / step));
+    for (int j = std::max(k, at) + 3; j <= end; ++j)
+        if (isExtremum(meanDeriv, j) && (meanDeriv[j] > 0) == (outline > 0) &&
+            2 * std::abs(meanDeriv[j]) >= std::abs(outline))
+            return true;
+    return false;
+}
+
+bool RingSearch::silhouetteOnRay(const uint16_t *row, int lo, int hi, int w, int barrelFrom, double *atSample) const
+{
+    // Running sums from the first sample the detector reads (lo − w): prefix[k] holds
+    // Σ row[base … k − 1], so differences are the same as from sample 0.
+    int32_t prefix[kMaxCoarse + 1];
+    const int wn = std::max(1, w / 4); // the locating detector's half-width
+    const int base = lo - w;
+    prefix[base] = 0;
+    for (int j = base; j <= hi + w; ++j) prefix[j + 1] = prefix[j] + row[j];
+    // Step across r: mean of the h samples outside minus the h samples inside (Q8, as sums
+    // over h). The inside reads the barrel only: from barrelFrom, beyond the contact edge's
+    // blur, its mean scaled to h samples. Reading into the contact edge, the detector would
+    // take its tail for an outline at the window's start (at a 2 px step and h = 4, a
+    // window 0.04 R0 outside the contact edge reads 4 px inside it).
+    auto across = [&](int j, int h) {
+        const int from = std::max(j - h, barrelFrom), n = j - from;
+        const int32_t sum = prefix[j] - prefix[from];
+        const int32_t inside = n == h ? sum : sum * h / n; // a division only where clipped
+        return (prefix[j + 1 + h] - prefix[j + 1]) - inside;
+    };
+    auto stepAt = [&](int j) { return across(j, w); };
+    // The same step over wn samples a side: it locates the edge the wide one detects.
+    auto narrowAt = [&](int j) { return across(j, wn); };
+    // Noise: the step detector's spread over the outer quarter (background, mostly); the
+    // narrow one's is that of a sum over wn samples a side rather than w: √(wn/w) of it.
+    int32_t tmp[kMaxCoarse];
+    int nt = 0;
+    for (int j = std::max(lo, hi - (hi - lo) / 4); j <= hi; ++j) tmp[nt++] = std::abs(stepAt(j));
+    std::nth_element(tmp, tmp + nt / 2, tmp + nt);
+    const double noise = 1.4826 * tmp[nt / 2];
+    const double threshold = std::max(3.0 * noise, 4.0 * 256 * w);
+    const double narrowThreshold = std::max(3.0 * noise * std::sqrt(double(wn) / w), 4.0 * 256 * wn);
+    for (int j = hi; j >= lo; --j) {
+        if (std::abs(stepAt(j)) < threshold) continue;
+        // The outermost clear step lies within w samples inside where the wide detector
+        // first sees it. A highlight band on the barrel just inside its outline is a
+        // stronger step of the same sign, and the wide detector's peak would slide onto
+        // its flank (1–2 % short): the edge is the narrow detector's strongest peak over
+        // those w samples. Only where the narrow one sees nothing clear there does the
+        // wide one's own peak stand.
+        const int sign = stepAt(j) > 0 ? 1 : -1;
+        int best = -1;
+        int32_t bestA = 0;
+        for (int k = std::min(hi - 1, j + 1); k >= std::max(lo + 1, j - w); --k) {
+            const int32_t a = sign * narrowAt(k);
+            if (a > bestA && a >= sign * narrowAt(k - 1) && a >= sign * narrowAt(k + 1)) {
+                best = k;
+                bestA = a;
+            }
+        }
+        if (bestA < narrowThreshold) best = -1;
+        double offset = 0;
+        if (best >= 0) {
+            offset =
+                parabolaVertex(sign * narrowAt(best - 1), sign * narrowAt(best), sign * narrowAt(best + 1)).toDouble();
+        } else {
+            best = j;
+            while (best - 1 >= lo && std::abs(stepAt(best - 1)) >= std::abs(stepAt(best))) --best;
+        }
+        // The detectors are centred on sample k (samples k + 1 … against … k − 1).
+        *atSample = best + offset;
+        return true;
+    }
+    return false;
+}
+
+bool RingSearch::barrelBandLopsided(const double *radius, const bool *valid, const double *outerR) const
+{
+    // Least squares of width = w0 + a cos θ + b sin θ over the coarse rays with a silhouette.
+    constexpr int kCoarse = kCoarseRays;
+    double n = 0, sc = 0, ss = 0, scc = 0, sss = 0, scs = 0, sw = 0, swc = 0, sws = 0;
+    for (int i = 0; i < kCoarse; ++i) {
+        if (!valid[i]) continue;
+        const int fineIdx = i * (rays_ / kCoarse);
+        const double c = rayCos_[fineIdx], sn = raySin_[fineIdx];
+        const double width = radius[i] - (outerR[fineIdx] + (cx - coarseCx_) * c + (cy - coarseCy_) * sn);
+        n += 1, sc += c, ss += sn, scc += c * c, sss += sn * sn, scs += c * sn;
+        sw += width, swc += width * c, sws += width * sn;
+    }
+    // Solve the 3 × 3 normal equations by Cramer's rule.
+    const double m[3][3] = {{n, sc, ss}, {sc, scc, scs}, {ss, scs, sss}};
+    auto det3 = [](const double a[3][3]) {
+        return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+               a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+    };
+    const double det = det3(m);
+    if (!(n >= 8 && std::fabs(det) > 1e-9)) return false;
+    const double rhs[3] = {sw, swc, sws};
+    double sol[3];
+    for (int k = 0; k < 3; ++k) {
+        double mk[3][3];
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) mk[r][c] = c == k ? rhs[r] : m[r][c];
+        sol[k] = det3(mk) / det;
+    }
+    return !(sol[0] > 0) || std::hypot(sol[1], sol[2]) > 0.5 * sol[0];
+}
+
+double RingSearch::silhouetteFromRays(const double *outerR, double blurPx, EndFaceGeometry *m, bool *lopsided)
+{
+    m->silhouetteCoverage = 0;
+    m->silhouetteScatterPx = 0;
+    m->silhouetteCentreX = m->silhouetteCentreY = 0;
+    *lopsided = false;
+    constexpr int kCoarse = kCoarseRays;
+    const double rA = kCoarseStart * r0, rB = kCoarseEnd * r0;
+    const double step = coarseStep(r0);
+    const int count = std::min(kMaxCoarse, int((rB - rA) / step));
+    const int w = std::max(4, int(0.035 * r0 / step)); // step detector half-width
+    double radius[kCoarse];
+    bool valid[kCoarse];
+    for (int i = 0; i < kCoarse; ++i) {
+        valid[i] = false;
+        const uint16_t *row = coarse + size_t(i) * kMaxCoarse;
+        if (anyOutsideFrame(row, count)) continue; // a ray leaving the frame is not used
+        // The contact edge's radius seen from the coarse rays' centre (to first order in
+        // the contact edge's centre offset).
+        const int fineIdx = i * (rays_ / kCoarse);
+        const double ro = outerR[fineIdx] + (cx - coarseCx_) * rayCos_[fineIdx] + (cy - coarseCy_) * raySin_[fineIdx];
+        // The barrel begins beyond the contact edge's blur (three of its σ, at least 2 px).
+        const int barrelFrom = std::max(0, int(std::ceil((ro + std::max(2.0, 3 * blurPx) - rA) / step)));
+        const int lo = std::max({w, int((ro + 0.04 * r0 - rA) / step), barrelFrom + 1});
+        const int hi = count - w - 2;
+        if (hi - lo < 2 * w) continue;
+        double at = 0;
+        if (silhouetteOnRay(row, lo, hi, w, std::max(barrelFrom, lo - w), &at)) {
+            radius[i] = rA + at * step;
+            valid[i] = true;
+        }
+    }
+    // Seen straight on, the barrel shows as a band of even width outside the contact edge.
+    // Seen obliquely (a tilted camera, or one close enough that the rays fan out by tens of
+    // degrees), it shows wide on the side facing the camera and hides behind the end face on
+    // the far side: what bounds the specimen there is the contact edge itself, and no circle
+    // through it is the barrel's widest one. A band whose width swings by more than half its
+    // mean around the ring is not taken.
+    if (barrelBandLopsided(radius, valid, outerR)) {
+        *lopsided = true;
+        return 0;
+    }
+    BoundaryFit fit;
+    FitOptions opt;
+    opt.maxHarmonics = 2;
+    opt.minRejectPx = 2.0;
+    if (!fitBoundary(radius, valid, kCoarse, coarseCx_, coarseCy_, opt, &fit) || fit.coverage < 0.4) return 0;
+    m->silhouetteCoverage = fit.coverage;
+    m->silhouetteScatterPx = fit.scatterPx;
+    m->silhouetteCentreX = fit.centreX;
+    m->silhouetteCentreY = fit.centreY;
+    return fit.rEqPx;
+}
+
+} // namespace icacam::vision
