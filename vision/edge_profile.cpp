@@ -1,5 +1,8 @@
 #include "vision/edge_profile.h"
 
+#include <algorithm>
+#include <cstdlib>
+
 #include "vision/radial_profile.h"
 
 namespace icacam::vision {
@@ -37,6 +40,20 @@ Q16_16 parabolaVertex(int32_t dm, int32_t d0, int32_t dp)
     if (off > 32768) off = 32768;
     if (off < -32768) off = -32768;
     return Q16_16::fromRaw(off);
+}
+
+EdgePeak innermostClearEdge(const int32_t *d, int count, int lo, int hi, int sign, int divisor)
+{
+    const EdgePeak strongest = sign ? strongestEdge(d, count, lo, hi, sign) : strongestEdgeEitherSign(d, count, lo, hi);
+    if (!strongest.found) return strongest;
+    for (int i = std::max(lo, 1); i <= std::min(hi, count - 2); ++i) {
+        const int s = sign ? sign : d[i] > 0 ? 1 : -1;
+        const int32_t v = s * d[i], vm = s * d[i - 1], vp = s * d[i + 1];
+        // Of either sign, a neighbour of the other sign counts by its size.
+        const bool peak = sign ? v >= vm && v >= vp : v >= std::abs(d[i - 1]) && v >= std::abs(d[i + 1]);
+        if (divisor * v >= strongest.value && peak) return {Q16_16::fromInt(i) + parabolaVertex(vm, v, vp), v, true};
+    }
+    return strongest;
 }
 
 } // namespace icacam::vision

@@ -76,4 +76,11 @@ template <typename T> EdgePeak strongestEdgeEitherSign(const T *d, int count, in
     return EdgePeak{Q16_16::fromInt(best) + parabolaVertex(vm, bestV, vp), bestV, true};
 }
 
+// The innermost peak of sign·d in [lo, hi] (of |d|, either sign, where sign is 0) at least
+// 1/divisor as strong as the strongest; the strongest where none comes first. Walking out
+// from inside the end face, the first clear step is the nearer of two edges of one kind (the
+// contact edge before the outline stepping the same way beyond it; the original face's edge
+// before a stronger outline).
+EdgePeak innermostClearEdge(const int32_t *d, int count, int lo, int hi, int sign, int divisor);
+
 } // namespace icacam::vision

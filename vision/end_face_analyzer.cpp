@@ -21,23 +21,12 @@ template <typename T> T *carve(uint8_t *&p, size_t count)
     return out;
 }
 
-// The innermost extremum of |d| in [lo, hi] at least a quarter as strong as the strongest,
-// either sign. Walking out from inside the end face, the first clear step is the original
+// Walking out from inside the end face, the first clear step of either sign is the original
 // face's edge or the contact edge, both on the end face's plane; the outline, often the
-// strongest (a dark barrel against a lit fixture), lies beyond them. A quarter: the original
-// face's edge steps 30–50 grey levels where the outline steps 80 (rendered photographs).
-EdgePeak innermostClearEdgeEitherSign(const int32_t *d, int count, int lo, int hi)
-{
-    const EdgePeak strongest = strongestEdgeEitherSign(d, count, lo, hi);
-    if (!strongest.found) return strongest;
-    for (int i = std::max(lo, 1); i <= std::min(hi, count - 2); ++i) {
-        const int32_t a = std::abs(d[i]);
-        if (4 * a < strongest.value || a < std::abs(d[i - 1]) || a < std::abs(d[i + 1])) continue;
-        const int sign = d[i] > 0 ? 1 : -1;
-        return {Q16_16::fromInt(i) + parabolaVertex(sign * d[i - 1], sign * d[i], sign * d[i + 1]), a, true};
-    }
-    return strongest;
-}
+// strongest (a dark barrel against a lit fixture), lies beyond them. A quarter of the
+// strongest: the original face's edge steps 30–50 grey levels where the outline steps 80
+// (rendered photographs).
+constexpr int kInnermostDivisor = 4;
 } // namespace
 
 ErrorCode EndFaceAnalyzer::configure(int maxWidth, int maxHeight)
@@ -99,8 +88,9 @@ bool EndFaceAnalyzer::centreByRays(const LumaView &v, double r0Px, RayEdge edge,
             uint16_t *row = coarse_ + size_t(i) * kMaxCoarseSamples;
             sampleRay(v, ray, count, row);
             profileDerivative(row, count, d);
-            const EdgePeak e = edge == RayEdge::Strongest ? strongestEdgeEitherSign(d, count, 2, count - 3)
-                                                          : innermostClearEdgeEitherSign(d, count, 2, count - 3);
+            const EdgePeak e = edge == RayEdge::Strongest
+                                   ? strongestEdgeEitherSign(d, count, 2, count - 3)
+                                   : innermostClearEdge(d, count, 2, count - 3, 0, kInnermostDivisor);
             valid[i] = e.found;
             radius[i] = rA + e.position.toDouble() * step;
         }

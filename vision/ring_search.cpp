@@ -99,22 +99,6 @@ double derivativeNoise(const uint16_t *s, int count)
     return 1.4826 * tmp[n / 2] * std::sqrt(10.0 / 6.0);
 }
 
-// The innermost peak of sign·d in [lo, hi] at least half as strong as the strongest: the
-// flat face ends at the contact edge, and where the barrel's outline steps the same way
-// beyond it (a tilted view shows the barrel wide on the side facing the camera), the
-// contact edge is the first of the two.
-EdgePeak innermostClearEdge(const int32_t *d, int count, int lo, int hi, int sign)
-{
-    const EdgePeak strongest = strongestEdge(d, count, lo, hi, sign);
-    if (!strongest.found) return strongest;
-    for (int i = std::max(lo, 1); i <= std::min(hi, count - 2); ++i) {
-        const int32_t v = sign * d[i], vm = sign * d[i - 1], vp = sign * d[i + 1];
-        if (2 * v >= strongest.value && v >= vm && v >= vp)
-            return {Q16_16::fromInt(i) + parabolaVertex(vm, v, vp), v, true};
-    }
-    return strongest;
-}
-
 } // namespace
 
 RingSearch::MeanEdges RingSearch::meanProfileEdges()
@@ -491,7 +475,10 @@ double RingSearch::centreOnContactEdge(const MeanEdges &me)
             }
             for (int j = loWide - 1; j <= hi + 1; ++j)
                 d[j] = int32_t(row[j + 2]) + 2 * int32_t(row[j + 1]) - 2 * int32_t(row[j - 1]) - int32_t(row[j - 2]);
-            EdgePeak p = innermostClearEdge(d, count, lo, hi, me.signOuter);
+            // The flat face ends at the contact edge: where the outline steps the same way beyond
+            // it (a tilted view shows the barrel wide on the side facing the camera), the
+            // contact edge is the first of the two at least half as strong.
+            EdgePeak p = innermostClearEdge(d, count, lo, hi, me.signOuter, 2);
             if (!me.namedByZones) {
                 const EdgePeak strongest = strongestEdge(d, count, loWide, hi, me.signOuter);
                 if (strongest.found && strongest.position.toDouble() < at - 1 && strongest.value > p.value)

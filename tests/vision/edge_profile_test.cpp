@@ -176,3 +176,24 @@ TEST(EdgeProfile, InteriorRefusesAWindowEndFlank)
     EXPECT_FALSE(strongestEdge(d.data(), 10, 2, 6, +1, true).found);
     EXPECT_TRUE(strongestEdge(d.data(), 10, 2, 6, +1, false).found);
 }
+
+// The innermost clear edge: a rising edge at 5 (30) before a falling one at 12 (−80). Of
+// either sign, a quarter of the strongest is clear and the inner one is taken; half is not,
+// and the strongest stands. Of one sign only, the other sign's edges do not count.
+TEST(EdgePeakTest, InnermostClearEdgeTakesTheFirstStepStrongEnough)
+{
+    std::vector<int32_t> d(20, 0);
+    d[4] = 10, d[5] = 30, d[6] = 10;
+    d[11] = -40, d[12] = -80, d[13] = -40;
+    const EdgePeak quarter = innermostClearEdge(d.data(), 20, 1, 18, 0, 4);
+    ASSERT_TRUE(quarter.found);
+    EXPECT_EQ(quarter.position.toDouble(), 5.0);
+    EXPECT_EQ(quarter.value, 30);
+    const EdgePeak half = innermostClearEdge(d.data(), 20, 1, 18, 0, 2);
+    EXPECT_EQ(half.position.toDouble(), 12.0);
+    EXPECT_EQ(half.value, 80);
+    const EdgePeak falling = innermostClearEdge(d.data(), 20, 1, 18, -1, 4);
+    EXPECT_EQ(falling.position.toDouble(), 12.0);
+    const EdgePeak rising = innermostClearEdge(d.data(), 20, 1, 18, +1, 4);
+    EXPECT_EQ(rising.position.toDouble(), 5.0);
+}
