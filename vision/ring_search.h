@@ -137,8 +137,19 @@ struct RingSearch {
     // One coarse ray's silhouette between samples lo and hi: the outermost clear step of a
     // detector w samples a side, located by one a quarter as wide (*atSample: its sample
     // position, sub-sample); false when no step stands out of the ray's noise. The detector's
-    // inside reads no sample before barrelFrom (the contact edge's blur ends there).
-    bool silhouetteOnRay(const uint16_t *row, int lo, int hi, int w, int barrelFrom, double *atSample) const;
+    // inside reads no sample before barrelFrom (the contact edge's blur ends there). The
+    // ray's noise is judged over its outer quarter up to hi; the step is searched for from
+    // searchHi (≤ hi) inwards.
+    bool silhouetteOnRay(const uint16_t *row, int lo, int hi, int searchHi, int w, int barrelFrom,
+                         double *atSample) const;
+    // Rays whose outermost step lies far beyond the outline most rays agree on (the fixture's
+    // shadow): searched again inside it, or left out (rayLo, rayFrom, hi, w: each ray's lo
+    // and barrelFrom, and the hi and w, silhouetteOnRay read it with).
+    void outlineInsideRivals(double *radius, bool *valid, const int *rayLo, const int *rayFrom, int w, int hi) const;
+    // Whether the mean profile's step at rPx (w coarse samples a side) falls from a bright
+    // band: the level inside it rose from farther in by at least half the step (a highlight
+    // line on the barrel, its outer flank a step like the outline's).
+    bool highlightsOuterFlank(double rPx, int w) const;
     // Whether the mean profile shows a second step of the outline's sign, as strong, just
     // outside it (the fixture's shadow edge): then the outline cannot be told from it.
     bool outlineRivalled(double rMaxPx) const;

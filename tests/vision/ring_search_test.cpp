@@ -128,6 +128,33 @@ TEST(RingSearch, TheSilhouetteIsTheOutlineNotAHighlightInsideIt)
     EXPECT_GT(s.m.silhouetteCoverage, 0.9);
 }
 
+// The reference photographs' fixture beyond a dark barrel: the ring light's soft shadow lobes
+// leave a faint step (6 grey levels over a few pixels) 6–18 % of R0 beyond the outline on a
+// third of the rays, and on those rays it is the outermost clear step. Read there, the
+// silhouette comes out several pixels large with a scatter of 10 px, which the reading took
+// for a scale measured on the fixture (photo-003: u rescaled by 4.4 %). The outline is where
+// most rays agree, and the scattered rays find it too when searched inside.
+TEST(RingSearch, TheFixturesShadowLobesAreNotTheOutline)
+{
+    test::SyntheticEndFace face;
+    face.face = 160, face.ica = 150, face.barrel = 69, face.background = 95;
+    face.blurSigma = 1.2;
+    auto px = face.draw();
+    for (int y = 0; y < face.height; ++y)
+        for (int x = 0; x < face.width; ++x) {
+            const double r = std::hypot(x - face.cx, y - face.cy), theta = std::atan2(y - face.cy, x - face.cx);
+            if (std::cos(3 * theta) < 0.3) continue;
+            const double lobe = face.rMax + face.r0 * (0.06 + 0.12 * (0.5 + 0.5 * std::sin(7 * theta)));
+            px[size_t(y) * face.width + x] +=
+                uint8_t(std::lround(6 * 0.5 * (1 + std::erf((r - lobe) / (4 * std::sqrt(2.0))))));
+        }
+    Search s;
+    ASSERT_EQ(s.run(face.view(px), face.r0, face.cx, face.cy), ErrorCode::None);
+    EXPECT_NEAR(s.m.rMaxPx, face.rMax, 1.0);
+    EXPECT_GT(s.m.silhouetteCoverage, 0.9);
+    EXPECT_LT(s.m.silhouetteScatterPx, 1.0);
+}
+
 // A barrel as dark as the background shows no outline; the contact edge's blurred tail just
 // outside it must not pass for one. On a small frame (R0 100 px, a 2 px coarse step) the
 // silhouette detector's window 0.04 R0 outside the contact edge reaches 4 px back inside it
