@@ -183,6 +183,12 @@ RingSearch::MeanEdges RingSearch::meanProfileEdges()
         e.signOuter = c.sign;
         e.strengthOuter = int32_t(c.strength * (step / stepPx)) / 16; // coarse → fine units
         e.undecided = k == 1 && zoneBeyond(lv, n, pe, 1, win) == ZoneKind::Short && opensBand(lv, n, pe, 1);
+        // A step of its sign beyond the next, the other way, more than twice as strong (a lit
+        // shoulder, then the outline rising from the dark barrel): the centring, which takes
+        // the innermost step at least half the strongest, must stop short of it.
+        if (k + 2 < pe.count && pe.edge[k + 1].sign != c.sign && pe.edge[k + 2].sign == c.sign &&
+            pe.edge[k + 2].strength > 2 * c.strength)
+            e.reachOutPx = fromPx + pe.edge[k + 1].flankHi * stepPx - e.rOuter;
         reachInside(d, pe, fromPx, stepPx);
     };
     if (named >= 0) {
@@ -429,6 +435,10 @@ double RingSearch::centreOnContactEdge(const MeanEdges &me)
     // as the contact edge, a wider one would take it.
     const double w = 0.15 * r0;
     const double wIn = me.reachInPx > 0 ? std::min(w, std::max(4.0, me.reachInPx)) : w;
+    // Nor past a lit shoulder's far flank, where the outline beyond it would outshine the
+    // contact edge (MeanEdges::reachOutPx; the bench's dark rings: the shoulder's rise 20
+    // grey levels, the outline's 45).
+    const double wOut = me.reachOutPx > 0 ? std::min(w, std::max(4.0, me.reachOutPx)) : w;
     int32_t d[kMaxCoarse], peaks[kCentringRays], sorted[kCentringRays];
     double radius[kCentringRays];
     bool valid[kCentringRays];
@@ -446,7 +456,7 @@ double RingSearch::centreOnContactEdge(const MeanEdges &me)
         // something inside would otherwise walk the window onto it, pass by pass.
         const double inner = me.reachInPx > 0 ? std::max(r, me.rOuter) - wIn : r - wIn;
         const int lo = std::max(3, int((inner - rA) / step));
-        const int hi = std::min(count - 4, int((r + w - rA) / step) + 1);
+        const int hi = std::min(count - 4, int((r + wOut - rA) / step) + 1);
         if (hi - lo < 4) break;
         // Where the steps named the edge (the largest drop: a guess, which a highlight's
         // flank merged into the outline can win), a stronger step inside it, within the
@@ -546,6 +556,7 @@ ErrorCode RingSearch::run(EndFaceGeometry *m)
         next.signOuter = sign;
         next.strengthOuter = strength;
         next.reachInPx = 0.5 * (r - me.rOuter);
+        next.reachOutPx = 0;
         next.namedByZones = true; // by elimination: the centring must not go back to the drop
         next.rNext = 0;
         return next;

@@ -40,6 +40,11 @@ struct RingSearch {
         // Half the distance to the profile's next edge of its sign inside the contact edge
         // (pixels; 0: none named): where a search for the contact edge must stop.
         double reachInPx = 0;
+        // Where the zones named it, the profile's next edge beyond it steps the other way (a
+        // lit shoulder's far flank) and the one after that the same way, more than twice as
+        // strong (the outline): how far outside the contact edge the next edge's flank ends
+        // (pixels; 0: no such edges), where a search for the contact edge must stop.
+        double reachOutPx = 0;
         bool found = false;
         bool namedByZones = false; // else by the largest drop (the zones did not tell)
         // The zones named the contact edge where the profile cannot tell it from a band on

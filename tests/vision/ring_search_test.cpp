@@ -247,6 +247,28 @@ TEST(RingSearch, FindsTheRingWhereItIsDarkerThanTheFace)
     EXPECT_NEAR(s.m.inner.contrast, face.ica - face.face, 2);
 }
 
+// A dark ring under a ring light (the bench's straight-s1 record 18, aluminium): face 148,
+// ring 121, a lit shoulder just outside the contact edge rising to about 140, the barrel
+// falling beyond it to 80 and the outline rising to a lighter fixture. The zones name the
+// shoulder's rise; the centring, which takes the innermost step at least half the strongest
+// of its sign, must not go on to the outline's stronger rise beyond the shoulder's fall (it
+// did: R_i read on the shoulder's fall, 23 px out on the bench, R_o on the outline).
+TEST(RingSearch, ALitShoulderIsTheContactEdgeNotTheOutlineBeyondIt)
+{
+    test::SyntheticEndFace face;
+    face.scaleTo(121);
+    face.rMax = 1.41 * face.r0; // the outline within the centring's reach
+    face.face = 148, face.ica = 121, face.barrel = 80, face.background = 125;
+    face.highlight = 62, face.highlightSigma = 5;
+    face.highlightGap = face.rMax - face.rOuter - 4; // the shoulder peaks 4 px outside R_o
+    face.blurSigma = 1.2;
+    const auto px = face.draw();
+    Search s;
+    ASSERT_EQ(s.run(face.view(px), face.r0, face.cx, face.cy), ErrorCode::None);
+    EXPECT_NEAR(s.m.inner.rEqPx, face.rInner, 0.5);
+    EXPECT_NEAR(s.m.outer.rEqPx, face.rOuter, 1.5) << "the shoulder's rise, blurred into its peak";
+}
+
 TEST(RingSearch, AnEmptyFrameHasNoContactEdge)
 {
     test::SyntheticEndFace face;
