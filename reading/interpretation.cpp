@@ -170,7 +170,11 @@ Reading interpret(const EndFaceGeometry &g, const SpecimenSpec &spec, const visi
         // is that of a view without a silhouette (the height unchecked, U covering 45–55 %; the
         // declared scale unchecked too, which no_silhouette says: a scale measured on the
         // fixture would otherwise pass 0.01–0.04 high, CalibratedMeasure.*).
-        if (g.imageFlags & vision::kImageOutlineAmbiguous) obs.usable = false, obs.flags = kFlagNoSilhouette;
+        // An outline only the mean profile's smear rivals, its centre drawn towards the axis
+        // as a straight close camera draws it (camera.fromImage), is the barrel's.
+        const bool smearedByView = (g.imageFlags & vision::kImageOutlineSmeared) && camera.fromImage;
+        if ((g.imageFlags & vision::kImageOutlineAmbiguous) && !smearedByView)
+            obs.usable = false, obs.flags = kFlagNoSilhouette;
         if (outlineHiddenByView) obs.flags &= ~kFlagNoSilhouette;
     };
     if (!calibration) {

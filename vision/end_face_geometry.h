@@ -58,6 +58,11 @@ enum ImageFlag : uint32_t {
     // camera sees the specimen obliquely (tilted, or close and off-axis), and no circle is the
     // barrel's outline (rMaxPx is 0). The view, not the specimen, is why there is no silhouette.
     kImageBarrelOblique = 1u << 4,
+    // With kImageOutlineAmbiguous: the rays aligned on the fitted outline show no second
+    // step. The mean profile about the contact edge's centre smeared the one outline into
+    // two, its centre drawn aside by the view (a close camera draws it towards the optical
+    // axis; a tilt anywhere): where the view explains the shift, the outline is the barrel's.
+    kImageOutlineSmeared = 1u << 5,
 };
 
 // Where the pipeline looks: the specimen's initial diameter and the scale at the end face

@@ -702,11 +702,18 @@ ErrorCode RingSearch::ringAbout(const MeanEdges &me, EndFaceGeometry *m)
     m->outer = outer;
     // The silhouette per coarse ray refines the mean profile's estimate (the mean profile
     // blurs a weak barrel/background step and can name a highlight's flank instead).
-    bool lopsided = false;
-    const double perRay = silhouetteFromRays(outerR, edgeWidth >= 0 ? edgeWidth : kUnknownBlurPx, m, &lopsided);
+    bool lopsided = false, rivalledAlong = false;
+    const double perRay =
+        silhouetteFromRays(outerR, edgeWidth >= 0 ? edgeWidth : kUnknownBlurPx, m, &lopsided, &rivalledAlong);
     m->rMaxPx = perRay > 0 ? perRay : lopsided ? 0 : me.rMax;
     if (lopsided) m->imageFlags |= kImageBarrelOblique;
-    if (m->rMaxPx > 0 && outlineRivalled(m->rMaxPx)) m->imageFlags |= kImageOutlineAmbiguous;
+    if (m->rMaxPx > 0 && outlineRivalled(m->rMaxPx)) {
+        m->imageFlags |= kImageOutlineAmbiguous;
+        // Only an outline the rays agree on to a coarse step is one smeared outline; a
+        // ragged one may be anything.
+        if (perRay > 0 && !rivalledAlong && m->silhouetteScatterPx <= coarseStep(r0))
+            m->imageFlags |= kImageOutlineSmeared;
+    }
     if (me.undecided) m->imageFlags |= kImageContactEdgeUndecided;
     m->innerPoints = innerPts;
     m->outerPoints = outerPts;

@@ -138,7 +138,10 @@ struct RingSearch {
     // Silhouette R_max from the coarse rays, outside the fitted contact edge; 0 if unclear
     // (lopsided: the barrel is seen obliquely, so no silhouette is a circle about the axis).
     // The per-ray fit's coverage, scatter and centre go to m.
-    double silhouetteFromRays(const double *outerR, double blurPx, EndFaceGeometry *m, bool *lopsided);
+    // rivalledAlong: the rays aligned on the fitted outline show a rival beyond it
+    // (outlineRivalledAlong).
+    double silhouetteFromRays(const double *outerR, double blurPx, EndFaceGeometry *m, bool *lopsided,
+                              bool *rivalledAlong);
     // One coarse ray's silhouette between samples lo and hi: the outermost clear step of a
     // detector w samples a side, located by one a quarter as wide (*atSample: its sample
     // position, sub-sample); false when no step stands out of the ray's noise. The detector's
@@ -158,6 +161,9 @@ struct RingSearch {
     // Whether the mean profile shows a second step of the outline's sign, as strong, just
     // outside it (the fixture's shadow edge): then the outline cannot be told from it.
     bool outlineRivalled(double rMaxPx) const;
+    // The same on the coarse rays aligned on the fitted outline (outlineR: its radius at each
+    // coarse ray about the coarse centre).
+    bool outlineRivalledAlong(const double *outlineR) const;
     // Whether the barrel band outside the contact edge (radius − the contact edge, per coarse
     // ray) swings by more than half its mean width around the ring: an oblique view.
     bool barrelBandLopsided(const double *radius, const bool *valid, const double *outerR) const;

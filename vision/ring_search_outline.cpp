@@ -28,6 +28,23 @@ bool onOneCircle(double *offsets, int n, double step)
     return 1.4826 * offsets[n / 2] <= std::max(2 * step, 0.25 * mid);
 }
 
+// On a derivative row d of count samples with the outline at sample `at`: the outline's own
+// step is the strongest within the derivative's reach of it (which may be a highlight's flank
+// just inside); a rival is an extremum of its sign at least half as strong beyond that reach
+// of the outline itself, up to sample end, so that the outline's own step is not one.
+bool rivalBeyond(const int32_t *d, int count, int at, int end)
+{
+    if (at < 2 || at > count - 3) return false;
+    int k = at;
+    for (int j = std::max(2, at - 2); j <= std::min(count - 3, at + 2); ++j)
+        if (std::abs(d[j]) > std::abs(d[k])) k = j;
+    const int32_t outline = d[k];
+    if (outline == 0) return false;
+    for (int j = std::max(k, at) + 3; j <= std::min(end, count - 3); ++j)
+        if (isExtremum(d, j) && (d[j] > 0) == (outline > 0) && 2 * std::abs(d[j]) >= std::abs(outline)) return true;
+    return false;
+}
+
 } // namespace
 
 bool RingSearch::outlineRivalled(double rMaxPx) const
@@ -35,24 +52,38 @@ bool RingSearch::outlineRivalled(double rMaxPx) const
     // The fixture's shadow around the foot is a second step of the outline's sign outside
     // it (lit fixture beyond a dark shadow beyond a dark barrel): where the mean profile
     // shows one at least half as strong within a third of R0, the step taken for the
-    // outline could be either. The outline's own step is the strongest within the
-    // derivative's reach of it (which may be a highlight's flank just inside); a rival lies
-    // beyond that reach of the outline itself, so that the outline's own step is not one.
+    // outline could be either.
     const double rA = kCoarseStart * r0, step = coarseStep(r0);
     const int count = std::min(kMaxCoarse, int((kCoarseEnd * r0 - rA) / step));
-    const int at = int((rMaxPx - rA) / step + 0.5);
-    if (at < 2 || at > count - 3) return false;
-    int k = at;
-    for (int j = std::max(2, at - 2); j <= std::min(count - 3, at + 2); ++j)
-        if (std::abs(meanDeriv[j]) > std::abs(meanDeriv[k])) k = j;
-    const int32_t outline = meanDeriv[k];
-    if (outline == 0) return false;
-    const int end = std::min(count - 3, int((rMaxPx + r0 / 3 - rA) / step));
-    for (int j = std::max(k, at) + 3; j <= end; ++j)
-        if (isExtremum(meanDeriv, j) && (meanDeriv[j] > 0) == (outline > 0) &&
-            2 * std::abs(meanDeriv[j]) >= std::abs(outline))
-            return true;
-    return false;
+    return rivalBeyond(meanDeriv, count, int((rMaxPx - rA) / step + 0.5), int((rMaxPx + r0 / 3 - rA) / step));
+}
+
+bool RingSearch::outlineRivalledAlong(const double *outlineR) const
+{
+    // The same on the coarse rays' mean with each ray aligned on the fitted outline
+    // (outlineR: its radius at each coarse ray about the coarse centre), so that an outline
+    // whose centre the view drew aside shows as the one step it is.
+    constexpr int kCoarse = kCoarseRays, kInside = 6;
+    const double rA = kCoarseStart * r0, step = coarseStep(r0);
+    const int count = std::min(kMaxCoarse, int((kCoarseEnd * r0 - rA) / step));
+    const int span = std::min(kMaxCoarse, kInside + int(r0 / 3 / step) + 4);
+    uint16_t mean[kMaxCoarse];
+    int32_t d[kMaxCoarse];
+    for (int k = 0; k < span; ++k) {
+        double sum = 0;
+        int n = 0;
+        for (int i = 0; i < kCoarse; ++i) {
+            const double at = (outlineR[i] - rA) / step + (k - kInside);
+            const int j = int(std::floor(at));
+            const uint16_t *row = coarse + size_t(i) * kMaxCoarse;
+            if (j < 0 || j + 1 >= count || row[j] == kOutsideFrame || row[j + 1] == kOutsideFrame) continue;
+            sum += row[j] + (at - j) * (row[j + 1] - row[j]);
+            ++n;
+        }
+        mean[k] = 4 * n >= kCoarse ? uint16_t(sum / n + 0.5) : kOutsideFrame;
+    }
+    profileDerivative(mean, span, d);
+    return rivalBeyond(d, span, kInside, span - 3);
 }
 
 bool RingSearch::highlightsOuterFlank(double rPx, int w) const
@@ -225,8 +256,10 @@ void RingSearch::outlineInsideRivals(double *radius, bool *valid, const int *ray
     }
 }
 
-double RingSearch::silhouetteFromRays(const double *outerR, double blurPx, EndFaceGeometry *m, bool *lopsided)
+double RingSearch::silhouetteFromRays(const double *outerR, double blurPx, EndFaceGeometry *m, bool *lopsided,
+                                      bool *rivalledAlong)
 {
+    *rivalledAlong = false;
     m->silhouetteCoverage = 0;
     m->silhouetteScatterPx = 0;
     m->silhouetteCentreX = m->silhouetteCentreY = 0;
@@ -274,7 +307,9 @@ double RingSearch::silhouetteFromRays(const double *outerR, double blurPx, EndFa
     FitOptions opt;
     opt.maxHarmonics = 2;
     opt.minRejectPx = 2.0;
-    if (!fitBoundary(radius, valid, kCoarse, coarseCx_, coarseCy_, opt, &fit) || fit.coverage < 0.4) return 0;
+    double curve[kCoarse];
+    if (!fitBoundary(radius, valid, kCoarse, coarseCx_, coarseCy_, opt, &fit, curve) || fit.coverage < 0.4) return 0;
+    *rivalledAlong = outlineRivalledAlong(curve);
     m->silhouetteCoverage = fit.coverage;
     m->silhouetteScatterPx = fit.scatterPx;
     m->silhouetteCentreX = fit.centreX;

@@ -177,6 +177,41 @@ TEST(Interpretation, AnAmbiguousOutlineNeitherRescalesNorSaysAnotherHeight)
     EXPECT_TRUE(m.advice.reductionUnchecked);
 }
 
+// A close camera draws the outline's centre towards the optical axis: about the end face's
+// centre the one outline smears into two steps, which the mean profile takes for an outline
+// and its rival (the reference photographs' photo-007: 11 px). Where vision finds no rival on
+// the rays aligned on the fitted outline (kImageOutlineSmeared) and the shift is the one a
+// straight close camera makes, the outline is the barrel's and checks the height; a shift
+// across the axis is no view's that explains the smear, and the outline stays ambiguous.
+TEST(Interpretation, AnOutlineSmearedByTheViewIsTheBarrels)
+{
+    const double w = 55, x = 10.0 / w;
+    const double share = outlineShiftAt(kN, kMu, 0.5, x);
+    EndFaceGeometry g = face(outlineRatioAt(kN, kMu, 0.5, x), false);
+    g.frameWidth = 1456, g.frameHeight = 1088;
+    const double axisX = 0.5 * (g.frameWidth - 1), axisY = 0.5 * (g.frameHeight - 1);
+    const double offX = 220, offY = -90;
+    for (BoundaryFit *b : {&g.inner, &g.outer}) b->centreX = axisX + offX, b->centreY = axisY + offY;
+    g.centreX = g.outer.centreX, g.centreY = g.outer.centreY;
+    g.silhouetteScatterPx = 0.5;
+    g.silhouetteCentreX = g.outer.centreX - share * offX;
+    g.silhouetteCentreY = g.outer.centreY - share * offY;
+    g.imageFlags |= vision::kImageOutlineAmbiguous | vision::kImageOutlineSmeared;
+    const Reading smeared = interpret(g);
+    ASSERT_EQ(smeared.status, Status::Ok) << smeared.flags;
+    EXPECT_NEAR(smeared.reduction, 0.5, 0.003);
+    EXPECT_FALSE(smeared.advice.reductionUnchecked);
+
+    EndFaceGeometry across = g; // the same shift turned a quarter round
+    across.silhouetteCentreX = g.outer.centreX + share * offY;
+    across.silhouetteCentreY = g.outer.centreY - share * offX;
+    EXPECT_EQ(interpret(across).flags, uint32_t(kFlagNoSilhouette));
+
+    EndFaceGeometry rivalled = g; // a rival on the aligned rays too: the fixture's shadow
+    rivalled.imageFlags &= ~uint32_t(vision::kImageOutlineSmeared);
+    EXPECT_EQ(interpret(rivalled).flags, uint32_t(kFlagNoSilhouette));
+}
+
 TEST(Interpretation, SilhouetteAtItsSizeKeepsTheNominalHalfHeight)
 {
     const Reading m = interpret(face(1.0, false));

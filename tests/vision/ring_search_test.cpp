@@ -195,6 +195,39 @@ TEST(RingSearch, TheOutlinesOwnStepIsNotItsRival)
         EXPECT_FALSE(s.search.outlineRivalled(face.rMax - inside)) << inside << " px inside";
 }
 
+// A close camera draws the outline's centre towards the optical axis (the reference
+// photographs' photo-007: 11 px from the contact edge's): about the contact edge's centre the
+// rays' mean profile smears the one outline into two steps, an outline and a rival. Aligned
+// on the fitted outline the rays show one step (kImageOutlineSmeared); a shadow edge beyond
+// the outline is a rival there too.
+TEST(RingSearch, AnOutlineDrawnAsideIsSmearedNotRivalled)
+{
+    test::SyntheticEndFace face;
+    face.face = 160, face.ica = 150, face.barrel = 40, face.background = 90;
+    face.outlineDx = -13, face.outlineDy = 5;
+    const auto px = face.draw();
+    Search s;
+    ASSERT_EQ(s.run(face.view(px), face.r0, face.cx, face.cy), ErrorCode::None);
+    EXPECT_NEAR(s.m.rMaxPx, face.rMax, 1.0);
+    EXPECT_NE(s.m.imageFlags & kImageOutlineAmbiguous, 0u) << "the mean profile's smear";
+    EXPECT_NE(s.m.imageFlags & kImageOutlineSmeared, 0u);
+
+    // The fixture in the shadow, lit beyond: aligned on the outline, the rays show the
+    // shadow's edge as a rival.
+    face.shadowGap = 14, face.shadowStep = 25;
+    const auto shadowed = face.draw();
+    ASSERT_EQ(s.run(face.view(shadowed), face.r0, face.cx, face.cy), ErrorCode::None);
+    std::vector<double> outline(kCoarseRays);
+    for (int i = 0; i < kCoarseRays; ++i) {
+        Q2_14 c, sn;
+        rayDirection(i, kCoarseRays, &c, &sn);
+        const double along = face.outlineDx * c.toDouble() + face.outlineDy * sn.toDouble();
+        const double off2 = face.outlineDx * face.outlineDx + face.outlineDy * face.outlineDy;
+        outline[i] = along + std::sqrt(along * along - off2 + face.rMax * face.rMax);
+    }
+    EXPECT_TRUE(s.search.outlineRivalledAlong(outline.data()));
+}
+
 TEST(RingSearch, AnOffCentreStartIsAbsorbedByTheFit)
 {
     // The centre refinement can leave the search a few pixels off the axis: the boundaries

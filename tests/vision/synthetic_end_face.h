@@ -27,6 +27,11 @@ struct SyntheticEndFace {
     // and Gaussian width, centred highlightGap pixels inside the silhouette.
     double highlight = 0, highlightGap = 0, highlightSigma = 1;
     int pixelStep = 1; // 2: the luma of a YUYV frame (chroma bytes set to 128)
+    // The outline's centre from the end face's (a close camera draws it towards the optical
+    // axis), pixels; and a second step beyond the outline, about the same centre (the
+    // fixture's shadow edge: shadowGap pixels out, shadowStep grey levels).
+    double outlineDx = 0, outlineDy = 0;
+    double shadowGap = 0, shadowStep = 0;
 
     // The same specimen at another initial radius.
     void scaleTo(double newR0)
@@ -50,10 +55,12 @@ struct SyntheticEndFace {
             for (int x = 0; x < width; ++x) {
                 const double dx = x - cx, dy = y - cy;
                 const double r = std::hypot(dx, dy), theta = std::atan2(dy, dx);
-                const double g = background + (barrel - background) * inside(rMax - r) +
+                const double rs = std::hypot(dx - outlineDx, dy - outlineDy);
+                const double g = background + shadowStep * (1 - inside(rMax + shadowGap - rs)) +
+                                 (barrel - background) * inside(rMax - rs) +
                                  (ica - barrel) * inside(outerAt(theta) - r) + (face - ica) * inside(rInner - r) +
                                  highlight *
-                                     std::exp(-0.5 * std::pow((r - (rMax - highlightGap)) / highlightSigma, 2)) *
+                                     std::exp(-0.5 * std::pow((rs - (rMax - highlightGap)) / highlightSigma, 2)) *
                                      (1 - inside(outerAt(theta) - r));
                 px[(size_t(y) * width + x) * pixelStep] = uint8_t(std::clamp(std::lround(g), 0L, 255L));
             }
