@@ -44,6 +44,23 @@ EndFaceGeometry face(double rMaxFactor, bool oblique, double n = kN, double mu =
     return m;
 }
 
+// The face seen by a straight camera w mm above it, its centre (offX, offY) px from the
+// optical axis of a 1456 × 1088 frame: the outline as that camera sees it, its centre drawn
+// towards the axis by the share the side's depth takes off.
+EndFaceGeometry closeCameraFace(double w, double offX, double offY)
+{
+    const double x = 10.0 / w, share = outlineShiftAt(kN, kMu, 0.5, x);
+    EndFaceGeometry g = face(outlineRatioAt(kN, kMu, 0.5, x), false);
+    g.frameWidth = 1456, g.frameHeight = 1088;
+    const double axisX = 0.5 * (g.frameWidth - 1), axisY = 0.5 * (g.frameHeight - 1);
+    for (BoundaryFit *b : {&g.inner, &g.outer}) b->centreX = axisX + offX, b->centreY = axisY + offY;
+    g.centreX = g.outer.centreX, g.centreY = g.outer.centreY;
+    g.silhouetteScatterPx = 0.5;
+    g.silhouetteCentreX = g.outer.centreX - share * offX;
+    g.silhouetteCentreY = g.outer.centreY - share * offY;
+    return g;
+}
+
 // What the nominal conditions' check finds where the silhouette departs from the nominal half
 // height: another height, or a scale off, that moves μ beyond the tolerance.
 constexpr uint32_t kNominalFinding = kFlagScaleSuspect | kFlagReductionNotNominal;
@@ -92,15 +109,8 @@ TEST(Interpretation, TheOutlinesCentreShiftTellsACloseCamerasOutlineFromAnotherH
 {
     const double w = 55, x = 10.0 / w;
     const double share = outlineShiftAt(kN, kMu, 0.5, x);
-    EndFaceGeometry g = face(outlineRatioAt(kN, kMu, 0.5, x), false);
-    g.frameWidth = 1456, g.frameHeight = 1088;
-    const double axisX = 0.5 * (g.frameWidth - 1), axisY = 0.5 * (g.frameHeight - 1);
     const double offX = 220, offY = -90; // the end face's centre from the axis, px
-    for (BoundaryFit *b : {&g.inner, &g.outer}) b->centreX = axisX + offX, b->centreY = axisY + offY;
-    g.centreX = g.outer.centreX, g.centreY = g.outer.centreY;
-    g.silhouetteScatterPx = 0.5;
-    g.silhouetteCentreX = g.outer.centreX - share * offX;
-    g.silhouetteCentreY = g.outer.centreY - share * offY;
+    const EndFaceGeometry g = closeCameraFace(w, offX, offY);
     const Reading close = interpret(g);
     ASSERT_EQ(close.status, Status::Ok) << close.flags;
     EXPECT_NEAR(close.reduction, 0.5, 0.003);
@@ -185,17 +195,9 @@ TEST(Interpretation, AnAmbiguousOutlineNeitherRescalesNorSaysAnotherHeight)
 // across the axis is no view's that explains the smear, and the outline stays ambiguous.
 TEST(Interpretation, AnOutlineSmearedByTheViewIsTheBarrels)
 {
-    const double w = 55, x = 10.0 / w;
-    const double share = outlineShiftAt(kN, kMu, 0.5, x);
-    EndFaceGeometry g = face(outlineRatioAt(kN, kMu, 0.5, x), false);
-    g.frameWidth = 1456, g.frameHeight = 1088;
-    const double axisX = 0.5 * (g.frameWidth - 1), axisY = 0.5 * (g.frameHeight - 1);
+    const double w = 55, share = outlineShiftAt(kN, kMu, 0.5, 10.0 / w);
     const double offX = 220, offY = -90;
-    for (BoundaryFit *b : {&g.inner, &g.outer}) b->centreX = axisX + offX, b->centreY = axisY + offY;
-    g.centreX = g.outer.centreX, g.centreY = g.outer.centreY;
-    g.silhouetteScatterPx = 0.5;
-    g.silhouetteCentreX = g.outer.centreX - share * offX;
-    g.silhouetteCentreY = g.outer.centreY - share * offY;
+    EndFaceGeometry g = closeCameraFace(w, offX, offY);
     g.imageFlags |= vision::kImageOutlineAmbiguous | vision::kImageOutlineSmeared;
     const Reading smeared = interpret(g);
     ASSERT_EQ(smeared.status, Status::Ok) << smeared.flags;
