@@ -110,9 +110,9 @@ bool EndFaceAnalyzer::centreByRays(const LumaView &v, double r0Px, RayEdge edge,
 
 void EndFaceAnalyzer::castCoarseRays(const LumaView &v, double r0Px, double cx, double cy)
 {
-    const double rA = kCoarseStart * r0Px, rB = kCoarseEnd * r0Px;
+    const double rA = kCoarseStart * r0Px;
     const double step = coarseStep(r0Px);
-    const int count = std::min(kMaxCoarseSamples, int((rB - rA) / step));
+    const int count = coarseCount(r0Px);
     for (int i = 0; i < kCoarseRays; ++i) {
         RaySpec ray{Q16_16::fromDouble(cx), Q16_16::fromDouble(cy),  {}, {},
                     Q16_16::fromDouble(rA), Q16_16::fromDouble(step)};

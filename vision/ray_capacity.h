@@ -1,6 +1,7 @@
 #pragma once
 // How many rays the pipeline casts and how many samples each holds: the working memory's
 // shape, shared by the analyzer that sizes it and the ring search that fills it.
+#include <algorithm>
 
 namespace icacam::vision {
 
@@ -18,6 +19,13 @@ inline double coarseStep(double r0Px)
 {
     const double span = (kCoarseEnd - kCoarseStart) * r0Px;
     return span / 2 > kMaxCoarseSamples ? span / kMaxCoarseSamples : 2.0;
+}
+
+// How many samples each coarse ray holds from kCoarseStart to kCoarseEnd initial radii.
+inline int coarseCount(double r0Px)
+{
+    const double rA = kCoarseStart * r0Px, rB = kCoarseEnd * r0Px;
+    return std::min(kMaxCoarseSamples, int((rB - rA) / coarseStep(r0Px)));
 }
 
 } // namespace icacam::vision

@@ -104,9 +104,9 @@ double derivativeNoise(const uint16_t *s, int count)
 RingSearch::MeanEdges RingSearch::meanProfileEdges()
 {
     // The coarse rows hold the centre refinement's last pass (see refineCentre).
-    const double rA = kCoarseStart * r0, rB = kCoarseEnd * r0;
+    const double rA = kCoarseStart * r0;
     const double step = coarseStep(r0);
-    const int count = std::min(kMaxCoarse, int((rB - rA) / step));
+    const int count = coarseCount(r0);
     uint16_t mean[kMaxCoarse];
     for (int j = 0; j < count; ++j) {
         uint32_t sum = 0, n = 0;
@@ -449,8 +449,7 @@ double RingSearch::centreOnContactEdge(const MeanEdges &me)
         const bool coarseRows = pass == 0;
         const double rA = coarseRows ? kCoarseStart * r0 : r - w;
         const double step = coarseRows ? coarseStep(r0) : 2.0;
-        const int count = coarseRows ? std::min(kMaxCoarse, int((kCoarseEnd * r0 - rA) / step))
-                                     : std::min(kMaxFine, int(2 * w / step) + 7);
+        const int count = coarseRows ? coarseCount(r0) : std::min(kMaxFine, int(2 * w / step) + 7);
         // Where an edge of the contact edge's sign lies inside, the window's inner end stays
         // half way to it as the radius settles: a mean radius pulled inwards by rays that took
         // something inside would otherwise walk the window onto it, pass by pass.
@@ -702,16 +701,17 @@ ErrorCode RingSearch::ringAbout(const MeanEdges &me, EndFaceGeometry *m)
     m->outer = outer;
     // The silhouette per coarse ray refines the mean profile's estimate (the mean profile
     // blurs a weak barrel/background step and can name a highlight's flank instead).
-    bool lopsided = false, rivalledAlong = false;
+    bool lopsided = false;
+    double outlineR[kCoarseRays];
     const double perRay =
-        silhouetteFromRays(outerR, edgeWidth >= 0 ? edgeWidth : kUnknownBlurPx, m, &lopsided, &rivalledAlong);
+        silhouetteFromRays(outerR, edgeWidth >= 0 ? edgeWidth : kUnknownBlurPx, m, &lopsided, outlineR);
     m->rMaxPx = perRay > 0 ? perRay : lopsided ? 0 : me.rMax;
     if (lopsided) m->imageFlags |= kImageBarrelOblique;
     if (m->rMaxPx > 0 && outlineRivalled(m->rMaxPx)) {
         m->imageFlags |= kImageOutlineAmbiguous;
         // Only an outline the rays agree on to a coarse step is one smeared outline; a
         // ragged one may be anything.
-        if (perRay > 0 && !rivalledAlong && m->silhouetteScatterPx <= coarseStep(r0))
+        if (perRay > 0 && m->silhouetteScatterPx <= coarseStep(r0) && !outlineRivalledAlong(outlineR))
             m->imageFlags |= kImageOutlineSmeared;
     }
     if (me.undecided) m->imageFlags |= kImageContactEdgeUndecided;

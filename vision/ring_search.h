@@ -138,10 +138,10 @@ struct RingSearch {
     // Silhouette R_max from the coarse rays, outside the fitted contact edge; 0 if unclear
     // (lopsided: the barrel is seen obliquely, so no silhouette is a circle about the axis).
     // The per-ray fit's coverage, scatter and centre go to m.
-    // rivalledAlong: the rays aligned on the fitted outline show a rival beyond it
-    // (outlineRivalledAlong).
+    // outlineR: the fitted outline's radius at each coarse ray about the coarse centre
+    // (kCoarseRays of them; written where the fit is returned).
     double silhouetteFromRays(const double *outerR, double blurPx, EndFaceGeometry *m, bool *lopsided,
-                              bool *rivalledAlong);
+                              double *outlineR);
     // One coarse ray's silhouette between samples lo and hi: the outermost clear step of a
     // detector w samples a side, located by one a quarter as wide (*atSample: its sample
     // position, sub-sample); false when no step stands out of the ray's noise. The detector's

@@ -54,7 +54,7 @@ bool RingSearch::outlineRivalled(double rMaxPx) const
     // shows one at least half as strong within a third of R0, the step taken for the
     // outline could be either.
     const double rA = kCoarseStart * r0, step = coarseStep(r0);
-    const int count = std::min(kMaxCoarse, int((kCoarseEnd * r0 - rA) / step));
+    const int count = coarseCount(r0);
     return rivalBeyond(meanDeriv, count, int((rMaxPx - rA) / step + 0.5), int((rMaxPx + r0 / 3 - rA) / step));
 }
 
@@ -65,7 +65,7 @@ bool RingSearch::outlineRivalledAlong(const double *outlineR) const
     // whose centre the view drew aside shows as the one step it is.
     constexpr int kCoarse = kCoarseRays, kInside = 6;
     const double rA = kCoarseStart * r0, step = coarseStep(r0);
-    const int count = std::min(kMaxCoarse, int((kCoarseEnd * r0 - rA) / step));
+    const int count = coarseCount(r0);
     const int span = std::min(kMaxCoarse, kInside + int(r0 / 3 / step) + 4);
     uint16_t mean[kMaxCoarse];
     int32_t d[kMaxCoarse];
@@ -91,7 +91,7 @@ bool RingSearch::highlightsOuterFlank(double rPx, int w) const
     // On the mean profile: the levels w samples either side of rPx and 3w inside it. A
     // highlight is brighter than what lies either side of it, by half the step at least.
     const double rA = kCoarseStart * r0, step = coarseStep(r0);
-    const int count = std::min(kMaxCoarse, int((kCoarseEnd * r0 - rA) / step));
+    const int count = coarseCount(r0);
     const int a = int((rPx - rA) / step + 0.5);
     if (a - 3 * w < 0 || a + w >= count) return false;
     const int32_t in = meanProfile[a - w], out = meanProfile[a + w], farIn = meanProfile[a - 3 * w];
@@ -257,17 +257,16 @@ void RingSearch::outlineInsideRivals(double *radius, bool *valid, const int *ray
 }
 
 double RingSearch::silhouetteFromRays(const double *outerR, double blurPx, EndFaceGeometry *m, bool *lopsided,
-                                      bool *rivalledAlong)
+                                      double *outlineR)
 {
-    *rivalledAlong = false;
     m->silhouetteCoverage = 0;
     m->silhouetteScatterPx = 0;
     m->silhouetteCentreX = m->silhouetteCentreY = 0;
     *lopsided = false;
     constexpr int kCoarse = kCoarseRays;
-    const double rA = kCoarseStart * r0, rB = kCoarseEnd * r0;
+    const double rA = kCoarseStart * r0;
     const double step = coarseStep(r0);
-    const int count = std::min(kMaxCoarse, int((rB - rA) / step));
+    const int count = coarseCount(r0);
     const int w = std::max(4, int(0.035 * r0 / step)); // step detector half-width
     double radius[kCoarse];
     bool valid[kCoarse];
@@ -307,9 +306,7 @@ double RingSearch::silhouetteFromRays(const double *outerR, double blurPx, EndFa
     FitOptions opt;
     opt.maxHarmonics = 2;
     opt.minRejectPx = 2.0;
-    double curve[kCoarse];
-    if (!fitBoundary(radius, valid, kCoarse, coarseCx_, coarseCy_, opt, &fit, curve) || fit.coverage < 0.4) return 0;
-    *rivalledAlong = outlineRivalledAlong(curve);
+    if (!fitBoundary(radius, valid, kCoarse, coarseCx_, coarseCy_, opt, &fit, outlineR) || fit.coverage < 0.4) return 0;
     m->silhouetteCoverage = fit.coverage;
     m->silhouetteScatterPx = fit.scatterPx;
     m->silhouetteCentreX = fit.centreX;
