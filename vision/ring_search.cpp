@@ -536,7 +536,12 @@ ErrorCode RingSearch::run(EndFaceGeometry *m)
     const MeanEdges me = meanProfileEdges();
     if (!me.found) return ErrorCode::OuterEdgeNotFound;
     const double cx0 = cx, cy0 = cy;
-    const ErrorCode e = ringAbout(me, m);
+    const bool staircase = me.rNext > 0 && me.signNext == me.signOuter;
+    // On a staircase a ring no ray saw the original face's edge of is as likely the face's
+    // edge itself (below): the profile's two-step fit, the search's costliest part, waits
+    // until the ring about the next step has been tried.
+    bool deferred = false;
+    const ErrorCode e = ringAbout(me, m, !staircase, &deferred);
     auto again = [&](const MeanEdges &about) {
         cx = cx0, cy = cy0;
         samplesInside_ = samplesSaturated_ = 0;
@@ -547,7 +552,6 @@ ErrorCode RingSearch::run(EndFaceGeometry *m)
         m->contactRampPx = 0;
         return ringAbout(about, m);
     };
-    const bool staircase = me.rNext > 0 && me.signNext == me.signOuter;
     // The ring about the profile's next step beyond the named one, at radius r.
     auto nextStep = [&me](double r, int sign, int32_t strength) {
         MeanEdges next = me;
@@ -574,14 +578,16 @@ ErrorCode RingSearch::run(EndFaceGeometry *m)
         const ErrorCode e2 = again(onOutline);
         return e2 == ErrorCode::None ? e2 : e;
     };
-    if (e == ErrorCode::None && staircase && (m->imageFlags & kImageNarrowRingFit)) {
-        // No ray saw an original face's edge inside the largest drop, and only the profile's
-        // two-step fit read a ring there: on a staircase the drop is as likely the original
-        // face's edge itself, two steps of one face edge not round about the centre passing
-        // for a narrow ring. Where the rays find the ring about the next step, that reading
-        // stands; else the fit's, as it was.
+    if (deferred) {
+        // No ray saw an original face's edge inside the largest drop: on a staircase the drop
+        // is as likely the original face's edge itself, two steps of one face edge not round
+        // about the centre passing for a narrow ring. Where the rays find the ring about the
+        // next step, that reading stands; else the profile's fit about the drop, and where
+        // that fails too, the search about the next step as it went.
         if (again(next) == ErrorCode::None && !(m->imageFlags & kImageNarrowRingFit)) return ErrorCode::None;
-        return again(me);
+        const ErrorCode fitted = again(me);
+        if (fitted != ErrorCode::InnerEdgeNotFound) return fitted;
+        return again(next);
     }
     if (e != ErrorCode::InnerEdgeNotFound) return e;
     if (!staircase) {
@@ -607,7 +613,7 @@ ErrorCode RingSearch::run(EndFaceGeometry *m)
     return again(next);
 }
 
-ErrorCode RingSearch::ringAbout(const MeanEdges &me, EndFaceGeometry *m)
+ErrorCode RingSearch::ringAbout(const MeanEdges &me, EndFaceGeometry *m, bool profileFit, bool *deferred)
 {
     coarseCx_ = cx, coarseCy_ = cy;
     const double rOuter = centreOnContactEdge(me);
@@ -686,6 +692,9 @@ ErrorCode RingSearch::ringAbout(const MeanEdges &me, EndFaceGeometry *m)
                 }
             }
         }
+    } else if (!profileFit) {
+        *deferred = true;
+        return ErrorCode::InnerEdgeNotFound;
     } else if (narrowRingFromProfile(profile, me.signOuter, 0.0, &outer, &inner, &contrastInner)) {
         // No ray saw the original face's edge: the profile alone says the ring is narrow,
         // and the reading says so (warn).

@@ -69,8 +69,10 @@ struct RingSearch {
     // stepPx (kOutsideFrame where under a quarter of the rays saw the frame); count ≤
     // kMaxFineSamples. Uses the fine rows as scratch.
     void finerMeanProfile(double fromPx, double stepPx, int count, uint16_t *mean);
-    // Both boundaries and the silhouette about the contact edge `me` names.
-    ErrorCode ringAbout(const MeanEdges &me, EndFaceGeometry *m);
+    // Both boundaries and the silhouette about the contact edge `me` names. With profileFit
+    // false, where no ray saw the original face's edge the profile's two-step fit is not
+    // tried: *deferred is set and InnerEdgeNotFound returned (the fit is then a last resort).
+    ErrorCode ringAbout(const MeanEdges &me, EndFaceGeometry *m, bool profileFit = true, bool *deferred = nullptr);
     // Moves (cx, cy) to the contact edge's own centre and returns its mean radius there
     // (me.rOuter when no fit is possible).
     double centreOnContactEdge(const MeanEdges &me);
