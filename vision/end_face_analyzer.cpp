@@ -179,6 +179,22 @@ EndFaceGeometry EndFaceAnalyzer::measure(const LumaView &v, const FaceSearch &fa
             }
         }
     }
+    // Last, a ring a few pixels wide darker (or lighter) than both the face and the barrel's
+    // lit shoulder beyond it: the coarse step sees one drop, the face's edge, with no
+    // original face's edge inside it, and the profile steps straight back beyond it.
+    if (e == ErrorCode::InnerEdgeNotFound) {
+        castCoarseRays(v, r0, cx, cy);
+        EndFaceGeometry back;
+        back.frameWidth = v.width;
+        back.frameHeight = v.height;
+        back.centreX = cx;
+        back.centreY = cy;
+        search = RingSearch{&v, r0, cx, cy, coarse_, fine_, deriv_, meanProfile_, meanDeriv_, innerPts_, outerPts_};
+        if (search.runBeyondDrop(&back) == ErrorCode::None) {
+            m = back;
+            e = ErrorCode::None;
+        }
+    }
     if (e != ErrorCode::None) return fail(e);
     m.error = ErrorCode::None;
     return m;

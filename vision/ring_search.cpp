@@ -267,6 +267,69 @@ RingSearch::MeanEdges RingSearch::meanProfileEdges()
     return e;
 }
 
+bool RingSearch::stepBack(const MeanEdges &me, MeanEdges *back)
+{
+    constexpr double kRippleShare = 0.15; // as the profile's zones judge a ripple (profile_zones.cpp)
+    // From a few pixels inside the edge to as far beyond the silhouette as that lies beyond
+    // the edge (a tenth of R0 beyond the edge where none was seen): the fall after the step
+    // back must show.
+    const double stepPx = kFineStepPx; // the fine rays' own, whose thresholds the strength sets
+    const double fromPx = me.rOuter - 3;
+    const double toPx = me.rMax > me.rOuter ? 2 * me.rMax - me.rOuter : me.rOuter + 0.1 * r0;
+    const int n = std::min(kMaxFine, int((toPx - fromPx) / stepPx) + 1);
+    if (n < 12) return false;
+    uint16_t mean[kMaxFine];
+    int32_t d[kMaxFine];
+    finerMeanProfile(fromPx, stepPx, n, mean);
+    if (mean[0] == kOutsideFrame) return false;
+    profileDerivative(mean, n, d);
+    const int s = me.signOuter;
+    // The edge's own peak within a pixel or two of it, and the end of its flank beyond.
+    int peak = -1;
+    for (int i = 2; i < std::min(n - 2, int(5 / stepPx)); ++i)
+        if (mean[i] != kOutsideFrame && (peak < 0 || s * d[i] > s * d[peak])) peak = i;
+    if (peak < 0 || !(s * d[peak] > 0)) return false;
+    int i = peak;
+    while (i + 1 < n - 2 && s * d[i + 1] > 0) ++i;
+    const int flankEnd = i;
+    // The step back: the other sign's strongest sample before the profile turns the edge's
+    // way again as strongly; that turn must come (the outline or the shoulder's fall).
+    int top = -1;
+    for (++i; i < n - 2 && mean[i] != kOutsideFrame; ++i) {
+        if (-s * d[i] > 0 && (top < 0 || -s * d[i] > -s * d[top])) top = i;
+        if (top >= 0 && s * d[i] >= -s * d[top]) break;
+    }
+    if (top < 2 || i >= n - 2 || mean[i] == kOutsideFrame) return false;
+    const int32_t strength = -s * d[top];
+    // The level across it: from the ring's extreme inside to the shoulder's beyond.
+    int32_t ring = mean[flankEnd], shoulder = mean[top];
+    for (int k = flankEnd; k <= top; ++k)
+        ring = s > 0 ? std::max<int32_t>(ring, mean[k]) : std::min<int32_t>(ring, mean[k]);
+    for (int k = top; k <= i; ++k)
+        shoulder = s > 0 ? std::min<int32_t>(shoulder, mean[k]) : std::max<int32_t>(shoulder, mean[k]);
+    const int32_t rise = -s * (shoulder - ring), drop = s * (ring - int32_t(mean[0]));
+    // A step back under kRippleShare of the drop is a ripple on the barrel (a highlight line
+    // on a drawn band: 8 %), not a shoulder beyond a ring (the bench's dark ring: 34 %).
+    if (rise < kRippleShare * drop || rise < 3 * 256 / 2) return false;
+    const Q16_16 off = parabolaVertex(std::abs(d[top - 1]), std::abs(d[top]), std::abs(d[top + 1]));
+    const double rBack = fromPx + (top + off.toDouble()) * stepPx;
+    // Only a ring too narrow for its two edges' blurs to part is missed so; a wider band
+    // beyond the edge taken is the barrel's, and its far side a highlight's.
+    if (!(rBack - me.rOuter < kNarrowRingPx)) return false;
+    *back = me;
+    back->rOuter = rBack;
+    back->signOuter = -s;
+    back->strengthOuter = int32_t(int64_t(me.strengthOuter) * strength / (s * d[peak]));
+    back->reachInPx = 0.5 * (back->rOuter - me.rOuter);
+    // The centring stops half way to the silhouette: beyond it the fixture's faint steps
+    // either way would pass for the ring's edge.
+    back->reachOutPx = me.rMax > back->rOuter ? 0.5 * (me.rMax - back->rOuter) : 0;
+    back->namedByZones = true; // the centring must not go back to the drop
+    back->undecided = false;
+    back->rNext = back->rOutline = 0;
+    return true;
+}
+
 void RingSearch::finerMeanProfile(double fromPx, double stepPx, int count, uint16_t *mean)
 {
     uint32_t sum[kMaxFine] = {}, n[kMaxFine] = {};
@@ -518,7 +581,7 @@ double RingSearch::centreOnContactEdge(const MeanEdges &me)
     return r;
 }
 
-ErrorCode RingSearch::run(EndFaceGeometry *m)
+RingSearch::MeanEdges RingSearch::castRays()
 {
     static_assert(kRays == AngleTable::kSize && kRays <= kMaxRayTable, "fine ray i is at most table angle i");
     rays_ = kRays;
@@ -533,7 +596,21 @@ ErrorCode RingSearch::run(EndFaceGeometry *m)
     raySin_ = raySinBuf_;
     rayCosQ_ = rayCosQBuf_;
     raySinQ_ = raySinQBuf_;
-    const MeanEdges me = meanProfileEdges();
+    return meanProfileEdges();
+}
+
+ErrorCode RingSearch::runBeyondDrop(EndFaceGeometry *m)
+{
+    const MeanEdges me = castRays();
+    if (!me.found) return ErrorCode::OuterEdgeNotFound;
+    MeanEdges back;
+    if (!stepBack(me, &back)) return ErrorCode::InnerEdgeNotFound;
+    return ringAbout(back, m);
+}
+
+ErrorCode RingSearch::run(EndFaceGeometry *m)
+{
+    const MeanEdges me = castRays();
     if (!me.found) return ErrorCode::OuterEdgeNotFound;
     const double cx0 = cx, cy0 = cy;
     const bool staircase = me.rNext > 0 && me.signNext == me.signOuter;

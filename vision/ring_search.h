@@ -29,6 +29,11 @@ struct RingSearch {
     bool obliqueView = false;
 
     ErrorCode run(EndFaceGeometry *m);
+    // The search where run() (and the analyzer's search about the end face's own centre)
+    // found no original face's edge: the ring about the profile's step back beyond the edge
+    // the mean profile names (stepBack), a ring too narrow for the coarse step darker, or
+    // lighter, than both the face and the barrel's shoulder.
+    ErrorCode runBeyondDrop(EndFaceGeometry *m);
 
     // Internal steps (public only so that RingSearch stays an aggregate).
 
@@ -64,6 +69,8 @@ struct RingSearch {
         // The ring is searched as an oblique view's, the contact edge's ramp judged arc by arc.
         bool seenObliquely = false;
     };
+    // The fine rays' directions for the ring's size, and the mean profile's edges.
+    MeanEdges castRays();
     MeanEdges meanProfileEdges();
     // The mean of the coarse rays' directions sampled again, count samples from fromPx at
     // stepPx (kOutsideFrame where under a quarter of the rays saw the frame); count ≤
@@ -73,6 +80,12 @@ struct RingSearch {
     // false, where no ray saw the original face's edge the profile's two-step fit is not
     // tried: *deferred is set and InnerEdgeNotFound returned (the fit is then a last resort).
     ErrorCode ringAbout(const MeanEdges &me, EndFaceGeometry *m, bool profileFit = true, bool *deferred = nullptr);
+    // Where the profile about the coarse centre, read at the fine step beyond the
+    // contact edge `me` names, steps straight back the other way and then again the named
+    // edge's way (a ring a few pixels wide darker, or lighter, than both the face and the
+    // barrel's shoulder, the outline beyond): that step back, as the contact edge to search
+    // about (false: none).
+    bool stepBack(const MeanEdges &me, MeanEdges *back);
     // Moves (cx, cy) to the contact edge's own centre and returns its mean radius there
     // (me.rOuter when no fit is possible).
     double centreOnContactEdge(const MeanEdges &me);

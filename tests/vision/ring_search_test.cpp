@@ -32,7 +32,8 @@ struct Search {
     EndFaceGeometry m;
     RingSearch search{}; // the last run's, with its mean profile in meanDeriv
 
-    ErrorCode run(const LumaView &v, double r0, double cx, double cy)
+    // beyondDrop: RingSearch::runBeyondDrop instead of run.
+    ErrorCode run(const LumaView &v, double r0, double cx, double cy, bool beyondDrop = false)
     {
         const double rA = kCoarseStart * r0, rB = kCoarseEnd * r0;
         const double step = coarseStep(r0);
@@ -55,7 +56,7 @@ struct Search {
                             innerPts.data(),
                             outerPts.data()};
         m = EndFaceGeometry{};
-        return search.run(&m);
+        return beyondDrop ? search.runBeyondDrop(&m) : search.run(&m);
     }
 };
 
@@ -300,6 +301,34 @@ TEST(RingSearch, ALitShoulderIsTheContactEdgeNotTheOutlineBeyondIt)
     ASSERT_EQ(s.run(face.view(px), face.r0, face.cx, face.cy), ErrorCode::None);
     EXPECT_NEAR(s.m.inner.rEqPx, face.rInner, 0.5);
     EXPECT_NEAR(s.m.outer.rEqPx, face.rOuter, 1.5) << "the shoulder's rise, blurred into its peak";
+}
+
+TEST(RingSearch, ARingDarkerThanFaceAndShoulderIsFoundAboutItsFarEdge)
+{
+    // A polished ring a few pixels wide, darker than the face and than the barrel's lit
+    // shoulder beyond it, the outline falling to a dark fixture just outside (the bench's
+    // dark_ring at a low μ): at the coarse step the ring is no zone, the face's edge is the
+    // largest drop, and no original face's edge lies inside it. The ring's far edge, the
+    // profile's step back before the outline, is the contact edge.
+    test::SyntheticEndFace face;
+    face.scaleTo(130);
+    face.rInner = 170, face.rOuter = 173.7, face.rMax = 178.7;
+    face.face = 216, face.ica = 120, face.barrel = 80, face.background = 60;
+    face.highlight = 75, face.highlightSigma = 2, face.highlightGap = 4.5;
+    face.blurSigma = 1.0;
+    const auto px = face.draw();
+    Search s;
+    EXPECT_EQ(s.run(face.view(px), face.r0, face.cx, face.cy), ErrorCode::InnerEdgeNotFound);
+    ASSERT_EQ(s.run(face.view(px), face.r0, face.cx, face.cy, true), ErrorCode::None);
+    EXPECT_NEAR(s.m.inner.rEqPx, face.rInner, 0.5);
+    EXPECT_NEAR(s.m.outer.rEqPx, face.rOuter, 0.5);
+    // The analyzer searches there last.
+    static EndFaceAnalyzer analyzer;
+    ASSERT_EQ(analyzer.configure(face.width, face.height), ErrorCode::None);
+    const EndFaceGeometry g = analyzer.measure(face.view(px), {10, 5.0 / face.r0});
+    ASSERT_TRUE(g.found()) << errorName(g.error);
+    EXPECT_NEAR(g.inner.rEqPx, face.rInner, 0.5);
+    EXPECT_NEAR(g.outer.rEqPx, face.rOuter, 0.5);
 }
 
 TEST(RingSearch, AnEmptyFrameHasNoContactEdge)
