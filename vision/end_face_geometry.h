@@ -75,8 +75,9 @@ struct FaceSearch {
 // The contact edge's ramp (√(w_o² − w_i²), pixels) beyond which the barrel's shading ramps away
 // from the flat face rather than stepping: rendered barrels ramping away measure 1.5–3.5 px;
 // drawn steps under 1.0, the development set's and the reference photographs' contact edges
-// under 1.6 (data/photobench/README.md). Beyond it the pipeline takes R_o where the ring's
-// level ends, and the reading warns (contact_edge_ramp) with the ramp in u's error.
+// under 1.6 (data/photobench/README.md). Beyond it the reading warns (contact_edge_ramp) with
+// the ramp in u's error; the pipeline takes R_o where the ring's level ends from a ramp of
+// 1 px on (kKneeRampPx, vision/ring_search_contact_edge.cpp).
 inline constexpr double kContactRampPx = 1.6;
 
 // The end face as the image shows it, in pixels: the specimen's centre, the two boundaries'

@@ -37,6 +37,12 @@ constexpr double kShoulderResidual = 0.02;
 // Bilinear sampling's own blur on a profile's levels (px²; stepWidth removes it with the
 // derivative kernel's).
 constexpr double kBilinearBlurSq = 0.17;
+// A contact edge wider than the original face's by more than this is taken where the ring's
+// level ends, not at the derivative's peak: a drawn step measures under it (0.97 px the
+// widest of 474 drawn frames), while the bench's bright rings, whose lit barrel rolls away
+// from the ring over a pixel or two, measure 0.9–1.6 px and peak 0.4–3.3 px outside the edge.
+// (The reading's finding and the ramp's share of u's error begin at kContactRampPx.)
+constexpr double kKneeRampPx = 1.0;
 } // namespace
 
 bool RingSearch::alignedProfile(const double *outerR, AlignedProfile *p, bool onInner, int halfSpan, int sector) const
@@ -142,7 +148,7 @@ void RingSearch::contactEdgeAtKnee(const AlignedProfile &p, int signOuter, doubl
                                    BoundaryFit *outer)
 {
     double offset = 0;
-    if (!kneeOffset(p, signOuter, blurPx, rampPx, ringPx, rampPx > kContactRampPx, &offset)) return;
+    if (!kneeOffset(p, signOuter, blurPx, rampPx, ringPx, rampPx > kKneeRampPx, &offset)) return;
     outer->a0 += offset;
     outer->rEqPx += offset;
     for (int i = 0; i < rays_; ++i) {
