@@ -267,6 +267,12 @@ RingSearch::MeanEdges RingSearch::meanProfileEdges()
     return e;
 }
 
+namespace {
+// How near the step back the contact edge found about it must lie (pixels): the mean
+// profile's peak against the rays' fit, a pixel's sampling apart.
+constexpr double kBackAgreesPx = 1.0;
+} // namespace
+
 bool RingSearch::stepBack(const MeanEdges &me, MeanEdges *back)
 {
     constexpr double kRippleShare = 0.15; // as the profile's zones judge a ripple (profile_zones.cpp)
@@ -605,7 +611,13 @@ ErrorCode RingSearch::runBeyondDrop(EndFaceGeometry *m)
     if (!me.found) return ErrorCode::OuterEdgeNotFound;
     MeanEdges back;
     if (!stepBack(me, &back)) return ErrorCode::InnerEdgeNotFound;
-    return ringAbout(back, m);
+    const ErrorCode e = ringAbout(back, m);
+    // The ring's far edge is where the profile stepped back. A ring the fits read elsewhere
+    // (a two-step fit across a ring that is no level, a V between the face and the
+    // shoulder, moving both steps inside) is not the one the step back showed.
+    if (e == ErrorCode::None && !(std::fabs(m->outer.rEqPx - back.rOuter) <= kBackAgreesPx))
+        return ErrorCode::InnerEdgeNotFound;
+    return e;
 }
 
 ErrorCode RingSearch::run(EndFaceGeometry *m)

@@ -7,6 +7,7 @@
 #include "vision/end_face_geometry.h"
 #include "vision/fixed_point.h"
 #include "vision/luma_view.h"
+#include "vision/ray_capacity.h"
 
 namespace icacam::vision {
 
@@ -165,10 +166,18 @@ struct RingSearch {
     // searchHi (≤ hi) inwards.
     bool silhouetteOnRay(const uint16_t *row, int lo, int hi, int searchHi, int w, int barrelFrom,
                          double *atSample) const;
+    // The coarse rays' outline search: per ray the outline found (radius, pixels; valid) and
+    // what silhouetteOnRay read it with (lo, the first sample searched; barrelFrom, the first
+    // the detector's inside reads), and the detector's half-width w and last sample hi.
+    struct OutlineRays {
+        double radius[kCoarseRays];
+        bool valid[kCoarseRays];
+        int lo[kCoarseRays], barrelFrom[kCoarseRays];
+        int w, hi;
+    };
     // Rays whose outermost step lies far beyond the outline most rays agree on (the fixture's
-    // shadow): searched again inside it, or left out (rayLo, rayFrom, hi, w: each ray's lo
-    // and barrelFrom, and the hi and w, silhouetteOnRay read it with).
-    void outlineInsideRivals(double *radius, bool *valid, const int *rayLo, const int *rayFrom, int w, int hi) const;
+    // shadow): searched again inside it, or left out.
+    void outlineInsideRivals(OutlineRays *rays) const;
     // Whether the mean profile's step at rPx (w coarse samples a side) falls from a bright
     // band: the level inside it rose from farther in by at least half the step (a highlight
     // line on the barrel, its outer flank a step like the outline's).

@@ -198,8 +198,7 @@ bool RingSearch::barrelBandLopsided(const double *radius, const bool *valid, con
     return !(sol[0] > 0) || std::hypot(sol[1], sol[2]) > 0.5 * sol[0];
 }
 
-void RingSearch::outlineInsideRivals(double *radius, bool *valid, const int *rayLo, const int *rayFrom, int w,
-                                     int hi) const
+void RingSearch::outlineInsideRivals(OutlineRays *rays) const
 {
     // Around the foot the ring light's shadow on the fixture is a second step of the
     // outline's sign beyond it (a lit fixture beyond the shadow's dark lobes), and on the rays
@@ -211,6 +210,8 @@ void RingSearch::outlineInsideRivals(double *radius, bool *valid, const int *ray
     // left out.
     constexpr int kCoarse = kCoarseRays;
     const double rA = kCoarseStart * r0, step = coarseStep(r0);
+    double *radius = rays->radius;
+    bool *valid = rays->valid;
     double sorted[kCoarse];
     int n = 0;
     for (int i = 0; i < kCoarse; ++i)
@@ -222,7 +223,7 @@ void RingSearch::outlineInsideRivals(double *radius, bool *valid, const int *ray
     // barrel's: a band brighter than either side), the rays beyond may be the ones that see
     // the faint outline behind it (the development set's devset-016: 11 of 64 rays, 8–16 px
     // out): they are left to the fit.
-    if (highlightsOuterFlank(median, w)) return;
+    if (highlightsOuterFlank(median, rays->w)) return;
     // The rays that agree: within a twentieth of R0 of the median (wider than an outline
     // drawn towards the axis by a close camera's perspective, a few pixels).
     const double agree = std::max(4 * step, 0.05 * r0);
@@ -250,7 +251,8 @@ void RingSearch::outlineInsideRivals(double *radius, bool *valid, const int *ray
         const uint16_t *row = coarse + size_t(i) * kMaxCoarse;
         const int searchHi = int((curve[i] + tol - rA) / step);
         double at = 0;
-        valid[i] = searchHi > rayLo[i] && silhouetteOnRay(row, rayLo[i], hi, searchHi, w, rayFrom[i], &at) &&
+        valid[i] = searchHi > rays->lo[i] &&
+                   silhouetteOnRay(row, rays->lo[i], rays->hi, searchHi, rays->w, rays->barrelFrom[i], &at) &&
                    std::fabs(rA + at * step - curve[i]) <= tol;
         if (valid[i]) radius[i] = rA + at * step;
     }
@@ -267,11 +269,12 @@ double RingSearch::silhouetteFromRays(const double *outerR, double blurPx, EndFa
     const double rA = kCoarseStart * r0;
     const double step = coarseStep(r0);
     const int count = coarseCount(r0);
-    const int w = std::max(4, int(0.035 * r0 / step)); // step detector half-width
-    double radius[kCoarse];
-    bool valid[kCoarse];
-    int rayLo[kCoarse] = {}, rayFrom[kCoarse] = {};
-    const int hi = count - w - 2;
+    OutlineRays rays{};
+    rays.w = std::max(4, int(0.035 * r0 / step)); // step detector half-width
+    rays.hi = count - rays.w - 2;
+    const int w = rays.w, hi = rays.hi;
+    double *radius = rays.radius;
+    bool *valid = rays.valid;
     for (int i = 0; i < kCoarse; ++i) {
         valid[i] = false;
         const uint16_t *row = coarse + size_t(i) * kMaxCoarse;
@@ -284,14 +287,14 @@ double RingSearch::silhouetteFromRays(const double *outerR, double blurPx, EndFa
         const int barrelFrom = std::max(0, int(std::ceil((ro + std::max(2.0, 3 * blurPx) - rA) / step)));
         const int lo = std::max({w, int((ro + 0.04 * r0 - rA) / step), barrelFrom + 1});
         if (hi - lo < 2 * w) continue;
-        rayLo[i] = lo, rayFrom[i] = std::max(barrelFrom, lo - w);
+        rays.lo[i] = lo, rays.barrelFrom[i] = std::max(barrelFrom, lo - w);
         double at = 0;
-        if (silhouetteOnRay(row, lo, hi, hi, w, rayFrom[i], &at)) {
+        if (silhouetteOnRay(row, lo, hi, hi, w, rays.barrelFrom[i], &at)) {
             radius[i] = rA + at * step;
             valid[i] = true;
         }
     }
-    outlineInsideRivals(radius, valid, rayLo, rayFrom, w, hi);
+    outlineInsideRivals(&rays);
     // Seen straight on, the barrel shows as a band of even width outside the contact edge.
     // Seen obliquely (a tilted camera, or one close enough that the rays fan out by tens of
     // degrees), it shows wide on the side facing the camera and hides behind the end face on
