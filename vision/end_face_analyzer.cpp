@@ -161,40 +161,31 @@ EndFaceGeometry EndFaceAnalyzer::measure(const LumaView &v, const FaceSearch &fa
     // edge on each ray; where it lies more than max(3 px, 3 % R0) away, the end face is
     // searched again about it, as a view that sees the barrel on one side (the first search's
     // answer stands where that one finds nothing either).
+    // Another search about (sx, sy) with the coarse rays cast from there; its answer is
+    // taken where it finds the ring.
+    auto searchAgain = [&](double sx, double sy, bool oblique, bool beyondDrop) {
+        castCoarseRays(v, r0, sx, sy);
+        EndFaceGeometry about;
+        about.frameWidth = v.width;
+        about.frameHeight = v.height;
+        about.centreX = sx;
+        about.centreY = sy;
+        search =
+            RingSearch{&v, r0, sx, sy, coarse_, fine_, deriv_, meanProfile_, meanDeriv_, innerPts_, outerPts_, oblique};
+        if ((beyondDrop ? search.runBeyondDrop(&about) : search.run(&about)) != ErrorCode::None) return;
+        m = about;
+        e = ErrorCode::None;
+    };
     if (e == ErrorCode::InnerEdgeNotFound) {
         double fx = cx, fy = cy;
         if (centreByRays(v, r0, RayEdge::Innermost, 1.0, &fx, &fy) &&
-            std::hypot(fx - cx, fy - cy) > std::max(3.0, 0.03 * r0)) {
-            castCoarseRays(v, r0, fx, fy);
-            EndFaceGeometry about;
-            about.frameWidth = v.width;
-            about.frameHeight = v.height;
-            about.centreX = fx;
-            about.centreY = fy;
-            search = RingSearch{&v,     r0,           fx,         fy,        coarse_,   fine_,
-                                deriv_, meanProfile_, meanDeriv_, innerPts_, outerPts_, true};
-            if (search.run(&about) == ErrorCode::None) {
-                m = about;
-                e = ErrorCode::None;
-            }
-        }
+            std::hypot(fx - cx, fy - cy) > std::max(3.0, 0.03 * r0))
+            searchAgain(fx, fy, true, false);
     }
     // Last, a ring a few pixels wide darker (or lighter) than both the face and the barrel's
     // lit shoulder beyond it: the coarse step sees one drop, the face's edge, with no
     // original face's edge inside it, and the profile steps straight back beyond it.
-    if (e == ErrorCode::InnerEdgeNotFound) {
-        castCoarseRays(v, r0, cx, cy);
-        EndFaceGeometry back;
-        back.frameWidth = v.width;
-        back.frameHeight = v.height;
-        back.centreX = cx;
-        back.centreY = cy;
-        search = RingSearch{&v, r0, cx, cy, coarse_, fine_, deriv_, meanProfile_, meanDeriv_, innerPts_, outerPts_};
-        if (search.runBeyondDrop(&back) == ErrorCode::None) {
-            m = back;
-            e = ErrorCode::None;
-        }
-    }
+    if (e == ErrorCode::InnerEdgeNotFound) searchAgain(cx, cy, false, true);
     if (e != ErrorCode::None) return fail(e);
     m.error = ErrorCode::None;
     return m;
