@@ -14,13 +14,8 @@ constexpr int32_t kGrey = 256;
 constexpr int32_t kLevelTolerance = 3 * kGrey;
 // …or by this fraction of the step that bounds it, whichever is more.
 constexpr double kLevelToleranceOfStep = 0.15;
-// Below this share of the profile's strongest step an extremum is a groove's or a stain's
-// ripple, not a zone's edge.
-constexpr double kMinShareOfStrongest = 0.15;
 // A step this many times another's is not its neighbour in the same zone structure.
 constexpr double kMuchStronger = 2.5;
-// A step between two zones changes the level by at least this much.
-constexpr int32_t kMinStep = 3 * kGrey / 2;
 
 bool isExtremum(const int32_t *d, int i)
 {
@@ -51,7 +46,7 @@ ProfileEdges findProfileEdges(const uint16_t *level, const int32_t *deriv, int c
     int32_t strongest = 0;
     for (int i = lo; i <= hi; ++i)
         if (isExtremum(deriv, i)) strongest = std::max(strongest, std::abs(deriv[i]));
-    const int32_t clear = int32_t(kMinShareOfStrongest * strongest);
+    const int32_t clear = int32_t(kRippleShareOfStep * strongest);
     int outline = hi;
     while (outline > lo && !(isExtremum(deriv, outline) && 2 * std::abs(deriv[outline]) >= strongest)) --outline;
     bool beyond = false;
@@ -60,7 +55,7 @@ ProfileEdges findProfileEdges(const uint16_t *level, const int32_t *deriv, int c
     for (int i = lo; i < outline && !beyond; ++i)
         if (isExtremum(deriv, i)) strongestInside = std::max(strongestInside, std::abs(deriv[i]));
     const int32_t floor =
-        std::max(minStrength, int32_t(kMinShareOfStrongest * (strongestInside > 0 ? strongestInside : strongest)));
+        std::max(minStrength, int32_t(kRippleShareOfStep * (strongestInside > 0 ? strongestInside : strongest)));
     for (int i = lo; i <= hi; ++i) {
         if (!isExtremum(deriv, i) || std::abs(deriv[i]) < floor) continue;
         ProfileEdge e;
@@ -80,7 +75,7 @@ ProfileEdges findProfileEdges(const uint16_t *level, const int32_t *deriv, int c
         }
         const int a = e.flankLo - 1, b = e.flankHi + 1;
         if (!usable(level, count, a) || !usable(level, count, b)) continue;
-        if (e.sign * (int32_t(level[b]) - int32_t(level[a])) < kMinStep) continue;
+        if (e.sign * (int32_t(level[b]) - int32_t(level[a])) < kMinZoneStep) continue;
         if (out.count == ProfileEdges::kCapacity) {
             out.full = true;
             break;

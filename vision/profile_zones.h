@@ -19,6 +19,13 @@
 
 namespace icacam::vision {
 
+// Below this share of the profile's strongest step an extremum is a groove's or a stain's
+// ripple, not a zone's edge.
+inline constexpr double kRippleShareOfStep = 0.15;
+// A step between two zones changes the level by at least this much (1.5 grey levels, in the
+// profile's Q8 units).
+inline constexpr int32_t kMinZoneStep = 3 * 256 / 2;
+
 // One step on the profile: the derivative's extremum and the samples over which its own
 // derivative stays above a quarter of the peak (the blur and the kernel's reach).
 struct ProfileEdge {

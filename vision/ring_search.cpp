@@ -275,7 +275,6 @@ constexpr double kBackAgreesPx = 1.0;
 
 bool RingSearch::stepBack(const MeanEdges &me, MeanEdges *back)
 {
-    constexpr double kRippleShare = 0.15; // as the profile's zones judge a ripple (profile_zones.cpp)
     // From a few pixels inside the edge to as far beyond the silhouette as that lies beyond
     // the edge (a tenth of R0 beyond the edge where none was seen): the fall after the step
     // back must show.
@@ -314,9 +313,10 @@ bool RingSearch::stepBack(const MeanEdges &me, MeanEdges *back)
     for (int k = top; k <= i; ++k)
         shoulder = s > 0 ? std::min<int32_t>(shoulder, mean[k]) : std::max<int32_t>(shoulder, mean[k]);
     const int32_t rise = -s * (shoulder - ring), drop = s * (ring - int32_t(mean[0]));
-    // A step back under kRippleShare of the drop is a ripple on the barrel (a highlight line
-    // on a drawn band: 8 %), not a shoulder beyond a ring (the bench's dark ring: 34 %).
-    if (rise < kRippleShare * drop || rise < 3 * 256 / 2) return false;
+    // A step back under the zones' ripple share of the drop is a ripple on the barrel (a
+    // highlight line on a drawn band: 8 %), not a shoulder beyond a ring (the bench's dark
+    // ring: 34 %).
+    if (rise < kRippleShareOfStep * drop || rise < kMinZoneStep) return false;
     const Q16_16 off = parabolaVertex(std::abs(d[top - 1]), std::abs(d[top]), std::abs(d[top + 1]));
     const double rBack = fromPx + (top + off.toDouble()) * stepPx;
     // Only a ring too narrow for its two edges' blurs to part is missed so; a wider band
