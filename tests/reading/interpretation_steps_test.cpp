@@ -152,7 +152,7 @@ TEST(EdgeSigma, AContactEdgeOnARampWidensU)
     EXPECT_EQ(edgeSigma(g, p, false).uSigmaEdgesMm, step);
     g.contactRampPx = 2.5;
     const double ramp = edgeSigma(g, p, false).uSigmaEdgesMm;
-    EXPECT_NEAR(ramp, std::hypot(step, 2.5 * p.mmPerPx), 1e-12);
+    EXPECT_NEAR(ramp, std::hypot(step, 0.5 * 2.5 * p.mmPerPx), 1e-12) << "half the ramp as one σ";
 }
 
 // A ring read narrow is a finding unless the outline agrees with the μ it reads and the

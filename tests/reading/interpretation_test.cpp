@@ -344,4 +344,24 @@ TEST(Interpretation, NoSilhouetteLeavesScaleAndHeightUnchecked)
     EXPECT_LT(seen.muSigma, o.muSigma);
 }
 
+// The contact edge on the barrel's ramp: u budgets half the ramp as its σ. Where μ barely
+// moves with u (a low μ) the budget covers it and the reading is ok; where μ moves steeply
+// with u the same ramp may carry μ beyond the tolerance and is a finding; a ramp wider than
+// any the bench measured is one at any μ.
+TEST(Interpretation, AContactEdgeOnARampIsAFindingWhereItCanMoveMu)
+{
+    auto withRamp = [](double mu, double rampPx) {
+        EndFaceGeometry g = face(1.0, false, kN, mu);
+        g.innerEdgeWidthPx = 1.0, g.edgeWidthPx = 1.0 + rampPx, g.contactRampPx = rampPx;
+        return interpret(g);
+    };
+    const Reading flat = withRamp(0.08, 2.0), steep = withRamp(0.3, 2.8), wide = withRamp(0.08, 3.5);
+    const Reading none = withRamp(0.08, 0.0);
+    EXPECT_FALSE(flat.flags & kFlagContactEdgeRamp);
+    EXPECT_EQ(flat.status, Status::Ok) << flat.flags;
+    EXPECT_GT(flat.muSigma, none.muSigma) << "the ramp is in U";
+    EXPECT_TRUE(steep.flags & kFlagContactEdgeRamp);
+    EXPECT_TRUE(wide.flags & kFlagContactEdgeRamp);
+}
+
 } // namespace icacam::reading
