@@ -100,7 +100,9 @@ const char *findingWords(int bit)
         "the end face looks elliptical: square the camera to the fixture or calibrate it",
         "the boundaries are not concentric: square the camera or check the specimen",
         "the silhouette says the scale is off: check mm_per_px on the end-face plane or declare h_final_mm",
-        "the ICA is only a few pixels wide: a finer scale is needed",
+        "the ICA reads only a few pixels wide: a finer scale is needed; where the original face shows no edge "
+        "of its own, the ring read may be the contact edge and the barrel's shoulder beyond it (mu low): light the "
+        "face and the ring apart",
         "no barrel silhouette: the scale and the final height are unchecked; declare h_final_mm",
         "the final height lies outside what the model covers",
         "the silhouette contradicts the declared scale and final height: check both",
