@@ -103,11 +103,10 @@ constexpr double kTiltEllipticityMax = 0.05;
 // outside; drawn steps and the development set's and the reference photographs' edges: at
 // most 1.6 px). Beyond vision::kContactRampPx R_o, taken where the ring's level ends, still
 // reads outside by part of the ramp: on the bench's straight 640 × 480 photographs with
-// ramps of 1.6–3 px u reads 0.5 px wide on average with a spread of 0.8 px, so u's error
-// takes half the ramp as one standard deviation (2σ covers 80 of 83). Of the ramps beyond
-// 3 px, three of three read R_o 2.3–4 px outside, and a ramp judged arc by arc in an oblique
-// view (vision::kImageContactRampByArc) up to 7.5 px outside at 1456 × 1088: there the whole
-// ramp is one σ and a finding whatever μ's slope.
+// ramps of 1.6–3 px u reads 0.5 px wide on average with a spread of 0.8 px (tilted: 0.8 and
+// 0.9 px), so u's error takes half the ramp as one standard deviation (2σ covers 80 of 83
+// straight, 17 of 20 tilted). Of the ramps beyond 3 px, three of three read R_o 2.3–4 px
+// outside: there the ramp is a finding whatever μ's slope.
 constexpr double kContactRampSigmaShare = 0.5, kContactRampMeasuredPx = 3.0;
 bool contactEdgeOnRamp(const EndFaceGeometry &g)
 {
@@ -350,10 +349,8 @@ EdgeSigma edgeSigma(const EndFaceGeometry &g, const PlaneMapping &p, bool calibr
     e.uSigmaEdgesMm = std::hypot(e.uSigmaMm, std::hypot(kInnerEdgeModelMm, kOuterEdgeModelMm));
     e.narrowWidenMm = kNarrowRingWidenPx * p.mmPerPx;
     if (contactEdgeOnRamp(g)) {
-        // Judged arc by arc, the whole ramp as one σ, and a finding at any μ.
-        const bool byArc = (g.imageFlags & vision::kImageContactRampByArc) != 0;
-        e.contactRampMm = (byArc ? 1.0 : kContactRampSigmaShare) * g.contactRampPx * p.mmPerPx;
-        e.contactRampBeyond = byArc || g.contactRampPx > kContactRampMeasuredPx;
+        e.contactRampMm = kContactRampSigmaShare * g.contactRampPx * p.mmPerPx;
+        e.contactRampBeyond = g.contactRampPx > kContactRampMeasuredPx;
         e.uSigmaEdgesMm = std::hypot(e.uSigmaEdgesMm, e.contactRampMm);
     }
     if (!calibrated && e.sharedEllipse) {

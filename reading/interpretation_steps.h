@@ -46,7 +46,7 @@ struct EdgeSigma {
     bool sharedEllipse = false;     // both boundaries elliptical along one axis
     double narrowWidenMm = 0;       // how much wider a ring read narrow may read than it is
     double contactRampMm = 0;       // u's σ for the contact edge on the barrel's ramp (0: none)
-    bool contactRampBeyond = false; // a ramp (or a view) no share of it was measured to cover
+    bool contactRampBeyond = false; // a ramp wider than the bench measured it on
 };
 EdgeSigma edgeSigma(const vision::EndFaceGeometry &g, const PlaneMapping &p, bool calibrated);
 

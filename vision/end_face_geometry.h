@@ -63,11 +63,6 @@ enum ImageFlag : uint32_t {
     // two, its centre drawn aside by the view (a close camera draws it towards the optical
     // axis; a tilt anywhere): where the view explains the shift, the outline is the barrel's.
     kImageOutlineSmeared = 1u << 5,
-    // The contact edge's ramp was judged arc by arc (an oblique view, contactRampPx the widest
-    // arc's): where the barrel's shoulder spreads towards the camera, R_o on that arc can read
-    // several ramps outside (rendered 1456 × 1088 tilted photographs: 6.5–7.5 px at ramps of
-    // 2.8–3.4 px), which no share of the ramp was measured to cover.
-    kImageContactRampByArc = 1u << 6,
 };
 
 // Where the pipeline looks: the specimen's initial diameter and the scale at the end face

@@ -776,7 +776,6 @@ ErrorCode RingSearch::ringAbout(const MeanEdges &me, EndFaceGeometry *m, bool pr
                 if (obliqueView || me.seenObliquely) {
                     const double widest = contactEdgeAtKneeBySector(outerR, me.signOuter, wi, reach, ringPx, &outer);
                     m->contactRampPx = std::max(m->contactRampPx, widest);
-                    m->imageFlags |= kImageContactRampByArc;
                 } else {
                     contactEdgeAtKnee(profile, me.signOuter, wi, m->contactRampPx, ringPx, &outer);
                 }

@@ -362,13 +362,6 @@ TEST(Interpretation, AContactEdgeOnARampIsAFindingWhereItCanMoveMu)
     EXPECT_GT(flat.muSigma, none.muSigma) << "the ramp is in U";
     EXPECT_TRUE(steep.flags & kFlagContactEdgeRamp);
     EXPECT_TRUE(wide.flags & kFlagContactEdgeRamp);
-    // Judged arc by arc (an oblique view), the ramp is one σ whole and a finding at any μ.
-    EndFaceGeometry g = face(1.0, false, kN, 0.08);
-    g.innerEdgeWidthPx = 1.0, g.edgeWidthPx = 3.0, g.contactRampPx = 2.0;
-    g.imageFlags |= vision::kImageContactRampByArc;
-    const Reading byArc = interpret(g);
-    EXPECT_TRUE(byArc.flags & kFlagContactEdgeRamp);
-    EXPECT_GT(byArc.muSigma, flat.muSigma);
 }
 
 } // namespace icacam::reading
