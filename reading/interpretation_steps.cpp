@@ -105,9 +105,12 @@ constexpr double kTiltEllipticityMax = 0.05;
 // reads outside by part of the ramp: on the bench's straight 640 × 480 photographs with
 // ramps of 1.6–3 px u reads 0.5 px wide on average with a spread of 0.8 px (tilted: 0.8 and
 // 0.9 px), so u's error takes half the ramp as one standard deviation (2σ covers 80 of 83
-// straight, 17 of 20 tilted). Of the ramps beyond 3 px, three of three read R_o 2.3–4 px
-// outside: there the ramp is a finding whatever μ's slope.
-constexpr double kContactRampSigmaShare = 0.5, kContactRampMeasuredPx = 3.0;
+// straight, 17 of 20 tilted). That share holds where it was measured, on contact edges of
+// 130–190 px radius. Of the ramps beyond 3 px, three of three read R_o 2.3–4 px outside; on
+// larger rings (1456 × 1088: 300–430 px) 3 of 21 ramps of 1.6–3 px read it 6.5–7 px outside,
+// the knee taken where the barrel's flat shoulder ends. There the whole ramp is one σ and a
+// finding whatever μ's slope.
+constexpr double kContactRampSigmaShare = 0.5, kContactRampMeasuredPx = 3.0, kContactRampMeasuredRingPx = 200;
 bool contactEdgeOnRamp(const EndFaceGeometry &g)
 {
     return g.contactRampPx > vision::kContactRampPx;
@@ -349,8 +352,9 @@ EdgeSigma edgeSigma(const EndFaceGeometry &g, const PlaneMapping &p, bool calibr
     e.uSigmaEdgesMm = std::hypot(e.uSigmaMm, std::hypot(kInnerEdgeModelMm, kOuterEdgeModelMm));
     e.narrowWidenMm = kNarrowRingWidenPx * p.mmPerPx;
     if (contactEdgeOnRamp(g)) {
-        e.contactRampMm = kContactRampSigmaShare * g.contactRampPx * p.mmPerPx;
-        e.contactRampBeyond = g.contactRampPx > kContactRampMeasuredPx;
+        const bool measured = g.contactRampPx <= kContactRampMeasuredPx && g.outer.rEqPx <= kContactRampMeasuredRingPx;
+        e.contactRampMm = (measured ? kContactRampSigmaShare : 1.0) * g.contactRampPx * p.mmPerPx;
+        e.contactRampBeyond = !measured;
         e.uSigmaEdgesMm = std::hypot(e.uSigmaEdgesMm, e.contactRampMm);
     }
     if (!calibrated && e.sharedEllipse) {

@@ -46,7 +46,7 @@ struct EdgeSigma {
     bool sharedEllipse = false;     // both boundaries elliptical along one axis
     double narrowWidenMm = 0;       // how much wider a ring read narrow may read than it is
     double contactRampMm = 0;       // u's σ for the contact edge on the barrel's ramp (0: none)
-    bool contactRampBeyond = false; // a ramp wider than the bench measured it on
+    bool contactRampBeyond = false; // a ramp (or a ring) beyond those its share was measured on
 };
 EdgeSigma edgeSigma(const vision::EndFaceGeometry &g, const PlaneMapping &p, bool calibrated);
 
@@ -185,7 +185,8 @@ bool uncheckedViewMatters(const MuFunction &F, const SpecimenSpec &spec, const S
 
 // The contact edge on the barrel's ramp (e.contactRampMm, u's σ for it): a finding where that
 // σ leaves more than the nominal check's chance that μ lies beyond the tolerance, or where
-// the ramp is wider than any the bench measured; where μ barely depends on it, U covers it.
+// the ramp or the ring is larger than any its share was measured on; where μ barely depends
+// on it, U covers it.
 bool contactRampMatters(const MuFunction &F, const SpecimenSpec &spec, const EdgeSigma &e, double uMm, double r);
 
 // μ at the corrected u and reduction; bias: the carry to 50 % a model that does not carry

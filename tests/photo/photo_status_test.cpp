@@ -21,11 +21,11 @@ namespace fs = std::filesystem;
 namespace {
 
 struct PhotoLines {
-    double measured = 0;    // share of the records measured
-    double within = 0;      // share of the measured within 2 σ
-    double ok = 0;          // share of the measured that say ok
-    double okOnRight = 0;   // share of the right readings that say ok
-    int silentWrong = 0;    // ok and beyond max(0.01, 5 % of μ)
+    double measured = 0;  // share of the records measured
+    double within = 0;    // share of the measured within 2 σ
+    double ok = 0;        // share of the measured that say ok
+    double okOnRight = 0; // share of the right readings that say ok
+    int silentWrong = 0;  // ok and beyond max(0.01, 5 % of μ)
 };
 
 void expectLines(host::photo::PhotoCondition condition, const std::string &name, int count, uint32_t seed,
