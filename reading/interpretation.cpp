@@ -87,10 +87,6 @@ void readFace(const FaceInputs &in, uint32_t f, Reading *out)
     if ((f & kFlagNarrowRing) &&
         narrowRingCorroborated(F, spec, uF, rF, out->mu, edges.narrowWidenMm * uF / u, silhouette))
         f &= ~kFlagNarrowRing;
-    // Scaled as u was by the silhouette.
-    EdgeSigma ramp = edges;
-    ramp.contactRampMm *= uF / u;
-    if ((f & kFlagContactEdgeRamp) && !contactRampMatters(F, spec, ramp, uF, rF)) f &= ~kFlagContactEdgeRamp;
     const ModelEstimate asDeclared = model.estimate({u, n, spec.kMpa, spec.d0Mm, spec.h0Mm, spec.hFinalMm});
     out->declared = {asDeclared.mu, asDeclared.dMuDu};
     out->nominalMu = F.at(u, kNominalReduction, n);

@@ -101,16 +101,9 @@ constexpr double kTiltEllipticityMax = 0.05;
 // wider than the original face's and its steepest point lies outside the edge, by up to about
 // the excess width (rendered photographs: the excess 1.6–3.0 px where R_o read 0.5–4 px
 // outside; drawn steps and the development set's and the reference photographs' edges: at
-// most 1.6 px). Beyond vision::kContactRampPx R_o, taken where the ring's level ends, still
-// reads outside by part of the ramp: on the bench's straight 640 × 480 photographs with
-// ramps of 1.6–3 px u reads 0.5 px wide on average with a spread of 0.8 px (tilted: 0.8 and
-// 0.9 px), so u's error takes half the ramp as one standard deviation (2σ covers 80 of 83
-// straight, 17 of 20 tilted). That share holds where it was measured, on contact edges of
-// 130–190 px radius. Of the ramps beyond 3 px, three of three read R_o 2.3–4 px outside; on
-// larger rings (1456 × 1088: 300–430 px) 3 of 21 ramps of 1.6–3 px read it 6.5–7 px outside,
-// the knee taken where the barrel's flat shoulder ends. There the whole ramp is one σ and a
-// finding whatever μ's slope.
-constexpr double kContactRampSigmaShare = 0.5, kContactRampMeasuredPx = 3.0, kContactRampMeasuredRingPx = 200;
+// most 1.6 px). Beyond vision::kContactRampPx that excess is a finding (R_o, taken where the
+// ring's level ends, still reads up to 3 px outside on a few rendered ramps), and u's error
+// takes it as one standard deviation.
 bool contactEdgeOnRamp(const EndFaceGeometry &g)
 {
     return g.contactRampPx > vision::kContactRampPx;
@@ -351,12 +344,7 @@ EdgeSigma edgeSigma(const EndFaceGeometry &g, const PlaneMapping &p, bool calibr
     e.sharedEllipse = p.inner.ellipticity > 0.012 && p.outer.ellipticity > 0.012 && axisDiff < 20;
     e.uSigmaEdgesMm = std::hypot(e.uSigmaMm, std::hypot(kInnerEdgeModelMm, kOuterEdgeModelMm));
     e.narrowWidenMm = kNarrowRingWidenPx * p.mmPerPx;
-    if (contactEdgeOnRamp(g)) {
-        const bool measured = g.contactRampPx <= kContactRampMeasuredPx && g.outer.rEqPx <= kContactRampMeasuredRingPx;
-        e.contactRampMm = (measured ? kContactRampSigmaShare : 1.0) * g.contactRampPx * p.mmPerPx;
-        e.contactRampBeyond = !measured;
-        e.uSigmaEdgesMm = std::hypot(e.uSigmaEdgesMm, e.contactRampMm);
-    }
+    if (contactEdgeOnRamp(g)) e.uSigmaEdgesMm = std::hypot(e.uSigmaEdgesMm, g.contactRampPx * p.mmPerPx);
     if (!calibrated && e.sharedEllipse) {
         const double ell = std::min(p.inner.ellipticity, p.outer.ellipticity);
         e.uSigmaEdgesMm = std::hypot(e.uSigmaEdgesMm, p.face.uMm * ell / (2 * std::sqrt(3.0)));
@@ -697,16 +685,6 @@ bool uncheckedViewMatters(const MuFunction &F, const SpecimenSpec &spec, const S
     for (int h : {E::OtherHeight, E::ScaleOff, E::Nominal}) prior.weight[h] = 1.0 / 3;
     double nominalMu = 0;
     return nominalCheck(F, spec, uMm, mu, &prior, &nominalMu, true) != 0;
-}
-
-bool contactRampMatters(const MuFunction &F, const SpecimenSpec &spec, const EdgeSigma &e, double uMm, double r)
-{
-    if (e.contactRampBeyond) return true;
-    if (!(e.contactRampMm > 0)) return false;
-    const double mu = F.at(uMm, r, spec.n), tol = spec.tolerance.at(std::fabs(mu));
-    const double s =
-        0.5 * std::fabs(F.at(uMm + e.contactRampMm, r, spec.n) - F.at(std::max(0.0, uMm - e.contactRampMm), r, spec.n));
-    return s > 0 && std::erfc(tol / (s * std::numbers::sqrt2)) > kWrongRisk;
 }
 
 MuReading readMu(const MuFunction &F, const FrictionModel &model, const SpecimenSpec &spec, double uMm, double r,

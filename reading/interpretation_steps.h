@@ -43,10 +43,8 @@ PlaneMapping mapFace(const vision::EndFaceGeometry &g, const SpecimenSpec &spec,
 struct EdgeSigma {
     double uSigmaMm = 0;
     double uSigmaEdgesMm = 0;
-    bool sharedEllipse = false;     // both boundaries elliptical along one axis
-    double narrowWidenMm = 0;       // how much wider a ring read narrow may read than it is
-    double contactRampMm = 0;       // u's σ for the contact edge on the barrel's ramp (0: none)
-    bool contactRampBeyond = false; // a ramp (or a ring) beyond those its share was measured on
+    bool sharedEllipse = false; // both boundaries elliptical along one axis
+    double narrowWidenMm = 0;   // how much wider a ring read narrow may read than it is
 };
 EdgeSigma edgeSigma(const vision::EndFaceGeometry &g, const PlaneMapping &p, bool calibrated);
 
@@ -182,12 +180,6 @@ uint32_t nominalCheck(const MuFunction &F, const SpecimenSpec &spec, double uDec
 // declared: the declared scale's and reduction's prior (as silhouettePosterior takes it).
 bool uncheckedViewMatters(const MuFunction &F, const SpecimenSpec &spec, const ScaleAndReduction &declared, double uMm,
                           double mu);
-
-// The contact edge on the barrel's ramp (e.contactRampMm, u's σ for it): a finding where that
-// σ leaves more than the nominal check's chance that μ lies beyond the tolerance, or where
-// the ramp or the ring is larger than any its share was measured on; where μ barely depends
-// on it, U covers it.
-bool contactRampMatters(const MuFunction &F, const SpecimenSpec &spec, const EdgeSigma &e, double uMm, double r);
 
 // μ at the corrected u and reduction; bias: the carry to 50 % a model that does not carry
 // itself leaves out (budgeted).

@@ -344,34 +344,4 @@ TEST(Interpretation, NoSilhouetteLeavesScaleAndHeightUnchecked)
     EXPECT_LT(seen.muSigma, o.muSigma);
 }
 
-// The contact edge on the barrel's ramp, on a ring of the size its share was measured on (a
-// 640 × 480 photograph: the face at twice the scale, R_o ≈ 155 px): u budgets half the ramp as
-// its σ. Where μ barely moves with u (a low μ) the budget covers it and the reading is ok;
-// where μ moves steeply with u the same ramp may carry μ beyond the tolerance and is a
-// finding; a ramp wider than any the bench measured is one at any μ, and so is a ramp on a
-// ring larger than those (R_o ≈ 310 px).
-TEST(Interpretation, AContactEdgeOnARampIsAFindingWhereItCanMoveMu)
-{
-    auto withRamp = [](double mu, double rampPx, double scale = 1.8, double tolerance = 0.02) {
-        EndFaceGeometry g = face(1.0, false, kN, mu);
-        for (BoundaryFit *b : {&g.inner, &g.outer}) b->rEqPx /= scale;
-        g.rMaxPx /= scale;
-        g.innerEdgeWidthPx = 1.0, g.edgeWidthPx = 1.0 + rampPx, g.contactRampPx = rampPx;
-        SpecimenSpec spec;
-        spec.n = kN;
-        spec.mmPerPx = kMmPerPx * scale;
-        spec.tolerance.absMu = tolerance;
-        return reading::interpret(g, spec, nullptr, *frictionModel(kDefaultModel));
-    };
-    const Reading flat = withRamp(0.08, 2.0), steep = withRamp(0.3, 2.8, 1.8, 0.01), wide = withRamp(0.08, 3.5);
-    const Reading none = withRamp(0.08, 0.0), large = withRamp(0.08, 2.0, 1);
-    ASSERT_LT(flat.geometry.outer.rEqPx, 200);
-    EXPECT_FALSE(flat.flags & kFlagContactEdgeRamp);
-    EXPECT_EQ(flat.status, Status::Ok) << flat.flags;
-    EXPECT_GT(flat.muSigma, none.muSigma) << "the ramp is in U";
-    EXPECT_TRUE(steep.flags & kFlagContactEdgeRamp);
-    EXPECT_TRUE(wide.flags & kFlagContactEdgeRamp);
-    EXPECT_TRUE(large.flags & kFlagContactEdgeRamp);
-}
-
 } // namespace icacam::reading
