@@ -7,13 +7,9 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <iostream>
 
-#include "host_tools/coverage_score.h"
-#include "host_tools/manifest.h"
-#include "host_tools/measure_command.h"
 #include "host_tools/photo/photo_bench.h"
-#include "tests/host_tools/test_support.h"
+#include "tests/host_tools/coverage_support.h"
 
 using namespace icacam;
 namespace fs = std::filesystem;
@@ -44,18 +40,8 @@ void expectLines(host::photo::PhotoCondition condition, const std::string &name,
     opt.quiet = true;
     opt.profilesCsv = std::string(ICACAM_SOURCE_DIR) + "/data/photobench/fe_profiles.csv";
     const std::string manifest = host::photo::writePhotoSet(dir.string(), opt);
-    const std::string results = (dir / "results.csv").string();
-    testing::internal::CaptureStderr();
-    host::measureCommand({"--manifest", manifest, "--out", results});
-    testing::internal::GetCapturedStderr();
-    host::Manifest res, truth;
-    std::string err;
-    ASSERT_TRUE(host::readManifest(results, &res, &err)) << err;
-    ASSERT_TRUE(host::readManifest((dir / "truth.csv").string(), &truth, &err)) << err;
-    host::ScoreReport report;
-    ASSERT_TRUE(host::scoreResults(res, truth, host::ScoreOptions{}, &report, &err)) << err;
-    std::cout << host::formatScore(report, host::ScoreOptions{}, false);
-    const host::ConditionScore *c = report.find(name);
+    const test::ScoredSet set = test::measureAndScore(dir, manifest);
+    const host::ConditionScore *c = set.report.find(name);
     ASSERT_TRUE(c) << name;
     EXPECT_EQ(c->total, count);
     EXPECT_GE(double(c->measured) / c->total, line.measured) << c->measured << " of " << c->total << " measured";
