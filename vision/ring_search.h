@@ -163,15 +163,16 @@ struct RingSearch {
     // position, sub-sample); false when no step stands out of the ray's noise. The detector's
     // inside reads no sample before barrelFrom (the contact edge's blur ends there). The
     // ray's noise is judged over its outer quarter up to hi; the step is searched for from
-    // searchHi (≤ hi) inwards.
-    bool silhouetteOnRay(const uint16_t *row, int lo, int hi, int searchHi, int w, int barrelFrom,
-                         double *atSample) const;
+    // searchHi (≤ hi) inwards. *onBound: the step still rose at lo, where the search ends
+    // (the outline lies there, or the barrel's shading falls off from the contact edge on).
+    bool silhouetteOnRay(const uint16_t *row, int lo, int hi, int searchHi, int w, int barrelFrom, double *atSample,
+                         bool *onBound) const;
     // The coarse rays' outline search: per ray the outline found (radius, pixels; valid) and
     // what silhouetteOnRay read it with (lo, the first sample searched; barrelFrom, the first
     // the detector's inside reads), and the detector's half-width w and last sample hi.
     struct OutlineRays {
         double radius[kCoarseRays];
-        bool valid[kCoarseRays];
+        bool valid[kCoarseRays], onBound[kCoarseRays];
         int lo[kCoarseRays], barrelFrom[kCoarseRays];
         int w, hi;
     };

@@ -144,6 +144,22 @@ TEST_P(NarrowRingPhotos, AContactEdgeOnARampShowsItsWidth)
     }
 }
 
+// A lit barrel fading into a black fixture: its shading falls off from the contact edge on,
+// and on most rays the step is still rising where the outline search ends, just outside the
+// contact edge. That is no outline (read there, its centre is the contact edge's and its
+// radius the search's bound), so the rays show none (the mean profile's step, which the
+// reading does not check the height with, may remain): the height is unchecked rather than
+// read off the bound.
+class FadingBarrelPhotos : public PhotoImages {};
+
+TEST_P(FadingBarrelPhotos, ShowsNoOutlineOfItsOwn)
+{
+    const Photo p = measure(GetParam());
+    ASSERT_EQ(p.g.error, vision::ErrorCode::None);
+    EXPECT_EQ(p.g.silhouetteCoverage, 0) << "an outline on " << p.g.silhouetteCoverage << " of the rays at "
+                                         << p.g.rMaxPx << " px (contact edge " << p.g.outer.rEqPx << ")";
+}
+
 // The contact edge to a pixel, where its ramp or its step says where the ring's level ends:
 // straight-0011 and straight-s2-0004 read 2.2 and 2.9 px outside at the derivative's peak,
 // straight-s2-0007 (a bright ring's lit barrel rolling away, a ramp of 1.5 px) 1.7 px.
@@ -197,6 +213,13 @@ INSTANTIATE_TEST_SUITE_P(Rendered, LitShoulderPhotos, ::testing::Values("straigh
 
 INSTANTIATE_TEST_SUITE_P(Rendered, NarrowRingPhotos,
                          ::testing::Values("straight-s1-0008", "straight-s2-0004", "straight-s3-0019"),
+                         [](const ::testing::TestParamInfo<std::string> &p) {
+                             std::string s = p.param;
+                             std::replace(s.begin(), s.end(), '-', '_');
+                             return s;
+                         });
+
+INSTANTIATE_TEST_SUITE_P(Rendered, FadingBarrelPhotos, ::testing::Values("straight-s2-0004", "straight-s3-0019"),
                          [](const ::testing::TestParamInfo<std::string> &p) {
                              std::string s = p.param;
                              std::replace(s.begin(), s.end(), '-', '_');
