@@ -297,16 +297,6 @@ double RingSearch::silhouetteFromRays(const double *outerR, double blurPx, EndFa
         }
     }
     outlineInsideRivals(&rays);
-    // A step still rising where the search ends, just outside the contact edge, is an outline
-    // that close to it or the barrel's shading falling off from the contact edge onto a dark
-    // fixture (rendered photographs: a lit barrel on a black fixture, its step at the bound
-    // on 48–61 of 64 rays and the outline's centre, drawn towards the axis by the view, read
-    // on the contact edge's). Where it is so on half the rays or more, the rays show no
-    // outline of their own, and the view has no silhouette.
-    int found = 0, onBound = 0;
-    for (int i = 0; i < kCoarse; ++i)
-        if (valid[i]) ++found, onBound += rays.onBound[i];
-    if (found > 0 && 2 * onBound >= found) return 0;
     // Seen straight on, the barrel shows as a band of even width outside the contact edge.
     // Seen obliquely (a tilted camera, or one close enough that the rays fan out by tens of
     // degrees), it shows wide on the side facing the camera and hides behind the end face on
@@ -317,6 +307,17 @@ double RingSearch::silhouetteFromRays(const double *outerR, double blurPx, EndFa
         *lopsided = true;
         return 0;
     }
+    // A step still rising where the search ends, just outside the contact edge, is an outline
+    // that close to it or the barrel's shading falling off from the contact edge onto a dark
+    // fixture (rendered photographs: a lit barrel on a black fixture, its step at the bound
+    // on 48–61 of 64 rays and the outline's centre, drawn towards the axis by the view, read
+    // on the contact edge's). Where it is so on half the rays or more, the rays show no
+    // outline of their own, and the view has no silhouette (an oblique view's hidden side, the
+    // band ending on the contact edge, is told above).
+    int found = 0, onBound = 0;
+    for (int i = 0; i < kCoarse; ++i)
+        if (valid[i]) ++found, onBound += rays.onBound[i];
+    if (found > 0 && 2 * onBound >= found) return 0;
     BoundaryFit fit;
     FitOptions opt;
     opt.maxHarmonics = 2;
