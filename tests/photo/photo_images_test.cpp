@@ -186,42 +186,33 @@ TEST_P(LitShoulderPhotos, ALitShoulderDoesNotPullTheEdgeInside)
     EXPECT_NEAR(p.g.outer.rEqPx, num(p.truth, "r_outer_px"), 0.3);
 }
 
+namespace {
+
+// A record id as a test name: gtest's names take no '-'.
+std::string recordName(const ::testing::TestParamInfo<std::string> &p)
+{
+    std::string s = p.param;
+    std::replace(s.begin(), s.end(), '-', '_');
+    return s;
+}
+
+} // namespace
+
 INSTANTIATE_TEST_SUITE_P(Rendered, PhotoImages,
                          ::testing::Values("straight-0011", "straight-0016", "straight-0003", "tilted-0002",
                                            "straight-0005", "straight-0020"),
-                         [](const ::testing::TestParamInfo<std::string> &p) {
-                             std::string s = p.param;
-                             std::replace(s.begin(), s.end(), '-', '_');
-                             return s;
-                         });
+                         recordName);
 
 INSTANTIATE_TEST_SUITE_P(Rendered, ContactEdgePhotos,
                          ::testing::Values("straight-0011", "straight-0016", "straight-0003", "straight-0020",
                                            "straight-s1-0008", "straight-s2-0004", "straight-s2-0007"),
-                         [](const ::testing::TestParamInfo<std::string> &p) {
-                             std::string s = p.param;
-                             std::replace(s.begin(), s.end(), '-', '_');
-                             return s;
-                         });
+                         recordName);
 
 INSTANTIATE_TEST_SUITE_P(Rendered, LitShoulderPhotos, ::testing::Values("straight-0003", "straight-s1-0008"),
-                         [](const ::testing::TestParamInfo<std::string> &p) {
-                             std::string s = p.param;
-                             std::replace(s.begin(), s.end(), '-', '_');
-                             return s;
-                         });
+                         recordName);
 
 INSTANTIATE_TEST_SUITE_P(Rendered, NarrowRingPhotos,
-                         ::testing::Values("straight-s1-0008", "straight-s2-0004", "straight-s3-0019"),
-                         [](const ::testing::TestParamInfo<std::string> &p) {
-                             std::string s = p.param;
-                             std::replace(s.begin(), s.end(), '-', '_');
-                             return s;
-                         });
+                         ::testing::Values("straight-s1-0008", "straight-s2-0004", "straight-s3-0019"), recordName);
 
 INSTANTIATE_TEST_SUITE_P(Rendered, FadingBarrelPhotos, ::testing::Values("straight-s2-0004", "straight-s3-0019"),
-                         [](const ::testing::TestParamInfo<std::string> &p) {
-                             std::string s = p.param;
-                             std::replace(s.begin(), s.end(), '-', '_');
-                             return s;
-                         });
+                         recordName);
