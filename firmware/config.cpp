@@ -105,6 +105,9 @@ const KeyDef kKeys[] = {
     {"camera.retry_ms", nullptr, nullptr, &Config::cameraRetryMs, nullptr, 100, 600000, nullptr, false,
      "a missing or silent camera, and a missing display, serial line, button or LED line, is looked for again "
      "this often"},
+    {"camera.tone_gamma", "tone_gamma", &Config::toneGamma, nullptr, nullptr, 1, 3, nullptr, true,
+     "the frames' tone curve as a power, encoded = linear^(1/tone_gamma): the ring's edges are located in linear "
+     "light (1 = levels proportional to light; about 2.2 for an sRGB-like curve; docs/camera-setup.md)"},
     {"camera.white_balance_k", nullptr, nullptr, &Config::whiteBalanceK, nullptr, -1, 15000, nullptr, false,
      "v4l2: white balance fixed at this colour temperature in kelvin when red/blue gains are not set "
      "(-1: leave the camera's auto white balance)"},

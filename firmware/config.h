@@ -20,6 +20,7 @@ struct Config {
     double d0Mm = 10, h0Mm = 15;
     double hFinalMm = 0;          // final height after upsetting; 0 = not given (50 % assumed)
     double workingDistanceMm = 0; // the lens's distance to the end face; 0 = not given
+    double toneGamma = 1;         // the camera's tone curve, encoded = linear^(1/γ); 1 = linear
     std::string material;
     // [reading] the friction model (friction/friction_models.h), as `icacam measure --model`
     std::string model = friction::kDefaultModel;

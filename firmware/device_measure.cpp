@@ -65,6 +65,7 @@ reading::SpecimenSpec specimenSpec(const Config &c)
         {"h0_mm", c.h0Mm},
         {"h_final_mm", c.hFinalMm},
         {"working_distance_mm", c.workingDistanceMm},
+        {"tone_gamma", c.toneGamma},
         {"mm_per_px_tol", c.mmPerPxTolRel},
         {"h_final_tol_mm", c.hFinalTolMm},
         {"n_tol", c.nTol},

@@ -62,7 +62,10 @@ std::string usage()
            numberText("%g", d.n) +
            "); without h_final_mm the reduction is inferred from the silhouette\n"
            "(docs/uncertainty.md). working_distance_mm: the camera's distance to the end face; a close\n"
-           "camera sees the barrel's outline inside R_max, and the silhouette is held against that outline.\n";
+           "camera sees the barrel's outline inside R_max, and the silhouette is held against that outline.\n"
+           "tone_gamma: the camera's tone curve, encoded = linear^(1/tone_gamma) (1, the default: levels\n"
+           "proportional to light; about 2.2: a camera's sRGB-like output); the ring's edges are located\n"
+           "in linear light (docs/photographs.md).\n";
 }
 
 void drawOverlay(const cv::Mat &luma, const reading::Reading &reading, const std::string &path)

@@ -29,7 +29,7 @@ std::string Instrument::frameSizeIssue(int width, int height) const
 
 vision::FaceSearch Instrument::searchFor(const SpecimenSpec &spec, int width, int height) const
 {
-    vision::FaceSearch search{spec.d0Mm, spec.mmPerPx};
+    vision::FaceSearch search{spec.d0Mm, spec.mmPerPx, spec.toneGamma};
     if (!(search.mmPerPx > 0) && calibrated_) {
         // Only a calibration: the search is sized from its scale at the image centre, on a
         // plane at half the initial height.

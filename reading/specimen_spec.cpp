@@ -25,6 +25,7 @@ constexpr SpecimenField kFields[] = {
     {"h0_mm", &SpecimenSpec::h0Mm, nullptr, nullptr, false},
     {"h_final_mm", &SpecimenSpec::hFinalMm, nullptr, nullptr, true},
     {"working_distance_mm", &SpecimenSpec::workingDistanceMm, nullptr, nullptr, true},
+    {"tone_gamma", &SpecimenSpec::toneGamma, nullptr, nullptr, true},
     {"mm_per_px_tol", nullptr, &DeclaredTolerances::scaleRel, nullptr, true},
     {"h_final_tol_mm", nullptr, &DeclaredTolerances::hFinalMm, nullptr, true},
     {"n_tol", nullptr, &DeclaredTolerances::n, nullptr, true},
@@ -50,19 +51,9 @@ bool parseValue(std::string_view text, double *out)
 
 } // namespace
 
-const char *const kSpecimenKeys[] = {"n",
-                                     "mm_per_px",
-                                     "k_mpa",
-                                     "d0_mm",
-                                     "h0_mm",
-                                     "h_final_mm",
-                                     "working_distance_mm",
-                                     "mm_per_px_tol",
-                                     "h_final_tol_mm",
-                                     "n_tol",
-                                     "tolerance_mu",
-                                     "tolerance_rel",
-                                     nullptr};
+const char *const kSpecimenKeys[] = {
+    "n",          "mm_per_px",     "k_mpa",          "d0_mm", "h0_mm",        "h_final_mm",    "working_distance_mm",
+    "tone_gamma", "mm_per_px_tol", "h_final_tol_mm", "n_tol", "tolerance_mu", "tolerance_rel", nullptr};
 
 bool setSpecimenField(std::string_view key, std::string_view text, SpecimenSpec *spec, std::string *why)
 {
@@ -96,6 +87,10 @@ bool checkSpecimen(const SpecimenSpec &spec, bool needsScale, std::string *why)
     }
     if (!(spec.h0Mm > 0)) {
         *why = "h0_mm must be positive";
+        return false;
+    }
+    if (!(spec.toneGamma >= 1 && spec.toneGamma <= 3)) {
+        *why = "tone_gamma must lie in 1-3 (1: levels proportional to light; about 2.2: a camera's sRGB-like output)";
         return false;
     }
     return true;

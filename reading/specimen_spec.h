@@ -41,12 +41,17 @@ struct SpecimenSpec {
     // The camera's distance to the end face (0: not declared): the outline a close camera
     // sees of the barrel lies inside R_max (friction/outline_ratio.h).
     double workingDistanceMm = 0;
+    // The camera's tone curve as a power, encoded = linear^(1/toneGamma): 1 for frames whose
+    // levels are proportional to light, about 2.2 for a camera's sRGB-like JPEG or PNG. The
+    // ring's edges are located in linear light (vision/tone_curve.h).
+    double toneGamma = 1;
     DeclaredTolerances tolerances = {};
     ReadingTolerance tolerance = {};
 };
 
 // Builds a spec from key/value pairs: a manifest row's columns and the device's config keys
-// alike (n, k_mpa, d0_mm, h0_mm, h_final_mm, mm_per_px and the tolerances mm_per_px_tol,
+// alike (n, k_mpa, d0_mm, h0_mm, h_final_mm, mm_per_px, working_distance_mm, tone_gamma and the
+// tolerances mm_per_px_tol,
 // h_final_tol_mm, n_tol, tolerance_mu, tolerance_rel). lookup(key) gives the text of a key, or
 // nullptr where it is absent; an empty text counts as absent. Fields absent keep spec's values.
 // n is required, mm_per_px where needsScale. False with *why set on a missing, malformed or

@@ -151,6 +151,7 @@ EndFaceGeometry EndFaceAnalyzer::measure(const LumaView &v, const FaceSearch &fa
     m.centreY = cy;
 
     RingSearch search{&v, r0, cx, cy, coarse_, fine_, deriv_, meanProfile_, meanDeriv_, innerPts_, outerPts_};
+    search.toneGamma = face.toneGamma;
     ErrorCode e = search.run(&m);
     // A tilted camera sees the barrel wide on the side facing it and not at all on the far
     // side, where the contact edge bounds the specimen: the strongest edge on each ray is the
@@ -172,6 +173,7 @@ EndFaceGeometry EndFaceAnalyzer::measure(const LumaView &v, const FaceSearch &fa
         about.centreY = sy;
         search =
             RingSearch{&v, r0, sx, sy, coarse_, fine_, deriv_, meanProfile_, meanDeriv_, innerPts_, outerPts_, oblique};
+        search.toneGamma = face.toneGamma;
         if ((beyondDrop ? search.runBeyondDrop(&about) : search.run(&about)) != ErrorCode::None) return;
         m = about;
         e = ErrorCode::None;

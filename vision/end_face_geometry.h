@@ -66,10 +66,15 @@ enum ImageFlag : uint32_t {
 };
 
 // Where the pipeline looks: the specimen's initial diameter and the scale at the end face
-// (a hint: it sizes the search, the reading's scale comes from the instrument).
+// (a hint: it sizes the search, the reading's scale comes from the instrument), and how the
+// frame encodes light: the camera's tone curve as a power, encoded = linear^(1/toneGamma)
+// (1: levels proportional to light, as the development set's drawn frames; about 2.2 for a
+// camera's sRGB-like output). The ring's edges are located in linear light
+// (vision/tone_curve.h).
 struct FaceSearch {
     double d0Mm = 10;
     double mmPerPx = 0;
+    double toneGamma = 1;
 };
 
 // The contact edge's ramp (√(w_o² − w_i²), pixels) beyond which the barrel's shading ramps away

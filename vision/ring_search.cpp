@@ -773,12 +773,15 @@ ErrorCode RingSearch::ringAbout(const MeanEdges &me, EndFaceGeometry *m, bool pr
                 m->innerEdgeWidthPx = wi;
                 m->contactRampPx = std::sqrt(std::max(0.0, wo * wo - wi * wi));
                 const double ringPx = outer.rEqPx - inner.rEqPx;
+                bool atKnee = false;
                 if (obliqueView || me.seenObliquely) {
-                    const double widest = contactEdgeAtKneeBySector(outerR, me.signOuter, wi, reach, ringPx, &outer);
+                    const double widest =
+                        contactEdgeAtKneeBySector(outerR, me.signOuter, wi, reach, ringPx, &outer, &atKnee);
                     m->contactRampPx = std::max(m->contactRampPx, widest);
                 } else {
-                    contactEdgeAtKnee(profile, me.signOuter, wi, m->contactRampPx, ringPx, &outer);
+                    atKnee = contactEdgeAtKnee(profile, me.signOuter, wi, m->contactRampPx, ringPx, &outer);
                 }
+                if (toneGamma > 1) undoToneCurve(atInner, profile, wi, reach, atKnee, &inner, &outer);
             }
         }
     } else if (!profileFit) {

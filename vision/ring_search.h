@@ -28,6 +28,9 @@ struct RingSearch {
     // the barrel on one side only, and the contact edge's ramp is judged arc by arc
     // (contactEdgeAtKneeBySector).
     bool obliqueView = false;
+    // The frame's tone curve (FaceSearch::toneGamma): the two edges are moved to where the
+    // optics drew them in linear light (undoToneCurve).
+    double toneGamma = 1;
 
     ErrorCode run(EndFaceGeometry *m);
     // The search where run() (and the analyzer's search about the end face's own centre)
@@ -117,7 +120,8 @@ struct RingSearch {
     // (and the rays' points) to where the ring's level ends, the step and the fall beyond it
     // fitted across the aligned profile with the optics' blur blurPx (contact_knee.h), on a
     // ring ringPx wide; left alone where neither shows or no knee is found.
-    void contactEdgeAtKnee(const AlignedProfile &p, int signOuter, double blurPx, double rampPx, double ringPx,
+    // Returns whether it moved the edge.
+    bool contactEdgeAtKnee(const AlignedProfile &p, int signOuter, double blurPx, double rampPx, double ringPx,
                            BoundaryFit *outer);
     // Where the ring's level ends relative to the aligned profile's edge sample (pixels,
     // negative: inside), the fit contactEdgeAtKnee makes: on a ramp (onRamp, the search twice
@@ -129,8 +133,17 @@ struct RingSearch {
     // arcs of the ring, the rays' points moved by their arc's offset (interpolated between
     // the arcs' middles) and the contact edge fitted again through them. Returns the widest
     // arc's ramp (pixels): the contact edge's, where part of it lies on the barrel's ramp.
+    // *moved: whether any arc's knee moved the edge.
     double contactEdgeAtKneeBySector(const double *outerR, int signOuter, double blurPx, double reachPx, double ringPx,
-                                     BoundaryFit *outer);
+                                     BoundaryFit *outer, bool *moved);
+    // A tone curve (toneGamma > 1) draws each edge's derivative peak towards its dark side
+    // (vision/tone_curve.h): the original face's edge, located on atInner, and the contact
+    // edge, located on atOuter where no knee moved it (outerAtKnee), are moved back by that
+    // shift for their levels either side and the optics' blur blurPx, read within reachPx.
+    void undoToneCurve(const AlignedProfile &atInner, const AlignedProfile &atOuter, double blurPx, double reachPx,
+                       bool outerAtKnee, BoundaryFit *inner, BoundaryFit *outer);
+    // Moves a fitted boundary and its rays' points outwards by offsetPx.
+    void shiftBoundary(double offsetPx, BoundaryFit *fit, EdgeSample *pts) const;
     // The original face's edge as the aligned profile names it: the strongest derivative
     // extremum inside the contact edge that separates two levels (sign 0: none).
     struct OriginalFaceName {

@@ -100,7 +100,7 @@ double RingSearch::stepWidth(const AlignedProfile &p, int sign, double reachPx) 
         s2 += val * k * k * kFineStepPx * kFineStepPx;
     }
     if (!(s0 > 0)) return -1;
-    const double var = s2 / s0 - (s1 / s0) * (s1 / s0) - 0.92;
+    const double var = s2 / s0 - (s1 / s0) * (s1 / s0) - kLocatorBlurSq;
     return std::sqrt(std::max(0.0, var));
 }
 
@@ -144,23 +144,17 @@ bool RingSearch::kneeOffset(const AlignedProfile &p, int signOuter, double blurP
     return true;
 }
 
-void RingSearch::contactEdgeAtKnee(const AlignedProfile &p, int signOuter, double blurPx, double rampPx, double ringPx,
+bool RingSearch::contactEdgeAtKnee(const AlignedProfile &p, int signOuter, double blurPx, double rampPx, double ringPx,
                                    BoundaryFit *outer)
 {
     double offset = 0;
-    if (!kneeOffset(p, signOuter, blurPx, rampPx, ringPx, rampPx > kKneeRampPx, &offset)) return;
-    outer->a0 += offset;
-    outer->rEqPx += offset;
-    for (int i = 0; i < rays_; ++i) {
-        const double r = outerPts[i].radius.toDouble() + offset;
-        outerPts[i].radius = Q16_16::fromDouble(r);
-        outerPts[i].x = Q16_16::fromDouble(cx + r * rayCos_[i]);
-        outerPts[i].y = Q16_16::fromDouble(cy + r * raySin_[i]);
-    }
+    if (!kneeOffset(p, signOuter, blurPx, rampPx, ringPx, rampPx > kKneeRampPx, &offset)) return false;
+    shiftBoundary(offset, outer, outerPts);
+    return true;
 }
 
 double RingSearch::contactEdgeAtKneeBySector(const double *outerR, int signOuter, double blurPx, double reachPx,
-                                             double ringPx, BoundaryFit *outer)
+                                             double ringPx, BoundaryFit *outer, bool *moved)
 {
     // Seen obliquely, the barrel's shoulder (the rounded corner between the end face and the
     // barrel, a few pixels wide) spreads out on the side facing the camera and shows edge-on
@@ -173,7 +167,7 @@ double RingSearch::contactEdgeAtKneeBySector(const double *outerR, int signOuter
     // nor the reading's finding would see it. Each arc of the ring is judged on its own.
     const int span = rays_ / kRampSectors;
     double offset[kRampSectors] = {}, widest = 0;
-    bool moved = false;
+    *moved = false;
     for (int s = 0; s < kRampSectors; ++s) {
         AlignedProfile p;
         if (!alignedProfile(outerR, &p, false, 0, s)) continue;
@@ -185,9 +179,9 @@ double RingSearch::contactEdgeAtKneeBySector(const double *outerR, int signOuter
         // contact edge falls is followed to where its level ends. Where the shoulder is seen
         // edge-on the level ends at the step itself, and the fit finds the knee there or none.
         if (kneeOffset(p, signOuter, blurPx, ramp, ringPx, ramp > kContactRampPx || signOuter < 0, &offset[s]))
-            moved = true;
+            *moved = true;
     }
-    if (!moved) return widest;
+    if (!*moved) return widest;
     // Between the sectors' middles the offset follows the ring linearly.
     double radius[kRays];
     bool valid[kRays];

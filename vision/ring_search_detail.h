@@ -17,6 +17,9 @@ constexpr int kMaxFine = kMaxFineSamples;
 constexpr int kMaxCoarse = kMaxCoarseSamples;
 // The fine rays' sample spacing (pixels).
 constexpr double kFineStepPx = 1.0;
+// The blur (px²) the fine rays add to an edge before their derivative's peak locates it:
+// bilinear sampling's (about 0.17) and the derivative kernel's (0.75).
+constexpr double kLocatorBlurSq = 0.92;
 // Seen obliquely, the contact edge's ramp is measured and its knee located on this many arcs
 // of the ring apiece (16 or 32 fine rays each).
 constexpr int kRampSectors = 8;

@@ -30,13 +30,15 @@ TEST(SpecimenFields, EveryKeySetsItsValueAndAbsentOnesKeepTheDefaults)
                        {"tolerance_mu", "0.015"},
                        {"tolerance_rel", "0.04"},
                        {"mm_per_px_tol", "0.01"},
-                       {"h_final_tol_mm", "0.1"}},
+                       {"h_final_tol_mm", "0.1"},
+                       {"tone_gamma", "2.2"}},
                       true, &s, &why))
         << why;
     EXPECT_EQ(s.n, 0.21);
     EXPECT_EQ(s.mmPerPx, 0.0153);
     EXPECT_EQ(s.kMpa, 640);
     EXPECT_EQ(s.hFinalMm, 7.4);
+    EXPECT_EQ(s.toneGamma, 2.2);
     EXPECT_EQ(s.d0Mm, 10) << "absent: the default";
     EXPECT_EQ(s.tolerances.n, 0.02);
     EXPECT_EQ(s.tolerances.scaleRel, 0.01);
@@ -63,6 +65,11 @@ TEST(SpecimenFields, EachProblemIsNamed)
     EXPECT_FALSE(build({{"n", "0.2"}, {"mm_per_px", "0.02"}, {"h0_mm", "0"}}, true, &s, &why));
     EXPECT_EQ(why, "h0_mm must be positive");
     EXPECT_FALSE(build({{"n", "nan"}, {"mm_per_px", "0.02"}}, true, &s, &why)) << "only finite numbers";
+    for (const char *gamma : {"0.8", "3.5"}) {
+        SpecimenSpec fresh;
+        EXPECT_FALSE(build({{"n", "0.2"}, {"mm_per_px", "0.02"}, {"tone_gamma", gamma}}, true, &fresh, &why)) << gamma;
+        EXPECT_EQ(why.rfind("tone_gamma must lie in 1-3", 0), 0u) << why;
+    }
 }
 
 } // namespace

@@ -33,7 +33,8 @@ struct Search {
     RingSearch search{}; // the last run's, with its mean profile in meanDeriv
 
     // beyondDrop: RingSearch::runBeyondDrop instead of run.
-    ErrorCode run(const LumaView &v, double r0, double cx, double cy, bool beyondDrop = false)
+    // toneGamma: the frame's tone curve the search is told (FaceSearch::toneGamma).
+    ErrorCode run(const LumaView &v, double r0, double cx, double cy, bool beyondDrop = false, double toneGamma = 1)
     {
         const double rA = kCoarseStart * r0, rB = kCoarseEnd * r0;
         const double step = coarseStep(r0);
@@ -55,6 +56,7 @@ struct Search {
                             meanDeriv.data(),
                             innerPts.data(),
                             outerPts.data()};
+        search.toneGamma = toneGamma;
         m = EndFaceGeometry{};
         return beyondDrop ? search.runBeyondDrop(&m) : search.run(&m);
     }
@@ -279,6 +281,34 @@ TEST(RingSearch, FindsTheRingWhereItIsDarkerThanTheFace)
     EXPECT_NEAR(s.m.outer.rEqPx, face.rOuter, kEdgeTolPx);
     EXPECT_NEAR(s.m.inner.rEqPx, face.rInner, kEdgeTolPx);
     EXPECT_NEAR(s.m.inner.contrast, face.ica - face.face, 2);
+}
+
+// A camera encodes light through its tone curve, which draws each blurred edge's steepest
+// point towards its dark side: a dull ring on a bright face reads both edges outwards, a
+// bright ring on a dull face its original face's edge inwards. Told the curve, the search
+// locates both edges where the optics drew them; untold, u reads off by the shifts.
+TEST(RingSearch, EdgesAreLocatedInLinearLightThroughTheFramesToneCurve)
+{
+    struct Zones {
+        double face, ica, barrel;
+    };
+    for (const Zones z : {Zones{190, 120, 40}, Zones{100, 190, 60}}) {
+        test::SyntheticEndFace face;
+        face.face = z.face, face.ica = z.ica, face.barrel = z.barrel;
+        face.blurSigma = 1.5;
+        face.toneGamma = 2.2;
+        const auto px = face.draw();
+        Search told, untold;
+        ASSERT_EQ(told.run(face.view(px), face.r0, face.cx, face.cy, false, face.toneGamma), ErrorCode::None);
+        ASSERT_EQ(untold.run(face.view(px), face.r0, face.cx, face.cy), ErrorCode::None);
+        SCOPED_TRACE(testing::Message() << "face " << z.face << ", ring " << z.ica << ", barrel " << z.barrel);
+        // Told, both within 0.08 px (the fine rays' sub-pixel peaks leave a few hundredths).
+        EXPECT_NEAR(told.m.inner.rEqPx, face.rInner, 0.08);
+        EXPECT_NEAR(told.m.outer.rEqPx, face.rOuter, 0.08);
+        // Untold, the original face's edge reads towards the darker zone by a quarter pixel or more.
+        const double innerShift = untold.m.inner.rEqPx - face.rInner;
+        EXPECT_GT(z.face > z.ica ? innerShift : -innerShift, 0.25);
+    }
 }
 
 // A dark ring under a ring light (the bench's straight-s1 record 18, aluminium): face 148,

@@ -32,6 +32,9 @@ struct SyntheticEndFace {
     // fixture's shadow edge: shadowGap pixels out, shadowStep grey levels).
     double outlineDx = 0, outlineDy = 0;
     double shadowGap = 0, shadowStep = 0;
+    // A camera's tone curve: the grey levels above are the encoded zones', the steps are
+    // blurred in linear light and each pixel encoded as linear^(1/toneGamma) (1: as drawn).
+    double toneGamma = 1;
 
     // The same specimen at another initial radius.
     void scaleTo(double newR0)
@@ -48,6 +51,9 @@ struct SyntheticEndFace {
     // 0 … 1: how far a point at signed distance d inside a blurred boundary is lit by it.
     double inside(double d) const { return 0.5 * (1 + std::erf(d / (std::sqrt(2.0) * blurSigma))); }
 
+    // An encoded grey level in linear light, on the same 0–255 scale.
+    double lin(double level) const { return toneGamma == 1 ? level : 255 * std::pow(level / 255, toneGamma); }
+
     std::vector<uint8_t> draw() const
     {
         std::vector<uint8_t> px(size_t(width) * height * pixelStep, 128);
@@ -56,13 +62,15 @@ struct SyntheticEndFace {
                 const double dx = x - cx, dy = y - cy;
                 const double r = std::hypot(dx, dy), theta = std::atan2(dy, dx);
                 const double rs = std::hypot(dx - outlineDx, dy - outlineDy);
-                const double g = background + shadowStep * (1 - inside(rMax + shadowGap - rs)) +
-                                 (barrel - background) * inside(rMax - rs) +
-                                 (ica - barrel) * inside(outerAt(theta) - r) + (face - ica) * inside(rInner - r) +
+                const double g = lin(background) + shadowStep * (1 - inside(rMax + shadowGap - rs)) +
+                                 (lin(barrel) - lin(background)) * inside(rMax - rs) +
+                                 (lin(ica) - lin(barrel)) * inside(outerAt(theta) - r) +
+                                 (lin(face) - lin(ica)) * inside(rInner - r) +
                                  highlight *
                                      std::exp(-0.5 * std::pow((rs - (rMax - highlightGap)) / highlightSigma, 2)) *
                                      (1 - inside(outerAt(theta) - r));
-                px[(size_t(y) * width + x) * pixelStep] = uint8_t(std::clamp(std::lround(g), 0L, 255L));
+                const double encoded = toneGamma == 1 ? g : 255 * std::pow(std::max(0.0, g) / 255, 1 / toneGamma);
+                px[(size_t(y) * width + x) * pixelStep] = uint8_t(std::clamp(std::lround(encoded), 0L, 255L));
             }
         return px;
     }
