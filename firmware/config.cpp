@@ -107,12 +107,14 @@ const KeyDef kKeys[] = {
      "this often"},
     {"camera.tone_gamma", "tone_gamma", &Config::toneGamma, nullptr, nullptr, 1, 3, nullptr, true,
      "the frames' tone curve as a power, encoded = linear^(1/tone_gamma): the ring's edges are located in linear "
-     "light (1 = levels proportional to light; about 2.2 for an sRGB-like curve; docs/camera-setup.md)"},
+     "light (1 = levels proportional to light; about 2.2 for an sRGB-like curve; libcamera with camera.tuning "
+     "\"\": the curve the tuning override writes; docs/camera-setup.md)"},
     {"camera.white_balance_k", nullptr, nullptr, &Config::whiteBalanceK, nullptr, -1, 15000, nullptr, false,
      "v4l2: white balance fixed at this colour temperature in kelvin when red/blue gains are not set "
      "(-1: leave the camera's auto white balance)"},
     {"camera.tuning", nullptr, nullptr, nullptr, &Config::cameraTuning, 0, 4096, nullptr, false,
-     "libcamera: \"\" the sensor's tuning file with adaptive contrast off (a fixed tone curve), "
+     "libcamera: \"\" the sensor's tuning file with adaptive contrast off and the tone curve camera.tone_gamma "
+     "says (linear at 1), "
      "\"system\" libcamera's own file as installed, or the path of a tuning file"},
     {"camera.probe_ms", nullptr, nullptr, &Config::cameraProbeMs, nullptr, 0, 3600000, nullptr, false,
      "idle: a frame this often (none while frames flow) finds a camera lost between presses (0: never)"},

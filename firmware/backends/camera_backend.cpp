@@ -48,6 +48,7 @@ std::unique_ptr<hal::Camera> makeLibcamera(const Config &cfg, hal::Clock &clock,
     csi.camera = cfg.cameraId;
     csi.width = cfg.cameraWidth;
     csi.height = cfg.cameraHeight;
+    csi.toneGamma = cfg.toneGamma;
     csi.tuning = cfg.cameraTuning.empty() || cfg.cameraTuning == "system" ? cfg.cameraTuning
                                                                           : pathFromConfig(cfg, cfg.cameraTuning);
     if (asked.exposureUs >= 0) csi.controls.exposureUs = asked.exposureUs;

@@ -377,8 +377,8 @@ Error LibcameraCamera::prepareTuning(const std::string &model, bool *restart)
         tuningDir_ = tmpl;
     }
     TuningOverride written, mono; // a mono sensor's file is <model>_mono.json (loadIPA)
-    Error e = writeFixedToneTuning(kIpaDataDirs, model, tuningDir_, &written);
-    if (e.ok()) e = writeFixedToneTuning(kIpaDataDirs, model + "_mono", tuningDir_, &mono);
+    Error e = writeFixedToneTuning(kIpaDataDirs, model, tuningDir_, options_.toneGamma, &written);
+    if (e.ok()) e = writeFixedToneTuning(kIpaDataDirs, model + "_mono", tuningDir_, options_.toneGamma, &mono);
     tuningModel_ = model;
     if (!e.ok()) {
         // The camera still works with libcamera's own file: measure, and say so everywhere.
@@ -394,7 +394,10 @@ Error LibcameraCamera::prepareTuning(const std::string &model, bool *restart)
     if (old && *old && std::string(old).find(tuningDir_) == std::string::npos) path += std::string(":") + old;
     ::setenv("LIBCAMERA_IPA_CONFIG_PATH", path.c_str(), 1);
     const std::string &from = written.files ? written.source : mono.source;
-    tuningNote_ = "tuning: " + from.substr(from.rfind('/') + 1) + " with adaptive contrast off";
+    char curve[48];
+    std::snprintf(curve, sizeof curve, options_.toneGamma == 1 ? "a linear tone curve" : "tone curve linear^(1/%g)",
+                  options_.toneGamma);
+    tuningNote_ = "tuning: " + from.substr(from.rfind('/') + 1) + " with adaptive contrast off and " + curve;
     *restart = true;
     return {};
 }

@@ -40,6 +40,9 @@ struct LibcameraOptions {
     // (LIBCAMERA_RPI_TUNING_FILE, for every camera of the process).
     std::string tuning;
     std::string tuningDir;
+    // The tone curve the override writes, linear^(1/toneGamma) (1: linear luma); the
+    // pipeline is told the same (camera.tone_gamma). A tuning file of one's own keeps its curve.
+    double toneGamma = 1;
 };
 
 // What configure() set up, for `status`, the journal and the hardware-in-the-loop test.

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <system_error>
@@ -147,10 +148,52 @@ Error withoutAdaptiveContrast(std::string_view tuning, std::string *out)
     return {};
 }
 
+Error withFixedTone(std::string_view tuning, double gamma, std::string *out)
+{
+    if (!(gamma >= 1 && gamma <= 3)) return Error::make(Errc::Invalid, "tone curve: gamma must lie in 1-3");
+    std::string noCe;
+    if (Error e = withoutAdaptiveContrast(tuning, &noCe); !e.ok()) return e;
+    std::string curve = "[ 0, 0";
+    if (gamma == 1) {
+        curve += ", 65535, 65535";
+    } else {
+        constexpr int kPoints = 32;
+        for (int i = 1; i <= kPoints; ++i) {
+            const double x = double(i * i) / (kPoints * kPoints);
+            curve += ", " + std::to_string(std::lround(65535 * x)) + ", " +
+                     std::to_string(std::lround(65535 * std::pow(x, 1 / gamma)));
+        }
+    }
+    curve += " ]";
+    // The block was found and is closed (withoutAdaptiveContrast checked it).
+    constexpr std::string_view kBlock = "\"rpi.contrast\"", kKey = "\"gamma_curve\"";
+    const std::string_view text = noCe;
+    size_t open = skipSpace(text, text.find(kBlock) + kBlock.size());
+    if (text[open] == ':') open = skipSpace(text, open + 1);
+    const size_t close = endOfContainer(text, open);
+    const size_t key = memberAt(text, open, close, kKey);
+    if (key == std::string_view::npos) {
+        out->assign(text.substr(0, open + 1));
+        out->append(" \"gamma_curve\": " + curve + ",");
+        out->append(text.substr(open + 1));
+        return {};
+    }
+    size_t value = skipSpace(text, key + kKey.size());
+    if (value < close && text[value] == ':') value = skipSpace(text, value + 1);
+    const size_t valueEnd = value < close && text[value] == '[' ? endOfContainer(text, value) : std::string_view::npos;
+    if (valueEnd == std::string_view::npos || valueEnd > close)
+        return Error::make(Errc::BadFormat, "tuning file: \"gamma_curve\" is not a list");
+    out->assign(text.substr(0, value));
+    out->append(curve);
+    out->append(text.substr(valueEnd));
+    return {};
+}
+
 Error writeFixedToneTuning(std::span<const std::string_view> dataDirs, std::string_view model,
-                           const std::string &outDir, TuningOverride *out)
+                           const std::string &outDir, double gamma, TuningOverride *out)
 {
     *out = {};
+    if (!(gamma >= 1 && gamma <= 3)) return Error::make(Errc::Invalid, "tone curve: gamma must lie in 1-3");
     if (model.empty()) return {};
     const std::string name = std::string(model) + ".json";
     std::string text, fixed;
@@ -159,7 +202,7 @@ Error writeFixedToneTuning(std::span<const std::string_view> dataDirs, std::stri
             const std::string from = std::string(dir) + "/" + std::string(module) + "/" + name;
             if (!isFile(from)) continue;
             if (Error e = readFile(from, &text); !e.ok()) return e;
-            if (Error e = withoutAdaptiveContrast(text, &fixed); !e.ok())
+            if (Error e = withFixedTone(text, gamma, &fixed); !e.ok())
                 return Error::make(e.code, from + ": " + e.message);
             const std::string toDir = outDir + "/" + std::string(module);
             std::error_code ec;

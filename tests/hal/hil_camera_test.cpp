@@ -74,6 +74,7 @@ TEST(HilCamera, TheLumaIsTheSensorModeTheChoiceNamesWithTheToneCurveFixed)
             EXPECT_EQ(want.outWidth, k.width) << k.model << ": not its full resolution";
             EXPECT_EQ(want.outHeight, k.height) << k.model << ": not its full resolution";
             EXPECT_NE(m.tuning.find("adaptive contrast off"), std::string::npos) << m.tuning;
+            EXPECT_NE(m.tuning.find("tone curve"), std::string::npos) << m.tuning;
         }
     hal::CapturedFrame f;
     const hal::Error e = gCamera->capture(3000, &f);

@@ -1,4 +1,5 @@
-// The fixed-tone tuning override: adaptive contrast off in a Raspberry Pi tuning file, and
+// The fixed-tone tuning override: adaptive contrast off and the told tone curve in a Raspberry
+// Pi tuning file, and
 // the override folder laid out as libcamera searches LIBCAMERA_IPA_CONFIG_PATH
 // ("<dir>/<ipa module>/<model>.json", IPAProxy::configurationFile). The tuning texts here
 // have the shape of the Raspberry Pi files (version 2: an "algorithms" list of one-key
@@ -7,11 +8,13 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "hal/libcamera/tuning.h"
 
@@ -80,6 +83,36 @@ TEST(Tuning, AFileWithoutAContrastBlockIsRefused)
     EXPECT_EQ(hal::withoutAdaptiveContrast(R"({ "rpi.contrast": { "ce_enable": 1 )", &out).code, hal::Errc::BadFormat);
 }
 
+TEST(Tuning, TheToneCurveIsTheOneThePipelineIsTold)
+{
+    std::string out;
+    ASSERT_TRUE(hal::withFixedTone(kVersion2, 1.0, &out).ok());
+    EXPECT_NE(out.find("\"gamma_curve\": [ 0, 0, 65535, 65535 ],"), std::string::npos) << out;
+    EXPECT_EQ(out.find("5040"), std::string::npos) << "the sensor's curve is gone";
+    EXPECT_NE(out.find("\"ce_enable\": 0,"), std::string::npos);
+    EXPECT_EQ(count(out, "\"ce_enable\": 1"), 2) << "other blocks keep theirs";
+
+    // A power curve: every point on linear^(1/2.2), rising, from (0, 0) to (65535, 65535).
+    ASSERT_TRUE(hal::withFixedTone(kVersion2, 2.2, &out).ok());
+    const size_t open = out.find('[', out.find("\"gamma_curve\""));
+    const size_t close = out.find(']', open);
+    std::stringstream list(out.substr(open + 1, close - open - 1));
+    std::vector<double> v;
+    for (std::string item; std::getline(list, item, ',');) v.push_back(std::stod(item));
+    ASSERT_EQ(v.size(), 66u);
+    EXPECT_EQ(v.front(), 0);
+    EXPECT_EQ(v.back(), 65535);
+    for (size_t i = 2; i < v.size(); i += 2) {
+        EXPECT_GT(v[i], v[i - 2]);
+        EXPECT_NEAR(v[i + 1], 65535 * std::pow(v[i] / 65535, 1 / 2.2), 1.0) << "point " << i / 2;
+    }
+    // Where the block has no curve, one is added; an impossible exponent is refused.
+    ASSERT_TRUE(hal::withFixedTone(R"({ "rpi.contrast": { "ce_enable": 1 } })", 1.0, &out).ok());
+    EXPECT_EQ(out, R"({ "rpi.contrast": { "gamma_curve": [ 0, 0, 65535, 65535 ], "ce_enable": 0 } })");
+    EXPECT_EQ(hal::withFixedTone(kVersion2, 0.5, &out).code, hal::Errc::Invalid);
+    EXPECT_EQ(hal::withFixedTone(R"({ "rpi.contrast": { "gamma_curve": 3 } })", 1.0, &out).code, hal::Errc::BadFormat);
+}
+
 class TuningFolders : public ::testing::Test {
 protected:
     void SetUp() override
@@ -108,11 +141,13 @@ TEST_F(TuningFolders, EveryPlatformsFileForTheSensorIsOverriddenFromTheFirstDire
     const std::string_view dirs[] = {etc, share};
     const std::string out = (root_ / "override").string();
     hal::TuningOverride o;
-    ASSERT_TRUE(hal::writeFixedToneTuning(dirs, "imx708", out, &o).ok());
+    ASSERT_TRUE(hal::writeFixedToneTuning(dirs, "imx708", out, 1.0, &o).ok());
     EXPECT_EQ(o.files, 2);
     EXPECT_EQ(o.source, etc + "/rpi/pisp/imx708.json");
-    EXPECT_EQ(slurp(out + "/rpi/pisp/imx708.json"), R"({ "rpi.contrast": { "ce_enable": 0, "from": "etc" } })");
-    EXPECT_EQ(slurp(out + "/rpi/vc4/imx708.json"), R"({ "rpi.contrast": { "ce_enable": 0, "from": "share-vc4" } })");
+    EXPECT_EQ(slurp(out + "/rpi/pisp/imx708.json"),
+              R"({ "rpi.contrast": { "gamma_curve": [ 0, 0, 65535, 65535 ], "ce_enable": 0, "from": "etc" } })");
+    EXPECT_EQ(slurp(out + "/rpi/vc4/imx708.json"),
+              R"({ "rpi.contrast": { "gamma_curve": [ 0, 0, 65535, 65535 ], "ce_enable": 0, "from": "share-vc4" } })");
     EXPECT_FALSE(std::filesystem::exists(out + "/rpi/vc4/imx477.json")); // only the sensor in use
 }
 
@@ -121,7 +156,7 @@ TEST_F(TuningFolders, AnUnknownSensorWritesNothing)
     const std::string share = (root_ / "share").string();
     const std::string_view dirs[] = {share};
     hal::TuningOverride o;
-    ASSERT_TRUE(hal::writeFixedToneTuning(dirs, "imx999", (root_ / "override").string(), &o).ok());
+    ASSERT_TRUE(hal::writeFixedToneTuning(dirs, "imx999", (root_ / "override").string(), 1.0, &o).ok());
     EXPECT_EQ(o.files, 0);
     EXPECT_FALSE(std::filesystem::exists(root_ / "override"));
 }
@@ -132,7 +167,7 @@ TEST_F(TuningFolders, ABrokenSystemFileIsAnErrorThatNamesIt)
     const std::string share = (root_ / "share").string();
     const std::string_view dirs[] = {share};
     hal::TuningOverride o;
-    const hal::Error e = hal::writeFixedToneTuning(dirs, "ov5647", (root_ / "override").string(), &o);
+    const hal::Error e = hal::writeFixedToneTuning(dirs, "ov5647", (root_ / "override").string(), 1.0, &o);
     EXPECT_EQ(e.code, hal::Errc::BadFormat);
     EXPECT_NE(e.message.find("raspberrypi/ov5647.json"), std::string::npos) << e.message;
 }
