@@ -105,7 +105,7 @@ const KeyDef kKeys[] = {
     {"camera.retry_ms", nullptr, nullptr, &Config::cameraRetryMs, nullptr, 100, 600000, nullptr, false,
      "a missing or silent camera, and a missing display, serial line, button or LED line, is looked for again "
      "this often"},
-    {"camera.tone_gamma", "tone_gamma", &Config::toneGamma, nullptr, nullptr, 1, 3, nullptr, true,
+    {"camera.tone_gamma", nullptr, &Config::toneGamma, nullptr, nullptr, 1, 3, nullptr, false,
      "the frames' tone curve as a power, encoded = linear^(1/tone_gamma): the ring's edges are located in linear "
      "light (1 = levels proportional to light; about 2.2 for an sRGB-like curve; libcamera with camera.tuning "
      "\"\": the curve the tuning override writes; docs/camera-setup.md)"},
