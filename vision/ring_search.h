@@ -150,6 +150,9 @@ struct RingSearch {
         int k = 0;            // its sample offset from the contact edge (negative: inside)
         int sign = 0;         // rising (+1) or falling (−1) going outwards
         int32_t strength = 0; // its derivative, in the fine derivative rows' units
+        // Where the contact edge's own hump of the derivative ends walking in (sample offset,
+        // ≤ 0): the profile inside it is the ring's level, beyond it the contact edge's fall.
+        int flank = 0;
     };
     OriginalFaceName nameOriginalFace(const AlignedProfile &p) const;
     // The named edge on every fine ray, in a window following the contact edge, and its fit

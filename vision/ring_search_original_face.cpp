@@ -34,6 +34,7 @@ RingSearch::OriginalFaceName RingSearch::nameOriginalFace(const AlignedProfile &
                4 * signAtEdge * p.deriv[flank - 1] >= top)
             --flank;
     }
+    name.flank = flank - K;
     for (int k = -K + 2; k <= std::min(-2, flank - 1 - K); ++k) {
         const int idx = k + K;
         if (!isExtremum(p.deriv, idx) || std::abs(p.deriv[idx]) < innerMin || std::abs(p.deriv[idx]) <= name.strength)
@@ -78,7 +79,11 @@ bool RingSearch::originalFaceOnRays(OriginalFaceName name, const AlignedProfile 
         prefix[0] = 0;
         for (int k = 0; k < p.count(); ++k) prefix[k + 1] = prefix[k] + p.level[k];
         const int idx0 = name.k + K;
-        for (int j = std::max(W, idx0 - W); j <= std::min(K - 2 - W, idx0 + W); ++j) {
+        // The box's outer half ends where the contact edge's fall begins (its derivative's
+        // hump, name.flank): a contact edge ramping away falls from several pixels inside its
+        // peak, and a box reaching into that fall reads it as the original face's step.
+        const int last = std::min({K - 2 - W, K + name.flank - 1 - W, idx0 + W});
+        for (int j = std::max(W, idx0 - W); j <= last; ++j) {
             const int64_t diff = (prefix[j + W + 1] - prefix[j + 1]) - (prefix[j] - prefix[j - W]);
             const int32_t v = int32_t(name.sign * diff / (int64_t(W) * 8)); // 1/32 grey
             if (v > boxV) {
