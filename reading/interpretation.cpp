@@ -31,6 +31,22 @@ struct FaceInputs {
     bool calibrated, oblique;
 };
 
+// No ray saw the original face's edge and the outline does not vouch for the ring the profile
+// read: the face may show no edge of its own (as bright as the ring, its turning marks alone
+// telling them apart), and the ring read is then the contact edge's own fall (1456 × 1088
+// photographs of such faces read μ 0.04–0.19 low). The edge may lie anywhere out to the widest
+// ring searched: u's σ that spans that μ, uniform, at the slope of μ(u) where the ring reads.
+double unseenRingSigmaMm(const MuFunction &F, const SpecimenSpec &spec, double uMm, double r, double mu)
+{
+    const double widest = vision::kWidestRingOfR0 * 0.5 * spec.d0Mm;
+    if (!(widest > uMm)) return 0;
+    const double h = std::max(1e-4, 0.01 * uMm);
+    const double slope = std::fabs(F.at(uMm + h, r, spec.n) - F.at(std::max(0.0, uMm - h), r, spec.n)) /
+                         (uMm + h - std::max(0.0, uMm - h));
+    const double spanMu = std::fabs(F.at(widest, r, spec.n) - mu);
+    return slope > 0 ? spanMu / (slope * std::sqrt(12.0)) : (widest - uMm) / std::sqrt(12.0);
+}
+
 // The steps after the face is in millimetres, shared by images and radii; f: the image's own
 // findings so far.
 void readFace(const FaceInputs &in, uint32_t f, Reading *out)
@@ -43,7 +59,7 @@ void readFace(const FaceInputs &in, uint32_t f, Reading *out)
     const double scaleRelSigma = in.scaleRelSigma, silhouetteSigma = in.silhouetteSigma;
     const bool calibrated = in.calibrated, oblique = in.oblique;
     const MuFunction F(spec, model);
-    const double u = out->face.uMm, n = spec.n, uSigmaEdgesMm = edges.uSigmaEdgesMm;
+    const double u = out->face.uMm, n = spec.n;
     ScaleAndReduction declared;
     declared.pk = scaleRelSigma * scaleRelSigma;
     declared.pr = assumed.sigma * assumed.sigma;
@@ -79,14 +95,17 @@ void readFace(const FaceInputs &in, uint32_t f, Reading *out)
 
     const MuReading read = readMu(F, model, spec, uF, rF, assumed.declared);
     out->mu = read.estimate.mu;
+    if ((f & kFlagNarrowRing) &&
+        narrowRingCorroborated(F, spec, uF, rF, out->mu, edges.narrowWidenMm * uF / u, silhouette))
+        f &= ~kFlagNarrowRing;
+    double uSigmaEdgesMm = edges.uSigmaEdgesMm;
+    if ((f & kFlagNarrowRing) && edges.ringFromProfile)
+        uSigmaEdgesMm = std::hypot(uSigmaEdgesMm, unseenRingSigmaMm(F, spec, uF, rF, out->mu));
     out->budget = budgetOf(F, model, spec, uF, rF, sr, uSigmaEdgesMm, read.bias);
     out->muSigma = combinedSigma(out->budget);
     out->advice = adviseInput(F, model, spec, uF, rF, sr, uSigmaEdgesMm, read.bias, assumed.declared, calibrated,
                               scaleRelSigma, distanceAdvice ? &withDistance : nullptr);
     out->advice.reductionUnchecked = !assumed.declared && !explained;
-    if ((f & kFlagNarrowRing) &&
-        narrowRingCorroborated(F, spec, uF, rF, out->mu, edges.narrowWidenMm * uF / u, silhouette))
-        f &= ~kFlagNarrowRing;
     const ModelEstimate asDeclared = model.estimate({u, n, spec.kMpa, spec.d0Mm, spec.h0Mm, spec.hFinalMm});
     out->declared = {asDeclared.mu, asDeclared.dMuDu};
     out->nominalMu = F.at(u, kNominalReduction, n);

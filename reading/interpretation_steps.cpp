@@ -344,6 +344,7 @@ EdgeSigma edgeSigma(const EndFaceGeometry &g, const PlaneMapping &p, bool calibr
     e.sharedEllipse = p.inner.ellipticity > 0.012 && p.outer.ellipticity > 0.012 && axisDiff < 20;
     e.uSigmaEdgesMm = std::hypot(e.uSigmaMm, std::hypot(kInnerEdgeModelMm, kOuterEdgeModelMm));
     e.narrowWidenMm = kNarrowRingWidenPx * p.mmPerPx;
+    e.ringFromProfile = (g.imageFlags & vision::kImageNarrowRingFit) != 0;
     if (contactEdgeOnRamp(g)) e.uSigmaEdgesMm = std::hypot(e.uSigmaEdgesMm, g.contactRampPx * p.mmPerPx);
     if (!calibrated && e.sharedEllipse) {
         const double ell = std::min(p.inner.ellipticity, p.outer.ellipticity);

@@ -45,6 +45,8 @@ struct EdgeSigma {
     double uSigmaEdgesMm = 0;
     bool sharedEllipse = false; // both boundaries elliptical along one axis
     double narrowWidenMm = 0;   // how much wider a ring read narrow may read than it is
+    // No ray saw the original face's edge: the profile alone read the ring (narrow_ring).
+    bool ringFromProfile = false;
 };
 EdgeSigma edgeSigma(const vision::EndFaceGeometry &g, const PlaneMapping &p, bool calibrated);
 

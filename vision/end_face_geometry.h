@@ -77,6 +77,10 @@ struct FaceSearch {
     double toneGamma = 1;
 };
 
+// The widest ring the search looks for, as a fraction of the specimen's initial radius (u up
+// to 1.6 mm on a 10 mm specimen, beyond any friction the models cover).
+inline constexpr double kWidestRingOfR0 = 0.32;
+
 // The contact edge's ramp (√(w_o² − w_i²), pixels) beyond which the barrel's shading ramps away
 // from the flat face rather than stepping: rendered barrels ramping away measure 1.5–3.5 px;
 // drawn steps under 1.0, the development set's and the reference photographs' contact edges

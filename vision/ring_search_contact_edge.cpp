@@ -16,8 +16,6 @@ namespace icacam::vision {
 using namespace ring_search_detail;
 
 namespace {
-// Widest ICA searched, as a fraction of the initial radius.
-constexpr double kMaxU = 0.32;
 // How many rays the edge-following mean profile samples (it only names the face edge; the
 // fine rays locate it).
 constexpr int kAlignRays = kFineRays / 8;
@@ -51,7 +49,7 @@ bool RingSearch::alignedProfile(const double *outerR, AlignedProfile *p, bool on
     const int end = sector < 0 ? rays_ : first + rays_ / kRampSectors;
     const int stride = sector < 0 ? rays_ / kAlignRays : 1;
     const int rays = (end - first) / stride; // both divide: rays_ is a power of two of 64 or more
-    p->K = halfSpan > 0 ? halfSpan : int(kMaxU * r0 + 2);
+    p->K = halfSpan > 0 ? halfSpan : int(kWidestRingOfR0 * r0 + 2);
     if (halfSpan > 0) p->M = halfSpan;
     if (p->count() > AlignedProfile::kSpan) return false;
     const int K = p->K, count = p->count();

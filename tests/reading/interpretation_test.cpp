@@ -312,6 +312,27 @@ TEST(Interpretation, AnotherHeightTheImageSaysIsAFindingThoughTheMixtureStaysNea
     EXPECT_LT(std::fabs(r.mu - r.nominalMu), 0.05 * r.mu) << "the mixture's μ stays within the tolerance";
 }
 
+// A ring the profile alone read (no ray saw the original face's edge) may be the contact
+// edge's own fall beside a face as bright as the ring: where the outline does not vouch for
+// it, U reaches the μ of a ring as wide as the search looks. Read narrow on a specimen whose
+// ring is of μ 0.15, that μ lies within U; the same ring located on the rays keeps its U.
+TEST(Interpretation, ARingTheRaysDidNotSeeMayBeWiderThanRead)
+{
+    EndFaceGeometry g = face(1.0, false);
+    g.rMaxPx = 0;                      // nothing to vouch for the ring
+    g.inner.rEqPx = g.outer.rEqPx - 6; // the profile's two steps, 6 px apart
+    const Reading seen = interpret(g);
+    g.imageFlags |= vision::kImageNarrowRingFit;
+    const Reading unseen = interpret(g);
+    EXPECT_EQ(unseen.status, Status::Warn);
+    EXPECT_TRUE(unseen.flags & kFlagNarrowRing);
+    EXPECT_DOUBLE_EQ(unseen.mu, seen.mu);
+    EXPECT_LT(unseen.mu, kMu - 0.05) << "read low";
+    EXPECT_LT(2 * seen.muSigma, kMu - seen.mu) << "the ring as read does not cover the truth";
+    EXPECT_GT(2 * unseen.muSigma, kMu - unseen.mu) << "the ring that may be wider does";
+    EXPECT_GT(unseen.budget.edges, unseen.budget.reduction);
+}
+
 // An outline on fewer than half the rays was not found: the view is one without a silhouette
 // (no_silhouette), not one whose silhouette contradicts the barrel (silhouette_unreliable).
 TEST(Interpretation, AnOutlineOnFewRaysIsNoSilhouette)
