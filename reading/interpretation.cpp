@@ -40,9 +40,7 @@ double unseenRingSigmaMm(const MuFunction &F, const SpecimenSpec &spec, double u
 {
     const double widest = vision::kWidestRingOfR0 * 0.5 * spec.d0Mm;
     if (!(widest > uMm)) return 0;
-    const double h = std::max(1e-4, 0.01 * uMm);
-    const double slope = std::fabs(F.at(uMm + h, r, spec.n) - F.at(std::max(0.0, uMm - h), r, spec.n)) /
-                         (uMm + h - std::max(0.0, uMm - h));
+    const double slope = std::fabs(F.slopeU(uMm, r, spec.n));
     const double spanMu = std::fabs(F.at(widest, r, spec.n) - mu);
     return slope > 0 ? spanMu / (slope * std::sqrt(12.0)) : (widest - uMm) / std::sqrt(12.0);
 }

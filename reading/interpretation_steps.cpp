@@ -394,6 +394,12 @@ MuFunction::MuFunction(const SpecimenSpec &spec, const FrictionModel &model)
         : spec_(spec), model_(model), carry_(model, model.name())
 {}
 
+double MuFunction::slopeU(double u, double r, double n) const
+{
+    const double h = std::max(1e-4, 0.01 * u), lo = std::max(0.0, u - h);
+    return (at(u + h, r, n) - at(lo, r, n)) / (u + h - lo);
+}
+
 ModelEstimate MuFunction::estimate(double u, double r, double n) const
 {
     const friction::ModelInputs in{u, n, spec_.kMpa, spec_.d0Mm, spec_.h0Mm, spec_.h0Mm * (1 - r)};
@@ -709,8 +715,8 @@ UncertaintyBudget budgetOf(const MuFunction &F, const FrictionModel &model, cons
                            double rF, const ScaleAndReduction &sr, double uSigmaEdgesMm, double bias)
 {
     const double n = spec.n;
-    const double hu = std::max(1e-4, 0.01 * uF), hr = 0.005, hn = std::max(1e-4, spec.tolerances.n);
-    const double gU = (F.at(uF + hu, rF, n) - F.at(std::max(0.0, uF - hu), rF, n)) / (uF + hu - std::max(0.0, uF - hu));
+    const double hr = 0.005, hn = std::max(1e-4, spec.tolerances.n);
+    const double gU = F.slopeU(uF, rF, n);
     const double gR = (F.at(uF, rF + hr, n) - F.at(uF, rF - hr, n)) / (2 * hr);
     const double gN = (F.at(uF, rF, n + hn) - F.at(uF, rF, n - hn)) / (2 * hn);
     const double a = -uF * gU; // per unit relative scale error

@@ -64,6 +64,8 @@ public:
     MuFunction(const SpecimenSpec &spec, const friction::FrictionModel &model);
     double at(double u, double r, double n) const { return estimate(u, r, n).mu; }
     friction::ModelEstimate estimate(double u, double r, double n) const;
+    // dμ/du at u (a central difference over 1 % of u, one-sided where it would cross 0).
+    double slopeU(double u, double r, double n) const;
 
 private:
     const SpecimenSpec &spec_;

@@ -1,5 +1,6 @@
 #include "vision/tone_curve.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "vision/normal_cdf.h"
@@ -26,31 +27,20 @@ double toneEdgeShiftPx(double darkLevel, double brightLevel, double blurPx, doub
         const double z = x / blurPx;
         return std::exp(k * std::log(d + (1 - d) * normalCdf(z))) * normalPdf(z);
     };
-    if (!(smoothPx2 > 0)) {
-        // Unsmoothed, the slope peaks where k(1 − d)φ(z)/(d + (1 − d)Φ(z)) = z: bisection on
-        // [−4, 0], where the left side minus z falls through zero.
-        auto g = [&](double z) { return k * (1 - d) * normalPdf(z) / (d + (1 - d) * normalCdf(z)) - z; };
-        double lo = -4, hi = 0;
-        for (int i = 0; i < 40; ++i) {
-            const double mid = 0.5 * (lo + hi);
-            (g(mid) > 0 ? lo : hi) = mid;
-        }
-        return -0.5 * (lo + hi) * blurPx;
-    }
-    // Smoothed: the slope convolved with the locator's Gaussian, its peak found by golden
-    // section between the unsmoothed step's centre and 4 blurs on the dark side (the smoothed
-    // slope is unimodal there).
-    const double s = std::sqrt(smoothPx2);
+    // The slope convolved with the locator's Gaussian (one tap where it does not smooth), its
+    // peak found by golden section between the step's centre and 4 blurs on the dark side
+    // (the smoothed slope is unimodal there).
+    const int taps = smoothPx2 > 0 ? kTaps : 1;
+    const double s = std::sqrt(std::max(0.0, smoothPx2));
     double tap[kTaps], weight[kTaps], sum = 0;
-    for (int j = 0; j < kTaps; ++j) {
-        const double t = (j - (kTaps - 1) / 2) * (7.0 * s / (kTaps - 1));
-        tap[j] = t;
-        weight[j] = std::exp(-0.5 * t * t / smoothPx2);
+    for (int j = 0; j < taps; ++j) {
+        tap[j] = (j - (taps - 1) / 2) * (7.0 * s / (kTaps - 1));
+        weight[j] = taps > 1 ? std::exp(-0.5 * tap[j] * tap[j] / smoothPx2) : 1;
         sum += weight[j];
     }
     auto smoothed = [&](double x) {
         double v = 0;
-        for (int j = 0; j < kTaps; ++j) v += weight[j] * slope(x - tap[j]);
+        for (int j = 0; j < taps; ++j) v += weight[j] * slope(x - tap[j]);
         return v / sum;
     };
     constexpr double kInvPhi = 0.6180339887498949;

@@ -109,22 +109,30 @@ bool isFile(const std::string &path)
     return ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode);
 }
 
+// The "rpi.contrast" block: its opening brace and the index just past its closing one.
+Error contrastBlock(std::string_view tuning, size_t *open, size_t *close)
+{
+    constexpr std::string_view kBlock = "\"rpi.contrast\"";
+    const size_t block = tuning.find(kBlock);
+    if (block == std::string_view::npos)
+        return Error::make(Errc::BadFormat, "tuning file has no \"rpi.contrast\" block");
+    *open = skipSpace(tuning, block + kBlock.size());
+    if (*open < tuning.size() && tuning[*open] == ':') *open = skipSpace(tuning, *open + 1);
+    if (*open >= tuning.size() || tuning[*open] != '{')
+        return Error::make(Errc::BadFormat, "tuning file: \"rpi.contrast\" is not an object");
+    *close = endOfContainer(tuning, *open);
+    if (*close == std::string_view::npos)
+        return Error::make(Errc::BadFormat, "tuning file: \"rpi.contrast\" is not closed");
+    return {};
+}
+
 } // namespace
 
 Error withoutAdaptiveContrast(std::string_view tuning, std::string *out)
 {
-    constexpr std::string_view kBlock = "\"rpi.contrast\"";
     constexpr std::string_view kKey = "\"ce_enable\"";
-    const size_t block = tuning.find(kBlock);
-    if (block == std::string_view::npos)
-        return Error::make(Errc::BadFormat, "tuning file has no \"rpi.contrast\" block");
-    size_t open = skipSpace(tuning, block + kBlock.size());
-    if (open < tuning.size() && tuning[open] == ':') open = skipSpace(tuning, open + 1);
-    if (open >= tuning.size() || tuning[open] != '{')
-        return Error::make(Errc::BadFormat, "tuning file: \"rpi.contrast\" is not an object");
-    const size_t close = endOfContainer(tuning, open);
-    if (close == std::string_view::npos)
-        return Error::make(Errc::BadFormat, "tuning file: \"rpi.contrast\" is not closed");
+    size_t open = 0, close = 0;
+    if (Error e = contrastBlock(tuning, &open, &close); !e.ok()) return e;
     const size_t key = memberAt(tuning, open, close, kKey);
     if (key == std::string_view::npos) {
         // Absent means enabled (Contrast::read defaults it to 1): say 0 first thing.
@@ -165,12 +173,10 @@ Error withFixedTone(std::string_view tuning, double gamma, std::string *out)
         }
     }
     curve += " ]";
-    // The block was found and is closed (withoutAdaptiveContrast checked it).
-    constexpr std::string_view kBlock = "\"rpi.contrast\"", kKey = "\"gamma_curve\"";
+    constexpr std::string_view kKey = "\"gamma_curve\"";
     const std::string_view text = noCe;
-    size_t open = skipSpace(text, text.find(kBlock) + kBlock.size());
-    if (text[open] == ':') open = skipSpace(text, open + 1);
-    const size_t close = endOfContainer(text, open);
+    size_t open = 0, close = 0;
+    if (Error e = contrastBlock(text, &open, &close); !e.ok()) return e;
     const size_t key = memberAt(text, open, close, kKey);
     if (key == std::string_view::npos) {
         out->assign(text.substr(0, open + 1));
