@@ -43,6 +43,7 @@ struct PhotoBenchOptions {
     int first = 1;                          // the first record's number (a record is the same at any count)
     bool small = false;                     // 640 × 480 (the CI size)
     std::string profilesCsv;                // the FE barrel profiles (barrel_profile.h)
+    double barrelFlatness = 1;              // the side's shape flattened about its widest section (photo_record.h)
     std::string povray = "povray";          // the renderer's binary
     std::string quality = "+A0.2 +AM2 +R1"; // POV-Ray's anti-aliasing: adaptive, one level
     bool keepRender = false;                // keep the linear 16-bit render beside the scene

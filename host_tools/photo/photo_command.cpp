@@ -19,7 +19,7 @@ std::string usage()
     const PhotoBenchOptions d;
     return "usage: icacam synth --renderer povray --out DIR [--condition LIST|all] [--count N] [--seed S]\n"
            "                    [--first K] [--profile LIST|all] [--small] [--quality 'POV-Ray options']\n"
-           "                    [--profiles CSV] [--povray PATH] [--keep-render] [--labels]\n"
+           "                    [--profiles CSV] [--flat-barrel Q] [--povray PATH] [--keep-render] [--labels]\n"
            "                    [--encoding sensor|png|jpeg] [--quiet]\n"
            "       icacam synth --renderer povray --make-profiles CSV --fe-work DIR [--ccx PATH]\n"
            "Photographs rendered with real light transport (POV-Ray): a ring light of 12-32 LEDs about the\n"
@@ -45,6 +45,9 @@ std::string usage()
            "  --quiet       no line per record on stderr\n"
            "  --keep-render keep POV-Ray's linear 16-bit render in DIR/scenes/\n"
            "  --profiles    the FE barrel profiles (default " ICACAM_PHOTOBENCH_PROFILES ")\n"
+           "  --flat-barrel Q  the side flattened about its widest section: each FE point at zeta^(1/Q) of\n"
+           "                the half height from the mid-plane (default 1, the FE's shape; 3-4 reach R_max\n"
+           "                within 1-2 mm of the end face, as a parametric barrel does)\n"
            "  --make-profiles CSV --fe-work DIR: solve (or reuse in DIR) the FE cases of the profile grid\n"
            "                with CalculiX and write their free surfaces to CSV\n";
 }
@@ -90,6 +93,8 @@ int photoSynthCommand(const std::vector<std::string> &args)
             opt.quality = opts.value();
         else if (opts.is("--profiles"))
             opt.profilesCsv = opts.value();
+        else if (opts.is("--flat-barrel"))
+            opt.barrelFlatness = opts.number(1, 10);
         else if (opts.is("--povray"))
             opt.povray = opts.value();
         else if (opts.is("--keep-render"))

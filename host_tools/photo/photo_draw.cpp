@@ -175,7 +175,7 @@ bool fitsFrame(const PhotoScene &s, double marginMm)
 } // namespace
 
 PhotoRecord drawRecord(PhotoCondition cond, FaceProfile profile, std::mt19937 &rng,
-                       const std::vector<BarrelProfile> &profiles, bool small)
+                       const std::vector<BarrelProfile> &profiles, bool small, double flatness)
 {
     PhotoRecord rec;
     rec.condition = cond, rec.profile = profile;
@@ -195,6 +195,8 @@ PhotoRecord drawRecord(PhotoCondition cond, FaceProfile profile, std::mt19937 &r
     }
     s.faceHeightMm = kH0Mm * (1 - rec.reduction);
     s.shape = barrelShapeAt(profiles, rec.n, rec.mu50, rec.reduction);
+    if (flatness != 1)
+        for (double &z : s.shape.zeta) z = std::pow(z, 1 / flatness);
     // The original face's edge is not a circle (the 2nd and 3rd harmonics), the body slightly
     // oval (the bar's anisotropy); the equivalent radii are what the truth gives.
     s.innerAmp[0] = uniform(rng, 0, 0.012), s.innerAmp[1] = uniform(rng, 0, 0.006);

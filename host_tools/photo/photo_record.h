@@ -42,9 +42,14 @@ struct PhotoTruth {
 };
 constexpr int kTruthBins = 720;
 
-// The specimen, scene, camera and sensor of one record.
+// The specimen, scene, camera and sensor of one record. flatness 1 builds the side through the
+// FE's shape; above 1 each of its points lies at ζ^(1/flatness) of the half height from the
+// mid-plane instead of ζ: the same radii, the side nearer R_max over more of its height and
+// folding more sharply onto the platen (3–4: R_max reached within 1–2 mm of the end face, as
+// a parametric barrel or another FE's friction law has it; the outline a close camera sees
+// then lies 1–3 % inside R_max rather than the FE's 3–6 %).
 PhotoRecord drawRecord(PhotoCondition cond, FaceProfile profile, std::mt19937 &rng,
-                       const std::vector<BarrelProfile> &profiles, bool small);
+                       const std::vector<BarrelProfile> &profiles, bool small, double flatness = 1);
 
 PhotoTruth projectTruth(const PhotoScene &s);
 

@@ -14,6 +14,7 @@
 #include "friction/paper_model.h"
 #include "host_tools/photo/barrel_profile.h"
 #include "host_tools/photo/photo_bench.h"
+#include "host_tools/photo/photo_record.h"
 #include "host_tools/photo/photo_scene.h"
 #include "tests/host_tools/test_support.h"
 
@@ -50,6 +51,33 @@ TEST(BarrelProfiles, CoverTheGridAndRunFromTheWidestSectionToTheContactEdge)
                 EXPECT_GT(shape.s.front(), 0.99);
                 for (size_t k = 1; k < shape.zeta.size(); ++k) EXPECT_GE(shape.zeta[k], shape.zeta[k - 1] - 1e-9);
             }
+}
+
+// The same specimen, camera and light with its side flattened about the widest section
+// (--flat-barrel): the radii stay, the outline a close camera sees moves towards R_max (the
+// FE's 3–6 % inside it at 45–95 mm, a parametric barrel's 1–3 %), a barrel the reading must
+// take at half height whether or not the working distance is declared.
+TEST(PhotoBench, AFlatterBarrelShowsItsOutlineNearerRMax)
+{
+    const auto table = host::photo::readBarrelProfiles(kProfiles);
+    for (uint32_t seed : {3u, 11u, 29u}) {
+        std::mt19937 a(seed), b(seed);
+        const auto fe = host::photo::drawRecord(host::photo::PhotoCondition::Straight,
+                                                host::photo::FaceProfile::Staircase, a, table, true);
+        const auto flat = host::photo::drawRecord(host::photo::PhotoCondition::Straight,
+                                                  host::photo::FaceProfile::Staircase, b, table, true, 4);
+        ASSERT_EQ(fe.scene.rMaxMm, flat.scene.rMaxMm);
+        ASSERT_EQ(fe.scene.rOuterMm, flat.scene.rOuterMm);
+        ASSERT_EQ(fe.workingDistanceMm, flat.workingDistanceMm);
+        const double rMax = fe.scene.rMaxMm;
+        // The outline in pixels at the end face's scale, as the truth file gives it.
+        const double feRatio = host::photo::projectTruth(fe.scene).outlinePx * fe.trueMmPerPx / rMax;
+        const double flatRatio = host::photo::projectTruth(flat.scene).outlinePx * flat.trueMmPerPx / rMax;
+        SCOPED_TRACE(fe.workingDistanceMm);
+        EXPECT_LT(feRatio, 0.975);
+        EXPECT_GT(flatRatio, feRatio + 0.01);
+        EXPECT_LT(flatRatio, 1);
+    }
 }
 
 TEST(PhotoCamera, ProjectsItsTargetOntoTheImageCentreAndKeepsTheScale)
