@@ -408,21 +408,6 @@ ModelEstimate MuFunction::estimate(double u, double r, double n) const
 
 namespace {
 
-OutlineView declaredView(double n, double mu, double reduction, double d0OverW)
-{
-    OutlineView v;
-    auto lnRatio = [&](double x) { return std::log(friction::outlineRatioAt(n, mu, reduction, x)); };
-    const double table = friction::outlineRatioRelSigma();
-    v.offset[0] = lnRatio(d0OverW);
-    if (d0OverW > 0) { // a telecentric view's outline is R_max itself
-        v.var[0] = table * table;
-        const double dx = d0OverW * kWorkingDistanceRelSigma;
-        const double slope = (lnRatio(d0OverW + dx) - lnRatio(d0OverW - dx)) / (2 * dx);
-        v.var[0] += slope * slope * dx * dx;
-    }
-    return v;
-}
-
 // The FE's barrel at the perspective share s (the outline's centre shift per unit of the end
 // face's distance from the axis): the outline over R_max is (1 − s)·c, the side seen at the
 // depth z0 where it reaches farthest (k = W/(W + z0) = 1 − s) and c = r(z0)/R_max. c from the
@@ -463,48 +448,86 @@ struct BarrelReachTable {
     }
 };
 
-// The outline's centre shift weighs the perspective share s: a telecentric view (s 0, half the
-// prior) or a camera anywhere from far to about 40 mm (s up to kShareMax, uniform). Under each,
-// the shift is s times the end face's distance from the axis, with the centres' error and the
+// How well a perspective share s fits the outline's centre shift (CameraDistance): under s the
+// shift is s times the end face's distance from the axis, with the centres' error and the
 // axis's (scaled by s); a centre misread by a highlight or a shadow on some rays fits none of
-// them, and a broad term keeps it from deciding. Two views come out: the telecentric one with
-// its posterior weight, and the close camera's, ln((1 − s)·c) averaged over the cells with
-// s > 0, its variance their spread and c's. A view under 0.1 % of the weight is left out.
+// them, and a broad term keeps it from deciding. 1 where the image did not weigh the shift.
+double shareLikelihood(const CameraDistance &c, double share)
+{
+    if (!c.fromImage) return 1;
+    const double off = std::hypot(c.offAxisX, c.offAxisY);
+    const double ex = c.shiftX + share * c.offAxisX, ey = c.shiftY + share * c.offAxisY;
+    const double var = c.shiftSigmaPx * c.shiftSigmaPx + share * share * c.axisSigmaPx * c.axisSigmaPx;
+    const double wide = var + kMisreadShiftPx * kMisreadShiftPx + kMisreadShiftRel * kMisreadShiftRel * off * off;
+    const double e2 = ex * ex + ey * ey;
+    return (1 - kMisreadShift) * std::exp(-0.5 * e2 / var) / var + kMisreadShift * std::exp(-0.5 * e2 / wide) / wide;
+}
+
+// The close camera's part of d over the shares s = sMax·j/kShareSteps (j from jFirst), each
+// weighed by its prior and the shift: ln((1 − s)·c) averaged, its variance their spread and
+// c's. Returns the summed weight.
+struct CloseView {
+    double weight = 0, mean = 0, var = 0;
+};
+CloseView closeView(const BarrelReachTable &reach, const CameraDistance &c, double sMax, int jFirst, double prior)
+{
+    double wSum = 0, m1 = 0, m2 = 0, reachVar = 0;
+    for (int j = jFirst; j <= kShareSteps; ++j) {
+        const double share = sMax * j / kShareSteps;
+        const double w = prior * shareLikelihood(c, share);
+        const BarrelReach r = reach.at(share);
+        const double ln = std::log((1 - share) * r.mean);
+        wSum += w, m1 += w * ln, m2 += w * ln * ln, reachVar += w * r.var;
+    }
+    CloseView v;
+    v.weight = wSum;
+    if (!(wSum > 0)) return v;
+    v.mean = m1 / wSum;
+    v.var = std::max(0.0, m2 / wSum - v.mean * v.mean) + reachVar / wSum;
+    return v;
+}
+
+// Without a declared distance the share runs from a telecentric view (s 0: a telecentric lens,
+// a far camera, a drawing; half the prior) to a camera at about 40 mm (s up to kShareMax, the
+// other half, uniform). Two views come out: the telecentric one with its posterior weight, and
+// the close camera's. A view under 0.1 % of the weight is left out.
 OutlineView imagedView(double n, double mu, double reduction, const CameraDistance &c)
 {
-    const double off = std::hypot(c.offAxisX, c.offAxisY);
     const BarrelReachTable reachTable(n, mu, reduction);
-    double w0 = 0, wSum = 0, m1 = 0, m2 = 0, reachVar = 0;
-    for (int j = 0; j <= kShareSteps; ++j) {
-        const double share = kShareMax * j / kShareSteps;
-        const double prior = j == 0 ? kTelecentricPrior : (1 - kTelecentricPrior) / kShareSteps;
-        const double ex = c.shiftX + share * c.offAxisX, ey = c.shiftY + share * c.offAxisY;
-        const double var = c.shiftSigmaPx * c.shiftSigmaPx + share * share * c.axisSigmaPx * c.axisSigmaPx;
-        const double wide = var + kMisreadShiftPx * kMisreadShiftPx + kMisreadShiftRel * kMisreadShiftRel * off * off;
-        const double e2 = ex * ex + ey * ey;
-        const double like =
-            (1 - kMisreadShift) * std::exp(-0.5 * e2 / var) / var + kMisreadShift * std::exp(-0.5 * e2 / wide) / wide;
-        const double w = prior * like;
-        if (j == 0) {
-            w0 = w;
-            continue;
-        }
-        const BarrelReach reach = reachTable.at(share);
-        const double ln = std::log((1 - share) * reach.mean);
-        wSum += w, m1 += w * ln, m2 += w * ln * ln, reachVar += w * reach.var;
-    }
+    const double w0 = kTelecentricPrior * shareLikelihood(c, 0);
+    const CloseView close = closeView(reachTable, c, kShareMax, 1, (1 - kTelecentricPrior) / kShareSteps);
     OutlineView v;
     v.estimated = true;
-    const double total = w0 + wSum;
-    if (!(total > 0) || !(wSum > kMinViewWeight * total)) return v; // telecentric
-    const double mean = m1 / wSum, var = std::max(0.0, m2 / wSum - mean * mean) + reachVar / wSum;
+    const double total = w0 + close.weight;
+    if (!(total > 0) || !(close.weight > kMinViewWeight * total)) return v; // telecentric
     if (w0 < kMinViewWeight * total) {
-        v.offset[0] = mean, v.var[0] = var;
+        v.offset[0] = close.mean, v.var[0] = close.var;
         return v;
     }
     v.count = 2;
-    v.weight[0] = w0 / total, v.weight[1] = wSum / total;
-    v.offset[1] = mean, v.var[1] = var;
+    v.weight[0] = w0 / total, v.weight[1] = close.weight / total;
+    v.offset[1] = close.mean, v.var[1] = close.var;
+    return v;
+}
+
+// A declared distance W says how far the end face is, not how the barrel's side runs below
+// it: the side reaches farthest at a depth z0 between the end face and the widest section, h/2
+// below it (beyond it both r(z) and W/(W + z) fall), so s = z0/(W + z0) lies between 0 and
+// (h/2)/(W + h/2), W taken at the near end of its 5 %; c as above. The FE's barrel has one z0,
+// a flatter or rounder one another: held to the FE's own outline, the reference photographs
+// (W 45–109 mm declared) read their outlines 3–11 σ large and μ 0.01–0.026 low. Where the end
+// face lies off the axis the outline's centre shift weighs s within that span.
+OutlineView declaredView(double n, double mu, double reduction, const CameraDistance &c)
+{
+    OutlineView v;
+    if (!(c.d0OverW > 0)) return v;                               // a telecentric view's outline is R_max itself
+    const double halfHeight = 0.5 * c.h0OverD0 * (1 - reduction); // in D0
+    const double nearW = (1 - kWorkingDistanceRelSigma) / c.d0OverW;
+    const CloseView close =
+        closeView(BarrelReachTable(n, mu, reduction), c, halfHeight / (nearW + halfHeight), 0, 1.0 / (kShareSteps + 1));
+    const double table = friction::outlineRatioRelSigma();
+    v.offset[0] = close.mean;
+    v.var[0] = close.var + table * table;
     return v;
 }
 
@@ -512,8 +535,8 @@ OutlineView imagedView(double n, double mu, double reduction, const CameraDistan
 
 OutlineView outlineView(double n, double mu, double reduction, const CameraDistance &camera)
 {
-    return camera.fromImage && !(camera.d0OverW > 0) ? imagedView(n, mu, reduction, camera)
-                                                     : declaredView(n, mu, reduction, camera.d0OverW);
+    return camera.d0OverW > 0 || !camera.fromImage ? declaredView(n, mu, reduction, camera)
+                                                   : imagedView(n, mu, reduction, camera);
 }
 
 bool declaredDistanceView(const OutlineView &estimated, OutlineView *declared)
@@ -521,10 +544,9 @@ bool declaredDistanceView(const OutlineView &estimated, OutlineView *declared)
     if (!estimated.estimated) return false;
     const int close = estimated.count - 1;
     if (!(estimated.offset[close] < 0)) return false; // the image left only a telecentric view
-    const double table = friction::outlineRatioRelSigma();
     *declared = OutlineView{};
     declared->offset[0] = estimated.offset[close];
-    declared->var[0] = table * table;
+    declared->var[0] = estimated.var[close];
     return true;
 }
 
@@ -532,6 +554,7 @@ CameraDistance declaredCameraDistance(const SpecimenSpec &spec)
 {
     CameraDistance c;
     c.d0OverW = spec.workingDistanceMm > 0 ? spec.d0Mm / spec.workingDistanceMm : 0;
+    c.h0OverD0 = spec.d0Mm > 0 ? spec.h0Mm / spec.d0Mm : 1.5;
     return c;
 }
 
@@ -540,7 +563,7 @@ CameraDistance cameraDistance(const SpecimenSpec &spec, const EndFaceGeometry &g
     CameraDistance c = declaredCameraDistance(spec);
     // A tilted view draws the outline off the end face's centre by its own geometry: there
     // the foreshortened explanation speaks for the view (silhouettePosterior).
-    if (c.d0OverW > 0 || oblique || !(g.silhouetteCoverage > 0) || g.frameWidth <= 0 || g.frameHeight <= 0) return c;
+    if (oblique || !(g.silhouetteCoverage > 0) || g.frameWidth <= 0 || g.frameHeight <= 0) return c;
     c.fromImage = true;
     c.offAxisX = g.outer.centreX - 0.5 * (g.frameWidth - 1);
     c.offAxisY = g.outer.centreY - 0.5 * (g.frameHeight - 1);

@@ -102,7 +102,8 @@ struct OutlineView {
 // centre, an oblique view, a shift no straight camera makes): telecentric.
 struct CameraDistance {
     double d0OverW = 0;                // declared D0/W; 0 where none is declared
-    bool fromImage = false;            // weigh D0/W by the outline's centre shift
+    double h0OverD0 = 1.5;             // the specimen's H0/D0 (the depth of its widest section)
+    bool fromImage = false;            // weigh the perspective share by the outline's centre shift
     double offAxisX = 0, offAxisY = 0; // the end face's centre less the optical axis (px)
     double shiftX = 0, shiftY = 0;     // the outline's centre less the end face's (px)
     double shiftSigmaPx = 0;           // the two centres' own error, per axis

@@ -74,29 +74,36 @@ Reading interpret(const EndFaceGeometry &g, double n = kN)
 }
 
 // A camera W above the end face sees the outline inside R_max (friction/outline_ratio.h).
-// Declared, that outline is the nominal half height; undeclared, the same image reads as a
-// specimen pressed less far, and says so.
-TEST(Interpretation, TheDeclaredWorkingDistanceTakesTheCloseCamerasOutlineForHalfHeight)
+// Declared, W bounds that outline without fixing it: the side reaches farthest somewhere
+// between the end face and its widest section, so the FE's barrel, and a flatter one whose
+// outline lies nearer R_max (the reference photographs': 1–3 % inside where the FE's is 3–6 %),
+// are both the nominal half height, with the spread that leaves in the reduction. An outline
+// inside what the roundest barrel shows from there, or beyond R_max, is another height or
+// scale. Undeclared, the FE's close outline on the axis reads as a specimen pressed less far,
+// and says so.
+TEST(Interpretation, TheDeclaredWorkingDistanceBoundsTheOutlineNotTheBarrelsShape)
 {
-    const double w = 55;
-    const EndFaceGeometry g = face(outlineRatioAt(kN, kMu, 0.5, 10.0 / w), false);
+    const double w = 55, fe = outlineRatioAt(kN, kMu, 0.5, 10.0 / w);
     SpecimenSpec spec;
     spec.n = kN;
     spec.mmPerPx = kMmPerPx;
-    const Reading undeclared = reading::interpret(g, spec, nullptr, *frictionModel(kDefaultModel));
-    spec.workingDistanceMm = w;
-    const Reading declared = reading::interpret(g, spec, nullptr, *frictionModel(kDefaultModel));
-    ASSERT_EQ(declared.status, Status::Ok) << declared.flags;
-    EXPECT_NEAR(declared.reduction, 0.5, 0.003);
-    EXPECT_LT(declared.reductionSigma, 0.01);
-    EXPECT_NEAR(declared.scaleFactor, 1, 0.003);
+    const Reading undeclared = reading::interpret(face(fe, false), spec, nullptr, *frictionModel(kDefaultModel));
     EXPECT_TRUE(undeclared.flags & kNominalFinding);
     EXPECT_LT(undeclared.reduction, 0.49);
-    // The same distance declared for a silhouette at R_max itself: pressed further, or a
-    // scale measured on the fixture (the two explain 5 % alike).
-    const Reading atRMax = reading::interpret(face(1.0, false), spec, nullptr, *frictionModel(kDefaultModel));
-    EXPECT_TRUE(atRMax.reduction > 0.52 || atRMax.scaleFactor < 0.98) << atRMax.reduction << " " << atRMax.scaleFactor;
-    EXPECT_TRUE(atRMax.flags & kNominalFinding);
+    spec.workingDistanceMm = w;
+    for (double ratio : {fe, 0.5 * (fe + 1)}) {
+        const Reading declared = reading::interpret(face(ratio, false), spec, nullptr, *frictionModel(kDefaultModel));
+        ASSERT_EQ(declared.status, Status::Ok) << ratio << " " << declared.flags;
+        EXPECT_NEAR(declared.reduction, 0.5, 2 * declared.reductionSigma) << ratio;
+        EXPECT_LT(declared.reductionSigma, 0.02) << ratio;
+        EXPECT_NEAR(declared.mu, kMu, 0.01) << ratio; // ok and right
+    }
+    // The roundest barrel reaches farthest at its widest section, h/2 below the face.
+    const double roundest = w / (w + 0.25 * spec.h0Mm);
+    for (double ratio : {0.96 * roundest, 1.04}) {
+        const Reading off = reading::interpret(face(ratio, false), spec, nullptr, *frictionModel(kDefaultModel));
+        EXPECT_TRUE(off.flags & kNominalFinding) << ratio << " " << off.reduction << " " << off.scaleFactor;
+    }
 }
 
 // Undeclared, the working distance is what the image says: an end face off the optical axis
