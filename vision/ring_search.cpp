@@ -336,6 +336,35 @@ bool RingSearch::stepBack(const MeanEdges &me, MeanEdges *back)
     return true;
 }
 
+bool RingSearch::stepsBackBeyond(const MeanEdges &me) const
+{
+    const double rA = kCoarseStart * r0, step = coarseStep(r0);
+    const int count = coarseCount(r0);
+    const int drop = int((me.rOuter - rA) / step + 0.5), next = int((me.rNext - rA) / step + 0.5);
+    const int w = std::max(2, int(0.03 * r0 / step));
+    // Two samples either side of each step clear its blur and the derivative's reach.
+    if (drop - 2 - w < 0 || next + 2 + w >= count || next - drop < 5) return false;
+    auto level = [&](int a, int b, int *out) {
+        int64_t sum = 0;
+        for (int j = a; j <= b; ++j) {
+            if (meanProfile[j] == kOutsideFrame) return false;
+            sum += meanProfile[j];
+        }
+        *out = int(sum / (b - a + 1));
+        return true;
+    };
+    int face = 0, ring = 0;
+    if (!level(drop - 2 - w, drop - 2, &face) || !level(drop + 2, next - 2, &ring)) return false;
+    // Beyond the step back, its own extreme over a band as wide: a fold may be narrow.
+    int32_t beyond = meanProfile[next + 2];
+    for (int j = next + 2; j <= next + 2 + w; ++j) {
+        if (meanProfile[j] == kOutsideFrame) return false;
+        beyond = me.signNext > 0 ? std::max(beyond, meanProfile[j]) : std::min(beyond, meanProfile[j]);
+    }
+    const int32_t fall = std::abs(face - ring), rise = me.signNext * (beyond - ring);
+    return rise >= kMinZoneStep && rise >= kRippleShareOfStep * fall;
+}
+
 void RingSearch::finerMeanProfile(double fromPx, double stepPx, int count, uint16_t *mean)
 {
     uint32_t sum[kMaxFine] = {}, n[kMaxFine] = {};
@@ -680,7 +709,19 @@ ErrorCode RingSearch::run(EndFaceGeometry *m)
     }
     if (e != ErrorCode::InnerEdgeNotFound) return e;
     if (!staircase) {
-        if (me.namedByZones || !(centredRadius_ < me.rOuter - kInwardMovePx)) return onOutlineStep();
+        const bool movedInward = centredRadius_ < me.rOuter - kInwardMovePx;
+        // The largest drop named an edge with no original face's edge inside it, and the
+        // profile steps back the other way beyond it: the drop is the original face's own
+        // edge and the step back the contact edge, where the barrel leaves the platen nearly
+        // flat and its fold, facing the light, is brighter than the ring beside it (a barrel
+        // flatter about its widest section than the FE's: face, ring and fold three levels,
+        // then the fall). The ring about that step stands where its original face's edge is
+        // the drop, to the sampling that the step back's own check allows, and where the
+        // step back is more than a highlight line's ripple on a drawn barrel band.
+        if (!me.namedByZones && me.rNext > 0 && stepsBackBeyond(me) && again(next) == ErrorCode::None &&
+            std::fabs(m->inner.rEqPx - me.rOuter) <= kBackAgreesPx)
+            return ErrorCode::None;
+        if (me.namedByZones || !movedInward) return onOutlineStep();
         // The largest drop named an edge, the centring took a sharper step of its sign inside
         // it instead, and no original face's edge lies inside that one: it is the original
         // face's edge itself. A ring whose barrel ramps away into a dark fixture shows so, its

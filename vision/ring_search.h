@@ -90,6 +90,11 @@ struct RingSearch {
     // barrel's shoulder, the outline beyond): that step back, as the contact edge to search
     // about (false: none).
     bool stepBack(const MeanEdges &me, MeanEdges *back);
+    // Whether the mean profile's next step beyond the drop `me` names steps back from the
+    // level between them by more than a ripple's share of the drop: a ring between the
+    // original face's edge and a fold brighter (or darker) than it, not a highlight line
+    // across a barrel band.
+    bool stepsBackBeyond(const MeanEdges &me) const;
     // Moves (cx, cy) to the contact edge's own centre and returns its mean radius there
     // (me.rOuter when no fit is possible).
     double centreOnContactEdge(const MeanEdges &me);

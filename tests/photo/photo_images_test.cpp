@@ -200,6 +200,21 @@ TEST_P(FaintOriginalFacePhotos, TheBoxStopsShortOfTheContactEdgesFall)
     EXPECT_NEAR(p.g.inner.rEqPx, num(p.truth, "r_inner_px"), 0.5);
 }
 
+// A barrel flatter about its widest section than the FE's (--flat-barrel 4) leaves the platen
+// nearly flat: its fold faces the light and reads as a level as bright as the face beyond a
+// darker ring, then falls to the outline. The zones see three levels and do not tell; the
+// largest drop, the original face's edge, has no edge inside it. The contact edge is the
+// step back beyond that drop (inner edge not found before): both radii within half a pixel.
+class FoldBrighterThanRingPhotos : public PhotoImages {};
+
+TEST_P(FoldBrighterThanRingPhotos, TheDropIsTheOriginalFacesEdgeAndTheStepBackTheContactEdge)
+{
+    const Photo p = measure(GetParam());
+    ASSERT_EQ(p.g.error, vision::ErrorCode::None) << vision::errorMessage(p.g.error);
+    EXPECT_NEAR(p.g.inner.rEqPx, num(p.truth, "r_inner_px"), 0.5);
+    EXPECT_NEAR(p.g.outer.rEqPx, num(p.truth, "r_outer_px"), 0.5);
+}
+
 // The bench encodes its renders through a tone curve of γ 2.2, which draws each blurred edge's
 // steepest point towards its darker side: the original face's edge reads 0.24–0.50 px towards
 // the darker of face and ring. Told the curve, the pipeline locates it in linear light: within
@@ -252,6 +267,9 @@ INSTANTIATE_TEST_SUITE_P(Rendered, ToneCurvePhotos,
                          recordName);
 
 INSTANTIATE_TEST_SUITE_P(Rendered, FaintOriginalFacePhotos, ::testing::Values("straight-s9-0005"), recordName);
+
+INSTANTIATE_TEST_SUITE_P(Rendered, FoldBrighterThanRingPhotos,
+                         ::testing::Values("straight-f4-0003", "straight-f4-0006"), recordName);
 
 INSTANTIATE_TEST_SUITE_P(Rendered, FadingBarrelPhotos, ::testing::Values("straight-s2-0004", "straight-s3-0019"),
                          recordName);
