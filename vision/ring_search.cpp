@@ -336,31 +336,34 @@ bool RingSearch::stepBack(const MeanEdges &me, MeanEdges *back)
     return true;
 }
 
-bool RingSearch::stepsBackBeyond(const MeanEdges &me) const
+bool RingSearch::stepsBackBeyond(const MeanEdges &me)
 {
-    const double rA = kCoarseStart * r0, step = coarseStep(r0);
-    const int count = coarseCount(r0);
-    const int drop = int((me.rOuter - rA) / step + 0.5), next = int((me.rNext - rA) / step + 0.5);
-    const int w = std::max(2, int(0.03 * r0 / step));
-    // Two samples either side of each step clear its blur and the derivative's reach.
-    if (drop - 2 - w < 0 || next + 2 + w >= count || next - drop < 5) return false;
-    auto level = [&](int a, int b, int *out) {
+    // The profile about the coarse centre at the fine step, from the face inside the drop to
+    // a band beyond the step back: a ring of a few coarse samples shows its own level there,
+    // and a highlight line across a barrel band adds little to the band's mean.
+    // A margin either side of each step clears its blur and the derivative's reach.
+    const double margin = std::max(2.0, 0.012 * r0), band = std::max(3.0, 0.03 * r0);
+    const double fromPx = me.rOuter - margin - band;
+    if (!(me.rNext - me.rOuter > 2 * margin + 1)) return false;
+    const int n = std::min(kMaxFine, int((me.rNext + margin + band - fromPx) / kFineStepPx) + 1);
+    uint16_t mean[kMaxFine];
+    finerMeanProfile(fromPx, kFineStepPx, n, mean);
+    auto at = [&](double r) { return std::clamp(int((r - fromPx) / kFineStepPx + 0.5), 0, n - 1); };
+    auto level = [&](double a, double b, int32_t *out) {
         int64_t sum = 0;
-        for (int j = a; j <= b; ++j) {
-            if (meanProfile[j] == kOutsideFrame) return false;
-            sum += meanProfile[j];
+        int k = 0;
+        for (int j = at(a); j <= at(b); ++j, ++k) {
+            if (mean[j] == kOutsideFrame) return false;
+            sum += mean[j];
         }
-        *out = int(sum / (b - a + 1));
-        return true;
+        *out = k ? int32_t(sum / k) : 0;
+        return k > 0;
     };
-    int face = 0, ring = 0;
-    if (!level(drop - 2 - w, drop - 2, &face) || !level(drop + 2, next - 2, &ring)) return false;
-    // Beyond the step back, its own extreme over a band as wide: a fold may be narrow.
-    int32_t beyond = meanProfile[next + 2];
-    for (int j = next + 2; j <= next + 2 + w; ++j) {
-        if (meanProfile[j] == kOutsideFrame) return false;
-        beyond = me.signNext > 0 ? std::max(beyond, meanProfile[j]) : std::min(beyond, meanProfile[j]);
-    }
+    // Beyond the step back a level over the band (a fold, a lit shoulder), not a line's peak.
+    int32_t face = 0, ring = 0, beyond = 0;
+    if (!level(fromPx, me.rOuter - margin, &face) || !level(me.rOuter + margin, me.rNext - margin, &ring) ||
+        !level(me.rNext + margin, me.rNext + margin + band, &beyond))
+        return false;
     const int32_t fall = std::abs(face - ring), rise = me.signNext * (beyond - ring);
     return rise >= kMinZoneStep && rise >= kRippleShareOfStep * fall;
 }

@@ -93,8 +93,8 @@ struct RingSearch {
     // Whether the mean profile's next step beyond the drop `me` names steps back from the
     // level between them by more than a ripple's share of the drop: a ring between the
     // original face's edge and a fold brighter (or darker) than it, not a highlight line
-    // across a barrel band.
-    bool stepsBackBeyond(const MeanEdges &me) const;
+    // across a barrel band. Reads the profile at the fine step (the fine rows as scratch).
+    bool stepsBackBeyond(const MeanEdges &me);
     // Moves (cx, cy) to the contact edge's own centre and returns its mean radius there
     // (me.rOuter when no fit is possible).
     double centreOnContactEdge(const MeanEdges &me);

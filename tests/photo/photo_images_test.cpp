@@ -200,11 +200,14 @@ TEST_P(FaintOriginalFacePhotos, TheBoxStopsShortOfTheContactEdgesFall)
     EXPECT_NEAR(p.g.inner.rEqPx, num(p.truth, "r_inner_px"), 0.5);
 }
 
-// A barrel flatter about its widest section than the FE's (--flat-barrel 4) leaves the platen
-// nearly flat: its fold faces the light and reads as a level as bright as the face beyond a
-// darker ring, then falls to the outline. The zones see three levels and do not tell; the
-// largest drop, the original face's edge, has no edge inside it. The contact edge is the
-// step back beyond that drop (inner edge not found before): both radii within half a pixel.
+// The barrel beside the contact edge brighter than the ring: a barrel flatter about its
+// widest section than the FE's (--flat-barrel 4) leaves the platen nearly flat, and its fold
+// faces the light and reads as a level as bright as the face, then falls to the outline; a
+// narrow dark ring (8.6 px) opens onto a lit shoulder with no fall before the lighter fixture.
+// The zones do not tell, and the largest drop, the original face's edge, has no edge inside
+// it. The contact edge is the step back beyond that drop (inner edge not found before): R_i
+// within half a pixel, R_o within one (a dark ring's edges read up to 0.7 px inwards through
+// the bench's tone curve, docs/photographs.md).
 class FoldBrighterThanRingPhotos : public PhotoImages {};
 
 TEST_P(FoldBrighterThanRingPhotos, TheDropIsTheOriginalFacesEdgeAndTheStepBackTheContactEdge)
@@ -212,7 +215,7 @@ TEST_P(FoldBrighterThanRingPhotos, TheDropIsTheOriginalFacesEdgeAndTheStepBackTh
     const Photo p = measure(GetParam());
     ASSERT_EQ(p.g.error, vision::ErrorCode::None) << vision::errorMessage(p.g.error);
     EXPECT_NEAR(p.g.inner.rEqPx, num(p.truth, "r_inner_px"), 0.5);
-    EXPECT_NEAR(p.g.outer.rEqPx, num(p.truth, "r_outer_px"), 0.5);
+    EXPECT_NEAR(p.g.outer.rEqPx, num(p.truth, "r_outer_px"), 1.0);
 }
 
 // The bench encodes its renders through a tone curve of γ 2.2, which draws each blurred edge's
@@ -269,7 +272,7 @@ INSTANTIATE_TEST_SUITE_P(Rendered, ToneCurvePhotos,
 INSTANTIATE_TEST_SUITE_P(Rendered, FaintOriginalFacePhotos, ::testing::Values("straight-s9-0005"), recordName);
 
 INSTANTIATE_TEST_SUITE_P(Rendered, FoldBrighterThanRingPhotos,
-                         ::testing::Values("straight-f4-0003", "straight-f4-0006"), recordName);
+                         ::testing::Values("straight-f4-0003", "straight-f4-0006", "straight-s51-0008"), recordName);
 
 INSTANTIATE_TEST_SUITE_P(Rendered, FadingBarrelPhotos, ::testing::Values("straight-s2-0004", "straight-s3-0019"),
                          recordName);
