@@ -464,8 +464,8 @@ double shareLikelihood(const CameraDistance &c, double share)
 }
 
 // The close camera's part of d over the shares s = sMax·j/kShareSteps (j from jFirst), each
-// weighed by its prior and the shift: ln((1 − s)·c) averaged, its variance their spread and
-// c's. Returns the summed weight.
+// weighed by its prior and the shift: the summed weight, ln((1 − s)·c) averaged, and its
+// variance, their spread and c's.
 struct CloseView {
     double weight = 0, mean = 0, var = 0;
 };

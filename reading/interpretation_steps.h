@@ -94,7 +94,8 @@ struct OutlineView {
     double offset[kMax] = {0, 0}, var[kMax] = {0, 0};
 };
 // What the instrument knows of the camera's distance to the end face. Declared: D0/W, to W's
-// 5 %. Otherwise what the image says: a close camera sees the side below the end face from
+// 5 %, which bounds the share s by the depth of the barrel's widest section (the side's shape
+// below the end face stays open). Otherwise what the image says: a close camera sees the side below the end face from
 // farther away, so an end face off the optical axis has its outline's centre drawn towards
 // the axis (friction::outlineShiftAt); the shift against the end face's distance from the
 // axis weighs that share from a telecentric view (half the prior) to a camera at 40 mm (the
@@ -111,7 +112,8 @@ struct CameraDistance {
 };
 OutlineView outlineView(double n, double mu, double reduction, const CameraDistance &camera);
 // The view had the working distance been declared (the advice): the close camera's outline the
-// image weighed, to the table's own error; false where the view was declared or not weighed.
+// image weighed, with its own spread, the telecentric alternative gone; false where the view
+// was declared or not weighed.
 bool declaredDistanceView(const OutlineView &estimated, OutlineView *declared);
 // D0/W of the spec's declared working distance, or (none declared, a view whose boundaries
 // are concentric, with a per-ray silhouette) the image's outline centre against its end face's.
