@@ -715,10 +715,11 @@ ErrorCode RingSearch::run(EndFaceGeometry *m)
         const bool movedInward = centredRadius_ < me.rOuter - kInwardMovePx;
         // The largest drop named an edge with no original face's edge inside it, and the
         // profile steps back the other way beyond it: the drop is the original face's own
-        // edge and the step back the contact edge, where the barrel leaves the platen nearly
-        // flat and its fold, facing the light, is brighter than the ring beside it (a barrel
-        // flatter about its widest section than the FE's: face, ring and fold three levels,
-        // then the fall). The ring about that step stands where its original face's edge is
+        // edge and the step back the contact edge, where the barrel beside it is brighter than
+        // the ring (a lit shoulder beside a dark ring; the fold of a barrel flatter about its
+        // widest section than the FE's, which leaves the platen nearly flat and faces the
+        // light: face, ring and fold three levels, then the fall). The ring about that step
+        // stands where its original face's edge is
         // the drop, to the sampling that the step back's own check allows, and where the
         // step back is more than a highlight line's ripple on a drawn barrel band.
         if (!me.namedByZones && me.rNext > 0 && stepsBackBeyond(me) && again(next) == ErrorCode::None &&
