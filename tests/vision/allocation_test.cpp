@@ -1,6 +1,10 @@
 // Zero heap allocations per measurement after configure(): operator new is counted.
 #include <gtest/gtest.h>
 
+#include <string>
+
+#include <opencv2/imgcodecs.hpp>
+
 #include "friction/paper_model.h"
 #include "host_tools/end_face_renderer.h"
 #include "reading/instrument.h"
@@ -44,6 +48,24 @@ TEST(Allocation, NoneReadingAnObliqueViewAgain)
     ASSERT_EQ(analyzer.configure(f.width, f.height), vision::ErrorCode::None);
     const long before = icacam::test::allocationCount();
     const vision::EndFaceGeometry g = analyzer.measure(f.view(px), {10, 5.0 / f.r0});
+    const long after = icacam::test::allocationCount();
+    ASSERT_EQ(g.error, vision::ErrorCode::None) << vision::errorMessage(g.error);
+    EXPECT_EQ(after - before, 0) << "heap allocations during measure()";
+}
+
+// A rendered photograph read only about the step back beyond its largest drop, after the
+// first search and the narrow-ring search beyond the drop found no ring
+// (tests/data/photo: straight-f4-0003): those searches allocate nothing either.
+TEST(Allocation, NoneReadingAboutTheStepBackBeyondADrop)
+{
+    const cv::Mat img = cv::imread(std::string(ICACAM_SOURCE_DIR) + "/tests/data/photo/images/straight-f4-0003.png",
+                                   cv::IMREAD_GRAYSCALE);
+    ASSERT_FALSE(img.empty());
+    vision::EndFaceAnalyzer analyzer;
+    ASSERT_EQ(analyzer.configure(img.cols, img.rows), vision::ErrorCode::None);
+    const vision::LumaView v{img.data, img.cols, img.rows, int(img.step[0]), 1};
+    const long before = icacam::test::allocationCount();
+    const vision::EndFaceGeometry g = analyzer.measure(v, {10, 0.0370337});
     const long after = icacam::test::allocationCount();
     ASSERT_EQ(g.error, vision::ErrorCode::None) << vision::errorMessage(g.error);
     EXPECT_EQ(after - before, 0) << "heap allocations during measure()";
