@@ -86,7 +86,7 @@ inline constexpr double kWidestRingOfR0 = 0.32;
 // drawn steps under 1.0, the development set's and the reference photographs' contact edges
 // under 1.6 (data/photobench/README.md). Beyond it the reading warns (contact_edge_ramp) with
 // the ramp in u's error; the pipeline takes R_o where the ring's level ends from a ramp of
-// 1 px on (kKneeRampPx, vision/ring_search_contact_edge.cpp).
+// 0.5 px on (kKneeRampPx, vision/ring_search_contact_edge.cpp).
 inline constexpr double kContactRampPx = 1.6;
 
 // The end face as the image shows it, in pixels: the specimen's centre, the two boundaries'

@@ -222,6 +222,22 @@ TEST_P(FoldBrighterThanRingPhotos, TheDropIsTheOriginalFacesEdgeAndTheStepBackTh
 // steepest point towards its darker side: the original face's edge reads 0.24–0.50 px towards
 // the darker of face and ring. Told the curve, the pipeline locates it in linear light: within
 // 0.3 px here (−0.10 … +0.26), and at least 0.1 px nearer than untold.
+// A narrow ring whose barrel falls away over more pixels than half the ring: the contact
+// edge's width is taken within half the ring, so the ramp measures under a pixel
+// (straight-s3-0001: a 9 px ring, a fall over 8 px, 0.7 px) while the derivative peaks
+// 2.5 px outside the contact edge, Δμ +0.022 and ok. Where the ring's level ends the edge
+// reads 1.4 px outside; the original face's edge stays where it was.
+class LongFallPhotos : public PhotoImages {};
+
+TEST_P(LongFallPhotos, ANarrowRingsContactEdgeIsWhereItsLevelEnds)
+{
+    const Photo p = measure(GetParam());
+    ASSERT_EQ(p.g.error, vision::ErrorCode::None) << vision::errorMessage(p.g.error);
+    EXPECT_LT(p.g.contactRampPx, vision::kContactRampPx) << "no finding: the width shows no ramp";
+    EXPECT_NEAR(p.g.outer.rEqPx, num(p.truth, "r_outer_px"), 2.0);
+    EXPECT_NEAR(p.g.inner.rEqPx, num(p.truth, "r_inner_px"), 0.5);
+}
+
 class ToneCurvePhotos : public PhotoImages {};
 
 TEST_P(ToneCurvePhotos, TheOriginalFacesEdgeIsLocatedInLinearLight)
@@ -273,6 +289,8 @@ INSTANTIATE_TEST_SUITE_P(Rendered, FaintOriginalFacePhotos, ::testing::Values("s
 
 INSTANTIATE_TEST_SUITE_P(Rendered, FoldBrighterThanRingPhotos,
                          ::testing::Values("straight-f4-0003", "straight-f4-0006", "straight-s51-0008"), recordName);
+
+INSTANTIATE_TEST_SUITE_P(Rendered, LongFallPhotos, ::testing::Values("straight-s3-0001"), recordName);
 
 INSTANTIATE_TEST_SUITE_P(Rendered, FadingBarrelPhotos, ::testing::Values("straight-s2-0004", "straight-s3-0019"),
                          recordName);
