@@ -719,9 +719,9 @@ ErrorCode RingSearch::run(EndFaceGeometry *m)
         // the ring (a lit shoulder beside a dark ring; the fold of a barrel flatter about its
         // widest section than the FE's, which leaves the platen nearly flat and faces the
         // light: face, ring and fold three levels, then the fall). The ring about that step
-        // stands where its original face's edge is
-        // the drop, to the sampling that the step back's own check allows, and where the
-        // step back is more than a highlight line's ripple on a drawn barrel band.
+        // stands where its original face's edge is the drop, to the sampling that the step
+        // back's own check allows, and where the step back is more than a highlight line's
+        // ripple on a drawn barrel band.
         if (!me.namedByZones && me.rNext > 0 && stepsBackBeyond(me) && again(next) == ErrorCode::None &&
             std::fabs(m->inner.rEqPx - me.rOuter) <= kBackAgreesPx)
             return ErrorCode::None;
