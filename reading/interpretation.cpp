@@ -109,9 +109,7 @@ void readFace(const FaceInputs &in, uint32_t f, Reading *out)
     out->nominalMu = F.at(u, kNominalReduction, n);
     // A silhouette found unusable is a finding of its own (silhouette_unreliable, no_silhouette);
     // where the image has none to check the height with, U covers the undeclared range.
-    // The specimen's μ is held against the nominal height's: for a model that reads at 50 % as
-    // published, the reading plus the carry it leaves out (read.bias, U's).
-    if (explained) f |= nominalCheck(F, spec, u, out->mu + read.bias, &why, &out->nominalMu);
+    if (explained) f |= nominalCheck(F, spec, u, out->mu, &why, &out->nominalMu);
     // Without a silhouette the height and the declared scale are unchecked (U covers the
     // undeclared range, the advice says so); a finding where they could move μ beyond the
     // tolerance, not where μ barely depends on them.

@@ -82,16 +82,10 @@ constexpr double kShareMax = 0.07;
 constexpr double kTelecentricPrior = 0.5, kMinViewWeight = 0.001;
 constexpr double kShiftFloorPx = 0.4, kAxisRelSigma = 0.01, kShiftOutlierSigmas = 3;
 constexpr double kMisreadShift = 0.03, kMisreadShiftPx = 5, kMisreadShiftRel = 0.05;
-// The nominal conditions' check: where nothing checked the height (or the silhouette may be a
-// wrong edge), a reading is ok while the priors leave less than a 15 % chance that μ lies
-// beyond the tolerance (and the finding names the weightiest explanation other than the
-// nominal height with at least 5 % of the weight). What the silhouette says is a finding where
-// it says so: where more than half of its weight reads μ beyond the tolerance. A smaller share
-// (the reference photographs' photo-006: 28 %, in the close camera's view) is what the
-// mixture's spread in U covers; no reading on the benches that such a share no longer warns
-// is wrong.
+// The nominal conditions' check: a reading is ok while the silhouette's explanations leave
+// less than a 15 % chance that μ lies beyond the tolerance (and the finding names the
+// weightiest explanation other than the nominal height with at least 5 % of the weight).
 constexpr double kWrongRisk = 0.15;
-constexpr double kSaysShare = 0.5;
 constexpr double kPlausibleWeight = 0.05;
 // What the advice proposes: a final height measured with a micrometer, a scale measured on
 // the end-face plane with a reference disc, n fitted over the test's own strain range.
@@ -695,9 +689,8 @@ uint32_t nominalCheck(const MuFunction &F, const SpecimenSpec &spec, double u, d
     // What the silhouette says, explanation by explanation and, where the image left a
     // telecentric and a close view open, view by view: the share of the weight whose μ lies
     // beyond the tolerance from the reading's is the chance the reading is wrong for what the
-    // image cannot tell apart; beyond kSaysShare the image says so, a finding. The spread each
-    // part leaves is U's. Where that share lies in one view alone, the camera's distance
-    // decides it.
+    // image cannot tell apart; beyond kWrongRisk a finding. The spread each part leaves is U's.
+    // Where that share lies in one view alone, the camera's distance decides it.
     const int views = std::max(1, why->viewCount);
     double share = 0, shareInView[OutlineView::kMax] = {};
     for (int c = 0; c < views; ++c)
@@ -708,7 +701,7 @@ uint32_t nominalCheck(const MuFunction &F, const SpecimenSpec &spec, double u, d
             if (std::fabs(F.at(u * std::exp(-p.dk), kNominalReduction + p.dr, n) - mu) <= tol) continue;
             share += w, shareInView[c] += w;
         }
-    if (!(share > kSaysShare)) return 0;
+    if (!(share > kWrongRisk)) return 0;
     const bool oneView = why->viewCount > 1 && (shareInView[0] == 0 || shareInView[1] == 0);
     return oneView ? uint32_t(kFlagWorkingDistanceDecides) : named;
 }

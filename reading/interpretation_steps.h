@@ -169,14 +169,13 @@ ScaleAndReduction silhouettePosterior(const ScaleAndReduction &prior, const Silh
 // nominal half height with the declared scale, and under every explanation of the silhouette
 // that keeps some weight, against the reading's μ. Any of them beyond the tolerance is a
 // finding: reduction_not_nominal, or scale_suspect where a scale off explains the silhouette
-// best. Where the silhouette was seen (weighRisk false) what it says is the finding: more than
-// half of the weight in explanations (within each view the image left open) that read μ
-// beyond the tolerance, by their means; the spread each leaves is U's. Where that share lies
-// in a close or a telecentric view alone the camera's distance decides it:
-// working_distance_decides. Where nothing checked the height (weighRisk true) the chance that
-// μ lies beyond the tolerance under the explanations' priors, spreads and all, is the finding.
-// mu: the specimen's μ as the reading has it (for a model that reads at 50 % as published,
-// with the carry to the inferred height). *nominalMu: μ at the nominal conditions.
+// best. Where the silhouette was seen (weighRisk false) what it says is the finding: the share
+// of the weight whose explanations (within each view the image left open) read μ beyond the
+// tolerance, by their means; the spread each leaves is U's. Where that share lies in a close
+// or a telecentric view alone the camera's distance decides it: working_distance_decides.
+// Where nothing checked the height (weighRisk true) the chance that μ lies beyond the
+// tolerance under the explanations' priors, spreads and all, is the finding.
+// *nominalMu: μ at the nominal conditions.
 uint32_t nominalCheck(const MuFunction &F, const SpecimenSpec &spec, double uDeclaredMm, double mu,
                       const Explanations *why, double *nominalMu, bool weighRisk = false);
 

@@ -331,9 +331,8 @@ TEST(NominalCheck, TheSpreadAnAgreeingSilhouetteLeavesIsUsNotAFinding)
 
 // Where the image left a telecentric and a close view open and each reads its own height, the
 // share of the weight whose μ lies beyond the tolerance is the chance the reading is wrong:
-// over half, the image says so (a finding), and where that share lies in one view alone, the
-// camera's distance decides it; a smaller share is the mixture's spread, U's; a view that
-// reads the reading's height is no finding however wide it is.
+// over 15 % a finding, and where that share lies in one view alone, the camera's distance
+// decides it; a view that reads the reading's height is no finding however wide it is.
 TEST(NominalCheck, AViewThatReadsAnotherHeightNamesTheWorkingDistance)
 {
     const friction::FrictionModel &model = *friction::frictionModel(friction::kDefaultModel);
@@ -350,14 +349,12 @@ TEST(NominalCheck, AViewThatReadsAnotherHeightNamesTheWorkingDistance)
     double nominal = 0;
     EXPECT_EQ(nominalCheck(F, s, u, mu, &why, &nominal), 0u);
     why.part[1][Explanations::Nominal].dr = 0.03; // the close camera reads 53 %
-    EXPECT_EQ(nominalCheck(F, s, u, mu, &why, &nominal), 0u) << "a close view with 30 % of the weight";
-    why.partWeight[0][Explanations::Nominal] = 0.4, why.partWeight[1][Explanations::Nominal] = 0.6;
     EXPECT_EQ(nominalCheck(F, s, u, mu, &why, &nominal), uint32_t(kFlagWorkingDistanceDecides));
     why.partWeight[0][Explanations::Nominal] = 0.9, why.partWeight[1][Explanations::Nominal] = 0.1;
     EXPECT_EQ(nominalCheck(F, s, u, mu, &why, &nominal), 0u) << "a view with a tenth of the weight";
-    why.partWeight[0][Explanations::Nominal] = 0.3, why.partWeight[1][Explanations::Nominal] = 0.4;
-    why.partWeight[0][Explanations::OtherHeight] = 0.3, why.part[0][Explanations::OtherHeight].dr = 0.03;
-    why.weight[Explanations::OtherHeight] = 0.3, why.post[Explanations::OtherHeight].dr = 0.03;
+    why.partWeight[0][Explanations::Nominal] = 0.5, why.partWeight[1][Explanations::Nominal] = 0.3;
+    why.partWeight[0][Explanations::OtherHeight] = 0.2, why.part[0][Explanations::OtherHeight].dr = 0.03;
+    why.weight[Explanations::OtherHeight] = 0.2, why.post[Explanations::OtherHeight].dr = 0.03;
     EXPECT_EQ(nominalCheck(F, s, u, mu, &why, &nominal), uint32_t(kFlagReductionNotNominal))
         << "both views hold another height open";
 }

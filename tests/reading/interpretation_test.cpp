@@ -372,25 +372,4 @@ TEST(Interpretation, NoSilhouetteLeavesScaleAndHeightUnchecked)
     EXPECT_LT(seen.muSigma, o.muSigma);
 }
 
-// A silhouette 3 % larger than the FE's at half height, at μ 0.15 and 0.25: a scale off (or
-// another height) that moves the specimen's μ beyond the tolerance. The paper's model reads at
-// 50 % as published and leaves the carry to another height to U; its reading is held against
-// the nominal height by the specimen's μ (the reading plus that carry), so it says what the
-// default model says (held by its own μ at half height it said ok).
-TEST(Interpretation, AModelThatReadsAtHalfHeightIsCheckedOnTheSpecimensMu)
-{
-    for (double mu : {0.15, 0.25}) {
-        EndFaceGeometry g = face(1.03, false, kN, mu);
-        g.silhouetteScatterPx = 0.5;
-        SpecimenSpec spec;
-        spec.n = kN;
-        spec.mmPerPx = kMmPerPx;
-        const Reading paper = reading::interpret(g, spec, nullptr, *frictionModel("paper"));
-        const Reading fe = reading::interpret(g, spec, nullptr, *frictionModel(kDefaultModel));
-        EXPECT_EQ(fe.status, Status::Warn) << mu;
-        EXPECT_EQ(paper.status, Status::Warn) << mu;
-        EXPECT_EQ(paper.flags & kNominalFinding, fe.flags & kNominalFinding) << mu;
-    }
-}
-
 } // namespace icacam::reading
