@@ -218,15 +218,11 @@ TEST_P(FoldBrighterThanRingPhotos, TheDropIsTheOriginalFacesEdgeAndTheStepBackTh
     EXPECT_NEAR(p.g.outer.rEqPx, num(p.truth, "r_outer_px"), 1.0);
 }
 
-// The bench encodes its renders through a tone curve of γ 2.2, which draws each blurred edge's
-// steepest point towards its darker side: the original face's edge reads 0.24–0.50 px towards
-// the darker of face and ring. Told the curve, the pipeline locates it in linear light: within
-// 0.3 px here (−0.10 … +0.26), and at least 0.1 px nearer than untold.
 // A narrow ring whose barrel falls away over more pixels than half the ring: the contact
 // edge's width is taken within half the ring, so the ramp measures under a pixel
 // (straight-s3-0001: a 9 px ring, a fall over 8 px, 0.7 px) while the derivative peaks
-// 2.5 px outside the contact edge, Δμ +0.022 and ok. Where the ring's level ends the edge
-// reads 1.4 px outside; the original face's edge stays where it was.
+// 2.5 px outside the contact edge (Δμ +0.022 there). Taken where the ring's level ends, the
+// edge reads 1.4 px outside; the original face's edge stays where it was.
 class LongFallPhotos : public PhotoImages {};
 
 TEST_P(LongFallPhotos, ANarrowRingsContactEdgeIsWhereItsLevelEnds)
@@ -238,6 +234,10 @@ TEST_P(LongFallPhotos, ANarrowRingsContactEdgeIsWhereItsLevelEnds)
     EXPECT_NEAR(p.g.inner.rEqPx, num(p.truth, "r_inner_px"), 0.5);
 }
 
+// The bench encodes its renders through a tone curve of γ 2.2, which draws each blurred edge's
+// steepest point towards its darker side: the original face's edge reads 0.24–0.50 px towards
+// the darker of face and ring. Told the curve, the pipeline locates it in linear light: within
+// 0.3 px here (−0.10 … +0.26), and at least 0.1 px nearer than untold.
 class ToneCurvePhotos : public PhotoImages {};
 
 TEST_P(ToneCurvePhotos, TheOriginalFacesEdgeIsLocatedInLinearLight)

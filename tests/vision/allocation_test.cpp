@@ -3,11 +3,11 @@
 
 #include <string>
 
-#include <opencv2/imgcodecs.hpp>
-
 #include "friction/paper_model.h"
 #include "host_tools/end_face_renderer.h"
+#include "host_tools/image_file.h"
 #include "reading/instrument.h"
+#include "tests/host_tools/test_support.h"
 #include "tests/support/allocation_counter.h"
 #include "tests/vision/oblique_end_face.h"
 #include "vision/end_face_analyzer.h"
@@ -58,14 +58,17 @@ TEST(Allocation, NoneReadingAnObliqueViewAgain)
 // (tests/data/photo: straight-f4-0003): those searches allocate nothing either.
 TEST(Allocation, NoneReadingAboutTheStepBackBeyondADrop)
 {
-    const cv::Mat img = cv::imread(std::string(ICACAM_SOURCE_DIR) + "/tests/data/photo/images/straight-f4-0003.png",
-                                   cv::IMREAD_GRAYSCALE);
-    ASSERT_FALSE(img.empty());
+    const std::string dir = std::string(ICACAM_SOURCE_DIR) + "/tests/data/photo/";
+    const auto manifest = test::readCsvById(dir + "manifest.csv");
+    const auto &m = manifest.at("straight-f4-0003");
+    host::LumaImage image;
+    ASSERT_EQ(host::loadLuma(dir + m.at("image"), &image), "");
+    const cv::Mat &img = image.luma;
     vision::EndFaceAnalyzer analyzer;
     ASSERT_EQ(analyzer.configure(img.cols, img.rows), vision::ErrorCode::None);
     const vision::LumaView v{img.data, img.cols, img.rows, int(img.step[0]), 1};
     const long before = icacam::test::allocationCount();
-    const vision::EndFaceGeometry g = analyzer.measure(v, {10, 0.0370337});
+    const vision::EndFaceGeometry g = analyzer.measure(v, {std::stod(m.at("d0_mm")), std::stod(m.at("mm_per_px"))});
     const long after = icacam::test::allocationCount();
     ASSERT_EQ(g.error, vision::ErrorCode::None) << vision::errorMessage(g.error);
     EXPECT_EQ(after - before, 0) << "heap allocations during measure()";
