@@ -725,6 +725,13 @@ ErrorCode RingSearch::run(EndFaceGeometry *m)
         if (!me.namedByZones && me.rNext > 0 && stepsBackBeyond(me) && again(next) == ErrorCode::None &&
             std::fabs(m->inner.rEqPx - me.rOuter) <= kBackAgreesPx)
             return ErrorCode::None;
+        // The drop is the outline at the foot of a barrel that ramps down from the ring's level
+        // (a side flat about its widest section, turning from the light over tens of pixels,
+        // on a dark fixture): no ray finds an original face's edge inside the ramp, and the
+        // contact edge is where the ring's level ends.
+        MeanEdges onRamp;
+        if (!me.namedByZones && !movedInward && levelEndInsideDrop(me, &onRamp) && again(onRamp) == ErrorCode::None)
+            return ErrorCode::None;
         if (me.namedByZones || !movedInward) return onOutlineStep();
         // The largest drop named an edge, the centring took a sharper step of its sign inside
         // it instead, and no original face's edge lies inside that one: it is the original

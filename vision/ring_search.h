@@ -95,6 +95,12 @@ struct RingSearch {
     // original face's edge and a fold brighter (or darker) than it, not a highlight line
     // across a barrel band. Reads the profile at the fine step (the fine rows as scratch).
     bool stepsBackBeyond(const MeanEdges &me);
+    // Where the drop `me` names is the outline at the foot of a barrel that falls away from
+    // the ring as a long ramp (a side flatter about its widest section than a band, turning
+    // from the light over tens of pixels): the end of the ring's level inside it, as the
+    // contact edge to search about, the drop as the outline (false: no level ends a ramp
+    // there). Reads the profile at the fine step (the fine rows as scratch).
+    bool levelEndInsideDrop(const MeanEdges &me, MeanEdges *knee);
     // Moves (cx, cy) to the contact edge's own centre and returns its mean radius there
     // (me.rOuter when no fit is possible).
     double centreOnContactEdge(const MeanEdges &me);
