@@ -529,6 +529,7 @@ double RingSearch::centreOnContactEdge(const MeanEdges &me)
     // most) until it settles. The fit's mean radius replaces the mean profile's (which the
     // two edges' offset smears) as the radius the fine stage searches about, where they
     // differ by 3 px or more.
+    if (me.kneeOnRamp) return me.rOuter;
     constexpr int kCentringRays = 32, kFirstPassRays = 16; // the first pass: every fourth coarse ray
     constexpr int kCoarseStride = kCoarseRays / kFirstPassRays;
     const int fineStride = rays_ / kCentringRays;
@@ -699,6 +700,26 @@ ErrorCode RingSearch::run(EndFaceGeometry *m)
         const ErrorCode e2 = again(onOutline);
         return e2 == ErrorCode::None ? e2 : e;
     };
+    // The largest drop is the profile's outermost edge, nothing named beyond it, and the
+    // ring's level ends well inside it, the profile ramping down from there to the drop: the
+    // drop may be the outline at the foot of a barrel that turns from the light over tens of
+    // pixels (a side flat about its widest section, on a dark fixture), the contact edge where
+    // the ring's level ends (levelEndInsideDrop). Read about the drop, the ring then spans the
+    // ramp, R_o on the outline, and no outline shows beyond it: there the ring is read again
+    // about the knee. A reading that found an outline beyond its contact edge stands, as one
+    // whose barrel band swings round the ring (a tilted view, whose mean profile, smeared
+    // across the ellipse, ramps as well). The ring about the knee is taken where both its
+    // boundaries hold on most rays and, against a ring read about the drop, where its contact
+    // edge lies inside the ramp, not where the drop's did.
+    const bool dropOutermost = !me.namedByZones && !(me.rNext > 0) && !(me.rOutline > 0) && !(me.rMax > 0);
+    MeanEdges onRamp;
+    auto readOnRamp = [&](double dropOuterPx) {
+        return again(onRamp) == ErrorCode::None && std::min(m->inner.coverage, m->outer.coverage) >= kLowCoverage &&
+               !(m->outer.rEqPx > dropOuterPx - onRamp.reachOutPx);
+    };
+    if (e == ErrorCode::None && dropOutermost && !(m->rMaxPx > 0) && !(m->imageFlags & kImageBarrelOblique) &&
+        levelEndInsideDrop(me, &onRamp))
+        return readOnRamp(m->outer.rEqPx) ? ErrorCode::None : again(me);
     if (deferred) {
         // No ray saw an original face's edge inside the largest drop: on a staircase the drop
         // is as likely the original face's edge itself, two steps of one face edge not round
@@ -725,12 +746,10 @@ ErrorCode RingSearch::run(EndFaceGeometry *m)
         if (!me.namedByZones && me.rNext > 0 && stepsBackBeyond(me) && again(next) == ErrorCode::None &&
             std::fabs(m->inner.rEqPx - me.rOuter) <= kBackAgreesPx)
             return ErrorCode::None;
-        // The drop is the outline at the foot of a barrel that ramps down from the ring's level
-        // (a side flat about its widest section, turning from the light over tens of pixels,
-        // on a dark fixture): no ray finds an original face's edge inside the ramp, and the
-        // contact edge is where the ring's level ends.
-        MeanEdges onRamp;
-        if (!me.namedByZones && !movedInward && levelEndInsideDrop(me, &onRamp) && again(onRamp) == ErrorCode::None)
+        // No ray found an original face's edge inside a drop that is the outline at a ramp's
+        // foot (above).
+        if (dropOutermost && !movedInward && levelEndInsideDrop(me, &onRamp) &&
+            readOnRamp(me.rOuter + onRamp.reachOutPx))
             return ErrorCode::None;
         if (me.namedByZones || !movedInward) return onOutlineStep();
         // The largest drop named an edge, the centring took a sharper step of its sign inside
@@ -775,8 +794,11 @@ ErrorCode RingSearch::ringAbout(const MeanEdges &me, EndFaceGeometry *m, bool pr
     BoundaryFit outer, inner;
     double outerR[kRays], innerR[kRays]; // the fitted curves at every fine ray
     double contrastOuter = 0, contrastInner = 0;
+    // A knee on a ramp is searched for no farther in than half the level it ends: a ring a
+    // few margins wide would reach the original face's edge, the one clear step there.
+    const double inside = me.kneeOnRamp ? std::min(margin, std::max(3.0, me.reachInPx)) : margin;
     for (int i = 0; i < rays_; ++i) {
-        lo[i] = rOuter - margin;
+        lo[i] = rOuter - inside;
         hi[i] = rOuter + outerHi;
     }
     const int32_t outerMin = std::max<int32_t>(8, int32_t(0.3 * me.strengthOuter));
@@ -858,7 +880,9 @@ ErrorCode RingSearch::ringAbout(const MeanEdges &me, EndFaceGeometry *m, bool pr
     double outlineR[kCoarseRays];
     const double perRay =
         silhouetteFromRays(outerR, edgeWidth >= 0 ? edgeWidth : kUnknownBlurPx, m, &lopsided, outlineR);
-    m->rMaxPx = perRay > 0 ? perRay : lopsided ? 0 : me.rMax;
+    // A barrel fading down its ramp into a dark fixture steps down fastest inside its outline:
+    // where the rays show none, the drop at the ramp's foot is not taken for it.
+    m->rMaxPx = perRay > 0 ? perRay : lopsided || me.kneeOnRamp ? 0 : me.rMax;
     if (lopsided) m->imageFlags |= kImageBarrelOblique;
     if (m->rMaxPx > 0 && outlineRivalled(m->rMaxPx)) {
         m->imageFlags |= kImageOutlineAmbiguous;

@@ -72,6 +72,10 @@ struct RingSearch {
         int32_t strengthOutline = 0;
         // The ring is searched as an oblique view's, the contact edge's ramp judged arc by arc.
         bool seenObliquely = false;
+        // The edge named is where a level ends at the top of a ramp, no step: the centring,
+        // which follows the strongest step about it, would walk down the ramp onto the
+        // outline; the coarse centre and the radius named stand.
+        bool kneeOnRamp = false;
     };
     // The fine rays' directions for the ring's size, and the mean profile's edges.
     MeanEdges castRays();

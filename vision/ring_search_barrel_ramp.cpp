@@ -19,6 +19,8 @@ namespace {
 // face is even to well under a grey per pixel; a barrel turning away from the light falls by
 // several (the bench's flat-sided barrels: 2–9 per pixel over 15–25 px).
 constexpr int32_t kLevelSlopeQ8 = 256 / 2;
+// How far a level's samples stray from its mean (Q8): a grey and a half.
+constexpr int32_t kLevelRippleQ8 = 3 * 256 / 2;
 // The ramp must carry a quarter of the fall from the ring to the background at least: a
 // drawn band's edge has none, and a highlight's flank a few per cent.
 constexpr double kRampShareOfFall = 0.25;
@@ -52,7 +54,13 @@ bool RingSearch::levelEndInsideDrop(const MeanEdges &me, MeanEdges *knee)
     int flat = 0;
     for (int k = j; k > 2 && std::abs(slope(k)) <= kLevelSlopeQ8; --k) ++flat;
     if (flat < hold) return false;
-    const int kneeAt = j;
+    // The slope's window reaches two pixels either side: the level itself ends where the
+    // profile first leaves it by more than a ripple, at most two pixels on.
+    int64_t sum = 0;
+    for (int k = j - flat + 1; k <= j; ++k) sum += mean[k];
+    const int32_t level = int32_t(sum / flat);
+    int kneeAt = j;
+    while (kneeAt < j + 2 && kneeAt < top && std::abs(int32_t(mean[kneeAt + 1]) - level) <= kLevelRippleQ8) ++kneeAt;
     // The ramp beyond the knee is the barrel's, not the drop's own blurred flank (a few
     // pixels): longer than that, and carrying its share of the fall.
     const int rampPx = drop - kneeAt;
@@ -79,7 +87,8 @@ bool RingSearch::levelEndInsideDrop(const MeanEdges &me, MeanEdges *knee)
     knee->reachInPx = 0.5 * flat;
     knee->reachOutPx = 0.5 * rampPx;
     knee->rMax = me.rOuter;
-    knee->namedByZones = true; // the centring must not go back to the drop
+    knee->namedByZones = true;
+    knee->kneeOnRamp = knee->signOuter == s; // a step up onto a fold is centred on as any step
     knee->undecided = false;
     knee->rNext = knee->rOutline = 0;
     return true;
