@@ -65,9 +65,10 @@ bool RingSearch::levelEndInsideDrop(const MeanEdges &me, MeanEdges *knee)
     // pixels): longer than that, and carrying its share of the fall.
     const int rampPx = drop - kneeAt;
     if (rampPx < std::max(6.0, 0.05 * r0)) return false;
-    const int32_t ring = mean[kneeAt], foot = mean[std::min(n - 1, drop + 2)];
-    const int32_t mid = mean[std::max(kneeAt, drop - 3)];
-    const int32_t fall = s * (foot - ring), rampFall = s * (mid - ring);
+    // The fall is the ramp's, from its top (the ring's level, or the fold above it).
+    const int32_t start = mean[top], foot = mean[std::min(n - 1, drop + 2)];
+    const int32_t mid = mean[std::max(top, drop - 3)];
+    const int32_t fall = s * (foot - start), rampFall = s * (mid - start);
     if (fall < kMinZoneStep || rampFall < kRampShareOfFall * fall) return false;
     *knee = me;
     knee->rOuter = fromPx + kneeAt * kFineStepPx;

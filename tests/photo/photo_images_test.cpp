@@ -223,8 +223,10 @@ TEST_P(FoldBrighterThanRingPhotos, TheDropIsTheOriginalFacesEdgeAndTheStepBackTh
 // ring at its top, or none), and the largest drop on the mean profile is the outline at the
 // ramp's foot. Read about that drop, no ray finds an original face's edge inside it (seed 41:
 // inner edge not found before) or the ring spans the ramp (seed 42: R_o read on the outline,
-// 15 px out, Δμ +0.15); the contact edge is where the ring's level ends inside it: R_i within
-// half a pixel, R_o within one, the outline (where the rays show one) where it is.
+// 15 px out, Δμ +0.15); the contact edge is where the ring's level ends inside it, or the step
+// up onto the fold beyond a dark ring (the FE's own barrel too, seed 31: R_o read on the fold's
+// far side, 7.9 px out, before): R_i within half a pixel, R_o within one, the outline (where
+// the rays show one) where it is.
 class RampingBarrelPhotos : public PhotoImages {};
 
 TEST_P(RampingBarrelPhotos, TheContactEdgeIsWhereTheRingsLevelEndsInsideTheRamp)
@@ -312,7 +314,7 @@ INSTANTIATE_TEST_SUITE_P(Rendered, FoldBrighterThanRingPhotos,
 
 INSTANTIATE_TEST_SUITE_P(Rendered, RampingBarrelPhotos,
                          ::testing::Values("straight-f4-0004", "straight-f4-0014", "straight-f4s42-0004",
-                                           "straight-f4s42-0009"),
+                                           "straight-f4s42-0009", "straight-s31-0003"),
                          recordName);
 
 INSTANTIATE_TEST_SUITE_P(Rendered, LongFallPhotos, ::testing::Values("straight-s3-0001"), recordName);
