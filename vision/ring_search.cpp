@@ -713,13 +713,14 @@ ErrorCode RingSearch::run(EndFaceGeometry *m)
     // edge lies inside the ramp, not where the drop's did.
     const bool dropOutermost = !me.namedByZones && !(me.rNext > 0) && !(me.rOutline > 0) && !(me.rMax > 0);
     MeanEdges onRamp;
-    auto readOnRamp = [&](double dropOuterPx) {
+    // outerMaxPx: the farthest out its contact edge may lie.
+    auto readOnRamp = [&](double outerMaxPx) {
         return again(onRamp) == ErrorCode::None && std::min(m->inner.coverage, m->outer.coverage) >= kLowCoverage &&
-               !(m->outer.rEqPx > dropOuterPx - onRamp.reachOutPx);
+               m->outer.rEqPx <= outerMaxPx;
     };
     if (e == ErrorCode::None && dropOutermost && !(m->rMaxPx > 0) && !(m->imageFlags & kImageBarrelOblique) &&
         levelEndInsideDrop(me, &onRamp))
-        return readOnRamp(m->outer.rEqPx) ? ErrorCode::None : again(me);
+        return readOnRamp(m->outer.rEqPx - onRamp.reachOutPx) ? ErrorCode::None : again(me);
     if (deferred) {
         // No ray saw an original face's edge inside the largest drop: on a staircase the drop
         // is as likely the original face's edge itself, two steps of one face edge not round
@@ -748,8 +749,7 @@ ErrorCode RingSearch::run(EndFaceGeometry *m)
             return ErrorCode::None;
         // No ray found an original face's edge inside a drop that is the outline at a ramp's
         // foot (above).
-        if (dropOutermost && !movedInward && levelEndInsideDrop(me, &onRamp) &&
-            readOnRamp(me.rOuter + onRamp.reachOutPx))
+        if (dropOutermost && !movedInward && levelEndInsideDrop(me, &onRamp) && readOnRamp(me.rOuter))
             return ErrorCode::None;
         if (me.namedByZones || !movedInward) return onOutlineStep();
         // The largest drop named an edge, the centring took a sharper step of its sign inside
