@@ -66,22 +66,35 @@ bool fitBoundary(const double *radiusPx, const bool *valid, int n, double centre
     for (int i = 0; i < n; ++i) curve[i] = med;
     // r at ray i: a0 + Σ a_k cos(kθ_i) + b_k sin(kθ_i), with kθ_i looked up mod 2π. Rays i
     // and n − i lie at ±θ (n is a power of two): they share cos kθ and have opposite
-    // sin kθ, so each table pair serves two rays.
+    // sin kθ, so each table pair serves two rays. cos kθ_i and sin kθ_i for i ≤ n/2 are
+    // gathered once per fit (the table's own values, so every sum is as before): the sweeps
+    // then read them in order, and the curve's update vectorises.
     const int half = n / 2;
+    const int maxK = std::min({opt.maxHarmonics, BoundaryFit::kMaxHarmonics, (n - 1) / 2});
+    double cosK[BoundaryFit::kMaxHarmonics + 1][kTable / 2 + 1], sinK[BoundaryFit::kMaxHarmonics + 1][kTable / 2 + 1];
+    for (int k = 1; k <= maxK; ++k) {
+        const int dj = k * stride;
+        for (int i = 0, j = 0; i <= half; ++i, j = (j + dj) & (kTable - 1)) {
+            cosK[k][i] = T.cos[j];
+            sinK[k][i] = T.sin[j];
+        }
+    }
+    double upper[kMaxRays / 2]; // curve[n − i] for 1 ≤ i < n/2, in the order of i
     auto updateCurve = [&]() {
-        for (int i = 0; i < n; ++i) curve[i] = f.a0;
+        for (int i = 0; i <= half; ++i) curve[i] = f.a0;
+        for (int i = 1; i < half; ++i) upper[i] = f.a0;
         for (int k = 1; k <= f.harmonics; ++k) {
             const double ak = f.a[k], bk = f.b[k];
-            const int dj = k * stride;
-            curve[0] += ak * T.cos[0] + bk * T.sin[0];
-            const int jh = (half * dj) & (kTable - 1);
-            curve[half] += ak * T.cos[jh] + bk * T.sin[jh];
-            for (int i = 1, j = dj & (kTable - 1); i < half; ++i, j = (j + dj) & (kTable - 1)) {
-                const double c = ak * T.cos[j], sn = bk * T.sin[j];
+            const double *ck = cosK[k], *sk = sinK[k];
+            curve[0] += ak * ck[0] + bk * sk[0];
+            curve[half] += ak * ck[half] + bk * sk[half];
+            for (int i = 1; i < half; ++i) {
+                const double c = ak * ck[i], sn = bk * sk[i];
                 curve[i] += c + sn;
-                curve[n - i] += c - sn;
+                upper[i] += c - sn;
             }
         }
+        for (int i = 1; i < half; ++i) curve[n - i] = upper[i];
     };
     int used = 0;
     for (int pass = 0; pass < 3; ++pass) {
@@ -104,13 +117,12 @@ bool fitBoundary(const double *radiusPx, const bool *valid, int n, double centre
                 pairDiff[i] = filled[i] - filled[n - i];
             }
             for (int k = 1; k <= K; ++k) {
-                const int dj = k * stride;
-                const int jh = (half * dj) & (kTable - 1);
-                double sa = filled[0] * T.cos[0] + filled[half] * T.cos[jh];
-                double sb = filled[0] * T.sin[0] + filled[half] * T.sin[jh];
-                for (int i = 1, j = dj & (kTable - 1); i < half; ++i, j = (j + dj) & (kTable - 1)) {
-                    sa += pairSum[i] * T.cos[j];
-                    sb += pairDiff[i] * T.sin[j];
+                const double *ck = cosK[k], *sk = sinK[k];
+                double sa = filled[0] * ck[0] + filled[half] * ck[half];
+                double sb = filled[0] * sk[0] + filled[half] * sk[half];
+                for (int i = 1; i < half; ++i) {
+                    sa += pairSum[i] * ck[i];
+                    sb += pairDiff[i] * sk[i];
                 }
                 g.a[k] = sa * (2.0 / n);
                 g.b[k] = sb * (2.0 / n);
@@ -118,11 +130,20 @@ bool fitBoundary(const double *radiusPx, const bool *valid, int n, double centre
             f = g;
             updateCurve();
         }
-        int m = 0;
+        // The residuals' robust σ (1.4826 × their median) sets the rejection limit unless the
+        // floor minRejectPx is larger. Its term grows with the residual, so the floor holds
+        // exactly where half the residuals or more give a term within it: counted on the way,
+        // the median is then not needed (on a clean edge, nearly always).
+        int m = 0, withinFloor = 0;
         for (int i = 0; i < n; ++i)
-            if (keep[i]) work[m++] = std::fabs(radiusPx[i] - curve[i]);
-        const double sigma = 1.4826 * medianOf(work, m);
-        const double limit = std::max(opt.minRejectPx, opt.rejectSigma * sigma);
+            if (keep[i]) {
+                const double e = std::fabs(radiusPx[i] - curve[i]);
+                work[m++] = e;
+                withinFloor += opt.rejectSigma * (1.4826 * e) <= opt.minRejectPx;
+            }
+        const double limit = withinFloor >= m / 2 + 1
+                                 ? opt.minRejectPx
+                                 : std::max(opt.minRejectPx, opt.rejectSigma * (1.4826 * medianOf(work, m)));
         for (int i = 0; i < n; ++i) keep[i] = valid[i] && std::fabs(radiusPx[i] - curve[i]) <= limit;
     }
     used = 0;

@@ -60,18 +60,26 @@ bool RingSearch::alignedProfile(const double *outerR, AlignedProfile *p, bool on
     std::fill_n(sum, count, 0u);
     std::fill_n(n, count, 0u);
     uint16_t row[AlignedProfile::kSpan];
+    uint32_t whole = 0;
     for (int i = first; i < end; i += stride) {
         if (!(onInner ? innerPts[i] : outerPts[i]).valid) continue;
         const double ro = outerR[i];
         RaySpec ray{Q16_16::fromDouble(cx),     Q16_16::fromDouble(cy), rayCosQ_[i], raySinQ_[i],
                     Q16_16::fromDouble(ro - K), Q16_16::fromDouble(1.0)};
-        sampleRay(*frame, ray, count, row);
+        // A ray inside the frame throughout adds to every sample (a loop the compiler
+        // vectorises); one leaving it only where it has a sample.
+        if (sampleRay(*frame, ray, count, row) == count) {
+            for (int k = 0; k < count; ++k) sum[k] += row[k];
+            ++whole;
+            continue;
+        }
         for (int k = 0; k < count; ++k)
             if (row[k] != kOutsideFrame) {
                 sum[k] += row[k];
                 n[k]++;
             }
     }
+    for (int k = 0; k < count; ++k) n[k] += whole;
     uint16_t mean[AlignedProfile::kSpan] = {}; // count ≤ kSpan are set; zeroed for GCC's flow analysis at -O0
     for (int k = 0; k < count; ++k) {
         mean[k] = n[k] * 2 >= uint32_t(rays) ? uint16_t(sum[k] / n[k]) : kOutsideFrame;
