@@ -73,6 +73,14 @@ void expectNamed(const Photo &p)
     EXPECT_NEAR(p.g.outer.rEqPx, ro, 0.5 * std::min(ro - ri, outline - ro));
 }
 
+// Both boundaries read where the rendering drew them: R_i and R_o within the given pixels.
+void expectRing(const Photo &p, double innerPx, double outerPx)
+{
+    ASSERT_EQ(p.g.error, vision::ErrorCode::None) << vision::errorMessage(p.g.error);
+    EXPECT_NEAR(p.g.inner.rEqPx, num(p.truth, "r_inner_px"), innerPx);
+    EXPECT_NEAR(p.g.outer.rEqPx, num(p.truth, "r_outer_px"), outerPx);
+}
+
 TEST_P(PhotoImages, NamesTheOriginalFaceAndTheContactEdge)
 {
     expectNamed(measure(GetParam()));
@@ -212,10 +220,7 @@ class FoldBrighterThanRingPhotos : public PhotoImages {};
 
 TEST_P(FoldBrighterThanRingPhotos, TheDropIsTheOriginalFacesEdgeAndTheStepBackTheContactEdge)
 {
-    const Photo p = measure(GetParam());
-    ASSERT_EQ(p.g.error, vision::ErrorCode::None) << vision::errorMessage(p.g.error);
-    EXPECT_NEAR(p.g.inner.rEqPx, num(p.truth, "r_inner_px"), 0.5);
-    EXPECT_NEAR(p.g.outer.rEqPx, num(p.truth, "r_outer_px"), 1.0);
+    expectRing(measure(GetParam()), 0.5, 1.0);
 }
 
 // A barrel flat about its widest section on a black fixture: beyond the ring's level the side
@@ -232,9 +237,7 @@ class RampingBarrelPhotos : public PhotoImages {};
 TEST_P(RampingBarrelPhotos, TheContactEdgeIsWhereTheRingsLevelEndsInsideTheRamp)
 {
     const Photo p = measure(GetParam());
-    ASSERT_EQ(p.g.error, vision::ErrorCode::None) << vision::errorMessage(p.g.error);
-    EXPECT_NEAR(p.g.inner.rEqPx, num(p.truth, "r_inner_px"), 0.5);
-    EXPECT_NEAR(p.g.outer.rEqPx, num(p.truth, "r_outer_px"), 1.0);
+    expectRing(p, 0.5, 1.0);
     // The outline where the rays show one (a side fading into the black fixture may show
     // none): not the drop's inner flank.
     if (p.g.rMaxPx > 0) { EXPECT_NEAR(p.g.rMaxPx, num(p.truth, "outline_px"), 0.02 * num(p.truth, "outline_px")); }
