@@ -26,6 +26,27 @@ double BoundaryFit::radiusAt(double c1, double s1) const
     return r;
 }
 
+void radiiAt(const BoundaryFit &fit, const double *cosT, const double *sinT, int n, double *out)
+{
+    constexpr int kChunk = 64;
+    double ck[kChunk], sk[kChunk];
+    for (int base = 0; base < n; base += kChunk) {
+        const int m = std::min(kChunk, n - base);
+        const double *c1 = cosT + base, *s1 = sinT + base;
+        double *r = out + base;
+        for (int i = 0; i < m; ++i) r[i] = fit.a0, ck[i] = 1, sk[i] = 0;
+        for (int k = 1; k <= fit.harmonics; ++k) {
+            const double ak = fit.a[k], bk = fit.b[k];
+            for (int i = 0; i < m; ++i) {
+                const double c = ck[i] * c1[i] - sk[i] * s1[i];
+                sk[i] = sk[i] * c1[i] + ck[i] * s1[i];
+                ck[i] = c;
+                r[i] += ak * ck[i] + bk * sk[i];
+            }
+        }
+    }
+}
+
 namespace {
 
 constexpr int kMaxRays = 1024;

@@ -17,4 +17,9 @@ struct FitOptions {
 bool fitBoundary(const double *radiusPx, const bool *valid, int n, double centreX, double centreY,
                  const FitOptions &opt, BoundaryFit *out, double *curveOut = nullptr);
 
+// The fitted radius in n directions at once (cos θ_i, sin θ_i): the same arithmetic as
+// BoundaryFit::radiusAt for each, bit for bit, with the harmonics' recurrence run across the
+// directions in step so that it vectorises.
+void radiiAt(const BoundaryFit &fit, const double *cosT, const double *sinT, int n, double *out);
+
 } // namespace icacam::vision

@@ -81,9 +81,10 @@ bool EndFaceAnalyzer::centreByRays(const LumaView &v, double r0Px, RayEdge edge,
         // 1.5 % of the radius, far below the edges' spacing).
         const double step = std::max({2.0, std::min(4.0, 0.015 * r0Px), (rB - rA) / kMaxCoarseSamples});
         const int count = std::min(kMaxCoarseSamples, int((rB - rA) / step));
+        const RaySpec along{Q16_16::fromDouble(*cx), Q16_16::fromDouble(*cy), {}, {},
+                            Q16_16::fromDouble(rA),  Q16_16::fromDouble(step)};
         for (int i = 0; i < rays; ++i) {
-            RaySpec ray{Q16_16::fromDouble(*cx), Q16_16::fromDouble(*cy), {}, {},
-                        Q16_16::fromDouble(rA),  Q16_16::fromDouble(step)};
+            RaySpec ray = along;
             rayDirection(i, rays, &ray.cosT, &ray.sinT);
             uint16_t *row = coarse_ + size_t(i) * kMaxCoarseSamples;
             sampleRay(v, ray, count, row);
@@ -113,9 +114,10 @@ void EndFaceAnalyzer::castCoarseRays(const LumaView &v, double r0Px, double cx, 
     const double rA = kCoarseStart * r0Px;
     const double step = coarseStep(r0Px);
     const int count = coarseCount(r0Px);
+    const RaySpec along{Q16_16::fromDouble(cx), Q16_16::fromDouble(cy),  {}, {},
+                        Q16_16::fromDouble(rA), Q16_16::fromDouble(step)};
     for (int i = 0; i < kCoarseRays; ++i) {
-        RaySpec ray{Q16_16::fromDouble(cx), Q16_16::fromDouble(cy),  {}, {},
-                    Q16_16::fromDouble(rA), Q16_16::fromDouble(step)};
+        RaySpec ray = along;
         rayDirection(i, kCoarseRays, &ray.cosT, &ray.sinT);
         sampleRay(v, ray, count, coarse_ + size_t(i) * kMaxCoarseSamples);
     }

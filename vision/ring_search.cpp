@@ -44,7 +44,9 @@ constexpr double kLowCoverage = 0.6;
 // scratch lines) average out over a box wider than their period; a level change does not.
 void boxStep(const int32_t *t, int count, int w, bool allInside, int16_t *d)
 {
-    const int32_t scale = w * 32; // 4·256/32: out in 1/32 grey
+    // 4·256/32: out in 1/32 grey. |out − in| ≤ w · 4 · 65280, so the step stays within
+    // ±8160 and fits int16 as it is.
+    const int32_t scale = w * 32;
     if (allInside) {
         // Every t[j] is usable: slide the two boxes (the same integer sums as the prefix
         // path below, at a third of its work).
@@ -54,7 +56,7 @@ void boxStep(const int32_t *t, int count, int w, bool allInside, int16_t *d)
         for (int m = 0; m < w; ++m) in += t[m];
         for (int m = w + 1; m <= 2 * w; ++m) out += t[m];
         for (int j = w;; ++j) {
-            d[j] = int16_t(std::clamp((out - in) / scale, -32767, 32767));
+            d[j] = static_cast<int16_t>((out - in) / scale);
             if (j + w + 1 >= count) break;
             out += t[j + w + 1] - t[j + 1];
             in += t[j] - t[j - w];
@@ -78,7 +80,7 @@ void boxStep(const int32_t *t, int count, int w, bool allInside, int16_t *d)
             continue;
         }
         const int32_t diff = (prefix[j + w + 1] - prefix[j + 1]) - (prefix[j] - prefix[j - w]);
-        d[j] = int16_t(std::clamp(diff / scale, -32767, 32767));
+        d[j] = static_cast<int16_t>(diff / scale);
     }
 }
 
@@ -108,15 +110,23 @@ RingSearch::MeanEdges RingSearch::meanProfileEdges()
     const double step = coarseStep(r0);
     const int count = coarseCount(r0);
     uint16_t mean[kMaxCoarse];
-    for (int j = 0; j < count; ++j) {
-        uint32_t sum = 0, n = 0;
-        for (int i = 0; i < kCoarseRays; ++i) {
-            const uint16_t s = coarse[size_t(i) * kMaxCoarse + j];
-            if (s == kOutsideFrame) continue;
-            sum += s;
-            ++n;
+    // Ray by ray into per-sample sums (loops the compiler vectorises); a ray that leaves the
+    // frame adds only its samples inside it.
+    uint32_t sums[kMaxCoarse] = {}, seen[kMaxCoarse] = {};
+    uint32_t whole = 0;
+    for (int i = 0; i < kCoarseRays; ++i) {
+        const uint16_t *row = coarse + size_t(i) * kMaxCoarse;
+        if (!anyOutsideFrame(row, count)) {
+            for (int j = 0; j < count; ++j) sums[j] += row[j];
+            ++whole;
+            continue;
         }
-        mean[j] = n * 4 >= kCoarseRays ? uint16_t(sum / n) : kOutsideFrame;
+        for (int j = 0; j < count; ++j)
+            if (row[j] != kOutsideFrame) sums[j] += row[j], ++seen[j];
+    }
+    for (int j = 0; j < count; ++j) {
+        const uint32_t nj = seen[j] + whole;
+        mean[j] = nj * 4 >= kCoarseRays ? uint16_t(sums[j] / nj) : kOutsideFrame;
         meanProfile[j] = mean[j];
     }
     profileDerivative(mean, count, meanDeriv);
@@ -373,16 +383,24 @@ void RingSearch::finerMeanProfile(double fromPx, double stepPx, int count, uint1
     uint32_t sum[kMaxFine] = {}, n[kMaxFine] = {};
     const int stride = rays_ / kCoarseRays;
     uint16_t *row = fine; // the fine stage fills the fine rows afresh
+    const RaySpec along{Q16_16::fromDouble(cx),     Q16_16::fromDouble(cy),    {}, {},
+                        Q16_16::fromDouble(fromPx), Q16_16::fromDouble(stepPx)};
+    uint32_t whole = 0;
     for (int i = 0; i < kCoarseRays; ++i) {
-        RaySpec ray{Q16_16::fromDouble(cx), Q16_16::fromDouble(cy),     rayCosQ_[i * stride],
-                    raySinQ_[i * stride],   Q16_16::fromDouble(fromPx), Q16_16::fromDouble(stepPx)};
-        sampleRay(*frame, ray, count, row);
+        RaySpec ray = along;
+        ray.cosT = rayCosQ_[i * stride], ray.sinT = raySinQ_[i * stride];
+        if (sampleRay(*frame, ray, count, row) == count) { // inside the frame throughout
+            for (int j = 0; j < count; ++j) sum[j] += row[j];
+            ++whole;
+            continue;
+        }
         for (int j = 0; j < count; ++j)
             if (row[j] != kOutsideFrame) {
                 sum[j] += row[j];
                 ++n[j];
             }
     }
+    for (int j = 0; j < count; ++j) n[j] += whole;
     for (int j = 0; j < count; ++j) mean[j] = n[j] * 4 >= kCoarseRays ? uint16_t(sum[j] / n[j]) : kOutsideFrame;
 }
 
@@ -391,10 +409,11 @@ void RingSearch::sampleWindow(const double *start, double step, int count, int b
     fineStep_ = step;
     fineCount_ = count;
     uint32_t saturated = 0, inside = 0;
+    // The centre and the step are the same on every ray: converted once.
+    const Q16_16 qx = Q16_16::fromDouble(cx), qy = Q16_16::fromDouble(cy), qStep = Q16_16::fromDouble(step);
     for (int i = 0; i < rays_; ++i) {
         fineStart_[i] = start[i];
-        RaySpec ray{Q16_16::fromDouble(cx),       Q16_16::fromDouble(cy),  rayCosQ_[i], raySinQ_[i],
-                    Q16_16::fromDouble(start[i]), Q16_16::fromDouble(step)};
+        RaySpec ray{qx, qy, rayCosQ_[i], raySinQ_[i], Q16_16::fromDouble(start[i]), qStep};
         uint16_t *row = fine + size_t(i) * kMaxFine;
         inside += uint32_t(sampleRay(*frame, ray, count, row));
     }
@@ -412,8 +431,8 @@ void RingSearch::sampleWindow(const double *start, double step, int count, int b
         const uint16_t *c = fine + size_t((i + 1) % rays_) * kMaxFine;
         // Two loops the compiler vectorises (one mixing the count and the sums does not).
         for (int j = 0; j < count; ++j) t[j] = int32_t(a[j]) + 2 * int32_t(b[j]) + int32_t(c[j]);
-        uint32_t full = 0;
-        for (int j = 0; j < count; ++j) full += uint32_t(b[j] == kFullScaleQ8);
+        uint16_t full = 0; // at most kMaxFine: counted in 16-bit lanes
+        for (int j = 0; j < count; ++j) full = uint16_t(full + (b[j] == kFullScaleQ8));
         saturated += full;
         if (!allInside) // a sum touching a sample outside the frame is marked unusable
             for (int j = 0; j < count; ++j)
@@ -425,9 +444,11 @@ void RingSearch::sampleWindow(const double *start, double step, int count, int b
         }
         d[0] = d[1] = 0;
         if (count >= 2) d[count - 1] = d[count - 2] = 0;
+        // |g| ≤ 3 · 4 · 65280, so g >> 6 stays within ±12 240: it fits int16 as it is (no clamp,
+        // and the loop vectorises).
         for (int j = 2; j + 2 < count; ++j) {
             const int32_t g = t[j + 2] + 2 * t[j + 1] - 2 * t[j - 1] - t[j - 2];
-            d[j] = int16_t(std::clamp(g >> 6, -32767, 32767));
+            d[j] = static_cast<int16_t>(g >> 6);
         }
         if (!allInside)
             for (int j = 2; j + 2 < count; ++j)
@@ -460,7 +481,7 @@ bool RingSearch::locateOnRays(int sign, int fallbackSign, const double *loPx, co
             radius[h] = fineStart_[i] + p.position.toDouble() * fineStep_;
         }
         if (!fitBoundary(radius, valid, half, cx, cy, FitOptions{}, fit)) return false;
-        for (int i = 0; i < rays_; ++i) curveOut[i] = fit->radiusAt(rayCos_[i], raySin_[i]);
+        radiiAt(*fit, rayCos_, raySin_, rays_, curveOut);
         return true;
     }
     for (int i = 0; i < rays_; ++i) {
@@ -565,6 +586,8 @@ double RingSearch::centreOnContactEdge(const MeanEdges &me)
         const int loWide = me.namedByZones ? lo : std::max(3, int((r - w - rA) / step));
         const double at = (r - rA) / step;
         const int rays = coarseRows ? kFirstPassRays : kCentringRays;
+        const RaySpec along{Q16_16::fromDouble(cx), Q16_16::fromDouble(cy),  {}, {},
+                            Q16_16::fromDouble(rA), Q16_16::fromDouble(step)};
         int found = 0;
         for (int k = 0; k < rays; ++k) {
             const uint16_t *row;
@@ -573,8 +596,8 @@ double RingSearch::centreOnContactEdge(const MeanEdges &me)
             } else {
                 const int i = k * fineStride;
                 uint16_t *out = fine + size_t(k) * kMaxFine;
-                RaySpec ray{Q16_16::fromDouble(cx), Q16_16::fromDouble(cy),  rayCosQ_[i], raySinQ_[i],
-                            Q16_16::fromDouble(rA), Q16_16::fromDouble(step)};
+                RaySpec ray = along;
+                ray.cosT = rayCosQ_[i], ray.sinT = raySinQ_[i];
                 sampleRay(*frame, ray, count, out);
                 row = out;
             }

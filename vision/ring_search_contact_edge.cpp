@@ -61,11 +61,11 @@ bool RingSearch::alignedProfile(const double *outerR, AlignedProfile *p, bool on
     std::fill_n(n, count, 0u);
     uint16_t row[AlignedProfile::kSpan];
     uint32_t whole = 0;
+    const Q16_16 qx = Q16_16::fromDouble(cx), qy = Q16_16::fromDouble(cy);
     for (int i = first; i < end; i += stride) {
         if (!(onInner ? innerPts[i] : outerPts[i]).valid) continue;
         const double ro = outerR[i];
-        RaySpec ray{Q16_16::fromDouble(cx),     Q16_16::fromDouble(cy), rayCosQ_[i], raySinQ_[i],
-                    Q16_16::fromDouble(ro - K), Q16_16::fromDouble(1.0)};
+        RaySpec ray{qx, qy, rayCosQ_[i], raySinQ_[i], Q16_16::fromDouble(ro - K), Q16_16::fromInt(1)};
         // A ray inside the frame throughout adds to every sample (a loop the compiler
         // vectorises); one leaving it only where it has a sample.
         if (sampleRay(*frame, ray, count, row) == count) {

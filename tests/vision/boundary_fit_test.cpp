@@ -71,3 +71,26 @@ TEST(BoundaryFit, TooFewPointsIsAnError)
     BoundaryFit f;
     EXPECT_FALSE(fitBoundary(r, valid, 16, 0, 0, FitOptions{}, &f));
 }
+
+// The curve in many directions at once is radiusAt in each, to the last bit (the ring search
+// places its second pass's windows with it), for every harmonic count and ray count used.
+TEST(BoundaryFit, RadiiAtManyDirectionsAreRadiusAtEach)
+{
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> coef(-3, 3);
+    for (int harmonics = 0; harmonics <= BoundaryFit::kMaxHarmonics; ++harmonics)
+        for (int n : {16, 32, 64, 100, 128, 256}) {
+            BoundaryFit f;
+            f.a0 = 300 + coef(rng);
+            f.harmonics = harmonics;
+            for (int k = 1; k <= harmonics; ++k) f.a[k] = coef(rng), f.b[k] = coef(rng);
+            double c[256], s[256], r[256];
+            for (int i = 0; i < n; ++i) {
+                const double t = 2 * std::numbers::pi * i / n + 0.1;
+                c[i] = std::cos(t), s[i] = std::sin(t);
+            }
+            radiiAt(f, c, s, n, r);
+            for (int i = 0; i < n; ++i)
+                ASSERT_EQ(r[i], f.radiusAt(c[i], s[i])) << harmonics << " harmonics, ray " << i << " of " << n;
+        }
+}
