@@ -24,6 +24,11 @@ constexpr int kFaceFrom = 16, kFaceWindow = 8;
 // levels, in the profile's Q8 units), and a clipped sample makes a step no blurred step.
 constexpr double kMinInnerStep = 5 * 256;
 constexpr int32_t kClipped = 254 * 256;
+// A turn back beyond the contact edge: a sample 2 grey levels against the step's way (the
+// aligned mean profile's noise is a fraction of a level), from 4 samples out, beyond the
+// fall of an edge blurred by up to 1.5 px.
+constexpr int32_t kTurnBack = 2 * 256;
+constexpr int kTurnFrom = 4;
 
 double phi(double z)
 {
@@ -104,10 +109,22 @@ TwoStep evaluate(const Profile &pr, double xi, double xo, double s)
 }
 
 // The profile around the contact edge, its mean taken out; false where it is clipped or
-// too short to fit.
-bool profileAround(const int32_t *profile, int count, int edgeIndex, Profile *pr)
+// too short to fit. Where the profile turns back against the edge's step (outerSign) beyond
+// the edge's own fall, it ends before the turn: a barrel band narrower than the reach rises
+// again to the outline there, which three levels and two steps do not model, and whose
+// residual would leave the one-step model as good as the two. A turn within kTurnFrom
+// samples of the edge, straight out of its fall, may be the ring's own far edge (a dark ring
+// rising onto a lit shoulder, whose fall was the original face's edge): the profile is then
+// taken whole.
+bool profileAround(const int32_t *profile, int count, int edgeIndex, int outerSign, Profile *pr)
 {
-    for (int k = std::max(0, edgeIndex - kInside); k <= std::min(count - 1, edgeIndex + kOutside); ++k) {
+    int last = std::min(count - 1, edgeIndex + kOutside);
+    for (int k = edgeIndex + 1; k <= last; ++k)
+        if (outerSign * (profile[k] - profile[k - 1]) < -kTurnBack) {
+            if (k >= edgeIndex + kTurnFrom) last = k - 1;
+            break;
+        }
+    for (int k = std::max(0, edgeIndex - kInside); k <= last; ++k) {
         if (profile[k] >= kClipped) return false;
         pr->x[pr->n] = k - edgeIndex;
         pr->p[pr->n] = profile[k];
@@ -273,7 +290,7 @@ NarrowRingFit fitNarrowRing(const int32_t *profile, int count, int edgeIndex, in
 {
     NarrowRingFit out;
     Profile pr;
-    if (!profileAround(profile, count, edgeIndex, &pr)) return out;
+    if (!profileAround(profile, count, edgeIndex, outerSign, &pr)) return out;
     // Where the per-ray search saw the face's edge the profile only places it, and the
     // one-step model need not be beaten.
     const bool seen = startWidthPx > 0;

@@ -14,7 +14,8 @@
 // and the face's level everywhere farther inside (from 16 px to the profile's start, the
 // widest ICA the search allows) the fit's innermost level (within 30 % of the inner step): on
 // a wide ring whose inner edge was missed, a mark on the ICA near the contact edge would
-// otherwise pass for the face's edge.
+// otherwise pass for the face's edge. Beyond the contact edge the profile ends where a barrel
+// band narrower than the reach turns back to the outline.
 // Pure C++20: no heap, no OS calls, no exceptions.
 #include <cstdint>
 
