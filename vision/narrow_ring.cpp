@@ -29,6 +29,9 @@ constexpr int32_t kClipped = 254 * 256;
 // fall of an edge blurred by up to 1.5 px.
 constexpr int32_t kTurnBack = 2 * 256;
 constexpr int kTurnFrom = 4;
+// A turn straight out of the fall is the outline where the level it reaches holds for 3
+// samples (within a third of the rise).
+constexpr int kShoulderReach = 3;
 
 double phi(double z)
 {
@@ -108,6 +111,19 @@ TwoStep evaluate(const Profile &pr, double xi, double xo, double s)
     return t;
 }
 
+// Whether the profile, turned back at sample k against the edge's step, rises (or falls) to
+// a level it holds: the outline onto the fixture. A lit shoulder beyond a dark ring turns
+// back again within a few samples of its top.
+bool holdsAfterTurn(const int32_t *profile, int count, int k, int outerSign)
+{
+    int top = k;
+    while (top + 1 < count && outerSign * (profile[top + 1] - profile[top]) < -kTurnBack) ++top;
+    const int32_t rise = -outerSign * (profile[top] - profile[k - 1]);
+    for (int j = top + 1; j <= std::min(count - 1, top + kShoulderReach); ++j)
+        if (3 * outerSign * (profile[j] - profile[top]) > rise) return false;
+    return top + kShoulderReach < count;
+}
+
 // The profile around the contact edge, its mean taken out; false where it is clipped or
 // too short to fit. Where the profile turns back against the edge's step (outerSign) beyond
 // the edge's own fall, it ends before the turn: a barrel band narrower than the reach rises
@@ -115,13 +131,13 @@ TwoStep evaluate(const Profile &pr, double xi, double xo, double s)
 // residual would leave the one-step model as good as the two. A turn within kTurnFrom
 // samples of the edge, straight out of its fall, may be the ring's own far edge (a dark ring
 // rising onto a lit shoulder, whose fall was the original face's edge): the profile is then
-// taken whole.
+// taken whole unless the level the turn reaches holds (holdsAfterTurn).
 bool profileAround(const int32_t *profile, int count, int edgeIndex, int outerSign, Profile *pr)
 {
     int last = std::min(count - 1, edgeIndex + kOutside);
     for (int k = edgeIndex + 1; k <= last; ++k)
         if (outerSign * (profile[k] - profile[k - 1]) < -kTurnBack) {
-            if (k >= edgeIndex + kTurnFrom) last = k - 1;
+            if (k >= edgeIndex + kTurnFrom || holdsAfterTurn(profile, count, k, outerSign)) last = k - 1;
             break;
         }
     for (int k = std::max(0, edgeIndex - kInside); k <= last; ++k) {

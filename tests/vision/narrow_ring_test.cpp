@@ -114,23 +114,24 @@ TEST(NarrowRing, AFaintOrUnresolvedStepIsNoRing)
 }
 
 // A barrel band narrower than the fit's reach: the profile falls from the ring to the barrel
-// and rises again to a lighter fixture 5 px beyond the contact edge. Fitted up to where the
-// band turns back, the ring is found; over the rise, which neither model describes, the
-// two steps did not beat one (no ring).
+// and rises again to a lighter fixture 4–6.5 px beyond the contact edge, the fixture's level
+// held beyond. Fitted up to where the band turns back, the ring is found; over the rise, which
+// neither model describes, the two steps did not beat one (no ring).
 TEST(NarrowRing, ABarrelBandTurningBackWithinTheReach)
 {
     int32_t p[kCount];
-    for (double width : {3.0, 4.0}) {
-        drawProfile(p, width, 0.0, 1.2, 140, 126, 57, 0.3, uint32_t(width * 7));
-        for (int k = 0; k < kCount; ++k) {
-            const double x = k - kEdge;
-            p[k] += int32_t(std::lround(256 * (105 - 57) * phi((x - 6.5) / 1.2)));
+    for (double outline : {6.5, 4.0})
+        for (double width : {3.0, 4.0}) {
+            drawProfile(p, width, 0.0, 1.0, 140, 126, 57, 0.3, uint32_t(width * 7));
+            for (int k = 0; k < kCount; ++k) {
+                const double x = k - kEdge;
+                p[k] += int32_t(std::lround(256 * (105 - 57) * phi((x - outline) / 1.0)));
+            }
+            const NarrowRingFit f = fitNarrowRing(p, kCount, kEdge, -1);
+            ASSERT_TRUE(f.found) << "width " << width << ", outline " << outline;
+            EXPECT_NEAR(f.outerPx - f.innerPx, width, 0.5) << "width " << width << ", outline " << outline;
+            EXPECT_NEAR(f.outerPx, 0.0, 0.5) << "width " << width << ", outline " << outline;
         }
-        const NarrowRingFit f = fitNarrowRing(p, kCount, kEdge, -1);
-        ASSERT_TRUE(f.found) << "width " << width;
-        EXPECT_NEAR(f.outerPx - f.innerPx, width, 0.5) << "width " << width;
-        EXPECT_NEAR(f.outerPx, 0.0, 0.5) << "width " << width;
-    }
 }
 
 } // namespace
