@@ -24,6 +24,22 @@ inline bool anyOutsideFrame(const uint16_t *s, int count)
     return (any >> 16) != 0;
 }
 
+// Adds one ray's samples to per-sample sums over rays. A ray inside the frame throughout
+// adds to every sample (a loop the compiler vectorises) and is counted once, in *whole, for
+// all of them; one that leaves it adds only its samples inside, each counted in seen[j].
+// A sample's ray count is then seen[j] + *whole.
+inline void addRaySamples(const uint16_t *row, int count, bool insideThroughout, uint32_t *sum, uint32_t *seen,
+                          uint32_t *whole)
+{
+    if (insideThroughout) {
+        for (int j = 0; j < count; ++j) sum[j] += row[j];
+        ++*whole;
+        return;
+    }
+    for (int j = 0; j < count; ++j)
+        if (row[j] != kOutsideFrame) sum[j] += row[j], ++seen[j];
+}
+
 struct RaySpec {
     Q16_16 cx, cy;    // centre in pixels
     Q2_14 cosT, sinT; // direction

@@ -110,19 +110,11 @@ RingSearch::MeanEdges RingSearch::meanProfileEdges()
     const double step = coarseStep(r0);
     const int count = coarseCount(r0);
     uint16_t mean[kMaxCoarse];
-    // Ray by ray into per-sample sums (loops the compiler vectorises); a ray that leaves the
-    // frame adds only its samples inside it.
     uint32_t sums[kMaxCoarse] = {}, seen[kMaxCoarse] = {};
     uint32_t whole = 0;
     for (int i = 0; i < kCoarseRays; ++i) {
         const uint16_t *row = coarse + size_t(i) * kMaxCoarse;
-        if (!anyOutsideFrame(row, count)) {
-            for (int j = 0; j < count; ++j) sums[j] += row[j];
-            ++whole;
-            continue;
-        }
-        for (int j = 0; j < count; ++j)
-            if (row[j] != kOutsideFrame) sums[j] += row[j], ++seen[j];
+        addRaySamples(row, count, !anyOutsideFrame(row, count), sums, seen, &whole);
     }
     for (int j = 0; j < count; ++j) {
         const uint32_t nj = seen[j] + whole;
@@ -389,16 +381,7 @@ void RingSearch::finerMeanProfile(double fromPx, double stepPx, int count, uint1
     for (int i = 0; i < kCoarseRays; ++i) {
         RaySpec ray = along;
         ray.cosT = rayCosQ_[i * stride], ray.sinT = raySinQ_[i * stride];
-        if (sampleRay(*frame, ray, count, row) == count) { // inside the frame throughout
-            for (int j = 0; j < count; ++j) sum[j] += row[j];
-            ++whole;
-            continue;
-        }
-        for (int j = 0; j < count; ++j)
-            if (row[j] != kOutsideFrame) {
-                sum[j] += row[j];
-                ++n[j];
-            }
+        addRaySamples(row, count, sampleRay(*frame, ray, count, row) == count, sum, n, &whole);
     }
     for (int j = 0; j < count; ++j) n[j] += whole;
     for (int j = 0; j < count; ++j) mean[j] = n[j] * 4 >= kCoarseRays ? uint16_t(sum[j] / n[j]) : kOutsideFrame;

@@ -66,18 +66,7 @@ bool RingSearch::alignedProfile(const double *outerR, AlignedProfile *p, bool on
         if (!(onInner ? innerPts[i] : outerPts[i]).valid) continue;
         const double ro = outerR[i];
         RaySpec ray{qx, qy, rayCosQ_[i], raySinQ_[i], Q16_16::fromDouble(ro - K), Q16_16::fromInt(1)};
-        // A ray inside the frame throughout adds to every sample (a loop the compiler
-        // vectorises); one leaving it only where it has a sample.
-        if (sampleRay(*frame, ray, count, row) == count) {
-            for (int k = 0; k < count; ++k) sum[k] += row[k];
-            ++whole;
-            continue;
-        }
-        for (int k = 0; k < count; ++k)
-            if (row[k] != kOutsideFrame) {
-                sum[k] += row[k];
-                n[k]++;
-            }
+        addRaySamples(row, count, sampleRay(*frame, ray, count, row) == count, sum, n, &whole);
     }
     for (int k = 0; k < count; ++k) n[k] += whole;
     uint16_t mean[AlignedProfile::kSpan] = {}; // count ≤ kSpan are set; zeroed for GCC's flow analysis at -O0
