@@ -31,11 +31,11 @@ const char *shortError(ErrorCode c)
 const char *shortFlag(int bit)
 {
     static const char *const kWords[reading::kFlagCount] = {
-        "n outside 0.05-0.5", "K outside model",   "mu below model",     "mu above model",  "u outside model",
-        "low contrast",       "edge coverage low", "edges scatter",      "image blurred",   "saturated",
-        "specimen clipped",   "elliptical",        "not concentric",     "check scale",     "narrow ring",
-        "no silhouette",      "reduction outside", "radii inconsistent", "H0/D0 outside",   "silhouette unusable",
-        "not pressed to 50%", "edges undecided",   "contact edge ramp",  "declare distance"};
+        "n outside 0.05-0.5", "K outside model",   "mu below model",     "mu above model",   "u outside model",
+        "low contrast",       "edge coverage low", "edges scatter",      "image blurred",    "saturated",
+        "specimen clipped",   "elliptical",        "not concentric",     "check scale",      "narrow ring",
+        "no silhouette",      "reduction outside", "radii inconsistent", "H0/D0 outside",    "silhouette unusable",
+        "not pressed to 50%", "edges undecided",   "contact edge ramp",  "declare distance", "tilt disagrees"};
     return bit >= 0 && bit < reading::kFlagCount ? kWords[bit] : "check";
 }
 

@@ -87,9 +87,51 @@ void RecordMeasurer::measure(const ManifestRow &row, const Manifest &manifest, R
     }
     const cv::Mat &luma = out->image.luma;
     if (!useCalibration(row, manifest, luma.cols, luma.rows, &out->message)) return;
+    vision::LitInTurn lit;
+    if (!loadSegments(row, manifest, luma.cols, luma.rows, &lit, &out->message)) return;
     const vision::LumaView view{luma.data, luma.cols, luma.rows, int(luma.step[0]), 1};
-    for (long k = 0; k < repeat; ++k) out->reading = instrument_.read(view, spec);
+    for (long k = 0; k < repeat; ++k) out->reading = instrument_.read(view, spec, lit.count ? &lit : nullptr);
     out->measured = true;
+}
+
+// The row's segment frames (`segment_images`: paths separated by ';', segment k centred at
+// image azimuth k·360/N° from +x towards +y), each the main frame's size; false with *why.
+bool RecordMeasurer::loadSegments(const ManifestRow &row, const Manifest &manifest, int width, int height,
+                                  vision::LitInTurn *lit, std::string *why)
+{
+    lit->count = 0;
+    if (!row.has("segment_images") || row.get("segment_images").empty()) return true;
+    const std::string list = row.get("segment_images");
+    std::vector<std::string> paths;
+    for (size_t a = 0;;) {
+        const size_t b = list.find(';', a);
+        paths.push_back(list.substr(a, b == std::string::npos ? std::string::npos : b - a));
+        if (b == std::string::npos) break;
+        a = b + 1;
+    }
+    if (paths.size() < size_t(vision::kMinTiltSegments) || paths.size() > size_t(vision::LitInTurn::kMaxSegments)) {
+        *why = "segment_images: " + std::to_string(paths.size()) + " frames; the tilt needs " +
+               std::to_string(vision::kMinTiltSegments) + "-" + std::to_string(vision::LitInTurn::kMaxSegments);
+        return false;
+    }
+    segments_.resize(paths.size());
+    for (size_t k = 0; k < paths.size(); ++k) {
+        fs::path p = paths[k];
+        if (p.is_relative()) p = fs::path(manifest.baseDir) / p;
+        if (std::string e = loadLuma(p.string(), &segments_[k]); !e.empty()) {
+            *why = "segment " + std::to_string(k) + ": " + e;
+            return false;
+        }
+        const cv::Mat &m = segments_[k].luma;
+        if (m.cols != width || m.rows != height) {
+            *why = "segment " + std::to_string(k) + " is " + std::to_string(m.cols) + "x" + std::to_string(m.rows) +
+                   ", the frame " + std::to_string(width) + "x" + std::to_string(height);
+            return false;
+        }
+        lit->segment[k] = vision::LumaView{m.data, m.cols, m.rows, int(m.step[0]), 1};
+    }
+    lit->count = int(paths.size());
+    return true;
 }
 
 } // namespace icacam::host

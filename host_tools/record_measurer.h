@@ -40,7 +40,10 @@ public:
 
 private:
     bool useCalibration(const ManifestRow &row, const Manifest &manifest, int width, int height, std::string *why);
+    bool loadSegments(const ManifestRow &row, const Manifest &manifest, int width, int height, vision::LitInTurn *lit,
+                      std::string *why);
     reading::SpecimenSpec defaults_;
+    std::vector<LumaImage> segments_; // the row's segment frames, held while it is read
     reading::Instrument instrument_;
     std::map<std::string, std::pair<calibration::CalibrationFile, std::string>> calibrations_; // by path
 };

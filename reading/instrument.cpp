@@ -40,7 +40,7 @@ vision::FaceSearch Instrument::searchFor(const SpecimenSpec &spec, int width, in
     return search;
 }
 
-Reading Instrument::read(const vision::LumaView &frame, const SpecimenSpec &spec)
+Reading Instrument::read(const vision::LumaView &frame, const SpecimenSpec &spec, const vision::LitInTurn *lit)
 {
     Reading out;
     if (!model_) return out;
@@ -52,7 +52,9 @@ Reading Instrument::read(const vision::LumaView &frame, const SpecimenSpec &spec
         out.error = ErrorCode::CalibrationSize;
         return out;
     }
-    return interpret(analyzer_.measure(frame, searchFor(spec, frame.width, frame.height)), spec);
+    vision::FaceSearch search = searchFor(spec, frame.width, frame.height);
+    search.litInTurn = lit && lit->count > 0 ? lit : nullptr;
+    return interpret(analyzer_.measure(frame, search), spec);
 }
 
 Reading Instrument::interpret(const vision::EndFaceGeometry &geometry, const SpecimenSpec &spec) const

@@ -9,6 +9,7 @@
 #include "friction/friction_model.h"
 #include "reading/reading.h"
 #include "reading/specimen_spec.h"
+#include "vision/contact_tilt.h"
 #include "vision/end_face_analyzer.h"
 #include "vision/luma_view.h"
 #include "vision/plane_calibration.h"
@@ -37,9 +38,10 @@ public:
     // "" when a frame of this size can be read, else why not in words.
     std::string frameSizeIssue(int width, int height) const;
 
-    // Measures the frame and interprets it. The reading's point arrays stay valid until the
-    // next read().
-    Reading read(const vision::LumaView &frame, const SpecimenSpec &spec);
+    // Measures the frame and interprets it; with segment frames of the same view (the ring
+    // light lit in turn, vision/contact_tilt.h) the contact edge is where the surface's tilt
+    // says the flat face ends. The reading's point arrays stay valid until the next read().
+    Reading read(const vision::LumaView &frame, const SpecimenSpec &spec, const vision::LitInTurn *lit = nullptr);
     // The interpretation alone, of geometry measured earlier or of radii measured elsewhere.
     Reading interpret(const vision::EndFaceGeometry &geometry, const SpecimenSpec &spec) const;
     Reading interpret(const FaceInMm &face, const SpecimenSpec &spec) const;

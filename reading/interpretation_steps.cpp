@@ -106,7 +106,9 @@ constexpr double kTiltEllipticityMax = 0.05;
 // takes it as one standard deviation.
 bool contactEdgeOnRamp(const EndFaceGeometry &g)
 {
-    return g.contactRampPx > vision::kContactRampPx;
+    // Segment frames that showed the tilt step placed the contact edge on the ramp.
+    return g.contactRampPx > vision::kContactRampPx &&
+           !(g.imageFlags & (vision::kImageContactEdgeByTilt | vision::kImageTiltConfirms));
 }
 // The edge model's own error, beyond the fits' scatter: against the drawn boundaries of the
 // development set's photographs the pipeline's R_i lies 0.005 mm (1 σ) off the truth's
@@ -346,6 +348,8 @@ EdgeSigma edgeSigma(const EndFaceGeometry &g, const PlaneMapping &p, bool calibr
     e.narrowWidenMm = kNarrowRingWidenPx * p.mmPerPx;
     e.ringFromProfile = (g.imageFlags & vision::kImageNarrowRingFit) != 0;
     if (contactEdgeOnRamp(g)) e.uSigmaEdgesMm = std::hypot(e.uSigmaEdgesMm, g.contactRampPx * p.mmPerPx);
+    if (g.imageFlags & (vision::kImageContactEdgeByTilt | vision::kImageTiltConfirms))
+        e.uSigmaEdgesMm = std::hypot(e.uSigmaEdgesMm, g.tiltSigmaPx * p.mmPerPx);
     if (!calibrated && e.sharedEllipse) {
         const double ell = std::min(p.inner.ellipticity, p.outer.ellipticity);
         e.uSigmaEdgesMm = std::hypot(e.uSigmaEdgesMm, p.face.uMm * ell / (2 * std::sqrt(3.0)));
@@ -358,8 +362,12 @@ uint32_t imageChecks(const EndFaceGeometry &g, const PlaneMapping &p, const Edge
 {
     uint32_t f = 0;
     if (g.imageFlags & vision::kImageSpecimenClipped) f |= kFlagSpecimenClipped;
+    if (g.imageFlags & vision::kImageTiltDisagrees) f |= kFlagTiltDisagrees;
     if (g.imageFlags & vision::kImageNarrowRingFit) f |= kFlagNarrowRing;
-    if (g.imageFlags & vision::kImageContactEdgeUndecided) f |= kFlagContactEdgeUndecided;
+    // The segment frames' tilt rising at the contact edge itself says which edge ends the
+    // flat face.
+    const bool tiltConfirms = (g.imageFlags & vision::kImageTiltConfirms) != 0;
+    if ((g.imageFlags & vision::kImageContactEdgeUndecided) && !tiltConfirms) f |= kFlagContactEdgeUndecided;
     const double r0Px = 0.5 * d0Mm / p.mmPerPx;
     if (std::min(g.inner.coverage, g.outer.coverage) < 0.6) f |= kFlagLowCoverage;
     if (std::max(g.inner.scatterPx, g.outer.scatterPx) > std::max(1.5, 0.006 * r0Px)) f |= kFlagHighScatter;

@@ -37,7 +37,8 @@ const char *flagName(int bit)
                                                    "reduction_not_nominal",
                                                    "contact_edge_undecided",
                                                    "contact_edge_ramp",
-                                                   "working_distance_decides"};
+                                                   "working_distance_decides",
+                                                   "tilt_disagrees"};
     return bit >= 0 && bit < kFlagCount ? kNames[bit] : "unknown";
 }
 

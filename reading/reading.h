@@ -50,8 +50,12 @@ enum ReadingFlag : uint32_t {
     // No final height or working distance given, and the silhouette reads a height from a close
     // camera other than from a far one, by enough to move μ beyond the tolerance.
     kFlagWorkingDistanceDecides = 1u << 23,
+    // Segment frames were given and the surface's tilt places the flat face's end a few
+    // pixels from the contact edge the frame shows, farther than the tilt confirms it and
+    // nearer than it can overrule it: R_o may lie anywhere between the two.
+    kFlagTiltDisagrees = 1u << 24,
 };
-constexpr int kFlagCount = 24;
+constexpr int kFlagCount = 25;
 const char *flagName(int bit);
 
 // The expanded uncertainty U = k·σ_μ against the lab's tolerance on μ (a decision rule in the

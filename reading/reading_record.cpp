@@ -79,6 +79,12 @@ const FieldSpec kFields[] = {
      }},
     {"reduction_est", Field::Number, 4, [](const Reading &m) { return m.reductionEst >= 0 ? m.reductionEst : nan(); }},
     {"r_max_z", Field::Number, 2, [](const Reading &m) { return hasSilhouette(m) ? m.rMaxZ : nan(); }},
+    {"tilt_knee_px", Field::Number, 3,
+     [](const Reading &m) {
+         return m.geometry.imageFlags & (vision::kImageContactEdgeByTilt | vision::kImageTiltConfirms)
+                    ? m.geometry.tiltKneePx
+                    : nan();
+     }},
 };
 constexpr int kFieldCount = int(sizeof kFields / sizeof kFields[0]);
 
@@ -116,6 +122,8 @@ const char *findingWords(int bit)
         "a diffuse ring light or a matt barrel gives a step",
         "the silhouette reads another height from a close camera than from a far one: declare working_distance_mm "
         "(or h_final_mm)",
+        "the segment frames' tilt places the flat face's end a few pixels from the contact edge the frame shows: "
+        "R_o may lie between the two; check that the specimen did not move between the frames, and refocus",
     };
     return bit >= 0 && bit < kFlagCount && kWords[bit] ? kWords[bit] : "check";
 }

@@ -121,7 +121,9 @@ ContactKnee locateContactKnee(const int32_t *level, int count, int at, int sign,
         if (den > 0) t += 0.5 * kFineStepPx * (sm - sp) / den;
     }
     // The fall beyond the knee goes `sign`'s way, or the fit found none.
-    if (!(sign * bestTrial.slope > 0)) return out;
+    const bool stepHolds =
+        w.stepAlone && sign * bestTrial.step > 0 && sign * (bestTrial.step + 2 * w.blurPx * bestTrial.slope) > 0;
+    if (!(sign * bestTrial.slope > 0) && !stepHolds) return out;
     out.offsetPx = t;
     out.stepLevel = bestTrial.step;
     out.slope = bestTrial.slope;

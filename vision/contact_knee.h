@@ -17,6 +17,9 @@ struct ContactKneeWindow {
     double searchInPx = 3.0;  // how far inside the located edge the knee may lie
     double searchOutPx = 1.0; // how far beyond it
     double samplePx = 1.0;    // the profile's sample spacing, pixels
+    // A step `sign`'s way that the slope beyond does not undo within two blurs is a knee too:
+    // a surface leaving the platen at an angle and holding it.
+    bool stepAlone = false;
 };
 
 struct ContactKnee {

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "vision/boundary_fit.h"
+#include "vision/contact_tilt.h"
 #include "vision/edge_profile.h"
 #include "vision/radial_profile.h"
 #include "vision/ring_search.h"
@@ -27,6 +28,12 @@ template <typename T> T *carve(uint8_t *&p, size_t count)
 // strongest: the original face's edge steps 30–50 grey levels where the outline steps 80
 // (rendered photographs).
 constexpr int kInnermostDivisor = 4;
+// The tilt profile's search about the single frame's contact edge (pixels, and of R0).
+constexpr double kTiltReachMinPx = 10, kTiltReachOfR0 = 0.1, kTiltBeyondPx = 10;
+// The tilt's knee model's own error (pixels), and within how many of the knee's σ it confirms
+// the single frame's contact edge, beyond how many it moves it.
+constexpr double kTiltKneeModelPx = 1.0, kTiltConfirmSigmas = 1.5, kTiltMoveSigmas = 3.0;
+constexpr double kTiltCleanMisfit = 0.02;
 } // namespace
 
 ErrorCode EndFaceAnalyzer::configure(int maxWidth, int maxHeight)
@@ -192,7 +199,52 @@ EndFaceGeometry EndFaceAnalyzer::measure(const LumaView &v, const FaceSearch &fa
     if (e == ErrorCode::InnerEdgeNotFound) searchAgain(cx, cy, false, true);
     if (e != ErrorCode::None) return fail(e);
     m.error = ErrorCode::None;
+    if (face.litInTurn) contactEdgeFromTilt(*face.litInTurn, v, r0, &m);
     return m;
+}
+
+void EndFaceAnalyzer::contactEdgeFromTilt(const LitInTurn &lit, const LumaView &v, double r0Px, EndFaceGeometry *m)
+{
+    for (int k = 0; k < lit.count; ++k)
+        if (lit.segment[k].width != v.width || lit.segment[k].height != v.height || !lit.segment[k].valid()) {
+            m->imageFlags |= kImageTiltStepNotFound;
+            return;
+        }
+    // From as far inside as the single frame's steepest fall lies beyond the flat face's end
+    // on a long lit shoulder (rendered flat-sided barrels: up to 0.1 R0), never across the
+    // original face's edge; to a few pixels beyond it, where a step read too soon ends.
+    // The optics' blur: the original face's edge, a step in the finish alone, where measured.
+    const double blurPx = m->innerEdgeWidthPx > 0 ? m->innerEdgeWidthPx : m->edgeWidthPx > 0 ? m->edgeWidthPx : 1.0;
+    const double ringPx = m->outer.rEqPx - m->inner.rEqPx;
+    const double innerPx = std::min(std::max(kTiltReachMinPx, kTiltReachOfR0 * r0Px), ringPx - 2.5 * blurPx);
+    const TiltEdge t = contactEdgeByTilt(lit, m->outer, m->centreX, m->centreY, innerPx, kTiltBeyondPx, blurPx);
+    if (!t.found) {
+        m->imageFlags |= kImageTiltStepNotFound;
+        return;
+    }
+    // The knee's error: its fit's and the knee model's own on a barrel curving away, whose
+    // tilt grows gently from the edge (640 × 480 photographs: knees −2.5 … +1.8 px about the
+    // contact edge, σ about 1 px). Within 1.5 σ of the single frame's contact edge the tilt
+    // confirms it: the flat face ends there, and the edge stands. Beyond 3 σ the single frame
+    // read a fall on the barrel (or short of the flat face's end) and the edge moves to the
+    // knee. Between, neither is sure: the edge stands, and the reading says so.
+    const double sigma = std::hypot(t.sigmaPx, kTiltKneeModelPx);
+    m->tiltKneePx = t.shiftPx;
+    m->tiltRise = t.rise;
+    // Only a clean knee moves the edge: turning marks whose ripple the smoothing left (the
+    // knee model's residual beyond 2 % of the step; clean knees 0.3–1.4 %) move the knee by a
+    // fraction of their period (a 1456 × 1088 ring of 15 px with 8 px marks: 4 px).
+    if (std::fabs(t.shiftPx) > kTiltMoveSigmas * sigma && t.misfit <= kTiltCleanMisfit) {
+        m->outer.a0 += t.shiftPx;
+        m->outer.rEqPx += t.shiftPx;
+        m->tiltSigmaPx = sigma;
+        m->imageFlags |= kImageContactEdgeByTilt;
+    } else if (std::fabs(t.shiftPx) <= kTiltConfirmSigmas * sigma) {
+        m->tiltSigmaPx = sigma;
+        m->imageFlags |= kImageTiltConfirms;
+    } else {
+        m->imageFlags |= kImageTiltDisagrees;
+    }
 }
 
 } // namespace icacam::vision

@@ -38,6 +38,9 @@ private:
     bool centreByRays(const LumaView &v, double r0Px, RayEdge edge, double settlePx, double *cx, double *cy);
     // The coarse rays about (cx, cy) that the ring search reads its mean profile from.
     void castCoarseRays(const LumaView &v, double r0Px, double cx, double cy);
+    // The contact edge moved to the segment frames' tilt step, or the geometry marked that
+    // they showed none.
+    void contactEdgeFromTilt(const LitInTurn &lit, const LumaView &v, double r0Px, EndFaceGeometry *m);
 
     int maxWidth_ = 0, maxHeight_ = 0;
     size_t workBytes_ = 0;

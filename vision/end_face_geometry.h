@@ -63,6 +63,19 @@ enum ImageFlag : uint32_t {
     // two, its centre drawn aside by the view (a close camera draws it towards the optical
     // axis; a tilt anywhere): where the view explains the shift, the outline is the barrel's.
     kImageOutlineSmeared = 1u << 5,
+    // The segment frames' tilt profile (contact_tilt.h) placed the contact edge: it moved to
+    // the tilt's knee (tiltKneePx away), the single frame having read a fall on the barrel.
+    kImageContactEdgeByTilt = 1u << 6,
+    // The tilt's knee lies within its own reach of the single frame's contact edge: the flat
+    // face ends there, which the single frame's ramp or band left open.
+    kImageTiltConfirms = 1u << 7,
+    // Segment frames were given but showed no tilt step about the contact edge: the single
+    // frame's contact edge stands with its findings.
+    kImageTiltStepNotFound = 1u << 8,
+    // The tilt's knee lies beyond its reach of the contact edge but within what its own error
+    // explains: the single frame's contact edge stands, and neither is sure (reading:
+    // tilt_disagrees).
+    kImageTiltDisagrees = 1u << 9,
 };
 
 // Where the pipeline looks: the specimen's initial diameter and the scale at the end face
@@ -71,10 +84,15 @@ enum ImageFlag : uint32_t {
 // (1: levels proportional to light, as the development set's drawn frames; about 2.2 for a
 // camera's sRGB-like output). The ring's edges are located in linear light
 // (vision/tone_curve.h).
+struct LitInTurn;
+
 struct FaceSearch {
     double d0Mm = 10;
     double mmPerPx = 0;
     double toneGamma = 1;
+    // Frames of the same view lit by the ring light's segments in turn (contact_tilt.h), or
+    // nullptr: the contact edge is then taken where the surface's tilt says the flat face ends.
+    const LitInTurn *litInTurn = nullptr;
 };
 
 // The widest ring the search looks for, as a fraction of the specimen's initial radius (u up
@@ -107,6 +125,9 @@ struct EndFaceGeometry {
     // face's edge (a ring read on the mean profile alone, or narrower than two blurs).
     double innerEdgeWidthPx = 0;
     double contactRampPx = 0; // beyond kContactRampPx: the contact edge on the barrel's ramp
+    // With segment frames: the tilt's knee from the single frame's contact edge (outwards +),
+    // the contact edge's standard uncertainty the tilt leaves, and the rise's height in T.
+    double tiltKneePx = 0, tiltSigmaPx = 0, tiltRise = 0;
     double saturatedFraction = 0;
     // The silhouette's per-ray fit: coverage and the points' robust RMS about it (0 when only
     // the mean profile named it).

@@ -70,6 +70,15 @@ std::string tail(const fs::path &p, size_t chars)
 
 constexpr int kPovrayStartAttempts = 5;
 
+// Added to a record's seed parts for its segment frames' noise: a stream apart from the one
+// the record and its full frame draw from.
+constexpr uint32_t kSegmentNoiseSeed = 0x5e6f7a01;
+
+bool validSegmentCount(int n)
+{
+    return n == 0 || n == 2 || n == 3 || n == 4 || n == 6 || n == 8;
+}
+
 // Renders scenes/<id>.pov into scenes/<id>.png (16-bit, linear): POV-Ray writes only below
 // its working directory (Debian's povray.conf), so it runs in scenes/.
 cv::Mat render(const fs::path &scenes, const std::string &id, const PinholeCamera &cam, const PhotoBenchOptions &opt,
@@ -102,6 +111,13 @@ void writeText(const fs::path &p, const std::string &text)
 {
     std::ofstream f(p);
     f << text;
+    if (!f) throw std::runtime_error("cannot write '" + p.string() + "'");
+}
+
+void writeBytes(const fs::path &p, const std::vector<uint8_t> &bytes)
+{
+    std::ofstream f(p, std::ios::binary);
+    f.write(reinterpret_cast<const char *>(bytes.data()), std::streamsize(bytes.size()));
     if (!f) throw std::runtime_error("cannot write '" + p.string() + "'");
 }
 
@@ -169,6 +185,8 @@ bool povrayAvailable(const std::string &povray)
 std::string writePhotoSet(const std::string &dir, const PhotoBenchOptions &opt)
 {
     if (opt.conditions.empty()) throw std::runtime_error("photo: no condition given");
+    if (!validSegmentCount(opt.segments))
+        throw std::runtime_error("photo: " + std::to_string(opt.segments) + " segments (0, 2, 3, 4, 6 or 8)");
     if (!povrayAvailable(opt.povray))
         throw std::runtime_error("'" + opt.povray + "' does not run: install POV-Ray (apt-get install povray)");
     const std::vector<BarrelProfile> table = readBarrelProfiles(opt.profilesCsv);
@@ -180,7 +198,7 @@ std::string writePhotoSet(const std::string &dir, const PhotoBenchOptions &opt)
     const std::string manifestPath = (root / "manifest.csv").string();
     std::ofstream man(manifestPath), truth(root / "truth.csv");
     if (!man || !truth) throw std::runtime_error("cannot write to '" + dir + "'");
-    man << "id,image,n,k_mpa,d0_mm,h0_mm,mm_per_px\n";
+    man << "id,image,n,k_mpa,d0_mm,h0_mm,mm_per_px" << (opt.segments > 0 ? ",segment_images" : "") << "\n";
     truth << "id,condition,mu,u_mm,r_inner_mm,r_outer_mm,r_bulge_mm,reduction,u_px,tilt_deg,k1,scale_error,"
              "working_distance_mm,focal_px,width,height,n,blur_px,noise,contrast,camera_truth,"
              "profile,material,outline_mm,outline_px,cx_px,cy_px,mm_per_px_true,face_level,ring_level,barrel_level,"
@@ -210,20 +228,43 @@ std::string writePhotoSet(const std::string &dir, const PhotoBenchOptions &opt)
                 cv::imwrite((root / "labels" / (std::string(id) + ".png")).string(), grey);
             }
             std::mt19937 noise(rng());
-            const cv::Mat photo = developPhoto(linear, rec.sensor, noise);
-            const std::string name = std::string(id) + (rec.sensor.jpegQuality ? ".jpg" : ".png");
+            double gain = 0;
+            const cv::Mat photo = developPhoto(linear, rec.sensor, noise, 0, &gain);
+            const char *ext = rec.sensor.jpegQuality ? ".jpg" : ".png";
+            const std::string name = std::string(id) + ext;
             const auto bytes = encodePhoto(photo, rec.sensor);
             std::ofstream(root / "images" / name, std::ios::binary)
                 .write(reinterpret_cast<const char *>(bytes.data()), std::streamsize(bytes.size()));
+
+            // The segment frames (photo_bench.h): the same scene with one segment's LEDs, the
+            // exposure locked at N times the full frame's.
+            std::string segmentImages;
+            if (opt.segments > 0) {
+                std::vector<std::vector<cv::Vec3d>> lit(size_t(opt.segments));
+                for (const cv::Vec3d &l : rec.scene.lights)
+                    lit[size_t(lightSegment(lightImageAzimuthDeg(rec.scene, l), opt.segments))].push_back(l);
+                for (int k = 0; k < opt.segments; ++k) {
+                    const std::string stem = std::string(id) + "-s" + std::to_string(k);
+                    PhotoScene segment = rec.scene;
+                    segment.lights = lit[size_t(k)];
+                    writeText(root / "scenes" / (stem + ".pov"), povraySceneText(segment));
+                    const cv::Mat segLinear = render(root / "scenes", stem, segment.camera, opt, opt.quality);
+                    std::seed_seq segSeq{opt.seed, uint32_t(cond), uint32_t(i), kSegmentNoiseSeed, uint32_t(k)};
+                    std::mt19937 segNoise(segSeq);
+                    const cv::Mat segPhoto = developPhoto(segLinear, rec.sensor, segNoise, gain * opt.segments);
+                    writeBytes(root / "images" / (stem + ext), encodePhoto(segPhoto, rec.sensor));
+                    segmentImages += (k ? ";images/" : ",images/") + stem + ext;
+                }
+            }
 
             const PhotoScene &s = rec.scene;
             const PhotoTruth t = projectTruth(s);
             const ZoneLevels z = zoneLevels(photo, s, t, rec.trueMmPerPx);
             const double riEq = s.rInnerEqMm(), u = s.rOuterMm - riEq;
             char line[1024];
-            std::snprintf(line, sizeof line, "%s,images/%s,%.4f,%d,10,15,%.7f\n", id, name.c_str(), rec.n,
-                          int(rec.kMpa), rec.declaredMmPerPx);
-            man << line;
+            std::snprintf(line, sizeof line, "%s,images/%s,%.4f,%d,10,15,%.7f", id, name.c_str(), rec.n, int(rec.kMpa),
+                          rec.declaredMmPerPx);
+            man << line << segmentImages << "\n";
             std::snprintf(line, sizeof line,
                           "%s,%s,%.5f,%.5f,%.5f,%.5f,%.5f,%.4f,%.2f,%.2f,0,%.4f,%.2f,%.1f,%d,%d,%.4f,%.2f,%.2f,%.1f,,"
                           "%s,%s,%.5f,%.2f,%.2f,%.2f,%.7f,%.1f,%.1f,%.1f,%.1f,%zu,%d,%d,%.3f,%.3f\n",

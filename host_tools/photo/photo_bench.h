@@ -3,6 +3,20 @@
 // (POV-Ray) instead of drawn, with the truth taken from the geometry that was rendered
 // (docs/photobench.md). `icacam synth --renderer povray` writes them; `icacam measure` and
 // `icacam score` judge the pipeline on them as on the drawn sets.
+//
+// Segment frames (--segments N, PhotoBenchOptions::segments): a device with a segmented LED
+// ring lights the N segments in turn and takes a frame under each, beside the full-ring
+// photograph (which stays as it is, bit for bit). Segment k holds the LEDs whose direction in
+// the image, seen from the end face's centre, lies within ±180/N° of the image azimuth
+// k · 360/N°, measured from the image's +x (columns, rightwards) towards its +y (rows,
+// downwards): s0 lights from the right, s1 of 4 from below (lightImageAzimuthDeg,
+// lightSegment, photo_scene.h). The exposure is locked for the sequence: every segment
+// frame is developed at N times the full frame's auto-exposure gain (about 1/N of the light,
+// an N times longer exposure), with its own noise; blur, vignetting, tone curve and encoding
+// as the full frame's. They are written as images/<id>-s<k>.<ext> (their scenes as
+// scenes/<id>-s<k>.pov) and listed in the manifest's last column, segment_images: the N
+// paths relative to the manifest's directory, ';'-separated, in segment order. Without
+// segments the manifest has no such column.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -48,6 +62,7 @@ struct PhotoBenchOptions {
     std::string quality = "+A0.2 +AM2 +R1"; // POV-Ray's anti-aliasing: adaptive, one level
     bool keepRender = false;                // keep the linear 16-bit render beside the scene
     bool labels = false;                    // also DIR/labels/<id>.png: the zones as flat greys (photo_scene.h)
+    int segments = 0;                       // 0, or 2, 3, 4, 6, 8: segment frames too (above)
     // The file format: as the sensor drew it (JPEG 80–95 or PNG), or every photograph PNG
     // (test images) or JPEG (committed sets: a tenth of the bytes; a PNG draw becomes quality 92).
     enum class Encoding { Sensor, Png, Jpeg } encoding = Encoding::Sensor;
@@ -57,7 +72,8 @@ struct PhotoBenchOptions {
 // Writes DIR/images/*, DIR/scenes/<id>.pov (the scene each image was rendered from),
 // DIR/manifest.csv (what a lab declares) and DIR/truth.csv (per id: the condition, μ of the
 // specimen, the radii, the outline the camera sees, the camera, the zones' grey levels).
-// Returns the manifest's path. Throws when POV-Ray is missing or fails.
+// Returns the manifest's path. Throws when POV-Ray is missing or fails, or on a segment
+// count other than 0, 2, 3, 4, 6, 8.
 std::string writePhotoSet(const std::string &dir, const PhotoBenchOptions &opt);
 
 // True when the renderer's binary runs.

@@ -20,7 +20,7 @@ std::string usage()
     return "usage: icacam synth --renderer povray --out DIR [--condition LIST|all] [--count N] [--seed S]\n"
            "                    [--first K] [--profile LIST|all] [--small] [--quality 'POV-Ray options']\n"
            "                    [--profiles CSV] [--flat-barrel Q] [--povray PATH] [--keep-render] [--labels]\n"
-           "                    [--encoding sensor|png|jpeg] [--quiet]\n"
+           "                    [--encoding sensor|png|jpeg] [--segments N] [--quiet]\n"
            "       icacam synth --renderer povray --make-profiles CSV --fe-work DIR [--ccx PATH]\n"
            "Photographs rendered with real light transport (POV-Ray): a ring light of 12-32 LEDs about the\n"
            "lens, metallic finishes with gloss, turning grooves, stains, the barrel through the FE's free\n"
@@ -42,6 +42,10 @@ std::string usage()
            "                fixture 0) through the same camera, to check the truth's projections against\n"
            "  --encoding    sensor (default: JPEG 80-95 or PNG as drawn), png (every photograph), jpeg\n"
            "                (every photograph; a PNG draw at quality 92)\n"
+           "  --segments N  also N frames under a segmented ring light, one segment lit in each (0: none,\n"
+           "                the default; 2, 3, 4, 6 or 8): DIR/images/<id>-s<k>.<ext>, segment k centred at\n"
+           "                image azimuth k*360/N degrees from +x (right) towards +y (down), the exposure\n"
+           "                locked at N x the full frame's; listed in the manifest's column segment_images\n"
            "  --quiet       no line per record on stderr\n"
            "  --keep-render keep POV-Ray's linear 16-bit render in DIR/scenes/\n"
            "  --profiles    the FE barrel profiles (default " ICACAM_PHOTOBENCH_PROFILES ")\n"
@@ -111,6 +115,9 @@ int photoSynthCommand(const std::vector<std::string> &args)
                 opt.encoding = PhotoBenchOptions::Encoding::Jpeg;
             else
                 opts.fail("sensor, png or jpeg, not '" + v + "'");
+        } else if (opts.is("--segments")) {
+            opt.segments = int(opts.wholeNumber(0, 8));
+            if (opt.segments == 1 || opt.segments == 5 || opt.segments == 7) opts.fail("0, 2, 3, 4, 6 or 8");
         } else if (opts.is("--quiet"))
             opt.quiet = opts.flag();
         else if (opts.is("--make-profiles"))

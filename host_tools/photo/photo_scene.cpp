@@ -173,6 +173,20 @@ double PhotoScene::barrelRadiusAt(double yMm) const
     return rOuterMm + s * (rMaxMm - rOuterMm);
 }
 
+double lightImageAzimuthDeg(const PhotoScene &s, const cv::Vec3d &light)
+{
+    const cv::Vec3d d = light - s.toScene(0, 0, s.faceHeightMm);
+    const double deg = std::atan2(-d.dot(s.camera.up), d.dot(s.camera.right)) * 180 / M_PI;
+    return deg < 0 ? deg + 360 : deg;
+}
+
+int lightSegment(double azimuthDeg, int count)
+{
+    const double width = 360.0 / count;
+    const int k = int(std::floor((azimuthDeg + width / 2) / width)) % count;
+    return k < 0 ? k + count : k;
+}
+
 std::string povraySceneText(const PhotoScene &s, bool labels)
 {
     std::ostringstream o;

@@ -78,6 +78,16 @@ struct PhotoScene {
     double barrelRadiusAt(double yMm) const;
 };
 
+// A light's direction as the image shows it, from the end face's centre on the specimen's
+// axis a: degrees in [0, 360) from the image's +x (columns, rightwards) towards its +y (rows,
+// downwards), atan2(−(light − a)·up, (light − a)·right) with the camera's right and up as
+// POV-Ray maps them to columns and rows (PinholeCamera).
+double lightImageAzimuthDeg(const PhotoScene &s, const cv::Vec3d &light);
+// The segment of a ring light split into count (> 0) that a light at that image azimuth
+// belongs to: segment k is centred at k · 360/count degrees and holds [−180/count, +180/count)
+// about it, so every light is in exactly one.
+int lightSegment(double azimuthDeg, int count);
+
 // The scene as a POV-Ray 3.7 source. labels: the same geometry and camera with every zone
 // emitting its own grey and no light (face 1, ring 2/3, barrel 1/3, fixture 0): the image
 // the truth's projections are checked against.

@@ -18,7 +18,7 @@ double SensorModel::noiseAtMidGrey() const
     return 255 * slope * sigma;
 }
 
-cv::Mat developPhoto(const cv::Mat &linear, const SensorModel &m, std::mt19937 &rng)
+cv::Mat developPhoto(const cv::Mat &linear, const SensorModel &m, std::mt19937 &rng, double fixedGain, double *gainUsed)
 {
     if (linear.channels() != 3) throw std::runtime_error("photo: a 3-channel render was expected");
     cv::Mat img;
@@ -29,18 +29,22 @@ cv::Mat developPhoto(const cv::Mat &linear, const SensorModel &m, std::mt19937 &
         img = grey;
     }
     // Auto-exposure as a camera meters: the frame's mean to a mid-grey, held back where that
-    // would clip more than the brightest highlights.
-    cv::Mat lum;
-    if (img.channels() == 3)
-        cv::cvtColor(img, lum, cv::COLOR_BGR2GRAY);
-    else
-        lum = img;
-    const double mean = cv::mean(lum)[0];
-    std::vector<float> v(lum.begin<float>(), lum.end<float>());
-    const size_t at = std::min(v.size() - 1, size_t(0.999 * double(v.size())));
-    std::nth_element(v.begin(), v.begin() + long(at), v.end());
-    double gain = mean > 0 ? m.exposureMean / mean : 1;
-    if (v[at] * gain > m.highlightCap) gain = m.highlightCap / v[at];
+    // would clip more than the brightest highlights. A locked exposure is not metered.
+    double gain = fixedGain;
+    if (!(fixedGain > 0)) {
+        cv::Mat lum;
+        if (img.channels() == 3)
+            cv::cvtColor(img, lum, cv::COLOR_BGR2GRAY);
+        else
+            lum = img;
+        const double mean = cv::mean(lum)[0];
+        std::vector<float> v(lum.begin<float>(), lum.end<float>());
+        const size_t at = std::min(v.size() - 1, size_t(0.999 * double(v.size())));
+        std::nth_element(v.begin(), v.begin() + long(at), v.end());
+        gain = mean > 0 ? m.exposureMean / mean : 1;
+        if (v[at] * gain > m.highlightCap) gain = m.highlightCap / v[at];
+    }
+    if (gainUsed) *gainUsed = gain;
     img *= gain;
     if (m.blurSigmaPx > 0) cv::GaussianBlur(img, img, cv::Size(), m.blurSigmaPx, m.blurSigmaPx, cv::BORDER_REFLECT);
     // Vignetting, a quadratic fall-off to the corners; then the electrons, Poisson (as a

@@ -27,8 +27,11 @@ struct SensorModel {
 };
 
 // linear: CV_16UC3 or CV_32FC3 in linear radiance (BGR, as cv::imread gives). Returns the
-// 8-bit image (CV_8UC1 or CV_8UC3) before encoding.
-cv::Mat developPhoto(const cv::Mat &linear, const SensorModel &m, std::mt19937 &rng);
+// 8-bit image (CV_8UC1 or CV_8UC3) before encoding. fixedGain > 0: the exposure locked at
+// that gain (a sequence's later frames), else metered from the frame (exposureMean,
+// highlightCap); gainUsed, when given, receives the gain applied to the linear radiance.
+cv::Mat developPhoto(const cv::Mat &linear, const SensorModel &m, std::mt19937 &rng, double fixedGain = 0,
+                     double *gainUsed = nullptr);
 
 // The bytes of the file (JPEG at the model's quality, or PNG).
 std::vector<uint8_t> encodePhoto(const cv::Mat &image, const SensorModel &m);

@@ -12,6 +12,7 @@
 #include "host_tools/image_file.h"
 #include "host_tools/manifest.h"
 #include "tests/host_tools/test_support.h"
+#include "vision/contact_tilt.h"
 #include "vision/end_face_analyzer.h"
 
 using namespace icacam;
@@ -342,3 +343,73 @@ INSTANTIATE_TEST_SUITE_P(Rendered, FadingBarrelPhotos, ::testing::Values("straig
 
 INSTANTIATE_TEST_SUITE_P(Rendered, NarrowBarrelBandPhotos, ::testing::Values("straight-s9-0011", "straight-s2-0005"),
                          recordName);
+
+// The ring light lit in turn (tests/data/photo/segments): four frames of the same view, each
+// under one quadrant of the ring, beside the whole ring's. The tilt they show says where the
+// flat face ends, which the whole ring's frame leaves open on a barrel lit like the ring.
+namespace {
+
+struct SegmentPhoto {
+    vision::EndFaceGeometry single, lit;
+    std::map<std::string, std::string> truth;
+};
+
+SegmentPhoto measureSegments(const std::string &id)
+{
+    const std::string dir = kDir + "segments/";
+    const auto manifest = test::readCsvById(dir + "manifest.csv");
+    SegmentPhoto p;
+    p.truth = test::readCsvById(dir + "truth.csv").at(id);
+    const auto &m = manifest.at(id);
+    host::LumaImage frame;
+    EXPECT_EQ(host::loadLuma(dir + m.at("image"), &frame), "");
+    host::LumaImage segment[4];
+    vision::LitInTurn lit;
+    const std::string list = m.at("segment_images");
+    for (size_t a = 0, k = 0; k < 4; ++k) {
+        const size_t b = list.find(';', a);
+        EXPECT_EQ(host::loadLuma(dir + list.substr(a, b - a), &segment[k]), "");
+        lit.segment[k] = {segment[k].luma.data, segment[k].luma.cols, segment[k].luma.rows,
+                          int(segment[k].luma.step[0]), 1};
+        a = b + 1;
+    }
+    lit.count = 4;
+    static vision::EndFaceAnalyzer analyzer;
+    EXPECT_EQ(analyzer.configure(640, 480), vision::ErrorCode::None);
+    const vision::LumaView v{frame.luma.data, frame.luma.cols, frame.luma.rows, int(frame.luma.step[0]), 1};
+    vision::FaceSearch search{num(m, "d0_mm"), num(m, "mm_per_px"), 1};
+    p.single = analyzer.measure(v, search);
+    search.litInTurn = &lit;
+    p.lit = analyzer.measure(v, search);
+    return p;
+}
+
+} // namespace
+
+// A staircase whose barrel stays lit for 2.6 px beyond the contact edge: the whole ring's
+// frame reads R_o there (Δμ +0.040, warned only by contact_edge_ramp); the tilt's knee lies
+// 3.2 px inside it, farther than its own error explains, and the contact edge moves to it.
+TEST(SegmentPhotos, TheTiltMovesAContactEdgeReadOnTheBarrel)
+{
+    const SegmentPhoto p = measureSegments("straight-0021");
+    ASSERT_TRUE(p.single.found() && p.lit.found());
+    const double ro = num(p.truth, "r_outer_px");
+    EXPECT_GT(p.single.outer.rEqPx - ro, 2.0);
+    EXPECT_NE(p.lit.imageFlags & vision::kImageContactEdgeByTilt, 0u);
+    EXPECT_NEAR(p.lit.outer.rEqPx, ro, 1.0);
+    EXPECT_EQ(p.lit.inner.rEqPx, p.single.inner.rEqPx);
+}
+
+// A staircase whose contact edge opens a band and ramps: the whole ring's frame reads R_o
+// right but cannot tell it (contact_edge_ramp, contact_edge_undecided); the tilt rises there
+// and confirms it, the edge unmoved.
+TEST(SegmentPhotos, TheTiltConfirmsAContactEdgeTheFrameLeftOpen)
+{
+    const SegmentPhoto p = measureSegments("straight-0016");
+    ASSERT_TRUE(p.single.found() && p.lit.found());
+    EXPECT_GT(p.single.contactRampPx, vision::kContactRampPx);
+    EXPECT_NE(p.single.imageFlags & vision::kImageContactEdgeUndecided, 0u);
+    EXPECT_NE(p.lit.imageFlags & vision::kImageTiltConfirms, 0u);
+    EXPECT_EQ(p.lit.outer.rEqPx, p.single.outer.rEqPx);
+    EXPECT_NEAR(p.lit.outer.rEqPx, num(p.truth, "r_outer_px"), 1.0);
+}

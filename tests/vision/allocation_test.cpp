@@ -81,3 +81,38 @@ TEST(Allocation, NoneReadingAnyUnitPhotograph)
         }
     }
 }
+
+// The same with the ring light lit in turn: four segment frames beside the photograph.
+TEST(Allocation, NoneReadingWithSegmentFrames)
+{
+    const std::string dir = std::string(ICACAM_SOURCE_DIR) + "/tests/data/photo/segments/";
+    const auto manifest = test::readCsvById(dir + "manifest.csv");
+    ASSERT_GE(manifest.size(), 1u);
+    friction::PaperModel model;
+    for (const auto &[id, m] : manifest) {
+        host::LumaImage image, segment[4];
+        ASSERT_EQ(host::loadLuma(dir + m.at("image"), &image), "") << id;
+        vision::LitInTurn lit;
+        const std::string list = m.at("segment_images");
+        for (size_t a = 0, k = 0; k < 4; ++k) {
+            const size_t b = list.find(';', a);
+            ASSERT_EQ(host::loadLuma(dir + list.substr(a, b - a), &segment[k]), "") << id;
+            const cv::Mat &s = segment[k].luma;
+            lit.segment[k] = {s.data, s.cols, s.rows, int(s.step[0]), 1};
+            a = b + 1;
+        }
+        lit.count = 4;
+        const cv::Mat &img = image.luma;
+        reading::Instrument instrument;
+        ASSERT_EQ(instrument.configure(img.cols, img.rows, model), vision::ErrorCode::None) << id;
+        const vision::LumaView v{img.data, img.cols, img.rows, int(img.step[0]), 1};
+        const reading::SpecimenSpec spec{std::stod(m.at("n")), std::stod(m.at("k_mpa")), std::stod(m.at("d0_mm")),
+                                         std::stod(m.at("h0_mm")), std::stod(m.at("mm_per_px"))};
+        const long before = icacam::test::allocationCount();
+        const reading::Reading r = instrument.read(v, spec, &lit);
+        const long after = icacam::test::allocationCount();
+        EXPECT_TRUE(r.hasValue()) << id << ": " << vision::errorMessage(r.error);
+        EXPECT_NE(r.geometry.imageFlags & (vision::kImageContactEdgeByTilt | vision::kImageTiltConfirms), 0u) << id;
+        EXPECT_EQ(after - before, 0) << id << ": heap allocations during read() with segment frames";
+    }
+}
