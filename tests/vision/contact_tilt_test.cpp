@@ -37,7 +37,8 @@ std::vector<uint8_t> segmentFrame(const TiltScene &s, int k)
             const double mark = s.ripple * std::sin(2 * std::numbers::pi * r / 6);
             const double g = onset * s.tilt + (1 - onset) * mark;
             const double level = 160 - 0.1 * r;
-            px[size_t(y) * s.width + x] = uint8_t(std::lround(std::clamp(level * (1 + g * std::cos(th - phi)), 0.0, 255.0)));
+            px[size_t(y) * s.width + x] =
+                uint8_t(std::lround(std::clamp(level * (1 + g * std::cos(th - phi)), 0.0, 255.0)));
         }
     return px;
 }
@@ -52,7 +53,8 @@ Frames framesOf(const TiltScene &s)
     Frames f;
     for (int k = 0; k < s.segments; ++k) f.data.push_back(segmentFrame(s, k));
     f.lit.count = s.segments;
-    for (int k = 0; k < s.segments; ++k) f.lit.segment[k] = LumaView{f.data[size_t(k)].data(), s.width, s.height, s.width, 1};
+    for (int k = 0; k < s.segments; ++k)
+        f.lit.segment[k] = LumaView{f.data[size_t(k)].data(), s.width, s.height, s.width, 1};
     return f;
 }
 
