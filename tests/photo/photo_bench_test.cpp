@@ -163,3 +163,58 @@ TEST(PhotoBench, RendersASmallSetWhoseTruthMatchesTheRenderedGeometry)
     }
     fs::remove_all(dir);
 }
+
+// The ring light lit in turn: each segment frame lights the barrel on its own side of the
+// image (segment k at azimuth k·90° from +x towards +y, rows down), the full-ring photograph is
+// the one rendered without segments, and the manifest lists the frames in order.
+TEST(PhotoBench, SegmentFramesLightTheirOwnSide)
+{
+    if (!host::photo::povrayAvailable()) GTEST_SKIP() << "povray is not installed (apt-get install povray)";
+    const fs::path with = test::tempDir("photobench-seg"), without = test::tempDir("photobench-noseg");
+    host::photo::PhotoBenchOptions opt;
+    opt.conditions = {host::photo::PhotoCondition::Straight};
+    opt.countPerCondition = 1;
+    opt.seed = 5;
+    opt.small = true;
+    opt.quiet = true;
+    opt.quality = "-A";
+    opt.profilesCsv = kProfiles;
+    host::photo::writePhotoSet(without.string(), opt);
+    opt.segments = 4;
+    host::photo::writePhotoSet(with.string(), opt);
+
+    const auto m = test::readCsvById((with / "manifest.csv").string()).at("straight-0001");
+    const auto t = test::readCsvById((with / "truth.csv").string()).at("straight-0001");
+    const cv::Mat whole = cv::imread((with / m.at("image")).string(), cv::IMREAD_GRAYSCALE);
+    const cv::Mat alone = cv::imread((without / m.at("image")).string(), cv::IMREAD_GRAYSCALE);
+    ASSERT_FALSE(whole.empty());
+    ASSERT_EQ(whole.size(), alone.size());
+    EXPECT_EQ(cv::norm(whole, alone, cv::NORM_INF), 0);
+    const std::string list = m.at("segment_images");
+    std::vector<cv::Mat> seg;
+    for (size_t a = 0; seg.size() < 5;) {
+        const size_t b = list.find(';', a);
+        seg.push_back(
+            cv::imread((with / list.substr(a, b == std::string::npos ? b : b - a)).string(), cv::IMREAD_GRAYSCALE));
+        if (b == std::string::npos) break;
+        a = b + 1;
+    }
+    ASSERT_EQ(seg.size(), 4u);
+    // The barrel band just outside the contact edge, on the image's right (+x) and left (−x).
+    const double cx = num(t, "cx_px"), cy = num(t, "cy_px");
+    const double ro = num(t, "r_outer_px"), outline = num(t, "outline_px");
+    auto band = [&](const cv::Mat &img, double dirX, double dirY) {
+        double sum = 0;
+        int n = 0;
+        for (double r = ro + 1; r < outline; r += 0.5)
+            for (int k = -10; k <= 10; ++k) {
+                const double a = std::atan2(dirY, dirX) + k * 0.02;
+                sum += img.at<uint8_t>(int(cy + r * std::sin(a)), int(cx + r * std::cos(a)));
+                ++n;
+            }
+        return sum / n;
+    };
+    EXPECT_GT(band(seg[0], 1, 0), band(seg[2], 1, 0) + 10);   // s0 lights the right
+    EXPECT_GT(band(seg[2], -1, 0), band(seg[0], -1, 0) + 10); // s2 the left
+    EXPECT_GT(band(seg[1], 0, 1), band(seg[3], 0, 1) + 10);   // s1 the bottom (rows down)
+}

@@ -155,6 +155,32 @@ TEST(EdgeSigma, AContactEdgeOnARampWidensU)
     EXPECT_NEAR(ramp, std::hypot(step, 2.5 * p.mmPerPx), 1e-12);
 }
 
+// Segment frames whose tilt confirms the contact edge resolve what the single frame left open
+// (its ramp, which edge ends the flat face), u's error taking the tilt's instead of the ramp;
+// a tilt moving the edge resolves the ramp; one disagreeing within its own error is a finding.
+TEST(ImageChecks, TheTiltResolvesOrDisagrees)
+{
+    const AssumedReduction r = assumedReduction(spec());
+    auto checked = [&](const EndFaceGeometry &g, EdgeSigma *e) {
+        const PlaneMapping p = mapFace(g, spec(), nullptr, r);
+        *e = edgeSigma(g, p, false);
+        double offset = 0;
+        return imageChecks(g, p, *e, 10, &offset);
+    };
+    EndFaceGeometry g = circularFace(250, 300);
+    g.innerEdgeWidthPx = 1.2, g.contactRampPx = 2.5;
+    g.imageFlags = vision::kImageContactEdgeUndecided;
+    EdgeSigma single, confirmed, moved;
+    EXPECT_EQ(checked(g, &single), uint32_t(kFlagContactEdgeRamp | kFlagContactEdgeUndecided));
+    g.imageFlags |= vision::kImageTiltConfirms, g.tiltSigmaPx = 1.0;
+    EXPECT_EQ(checked(g, &confirmed), 0u);
+    EXPECT_LT(confirmed.uSigmaEdgesMm, single.uSigmaEdgesMm) << "a 1 px knee instead of a 2.5 px ramp";
+    g.imageFlags = vision::kImageContactEdgeUndecided | vision::kImageContactEdgeByTilt;
+    EXPECT_EQ(checked(g, &moved), uint32_t(kFlagContactEdgeUndecided)) << "R_i is the single frame's";
+    g.imageFlags = vision::kImageTiltDisagrees;
+    EXPECT_EQ(checked(g, &moved), uint32_t(kFlagContactEdgeRamp | kFlagTiltDisagrees));
+}
+
 // A ring read narrow is a finding unless the outline agrees with the μ it reads and the
 // widening a narrow read may carry cannot move μ beyond the tolerance.
 TEST(NarrowRing, CorroboratedByTheOutlineWhereItsWideningCannotMoveMu)
