@@ -47,22 +47,25 @@ int32_t levelOf(const int32_t *t, int from, int to)
 
 // Half the width (samples) of the box that smooths T over the turning marks' period: the lag
 // of least mean absolute difference over t[0 … flat), from 2 to 10 px, where the flat ring
-// shows two periods at least and the lag's difference is under two thirds of half the lag's
-// (a period, not noise); else the default box.
+// shows two periods at least, the lag's difference is under two thirds of half the lag's and
+// half the lag's three times the neighbouring samples' (a ripple, not noise); else the
+// default box.
 int smoothingHalfWidth(const int32_t *t, int flat)
 {
+    auto amdf = [&](int l) {
+        int64_t d = 0;
+        for (int k = 0; k + l < flat; ++k) d += std::abs(t[k + l] - t[k]);
+        return double(d) / (flat - l);
+    };
+    if (flat < 2) return kSmoothHalf;
+    const double neighbours = amdf(1);
     int best = 0;
     double bestDiff = 0;
     for (int lag = int(kMinPeriodPx / kStepPx); lag <= int(kMaxPeriodPx / kStepPx) && 2 * lag <= flat; ++lag) {
-        auto amdf = [&](int l) {
-            int64_t d = 0;
-            for (int k = 0; k + l < flat; ++k) d += std::abs(t[k + l] - t[k]);
-            return double(d) / (flat - l);
-        };
-        const double d = amdf(lag);
-        if (d < amdf(lag / 2) * 2 / 3 && (best == 0 || d < bestDiff)) best = lag, bestDiff = d;
+        const double d = amdf(lag), half = amdf(lag / 2);
+        if (d < half * 2 / 3 && half >= 3 * neighbours && (best == 0 || d < bestDiff)) best = lag, bestDiff = d;
     }
-    return best ? best / 2 : kSmoothHalf;
+    return best ? std::max(kSmoothHalf, best / 2) : kSmoothHalf;
 }
 
 } // namespace
@@ -162,7 +165,9 @@ TiltEdge contactEdgeByTilt(const LitInTurn &lit, const BoundaryFit &outer, doubl
         w.searchInPx = std::min((w.insideSamples - 1) * kStepPx, kKneeSearchPx);
         if (w.insideSamples < kLevelFrom) continue;
         const ContactKnee knee = locateContactKnee(fitted, count, j, +1, w);
-        if (!knee.found) continue;
+        // Outward tilt only raises T: a knee stepping down by a quarter of the rise into a
+        // ramp is a mark's dip beside the edge, not where the barrel begins.
+        if (!knee.found || knee.stepLevel * 4 < -step) continue;
         const double at = j + knee.offsetPx / kStepPx;
         // The smoothed profile's noise from its second differences inside the step (what the
         // box left of the marks, and the sensor's), over the rise's slope per pixel.
