@@ -117,9 +117,10 @@ const char *findingWords(int bit)
         "the silhouette says another height than half: declare h_final_mm (a close camera sees the barrel inside "
         "R_max: declare working_distance_mm)",
         "the profile does not tell which edge ends the flat face: R_i and R_o may be one edge out; check the image "
-        "(a diffuse ring light or a matt barrel removes the band)",
+        "(a diffuse ring light or a matt barrel removes the band; the ring light lit in segments, segment_images, "
+        "tells it)",
         "the contact edge ramps away wider than the original face's edge: R_o may read up to that ramp outside; "
-        "a diffuse ring light or a matt barrel gives a step",
+        "a diffuse ring light or a matt barrel gives a step; the ring light lit in segments (segment_images) places it",
         "the silhouette reads another height from a close camera than from a far one: declare working_distance_mm "
         "(or h_final_mm)",
         "the segment frames' tilt places the flat face's end a few pixels from the contact edge the frame shows: "
