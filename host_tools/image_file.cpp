@@ -1,5 +1,6 @@
 #include "host_tools/image_file.h"
 
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 
@@ -36,6 +37,9 @@ std::string checkContainer(const std::vector<uint8_t> &b, std::string *format)
 
 std::string loadLuma(const std::string &path, LumaImage *out)
 {
+    // A directory opens as a stream on Linux and throws on the first read: it is no image.
+    std::error_code ec;
+    if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec)) return "not a file: " + path;
     std::ifstream f(path, std::ios::binary);
     if (!f) return "image file not found or unreadable: " + path;
     std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());

@@ -116,6 +116,10 @@ bool RecordMeasurer::loadSegments(const ManifestRow &row, const Manifest &manife
     }
     segments_.resize(paths.size());
     for (size_t k = 0; k < paths.size(); ++k) {
+        if (paths[k].empty()) {
+            *why = "segment_images: segment " + std::to_string(k) + " has no path";
+            return false;
+        }
         fs::path p = paths[k];
         if (p.is_relative()) p = fs::path(manifest.baseDir) / p;
         if (std::string e = loadLuma(p.string(), &segments_[k]); !e.empty()) {

@@ -70,12 +70,13 @@ TEST(BadInput, EachGetsAnErrorAndTheBatchGoesOn)
            "bad-n,good.png,abc,0.0135\n"
            "bad-scale,good.png,0.25,-1\n"
            "short-row,good.png\n"
+           "directory,.,0.25,0.0135\n"
            "good-again,good.png,0.25,0.0135\n";
     man.close();
     const std::string out = (dir / "out.csv").string();
     ASSERT_EQ(host::measureCommand({"--manifest", (dir / "manifest.csv").string(), "--out", out}), 0);
     auto rows = test::readCsvById(out);
-    ASSERT_EQ(rows.size(), 17u);
+    ASSERT_EQ(rows.size(), 18u);
     for (const char *id : {"good", "good-again"}) {
         EXPECT_NE(rows[id]["status"], "error") << id << ": " << rows[id]["message"];
         EXPECT_FALSE(rows[id]["mu"].empty());
@@ -90,6 +91,48 @@ TEST(BadInput, EachGetsAnErrorAndTheBatchGoesOn)
     EXPECT_NE(rows["missing"]["message"].find("not found"), std::string::npos);
     EXPECT_NE(rows["empty"]["message"].find("empty"), std::string::npos);
     EXPECT_NE(rows["bad-n"]["message"].find("n"), std::string::npos);
+    EXPECT_NE(rows["directory"]["message"].find("not a file"), std::string::npos);
+    fs::remove_all(dir);
+}
+
+// Segment frames (the ring light lit in turn): too few, a path missing, a file missing, another
+// size, not an image: each its error, and the batch goes on.
+TEST(BadInput, SegmentFramesEachGetAnError)
+{
+    const fs::path dir = test::tempDir("badseg");
+    std::vector<uint8_t> png;
+    cv::imencode(".png", host::renderEndFace(host::nominalScene(0.6)), png);
+    writeBytes(dir / "good.png", png);
+    cv::imwrite((dir / "small.png").string(), cv::Mat(64, 64, CV_8UC1, cv::Scalar(90)));
+    writeBytes(dir / "text.png", std::vector<uint8_t>{'h', 'i'});
+    std::ofstream man(dir / "manifest.csv");
+    man << "id,image,n,mm_per_px,segment_images\n"
+           "two,good.png,0.25,0.0135,good.png;good.png\n"
+           "nine,good.png,0.25,0.0135,good.png;good.png;good.png;good.png;good.png;good.png;good.png;good.png;"
+           "good.png\n"
+           "no-path,good.png,0.25,0.0135,good.png;;good.png\n"
+           "missing,good.png,0.25,0.0135,good.png;good.png;nope.png\n"
+           "directory,good.png,0.25,0.0135,good.png;good.png;.\n"
+           "other-size,good.png,0.25,0.0135,good.png;good.png;small.png\n"
+           "text,good.png,0.25,0.0135,good.png;good.png;text.png\n"
+           "none,good.png,0.25,0.0135,\n";
+    man.close();
+    const std::string out = (dir / "out.csv").string();
+    ASSERT_EQ(host::measureCommand({"--manifest", (dir / "manifest.csv").string(), "--out", out}), 0);
+    auto rows = test::readCsvById(out);
+    ASSERT_EQ(rows.size(), 8u);
+    const std::pair<const char *, const char *> expected[] = {{"two", "3-8"},
+                                                              {"nine", "3-8"},
+                                                              {"no-path", "no path"},
+                                                              {"missing", "not found"},
+                                                              {"directory", "not a file"},
+                                                              {"other-size", "64x64"},
+                                                              {"text", "segment 2"}};
+    for (const auto &[id, words] : expected) {
+        EXPECT_EQ(rows[id]["status"], "error") << id;
+        EXPECT_NE(rows[id]["message"].find(words), std::string::npos) << id << ": " << rows[id]["message"];
+    }
+    EXPECT_NE(rows["none"]["status"], "error") << "an empty column is no segment frames: " << rows["none"]["message"];
     fs::remove_all(dir);
 }
 
