@@ -48,6 +48,18 @@ bool splitCsvLine(const std::string &line, std::vector<std::string> *fields)
     return true;
 }
 
+std::vector<std::string> splitList(const std::string &text, char sep)
+{
+    std::vector<std::string> out;
+    if (text.empty()) return out;
+    for (size_t a = 0;;) {
+        const size_t b = text.find(sep, a);
+        out.push_back(text.substr(a, b == std::string::npos ? std::string::npos : b - a));
+        if (b == std::string::npos) return out;
+        a = b + 1;
+    }
+}
+
 static std::string trim(const std::string &s)
 {
     size_t a = 0, b = s.size();

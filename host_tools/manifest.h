@@ -30,6 +30,10 @@ bool readManifest(const std::string &path, Manifest *out, std::string *error);
 // Splits one CSV line into fields; false on an unterminated quote.
 bool splitCsvLine(const std::string &line, std::vector<std::string> *fields);
 
+// Splits a list held in one field ("a;b;c") at sep; an empty text is no element, empty
+// entries between separators are kept.
+std::vector<std::string> splitList(const std::string &text, char sep = ';');
+
 // Parses a finite number; false on anything else (empty, text, inf, nan, trailing junk).
 bool parseNumber(const std::string &s, double *out);
 

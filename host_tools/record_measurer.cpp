@@ -101,14 +101,7 @@ bool RecordMeasurer::loadSegments(const ManifestRow &row, const Manifest &manife
 {
     lit->count = 0;
     if (!row.has("segment_images") || row.get("segment_images").empty()) return true;
-    const std::string list = row.get("segment_images");
-    std::vector<std::string> paths;
-    for (size_t a = 0;;) {
-        const size_t b = list.find(';', a);
-        paths.push_back(list.substr(a, b == std::string::npos ? std::string::npos : b - a));
-        if (b == std::string::npos) break;
-        a = b + 1;
-    }
+    const std::vector<std::string> paths = splitList(row.get("segment_images"));
     if (paths.size() < size_t(vision::kMinTiltSegments) || paths.size() > size_t(vision::LitInTurn::kMaxSegments)) {
         *why = "segment_images: " + std::to_string(paths.size()) + " frames; the tilt needs " +
                std::to_string(vision::kMinTiltSegments) + "-" + std::to_string(vision::LitInTurn::kMaxSegments);

@@ -206,22 +206,16 @@ EndFaceGeometry EndFaceAnalyzer::measure(const LumaView &v, const FaceSearch &fa
 void EndFaceAnalyzer::contactEdgeFromTilt(const LitInTurn &lit, const LumaView &v, double r0Px, EndFaceGeometry *m)
 {
     for (int k = 0; k < lit.count; ++k)
-        if (lit.segment[k].width != v.width || lit.segment[k].height != v.height || !lit.segment[k].valid()) {
-            m->imageFlags |= kImageTiltStepNotFound;
-            return;
-        }
+        if (lit.segment[k].width != v.width || lit.segment[k].height != v.height || !lit.segment[k].valid()) return;
+    // The optics' blur: the original face's edge, a step in the finish alone, where measured.
+    const double blurPx = m->innerEdgeWidthPx > 0 ? m->innerEdgeWidthPx : m->edgeWidthPx > 0 ? m->edgeWidthPx : 1.0;
     // From as far inside as the single frame's steepest fall lies beyond the flat face's end
     // on a long lit shoulder (rendered flat-sided barrels: up to 0.1 R0), never across the
     // original face's edge; to a few pixels beyond it, where a step read too soon ends.
-    // The optics' blur: the original face's edge, a step in the finish alone, where measured.
-    const double blurPx = m->innerEdgeWidthPx > 0 ? m->innerEdgeWidthPx : m->edgeWidthPx > 0 ? m->edgeWidthPx : 1.0;
     const double ringPx = m->outer.rEqPx - m->inner.rEqPx;
     const double innerPx = std::min(std::max(kTiltReachMinPx, kTiltReachOfR0 * r0Px), ringPx - 2.5 * blurPx);
     const TiltEdge t = contactEdgeByTilt(lit, m->outer, m->centreX, m->centreY, innerPx, kTiltBeyondPx, blurPx);
-    if (!t.found) {
-        m->imageFlags |= kImageTiltStepNotFound;
-        return;
-    }
+    if (!t.found) return;
     // The knee's error: its fit's and the knee model's own on a barrel curving away, whose
     // tilt grows gently from the edge (640 × 480 photographs: knees −2.5 … +1.8 px about the
     // contact edge, σ about 1 px). Within 1.5 σ of the single frame's contact edge the tilt
@@ -230,7 +224,6 @@ void EndFaceAnalyzer::contactEdgeFromTilt(const LitInTurn &lit, const LumaView &
     // knee. Between, neither is sure: the edge stands, and the reading says so.
     const double sigma = std::hypot(t.sigmaPx, kTiltKneeModelPx);
     m->tiltKneePx = t.shiftPx;
-    m->tiltRise = t.rise;
     // Only a clean knee moves the edge: turning marks whose ripple the smoothing left (the
     // knee model's residual beyond 2 % of the step; clean knees 0.3–1.4 %) move the knee by a
     // fraction of their period (a 1456 × 1088 ring of 15 px with 8 px marks: 4 px).

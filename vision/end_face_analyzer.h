@@ -38,8 +38,8 @@ private:
     bool centreByRays(const LumaView &v, double r0Px, RayEdge edge, double settlePx, double *cx, double *cy);
     // The coarse rays about (cx, cy) that the ring search reads its mean profile from.
     void castCoarseRays(const LumaView &v, double r0Px, double cx, double cy);
-    // The contact edge moved to the segment frames' tilt step, or the geometry marked that
-    // they showed none.
+    // The contact edge confirmed by the segment frames' tilt or moved to it, or left as the
+    // single frame read it where they show no tilt step.
     void contactEdgeFromTilt(const LitInTurn &lit, const LumaView &v, double r0Px, EndFaceGeometry *m);
 
     int maxWidth_ = 0, maxHeight_ = 0;

@@ -69,13 +69,10 @@ enum ImageFlag : uint32_t {
     // The tilt's knee lies within its own reach of the single frame's contact edge: the flat
     // face ends there, which the single frame's ramp or band left open.
     kImageTiltConfirms = 1u << 7,
-    // Segment frames were given but showed no tilt step about the contact edge: the single
-    // frame's contact edge stands with its findings.
-    kImageTiltStepNotFound = 1u << 8,
     // The tilt's knee lies beyond its reach of the contact edge but within what its own error
     // explains: the single frame's contact edge stands, and neither is sure (reading:
     // tilt_disagrees).
-    kImageTiltDisagrees = 1u << 9,
+    kImageTiltDisagrees = 1u << 8,
 };
 
 // Where the pipeline looks: the specimen's initial diameter and the scale at the end face
@@ -126,8 +123,9 @@ struct EndFaceGeometry {
     double innerEdgeWidthPx = 0;
     double contactRampPx = 0; // beyond kContactRampPx: the contact edge on the barrel's ramp
     // With segment frames: the tilt's knee from the single frame's contact edge (outwards +),
-    // the contact edge's standard uncertainty the tilt leaves, and the rise's height in T.
-    double tiltKneePx = 0, tiltSigmaPx = 0, tiltRise = 0;
+    // and the contact edge's standard uncertainty the tilt leaves. Segment frames that show
+    // no tilt step (or do not fit the frame) leave the single frame's reading as it is.
+    double tiltKneePx = 0, tiltSigmaPx = 0;
     double saturatedFraction = 0;
     // The silhouette's per-ray fit: coverage and the points' robust RMS about it (0 when only
     // the mean profile named it).

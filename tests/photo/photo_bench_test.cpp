@@ -190,15 +190,9 @@ TEST(PhotoBench, SegmentFramesLightTheirOwnSide)
     ASSERT_FALSE(whole.empty());
     ASSERT_EQ(whole.size(), alone.size());
     EXPECT_EQ(cv::norm(whole, alone, cv::NORM_INF), 0);
-    const std::string list = m.at("segment_images");
     std::vector<cv::Mat> seg;
-    for (size_t a = 0; seg.size() < 5;) {
-        const size_t b = list.find(';', a);
-        seg.push_back(
-            cv::imread((with / list.substr(a, b == std::string::npos ? b : b - a)).string(), cv::IMREAD_GRAYSCALE));
-        if (b == std::string::npos) break;
-        a = b + 1;
-    }
+    for (const std::string &p : host::splitList(m.at("segment_images")))
+        seg.push_back(cv::imread((with / p).string(), cv::IMREAD_GRAYSCALE));
     ASSERT_EQ(seg.size(), 4u);
     // The barrel band just outside the contact edge, on the image's right (+x) and left (−x).
     const double cx = num(t, "cx_px"), cy = num(t, "cy_px");

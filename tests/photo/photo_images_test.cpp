@@ -365,13 +365,12 @@ SegmentPhoto measureSegments(const std::string &id)
     EXPECT_EQ(host::loadLuma(dir + m.at("image"), &frame), "");
     host::LumaImage segment[4];
     vision::LitInTurn lit;
-    const std::string list = m.at("segment_images");
-    for (size_t a = 0, k = 0; k < 4; ++k) {
-        const size_t b = list.find(';', a);
-        EXPECT_EQ(host::loadLuma(dir + list.substr(a, b - a), &segment[k]), "");
+    const std::vector<std::string> paths = host::splitList(m.at("segment_images"));
+    EXPECT_EQ(paths.size(), 4u);
+    for (size_t k = 0; k < 4 && k < paths.size(); ++k) {
+        EXPECT_EQ(host::loadLuma(dir + paths[k], &segment[k]), "");
         lit.segment[k] = {segment[k].luma.data, segment[k].luma.cols, segment[k].luma.rows,
                           int(segment[k].luma.step[0]), 1};
-        a = b + 1;
     }
     lit.count = 4;
     static vision::EndFaceAnalyzer analyzer;

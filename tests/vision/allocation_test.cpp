@@ -93,13 +93,12 @@ TEST(Allocation, NoneReadingWithSegmentFrames)
         host::LumaImage image, segment[4];
         ASSERT_EQ(host::loadLuma(dir + m.at("image"), &image), "") << id;
         vision::LitInTurn lit;
-        const std::string list = m.at("segment_images");
-        for (size_t a = 0, k = 0; k < 4; ++k) {
-            const size_t b = list.find(';', a);
-            ASSERT_EQ(host::loadLuma(dir + list.substr(a, b - a), &segment[k]), "") << id;
+        const std::vector<std::string> paths = host::splitList(m.at("segment_images"));
+        ASSERT_EQ(paths.size(), 4u) << id;
+        for (size_t k = 0; k < 4; ++k) {
+            ASSERT_EQ(host::loadLuma(dir + paths[k], &segment[k]), "") << id;
             const cv::Mat &s = segment[k].luma;
             lit.segment[k] = {s.data, s.cols, s.rows, int(s.step[0]), 1};
-            a = b + 1;
         }
         lit.count = 4;
         const cv::Mat &img = image.luma;
