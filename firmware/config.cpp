@@ -140,12 +140,20 @@ const KeyDef kKeys[] = {
      "camera's images are lit by it"},
     {"led.gpio_chip", nullptr, nullptr, nullptr, &Config::ledChip, 0, 256, nullptr, false,
      "gpiod: chip of the LED line (\"\" = trigger.gpio_chip)"},
-    {"led.gpio_line", nullptr, nullptr, nullptr, &Config::ledLine, 1, 64, nullptr, false,
-     "gpiod: LED ring line, by name (GPIO27) or offset"},
+    {"led.gpio_line", nullptr, nullptr, nullptr, &Config::ledLine, 1, 256, nullptr, false,
+     "gpiod: LED ring line, by name (GPIO27) or offset; a segmented ring's lines separated by commas, "
+     "segment 0 first, in the order of increasing image azimuth"},
     {"led.active", nullptr, nullptr, nullptr, &Config::ledActive, 0, 0, "high|low", false,
      "gpiod: the level that lights the ring (high: through an N-MOSFET)"},
     {"led.settle_ms", nullptr, nullptr, &Config::ledSettleMs, nullptr, 0, 1000, nullptr, false,
      "wait after switching the ring on before capturing"},
+    {"led.segments", nullptr, nullptr, &Config::ledSegments, nullptr, 1, 8, nullptr, false,
+     "segments of the ring lit one at a time before the whole ring, for the contact edge from the surface's "
+     "tilt (1: the ring is one line; 3-8: a line each, led.gpio_line lists them)"},
+    {"led.segment0_deg", nullptr, &Config::ledSegment0Deg, nullptr, nullptr, 0, 360, nullptr, false,
+     "segmented ring: segment 0's centre as seen in the image, degrees from the image's +x toward +y (rows down)"},
+    {"led.segment_exposure_us", nullptr, nullptr, &Config::ledSegmentExposureUs, nullptr, 0, 10000000, nullptr, false,
+     "segmented ring: the segment frames' exposure (0: camera.exposure_us times led.segments)"},
     {"led.lit_attempts", nullptr, nullptr, &Config::litAttempts, nullptr, 1, 10, nullptr, false,
      "frames tried per measurement: one not lit top to bottom is refused and captured again; then "
      "the error 'LED ring not lit'"},
@@ -300,6 +308,50 @@ std::string specimenIssue(const Config &cfg)
     return {};
 }
 
+std::vector<std::string> ledLines(const Config &cfg)
+{
+    std::vector<std::string> lines;
+    std::string_view rest = cfg.ledLine;
+    while (true) {
+        const size_t comma = rest.find(',');
+        lines.emplace_back(trim(rest.substr(0, comma)));
+        if (comma == std::string_view::npos) break;
+        rest.remove_prefix(comma + 1);
+    }
+    return lines;
+}
+
+std::string ledSegmentIssue(const Config &cfg)
+{
+    if (cfg.ledSegments == 1) {
+        if (cfg.ledLine.find(',') != std::string::npos)
+            return "led.gpio_line lists " + std::to_string(ledLines(cfg).size()) +
+                   " lines: set led.segments to their number (a segmented ring)";
+        return {};
+    }
+    if (cfg.ledSegments < 3) return "led.segments is 1 (one line) or 3-8 (fewer cannot tell the tilt's direction)";
+    // The segment frames are compared pixel by pixel, so they share one fixed exposure, and
+    // the whole ring's frame after them goes back to the recipe's: both must be numbers.
+    if (cfg.exposureUs < 0) return "led.segments needs a fixed exposure: camera.exposure_us";
+    if (cfg.ledBackend == "gpiod") {
+        const std::vector<std::string> lines = ledLines(cfg);
+        if (int(lines.size()) != cfg.ledSegments)
+            return "led.gpio_line lists " + std::to_string(lines.size()) +
+                   " line(s) for led.segments = " + std::to_string(cfg.ledSegments) +
+                   ": one line per segment, segment 0 first";
+        for (const std::string &l : lines)
+            if (l.empty()) return "led.gpio_line has an empty entry";
+    }
+    return {};
+}
+
+int segmentExposureUs(const Config &cfg)
+{
+    if (cfg.ledSegmentExposureUs > 0) return cfg.ledSegmentExposureUs;
+    const long long us = (long long)(cfg.exposureUs) * cfg.ledSegments;
+    return us > 10000000 ? 10000000 : int(us);
+}
+
 std::vector<std::string> crossKeyIssues(const Config &cfg)
 {
     std::vector<std::string> issues;
@@ -315,6 +367,7 @@ std::vector<std::string> crossKeyIssues(const Config &cfg)
         issues.push_back("http.tls_cert and http.tls_key are set together (both or neither)");
     if (cfg.mqttTopic.find_first_of("+#") != std::string::npos)
         issues.push_back("mqtt.topic must not contain the wildcards + or #");
+    if (std::string e = ledSegmentIssue(cfg); !e.empty()) issues.push_back(e);
     if (cfg.serialBackend == "pty" && cfg.serialLink.empty())
         issues.push_back("serial.link is required with serial.backend = pty");
     return issues;

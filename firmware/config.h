@@ -62,12 +62,20 @@ struct Config {
     std::string triggerActive = "low";   // the level that means pressed
     std::string triggerBias = "pull-up"; // pull-up | pull-down | disabled | as-is
     std::string ledChip;                 // "" = trigger.gpio_chip
-    std::string ledLine = "GPIO27";
-    std::string ledActive = "high"; // the level that lights the ring
+    std::string ledLine = "GPIO27";      // one line, or a segmented ring's lines in azimuth order
+    std::string ledActive = "high";      // the level that lights the ring
     std::string ledBackend = "file";
     std::string ledLog;
     std::string ledScript; // file backend: when the ring really lights (hal/file/scripted_light.h)
     int ledSettleMs = 20;
+    // A ring wired in segments, lit one at a time before the whole ring (the contact edge
+    // from the surface's tilt, vision/contact_tilt.h): how many (1: one line, none lit
+    // alone), segment 0's centre as an image azimuth (degrees from +x toward +y, rows down;
+    // the others follow at 360 / segments), and the segment frames' exposure (0: the
+    // recipe's camera.exposure_us times the segments, as bright as the whole ring's frame).
+    int ledSegments = 1;
+    double ledSegment0Deg = 0;
+    int ledSegmentExposureUs = 0;
     // Every frame measured is checked lit top to bottom against a frame taken with the ring
     // off (firmware/lit_frame.h): a frame refused is captured again, this many times in all,
     // and a band is lit when the ring adds this many luma levels to it.
@@ -129,6 +137,13 @@ std::string specimenIssue(const Config &cfg);
 // backend's required paths, ...): what parseConfig checks after the keys, for any whole
 // config, e.g. one with a recipe applied. Empty when consistent.
 std::vector<std::string> crossKeyIssues(const Config &cfg);
+// The LED ring's lines (led.gpio_line split at commas, trimmed), segment 0 first.
+std::vector<std::string> ledLines(const Config &cfg);
+// A segmented ring's keys against each other and the camera's exposure ("" when consistent).
+std::string ledSegmentIssue(const Config &cfg);
+// The segment frames' exposure in µs (led.segment_exposure_us, else camera.exposure_us times
+// led.segments, at most 10 s); only meaningful where ledSegmentIssue is "".
+int segmentExposureUs(const Config &cfg);
 // The serial name of a live key given by its full name or serial name ("" if none).
 std::string liveKeyName(std::string_view key);
 std::string configHelp();

@@ -42,6 +42,7 @@ hal::Error Device::start()
         return hal::Error::make(hal::Errc::Invalid, "vision: cannot size working memory");
     lumaScratchBytes_ = vision::lumaScratchBytes(fmt, cfg_.cameraMaxWidth, cfg_.cameraMaxHeight);
     if (lumaScratchBytes_ > 0) lumaScratch_ = std::make_unique<uint8_t[]>(lumaScratchBytes_);
+    sizeSegmentFrames();
     if (cfg_.journalImages == "pgm") image_.reserve(size_t(cfg_.cameraMaxWidth) * size_t(cfg_.cameraMaxHeight) + 64);
     // A camera that is not there yet is reported and looked for again; the device runs.
     cameraHealth_.open();

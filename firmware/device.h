@@ -120,6 +120,15 @@ private:
     // why it is not measured: not lit, not convertible).
     bool captureFrame(hal::CapturedFrame *frame, vision::LumaView *luma, std::string *problem);
     bool takeDarkReference(hal::CapturedFrame *frame, std::string *problem);
+    // device_segments.cpp. A segmented ring (led.segments 3-8): a frame per segment lit
+    // alone at one fixed exposure, each proven lit and copied into litInTurn_; false with the
+    // reason (litInTurn_ empty: the whole ring's frame is measured alone).
+    bool captureSegments(hal::CapturedFrame *frame, std::string *why);
+    bool litSegments(hal::CapturedFrame *frame, int exposureUs, std::string *why);
+    void sizeSegmentFrames(); // at start: led.segments frames of the largest size
+    // The segment frames saved beside the record's image (img-NNNNNN-sK.pgm), ';'-separated
+    // as a manifest's segment_images, or "".
+    std::string journalSegments(long id, std::string *problem);
     // One capture after litMs as luma; false with the problem in words.
     bool captureLuma(int64_t notBeforeMs, hal::CapturedFrame *frame, vision::LumaView *luma, std::string *problem);
     LitFrameOptions litOptions(int width, int height) const;
@@ -169,7 +178,8 @@ private:
     // The idle screen's last line: the missing parts when there are any, else note.
     std::string idleNote(std::string_view note) const;
     void buildRecord(long id, const char *origin, const std::string &tag, const reading::Reading &m,
-                     std::string_view problem, const hal::CapturedFrame *frame, std::string_view image, long ms);
+                     std::string_view problem, const hal::CapturedFrame *frame, std::string_view image,
+                     std::string_view segmentImages, long ms);
     // The frame saved beside its record as img-NNNNNN.pgm when the journal keeps images: its
     // name, or "" (with *problem saying why where saving failed).
     std::string journalFrame(long id, const vision::LumaView &v, std::string *problem);
@@ -203,6 +213,13 @@ private:
     LitCheckResult lastLit_; // the check's verdict on the last frame captured lit
     int unlitFrames_ = 0;    // frames the check refused in the last capture
     int64_t ledOffMs_ = 0;   // when the ring was last switched off
+    // The segment frames of the measurement under way (count 0: none), their pixels, and
+    // why they were not taken.
+    vision::LitInTurn litInTurn_;
+    std::unique_ptr<uint8_t[]> segmentPixels_;
+    size_t segmentFrameBytes_ = 0;
+    int segmentSlots_ = 0;
+    std::string segmentProblem_;
     net::DeviceListener *listeners_[kMaxListeners] = {};
     int listenerCount_ = 0;
     net::CommandInbox *inbox_ = nullptr;

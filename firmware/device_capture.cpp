@@ -79,6 +79,8 @@ bool Device::captureFrame(hal::CapturedFrame *frame, vision::LumaView *luma, std
     triggerMs_ = hal_.clock.monotonicMs();
     lastLit_ = {};
     unlitFrames_ = 0;
+    litInTurn_.count = 0;
+    segmentProblem_.clear();
     if (!cameraHealth_.ready()) {
         *problem =
             std::string("camera ") + CameraHealth::stateName(cameraHealth_.state()) + ": " + cameraHealth_.problem();
@@ -86,6 +88,13 @@ bool Device::captureFrame(hal::CapturedFrame *frame, vision::LumaView *luma, std
     }
     state_ = State::Capture;
     if (!takeDarkReference(frame, problem)) return false;
+    // The segments before the whole ring: the frame measured is the last one captured, so
+    // the camera's buffer it lies in stays valid until it is measured and journaled.
+    if (cfg_.ledSegments >= vision::kMinTiltSegments) {
+        state_ = State::LedOn;
+        (void)captureSegments(frame, &segmentProblem_);
+        state_ = State::Capture;
+    }
     state_ = State::LedOn;
     if (hal::Error e = hal_.led.set(true); !e.ok()) *problem = "LED: " + e.message;
     hal_.clock.sleepMs(cfg_.ledSettleMs);

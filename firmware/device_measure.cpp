@@ -24,15 +24,20 @@ void Device::measure(const char *origin, const std::string &tag)
     if (captured && problem.empty()) {
         if (std::string issue = instrument_.frameSizeIssue(luma.width, luma.height); !issue.empty())
             problem = "calibration '" + cal_.name + "': " + issue;
-        else
-            m = instrument_.read(luma, specimenSpec(cfg_));
+        else if (litInTurn_.count > 0 &&
+                 (litInTurn_.segment[0].width != luma.width || litInTurn_.segment[0].height != luma.height)) {
+            segmentProblem_ = "the segment frames are another size than the whole ring's";
+            litInTurn_.count = 0;
+        }
+        if (problem.empty()) m = instrument_.read(luma, specimenSpec(cfg_), litInTurn_.count ? &litInTurn_ : nullptr);
     }
 
     state_ = State::Report;
     lastId_ = id;
     std::string storageProblem;
     const std::string imageName = captured && problem.empty() ? journalFrame(id, luma, &storageProblem) : "";
-    buildRecord(id, origin, tag, m, problem, captured ? &frame : nullptr, imageName,
+    const std::string segmentNames = imageName.empty() ? "" : journalSegments(id, &storageProblem);
+    buildRecord(id, origin, tag, m, problem, captured ? &frame : nullptr, imageName, segmentNames,
                 long(hal_.clock.monotonicMs() - t0));
     // The record is durable before anyone hears of it: what was reported survives a crash.
     if (hal::Error e = journal_.append(out_); !e.ok())
@@ -41,6 +46,8 @@ void Device::measure(const char *origin, const std::string &tag)
         journaled(id);
     send(out_);
     if (!problem.empty()) sendError("measurement_failed", problem, tag);
+    // Measured without the tilt the ring was configured to give: a part that needs service.
+    if (!segmentProblem_.empty()) sendError("segments", "measured without segment frames: " + segmentProblem_, tag);
     if (!storageProblem.empty()) sendError("storage", storageProblem, tag);
 
     char title[32];
@@ -48,7 +55,10 @@ void Device::measure(const char *origin, const std::string &tag)
     if (!problem.empty())
         drawProblem(&screen_, title, problem);
     else
-        drawResult(&screen_, id, m, storageProblem.empty() ? "" : "STORAGE FULL");
+        drawResult(&screen_, id, m,
+                   !storageProblem.empty()    ? "STORAGE FULL"
+                   : !segmentProblem_.empty() ? "SEGMENTS FAILED"
+                                              : "");
     showOrLog(screen_);
     state_ = State::Idle;
 }
@@ -88,7 +98,8 @@ reading::SpecimenSpec specimenSpec(const Config &c)
 }
 
 void Device::buildRecord(long id, const char *origin, const std::string &tag, const reading::Reading &m,
-                         std::string_view problem, const hal::CapturedFrame *frame, std::string_view image, long ms)
+                         std::string_view problem, const hal::CapturedFrame *frame, std::string_view image,
+                         std::string_view segmentImages, long ms)
 {
     out_.clear();
     reading::JsonBuilder j(&out_);
@@ -115,6 +126,15 @@ void Device::buildRecord(long id, const char *origin, const std::string &tag, co
         appendCaptureFields(j, *frame, triggerMs_);
         // The lit-frame check's verdict on the last frame tried, and how many were refused.
         j.str("lit", litVerdictName(lastLit_.verdict)).integer("unlit_frames", unlitFrames_);
+        // The ring lit in turn: the segment frames the reading used (0: the whole ring's
+        // frame alone), saved and named as a manifest's segment_images and segment0_deg name
+        // them, so `icacam loop --journal` reads the record as the device did; why none,
+        // where some were asked for.
+        if (cfg_.ledSegments >= vision::kMinTiltSegments) {
+            j.integer("segment_frames", litInTurn_.count);
+            if (litInTurn_.count > 0) j.str("segment_images", segmentImages).num("segment0_deg", cfg_.ledSegment0Deg);
+            if (!segmentProblem_.empty()) j.str("segment_problem", segmentProblem_);
+        }
     }
     if (!tag.empty()) j.str("tag", tag);
     j.end();
@@ -129,6 +149,23 @@ std::string Device::journalFrame(long id, const vision::LumaView &v, std::string
     if (e.ok()) return name;
     *problem = e.code == hal::Errc::Full ? "storage full: image not saved" : "image not saved: " + e.message;
     return {};
+}
+
+std::string Device::journalSegments(long id, std::string *problem)
+{
+    std::string names;
+    for (int k = 0; k < litInTurn_.count; ++k) {
+        char name[40];
+        std::snprintf(name, sizeof name, "img-%06ld-s%d.pgm", id, k);
+        if (const hal::Error e = saveImage(name, litInTurn_.segment[k]); !e.ok()) {
+            if (problem->empty())
+                *problem = e.code == hal::Errc::Full ? "storage full: segment frames not saved"
+                                                     : "segment frames not saved: " + e.message;
+            return {};
+        }
+        (names += names.empty() ? "" : ";") += name;
+    }
+    return names;
 }
 
 hal::Error Device::saveImage(std::string_view name, const vision::LumaView &v)

@@ -90,6 +90,15 @@ hal::Error LedPart::set(bool on)
     return e;
 }
 
+hal::Error LedPart::lightSegment(int k)
+{
+    if (!backend_) return hal::Error::make(hal::Errc::NotFound, "LED ring missing: " + problem());
+    hal::Error e = backend_->lightSegment(k);
+    // An Invalid segment is the config's mistake, not the part failing.
+    if (e.code != hal::Errc::Invalid) note(e);
+    return e;
+}
+
 Parts::Parts(DisplayPart &display, SerialPart &serial, TriggerPart &trigger, LedPart &led, hal::Clock &clock,
              int retryMs)
         : parts_{&display, &serial, &trigger, &led}, clock_(clock), retryMs_(retryMs)

@@ -109,6 +109,8 @@ public:
     explicit LedPart(Factory f) : PartOf("LED", std::move(f)) {}
     hal::Error set(bool on) override;
     bool isOn() const override { return backend_ && backend_->isOn(); }
+    int segments() const override { return backend_ ? backend_->segments() : 1; }
+    hal::Error lightSegment(int k) override;
 };
 
 // The four parts, opened and retried together.

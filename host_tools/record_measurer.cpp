@@ -95,7 +95,8 @@ void RecordMeasurer::measure(const ManifestRow &row, const Manifest &manifest, R
 }
 
 // The row's segment frames (`segment_images`: paths separated by ';', segment k centred at
-// image azimuth k·360/N° from +x towards +y), each the main frame's size; false with *why.
+// image azimuth segment0_deg + k·360/N° from +x towards +y; segment0_deg 0 where the column
+// is absent), each the main frame's size; false with *why.
 bool RecordMeasurer::loadSegments(const ManifestRow &row, const Manifest &manifest, int width, int height,
                                   vision::LitInTurn *lit, std::string *why)
 {
@@ -126,6 +127,12 @@ bool RecordMeasurer::loadSegments(const ManifestRow &row, const Manifest &manife
             return false;
         }
         lit->segment[k] = vision::LumaView{m.data, m.cols, m.rows, int(m.step[0]), 1};
+    }
+    lit->azimuth0Deg = 0;
+    if (row.has("segment0_deg") && !row.get("segment0_deg").empty() &&
+        !parseNumber(row.get("segment0_deg"), &lit->azimuth0Deg)) {
+        *why = "segment0_deg: not a number";
+        return false;
     }
     lit->count = int(paths.size());
     return true;

@@ -1,5 +1,7 @@
 #include "firmware/backends/trigger_led_backend.h"
 
+#include <vector>
+
 #include "firmware/backends/backend_config.h"
 #include "hal/file/file_led.h"
 #include "hal/file/file_trigger.h"
@@ -34,12 +36,17 @@ TriggerResult openGpiodTrigger(const Config &cfg, hal::Clock &clock)
     return {std::move(trigger), {}};
 }
 
+// One line, or a segmented ring's lines (segment 0 first), all at the same active level.
 LedResult openGpiodLed(const Config &cfg)
 {
-    hal::GpioLineSpec ring;
-    ring.chipPath = cfg.ledChip.empty() ? cfg.gpioChip : cfg.ledChip;
-    hal::parseGpioLine(cfg.ledLine, &ring);
-    ring.activeLow = cfg.ledActive == "low";
+    std::vector<hal::GpioLineSpec> ring;
+    for (const std::string &line : ledLines(cfg)) {
+        hal::GpioLineSpec spec;
+        spec.chipPath = cfg.ledChip.empty() ? cfg.gpioChip : cfg.ledChip;
+        hal::parseGpioLine(line, &spec);
+        spec.activeLow = cfg.ledActive == "low";
+        ring.push_back(spec);
+    }
     auto led = std::make_unique<hal::GpiodLed>();
     if (hal::Error e = led->open(ring); !e.ok()) return {nullptr, e};
     return {std::move(led), {}};
@@ -85,7 +92,7 @@ hal::Result<std::unique_ptr<hal::TriggerButton>> makeTrigger(const Config &cfg, 
 hal::Result<std::unique_ptr<hal::LedRing>> makeLed(const Config &cfg, hal::Clock &clock, hal::ScriptedLight *light)
 {
     if (cfg.ledBackend == "file") {
-        auto led = std::make_unique<hal::FileLed>(clock, light);
+        auto led = std::make_unique<hal::FileLed>(clock, light, cfg.ledSegments);
         if (hal::Error e = led->open(pathFromConfig(cfg, cfg.ledLog)); !e.ok()) return {nullptr, e};
         return {std::move(led), {}};
     }

@@ -11,11 +11,22 @@
 // Lit by a ScriptedLight (hal/file/scripted_light.h), the images are the scene under the LED
 // ring: each row is dimmed to `ambient` for the part of its exposure the ring gave no light,
 // the rows read out top to bottom over readoutMs (a rolling shutter). The scene changes only
-// once it has been seen lit: a frame lit not at all or only in part shows the same image
-// again at the next capture, as the specimen under a real camera stays where it is.
+// once it has been seen lit by the whole ring: a frame lit not at all, only in part, or by a
+// segment of the ring shows the same image again at the next capture, as the specimen under a
+// real camera stays where it is (a device takes a specimen's segment frames before or after
+// its whole-ring frame).
 //
-// Source: a folder (its .png/.jpg/.jpeg/.pgm files in name order) or a list file (one path a
-// line, relative to the list's folder; '#' comments; "!timeout" simulates a hung sensor).
+// A frame lit by segment k alone (it lit the middle row's exposure more than anything else
+// did) is decoded from the entry's segment image k, its rows dimmed by the part of their
+// exposure segment k gave light in; an entry without segment images gives the scene's image
+// with each row at ambient + (1 − ambient) · lit / segments() (one segment's share of the
+// ring's light). Errors: Invalid (the entry names another count of segment images than the
+// light has segments), BadFormat (a segment image of another size than the scene's).
+//
+// Source: a folder (its .png/.jpg/.jpeg/.pgm files in name order; no segment images) or a
+// list file: one entry a line, "IMAGE" or "IMAGE | S0 | S1 | … | S(N−1)" with N = 3 … 8
+// segment images in azimuth order, paths relative to the list's folder; '#' comments;
+// "!timeout" simulates a hung sensor.
 #include <memory>
 #include <string>
 #include <utility>
@@ -26,6 +37,8 @@
 #include "hal/file/scripted_light.h"
 
 namespace icacam::hal {
+
+struct DecodedImage;
 
 struct FileCameraOptions {
     FileCameraOptions() = default;
@@ -60,14 +73,28 @@ public:
     Result<CameraControls> setControls(const CameraControls &asked) override;
 
 private:
-    // Dims each row for the part of its exposure the light was off; true when every row was
-    // lit throughout.
-    bool light(uint8_t *rows, int width, int height, int stride, int channels, int64_t startMs) const;
+    struct Entry {
+        std::string image;                 // the scene, or "!timeout"
+        std::vector<std::string> segments; // lit by segment k alone, in azimuth order; or none
+        bool operator==(const Entry &) const = default;
+    };
+    static constexpr int kWholeRing = -1;
+
+    Error readList(std::vector<Entry> *entries) const;
+    // What lit the middle row's exposure most: a segment k, or the whole ring (kWholeRing,
+    // also when nothing did).
+    int litBy(int64_t startMs, int height) const;
+    // Dims each row for the part of its exposure the light (the whole ring or segment k) was
+    // off, its light times share; true when every row was lit throughout.
+    bool light(uint8_t *rows, int width, int height, int stride, int channels, int64_t startMs, int by,
+               double share) const;
+    // Decodes path into the buffer. Errors: those of decodeImage, BadFormat (channels).
+    Error decode(const std::string &path, DecodedImage *img);
 
     Clock &clock_;
     FileCameraOptions opts_;
     CameraFormat fmt_;
-    std::vector<std::string> files_;
+    std::vector<Entry> entries_;
     size_t next_ = 0;
     std::unique_ptr<uint8_t[]> buffer_;
     size_t capacity_ = 0;

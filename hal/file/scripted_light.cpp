@@ -67,19 +67,34 @@ Error ScriptedLight::feed(std::string_view script)
     return {};
 }
 
+Error ScriptedLight::setSegments(int n)
+{
+    if (n < 1) return Error::make(Errc::Invalid, "LED ring of " + std::to_string(n) + " segments: 1 or more");
+    segments_ = n;
+    return {};
+}
+
 void ScriptedLight::switched(bool on)
 {
-    if (on == on_) return;
-    on_ = on;
+    switchTo(on ? kWholeRing : kDark);
+}
+
+void ScriptedLight::switchedSegment(int k)
+{
+    if (k >= 0) switchTo(k);
+}
+
+void ScriptedLight::switchTo(int what)
+{
+    if (what == switchedTo_) return;
+    switchedTo_ = what;
     const double now = double(clock_.monotonicMs());
-    if (!on) {
-        // Switched off: whatever light was still to come or still on ends now.
-        while (litCount_ > 0 && lit_[litCount_ - 1].onMs >= now) --litCount_;
-        if (litCount_ > 0) lit_[litCount_ - 1].offMs = std::min(lit_[litCount_ - 1].offMs, now);
-        return;
-    }
+    // Whatever light was still to come or still on ends now.
+    while (litCount_ > 0 && lit_[litCount_ - 1].onMs >= now) --litCount_;
+    if (litCount_ > 0) lit_[litCount_ - 1].offMs = std::min(lit_[litCount_ - 1].offMs, now);
+    if (what == kDark) return;
     const Step s = nextStep_ < stepCount_ ? steps_[nextStep_++] : Step{};
-    Interval i{now, kForever};
+    Interval i{now, kForever, what};
     switch (s.fault) {
     case Fault::Ok: break;
     case Fault::Late: i.onMs = now + s.ms; break;
@@ -95,14 +110,24 @@ void ScriptedLight::switched(bool on)
 
 double ScriptedLight::litFraction(double fromMs, double toMs) const
 {
+    return fraction(fromMs, toMs, kWholeRing);
+}
+
+double ScriptedLight::litFraction(double fromMs, double toMs, int segment) const
+{
+    return segment < 0 ? 0.0 : fraction(fromMs, toMs, segment);
+}
+
+double ScriptedLight::fraction(double fromMs, double toMs, int by) const
+{
     if (toMs <= fromMs) {
         for (int k = 0; k < litCount_; ++k)
-            if (fromMs >= lit_[k].onMs && fromMs < lit_[k].offMs) return 1.0;
+            if (lit_[k].by == by && fromMs >= lit_[k].onMs && fromMs < lit_[k].offMs) return 1.0;
         return 0.0;
     }
     double lit = 0;
     for (int k = 0; k < litCount_; ++k)
-        lit += std::max(0.0, std::min(toMs, lit_[k].offMs) - std::max(fromMs, lit_[k].onMs));
+        if (lit_[k].by == by) lit += std::max(0.0, std::min(toMs, lit_[k].offMs) - std::max(fromMs, lit_[k].onMs));
     return std::min(1.0, lit / (toMs - fromMs));
 }
 

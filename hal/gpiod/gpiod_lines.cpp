@@ -251,7 +251,11 @@ struct LineRequest {
 
 // ---- the HAL classes -------------------------------------------------------------------
 struct GpiodTrigger::Lines : LineRequest {};
-struct GpiodLed::Lines : LineRequest {};
+struct GpiodLed::Line : LineRequest {
+    bool activeLow = false;
+    bool on = false;   // as last switched (true after a failed switch: maybe lit)
+    std::string where; // "LED segment 2 line /dev/gpiochip0:22", for errors
+};
 
 GpiodTrigger::GpiodTrigger(const Clock &clock) : clock_(clock) {}
 GpiodTrigger::~GpiodTrigger() = default;
@@ -314,33 +318,85 @@ GpiodLed::~GpiodLed()
 
 void GpiodLed::close()
 {
-    if (lines_ && on_) (void)set(false);
-    lines_.reset();
-    on_ = false;
+    for (auto &line : lines_)
+        if (line->on) (void)drive(*line, false);
+    lines_.clear();
 }
 
 Error GpiodLed::open(const GpioLineSpec &spec, const char *consumer)
 {
-    lines_.reset();
-    auto lines = std::make_unique<Lines>();
-    if (const int err = lines->open(spec, consumer, true))
-        return fromErrno("LED line",
-                         spec.name.empty() ? spec.chipPath + ":" + std::to_string(spec.offset)
-                                           : spec.name + " (on any /dev/gpiochipN)",
-                         err);
+    return open(std::vector<GpioLineSpec>{spec}, consumer);
+}
+
+Error GpiodLed::open(const std::vector<GpioLineSpec> &specs, const char *consumer)
+{
+    close();
+    if (specs.empty()) return Error::make(Errc::Invalid, "LED ring: no line given");
+    std::vector<std::unique_ptr<Line>> lines;
+    for (size_t k = 0; k < specs.size(); ++k) {
+        const GpioLineSpec &spec = specs[k];
+        // Requested at the off level: no segment flashes while the others are opened.
+        auto line = std::make_unique<Line>();
+        const std::string what = specs.size() == 1 ? "LED line" : "LED segment " + std::to_string(k) + " line";
+        if (const int err = line->open(spec, consumer, true))
+            return fromErrno(what.c_str(),
+                             spec.name.empty() ? spec.chipPath + ":" + std::to_string(spec.offset)
+                                               : spec.name + " (on any /dev/gpiochipN)",
+                             err);
+        line->activeLow = spec.activeLow;
+        line->where = what + " " + line->chipPath + ":" + std::to_string(line->offset);
+        lines.push_back(std::move(line));
+    }
     lines_ = std::move(lines);
-    on_ = false;
-    activeLow_ = spec.activeLow;
     return {};
+}
+
+Error GpiodLed::drive(Line &line, bool on)
+{
+    if (const int err = line.setRaw(on != line.activeLow)) {
+        line.on = true; // its level is unknown: the next change switches it off again
+        return Error::make(Errc::Io, line.where + ": " + std::strerror(err));
+    }
+    line.on = on;
+    return {};
+}
+
+bool GpiodLed::isOn() const
+{
+    for (const auto &line : lines_)
+        if (line->on) return true;
+    return false;
 }
 
 Error GpiodLed::set(bool on)
 {
-    if (!lines_) return Error::make(Errc::Invalid, "LED line not open");
-    if (const int err = lines_->setRaw(on != activeLow_))
-        return Error::make(Errc::Io, std::string("LED line: ") + std::strerror(err));
-    on_ = on;
-    return {};
+    if (lines_.empty()) return Error::make(Errc::Invalid, "LED line not open");
+    Error first;
+    for (auto &line : lines_) {
+        Error e = drive(*line, on);
+        if (!e.ok() && first.ok()) first = std::move(e);
+    }
+    return first;
+}
+
+Error GpiodLed::lightSegment(int k)
+{
+    if (lines_.empty()) return Error::make(Errc::Invalid, "LED line not open");
+    if (lines_.size() == 1) return Error::make(Errc::Invalid, "the LED ring is one line: no segment to light alone");
+    if (k < 0 || k >= int(lines_.size()))
+        return Error::make(Errc::Invalid, "LED segment " + std::to_string(k) + ": the ring has " +
+                                              std::to_string(lines_.size()) + " (0 to " +
+                                              std::to_string(lines_.size() - 1) + ")");
+    Error first;
+    for (size_t j = 0; j < lines_.size(); ++j)
+        if (int(j) != k && lines_[j]->on)
+            if (Error e = drive(*lines_[j], false); !e.ok() && first.ok()) first = std::move(e);
+    if (!first.ok()) {
+        // A line that may still be lit: k stays dark beside it, so two are never lit.
+        if (lines_[size_t(k)]->on) (void)drive(*lines_[size_t(k)], false);
+        return first;
+    }
+    return drive(*lines_[size_t(k)], true);
 }
 
 } // namespace icacam::hal

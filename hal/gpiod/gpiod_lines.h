@@ -7,6 +7,7 @@
 #include <memory>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "hal/clock.h"
 #include "hal/led_ring.h"
@@ -60,21 +61,34 @@ private:
     bool activeLow_ = false;
 };
 
-// The LED ring: one output line, off when opened and when closed.
+// The LED ring: one output line, or one line per segment where the ring is wired in sectors;
+// every line off when opened and when closed.
 class GpiodLed final : public LedRing {
 public:
     GpiodLed();
     ~GpiodLed() override;
+    // A ring of one line: segments() is 1.
     Error open(const GpioLineSpec &spec, const char *consumer = "icacam-led");
+    // A ring of segments, one line each in azimuth order (segment 0 first). Each line is its
+    // own request, so the lines may sit on different chips. Errors: Invalid (no line),
+    // NotFound, Io (naming the line); on an error no line stays requested.
+    Error open(const std::vector<GpioLineSpec> &lines, const char *consumer = "icacam-led");
     void close();
+    // Every line. Errors: Invalid (not open), Io (naming the first line that failed; the
+    // others are still switched).
     Error set(bool on) override;
-    bool isOn() const override { return on_; }
+    bool isOn() const override;
+    int segments() const override { return lines_.empty() ? 1 : int(lines_.size()); }
+    // The other lines off first, then line k on: two segments are never lit together.
+    // Errors: Invalid (not open, one line, k out of range), Io (naming the line that could
+    // not be switched off; every other line is then off, k too).
+    Error lightSegment(int k) override;
 
 private:
-    struct Lines;
-    std::unique_ptr<Lines> lines_;
-    bool on_ = false;
-    bool activeLow_ = false;
+    struct Line; // one line's libgpiod objects, its level and where it was found
+    static Error drive(Line &line, bool on);
+
+    std::vector<std::unique_ptr<Line>> lines_; // segment 0 first
 };
 
 } // namespace icacam::hal

@@ -44,9 +44,10 @@ std::string joinKey(const std::string &id)
 const char *const kMeasured[] = {"mu",        "mu_sigma",       "u_mm",         "r_inner_mm", "r_outer_mm", "r_max_mm",
                                  "reduction", "reduction_est",  "scale_factor", "status",     "flags",      "message",
                                  "ms",        "plane_height_mm"};
-// Settings and conditions the device recorded with each result.
-const char *const kConditions[] = {"n",          "k_mpa",    "d0_mm",       "h0_mm",  "mm_per_px",
-                                   "h_final_mm", "material", "calibration", "trigger"};
+// Settings and conditions the device recorded with each result (the segment frames saved
+// beside the image, where the ring was lit in turn, are re-measured with it).
+const char *const kConditions[] = {"n",        "k_mpa",       "d0_mm",   "h0_mm",          "mm_per_px",   "h_final_mm",
+                                   "material", "calibration", "trigger", "segment_images", "segment0_deg"};
 
 } // namespace
 

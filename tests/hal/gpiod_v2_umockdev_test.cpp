@@ -10,9 +10,11 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <mutex>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "hal/file/clocks.h"
@@ -24,8 +26,19 @@ namespace {
 using namespace icacam;
 
 constexpr unsigned kLines = 32;
+constexpr int kHandles = 4; // line request nodes for a ring of segments, /dev/gpiohandle0 …
 
-// The kernel's side of a v2 chip: line names GPIO0…GPIO31, requests with their config.
+// The number at the end of a line request node's path ("/dev/gpiohandle1" → 1), else -1.
+int handleIndex(const char *devnode)
+{
+    const char prefix[] = "/dev/gpiohandle";
+    if (!devnode || std::strncmp(devnode, prefix, sizeof prefix - 1) != 0) return -1;
+    return std::atoi(devnode + sizeof prefix - 1);
+}
+
+// The kernel's side of a v2 chip: line names GPIO0…GPIO31, requests with their config. A
+// request handed out as a node of its own (/dev/gpiohandleN) names its line when a value is
+// set through it.
 struct FakeChip {
     std::mutex m;
     std::vector<unsigned long> requests;
@@ -33,13 +46,32 @@ struct FakeChip {
     std::vector<uint64_t> setBits; // every SET_VALUES, the bits of line 0 of the request
     int nextFd = -1;               // handed out as the request's fd
     uint64_t level = 0;            // GET_VALUES answers this
+    std::vector<int> handleFds;    // handed out in turn when nextFd is not set
+    size_t nextHandle = 0;
+    unsigned handleLine[kHandles] = {};
+    int lineLevel[kLines] = {};                   // each line's level, as last requested or set
+    std::vector<std::pair<unsigned, int>> writes; // (line, level) in order, the request's too
 };
+
+uint64_t attr(const gpio_v2_line_config &c, uint32_t id)
+{
+    for (uint32_t i = 0; i < c.num_attrs; ++i)
+        if (c.attrs[i].attr.id == id) {
+            switch (id) {
+            case GPIO_V2_LINE_ATTR_ID_FLAGS: return c.attrs[i].attr.flags;
+            case GPIO_V2_LINE_ATTR_ID_DEBOUNCE: return c.attrs[i].attr.debounce_period_us;
+            default: return c.attrs[i].attr.values;
+            }
+        }
+    return 0;
+}
 
 gboolean onIoctl(UMockdevIoctlBase *, UMockdevIoctlClient *client, gpointer user)
 {
     auto *chip = static_cast<FakeChip *>(user);
     std::lock_guard<std::mutex> lock(chip->m);
     const unsigned long req = umockdev_ioctl_client_get_request(client);
+    const int handle = handleIndex(umockdev_ioctl_client_get_devnode(client));
     chip->requests.push_back(req);
     auto fail = [&](int err) {
         umockdev_ioctl_client_complete(client, -1, err);
@@ -66,15 +98,29 @@ gboolean onIoctl(UMockdevIoctlBase *, UMockdevIoctlClient *client, gpointer user
     case GPIO_V2_GET_LINE_IOCTL: {
         auto *r = test::ioctlArg<gpio_v2_line_request>(client);
         if (!r || r->num_lines != 1 || r->offsets[0] >= kLines) return fail(EINVAL);
-        if (chip->nextFd < 0) return fail(EBUSY);
         chip->last = *r;
-        r->fd = std::exchange(chip->nextFd, -1);
+        if (chip->nextFd >= 0) {
+            r->fd = std::exchange(chip->nextFd, -1);
+        } else if (chip->nextHandle < chip->handleFds.size()) {
+            const unsigned off = r->offsets[0];
+            chip->handleLine[chip->nextHandle] = off;
+            chip->lineLevel[off] = int(attr(r->config, GPIO_V2_LINE_ATTR_ID_OUTPUT_VALUES) & 1u);
+            chip->writes.emplace_back(off, chip->lineLevel[off]);
+            r->fd = std::exchange(chip->handleFds[chip->nextHandle++], -1);
+        } else {
+            return fail(EBUSY);
+        }
         break;
     }
     case GPIO_V2_LINE_SET_VALUES_IOCTL: {
         auto *v = test::ioctlArg<gpio_v2_line_values>(client);
         if (!v) return fail(EFAULT);
         chip->setBits.push_back(v->bits & v->mask & 1u);
+        if (handle >= 0 && handle < kHandles) {
+            const unsigned off = chip->handleLine[handle];
+            chip->lineLevel[off] = int(v->bits & v->mask & 1u);
+            chip->writes.emplace_back(off, chip->lineLevel[off]);
+        }
         break;
     }
     case GPIO_V2_LINE_GET_VALUES_IOCTL: {
@@ -89,19 +135,6 @@ gboolean onIoctl(UMockdevIoctlBase *, UMockdevIoctlClient *client, gpointer user
     return TRUE;
 }
 
-uint64_t attr(const gpio_v2_line_config &c, uint32_t id)
-{
-    for (uint32_t i = 0; i < c.num_attrs; ++i)
-        if (c.attrs[i].attr.id == id) {
-            switch (id) {
-            case GPIO_V2_LINE_ATTR_ID_FLAGS: return c.attrs[i].attr.flags;
-            case GPIO_V2_LINE_ATTR_ID_DEBOUNCE: return c.attrs[i].attr.debounce_period_us;
-            default: return c.attrs[i].attr.values;
-            }
-        }
-    return 0;
-}
-
 class GpiodV2Mock : public ::testing::Test {
 protected:
     void SetUp() override
@@ -110,13 +143,25 @@ protected:
         std::string why;
         ASSERT_TRUE(test::addGpioChip0(bed_, &why)) << why;
         GError *err = nullptr;
+        for (int h = 0; h < kHandles; ++h) {
+            const std::string name = "gpiohandle" + std::to_string(h);
+            const std::string dev = "P: /devices/platform/gpio-mock/" + name + "\nN: " + name +
+                                    "\nE: SUBSYSTEM=gpio-handle\nA: dev=254:" + std::to_string(64 + h) + "\\n\n";
+            ASSERT_TRUE(umockdev_testbed_add_from_string(bed_, dev.c_str(), &err)) << (err ? err->message : "");
+        }
         handler_ = umockdev_ioctl_base_new();
         g_signal_connect(handler_, "handle-ioctl", G_CALLBACK(onIoctl), &chip_);
         ASSERT_TRUE(umockdev_testbed_attach_ioctl(bed_, "/dev/gpiochip0", handler_, &err)) << (err ? err->message : "");
+        for (int h = 0; h < kHandles; ++h)
+            ASSERT_TRUE(
+                umockdev_testbed_attach_ioctl(bed_, ("/dev/gpiohandle" + std::to_string(h)).c_str(), handler_, &err))
+                << (err ? err->message : "");
     }
     void TearDown() override
     {
         if (eventWrite_ >= 0) ::close(eventWrite_);
+        for (int fd : chip_.handleFds)
+            if (fd >= 0) ::close(fd);
         if (handler_) g_object_unref(handler_);
         if (bed_) g_object_unref(bed_);
     }
@@ -133,6 +178,16 @@ protected:
     {
         chip_.nextFd = ::open("/dev/gpiochip0", O_RDWR | O_CLOEXEC);
         ASSERT_GE(chip_.nextFd, 0) << std::strerror(errno);
+    }
+    // The next n requests' fds: nodes of their own, so a value set names its line.
+    void nextFdsAreHandles(int n)
+    {
+        ASSERT_LE(chip_.handleFds.size() + size_t(n), size_t(kHandles));
+        for (int i = 0; i < n; ++i) {
+            const std::string node = "/dev/gpiohandle" + std::to_string(chip_.handleFds.size());
+            chip_.handleFds.push_back(::open(node.c_str(), O_RDWR | O_CLOEXEC));
+            ASSERT_GE(chip_.handleFds.back(), 0) << node << ": " << std::strerror(errno);
+        }
     }
     void sendEdge(bool rising, uint64_t ns, uint32_t offset, uint32_t seq)
     {
@@ -232,6 +287,39 @@ TEST_F(GpiodV2Mock, UnknownLineNameIsNotFound)
     const hal::Error e = trigger.open(spec);
     EXPECT_EQ(e.code, hal::Errc::NotFound) << e.message;
     EXPECT_NE(e.message.find("GPIO99"), std::string::npos);
+}
+
+TEST_F(GpiodV2Mock, SegmentedActiveLowRingLightsOneSegmentAlone)
+{
+    nextFdsAreHandles(3);
+    hal::GpiodLed led;
+    std::vector<hal::GpioLineSpec> ring;
+    for (unsigned off : {5u, 6u, 7u}) ring.push_back({"/dev/gpiochip0", off, true, false});
+    const hal::Error e = led.open(ring);
+    ASSERT_TRUE(e.ok()) << e.message;
+    EXPECT_EQ(led.segments(), 3);
+    auto levels = [&] {
+        std::lock_guard<std::mutex> lock(chip_.m);
+        return std::vector<int>(chip_.lineLevel + 5, chip_.lineLevel + 8);
+    };
+    EXPECT_EQ(levels(), (std::vector<int>{1, 1, 1})); // each requested off: high
+    ASSERT_TRUE(led.set(true).ok());
+    EXPECT_EQ(levels(), (std::vector<int>{0, 0, 0}));
+    ASSERT_TRUE(led.lightSegment(2).ok());
+    EXPECT_EQ(levels(), (std::vector<int>{1, 1, 0}));
+    // From one segment to another: the old one is off (high) before the new one lights.
+    const size_t from = chip_.writes.size();
+    ASSERT_TRUE(led.lightSegment(0).ok());
+    EXPECT_EQ(levels(), (std::vector<int>{0, 1, 1}));
+    {
+        std::lock_guard<std::mutex> lock(chip_.m);
+        ASSERT_EQ(chip_.writes.size(), from + 2);
+        EXPECT_EQ(chip_.writes[from], (std::pair<unsigned, int>{7, 1}));
+        EXPECT_EQ(chip_.writes[from + 1], (std::pair<unsigned, int>{5, 0}));
+    }
+    EXPECT_EQ(led.lightSegment(3).code, hal::Errc::Invalid);
+    led.close();
+    EXPECT_EQ(levels(), (std::vector<int>{1, 1, 1}));
 }
 
 } // namespace
