@@ -126,6 +126,9 @@ private:
     bool captureSegments(hal::CapturedFrame *frame, std::string *why);
     bool litSegments(hal::CapturedFrame *frame, int exposureUs, std::string *why);
     void sizeSegmentFrames(); // at start: led.segments frames of the largest size
+    // The reading found the segments lighting from elsewhere than led.segment0_deg and the
+    // lines' order say (vision/segment_bearing.h): what to set, in words.
+    std::string misplacedSegments(const vision::EndFaceGeometry &g) const;
     // The segment frames saved beside the record's image (img-NNNNNN-sK.pgm), ';'-separated
     // as a manifest's segment_images, or "".
     std::string journalSegments(long id, std::string *problem);

@@ -30,6 +30,7 @@ void Device::measure(const char *origin, const std::string &tag)
             litInTurn_.count = 0;
         }
         if (problem.empty()) m = instrument_.read(luma, specimenSpec(cfg_), litInTurn_.count ? &litInTurn_ : nullptr);
+        if (m.geometry.imageFlags & vision::kImageSegmentsMisplaced) segmentProblem_ = misplacedSegments(m.geometry);
     }
 
     state_ = State::Report;

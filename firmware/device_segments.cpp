@@ -11,6 +11,7 @@
 // lit as asked.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 
 #include "firmware/device.h"
@@ -84,6 +85,20 @@ bool Device::captureSegments(hal::CapturedFrame *frame, std::string *why)
     litInTurn_.count = n;
     litInTurn_.azimuth0Deg = cfg_.ledSegment0Deg;
     return true;
+}
+
+std::string Device::misplacedSegments(const vision::EndFaceGeometry &g) const
+{
+    char words[160];
+    if (g.segmentWay < 0)
+        std::snprintf(words, sizeof words,
+                      "the segments light the specimen the other way round: list led.gpio_line's lines in reverse "
+                      "after segment 0 (segment 0 lights from %.0f deg)",
+                      g.segment0SeenDeg);
+    else
+        std::snprintf(words, sizeof words, "segment 0 lights the specimen from %.0f deg, led.segment0_deg says %g",
+                      g.segment0SeenDeg, cfg_.ledSegment0Deg);
+    return words;
 }
 
 bool Device::litSegments(hal::CapturedFrame *frame, int exposureUs, std::string *why)

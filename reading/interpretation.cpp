@@ -210,6 +210,8 @@ Reading interpret(const EndFaceGeometry &g, const SpecimenSpec &spec, const visi
         read();
     }
     out.advice.scaleUnchecked = silhouette && outlineHiddenByView;
+    if (g.imageFlags & vision::kImageSegmentsMisplaced)
+        out.advice.segment0SeenDeg = g.segment0SeenDeg, out.advice.segmentWay = g.segmentWay;
     return out;
 }
 

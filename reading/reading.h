@@ -77,6 +77,11 @@ struct Advice {
     // An uncalibrated oblique view without a silhouette: the declared scale is unchecked too
     // (a scale measured on the fixture would pass; a calibration checks it).
     bool scaleUnchecked = false;
+    // The segment frames lit the specimen from elsewhere than they were said to (the tilt not
+    // read): where segment 0 was seen, and the way round (−1: the segments run against the
+    // azimuth); way 0: nothing to say.
+    double segment0SeenDeg = 0;
+    int segmentWay = 0;
 };
 // The manifest column (and the device config key's last part) the advice names.
 const char *adviceInputName(AdviceInput a);

@@ -85,6 +85,11 @@ const FieldSpec kFields[] = {
                     ? m.geometry.tiltKneePx
                     : nan();
      }},
+    // Where the segment frames' light came from: segment 0's azimuth and the way round.
+    {"segment0_seen_deg", Field::Number, 1,
+     [](const Reading &m) { return m.geometry.segmentWay != 0 ? m.geometry.segment0SeenDeg : nan(); }},
+    {"segment_way", Field::Number, 0,
+     [](const Reading &m) { return m.geometry.segmentWay != 0 ? double(m.geometry.segmentWay) : nan(); }},
 };
 constexpr int kFieldCount = int(sizeof kFields / sizeof kFields[0]);
 
@@ -146,6 +151,18 @@ void adviceText(const Advice &a, char *buf, size_t size)
     if (a.scaleUnchecked) {
         const size_t used = std::strlen(buf);
         std::snprintf(buf + used, size - used, "; oblique view: the declared scale is unchecked, calibrate the camera");
+    }
+    if (a.segmentWay != 0) {
+        const size_t used = std::strlen(buf);
+        if (a.segmentWay < 0)
+            std::snprintf(buf + used, size - used,
+                          "; the segment frames run the other way round (segment 0 lights from %.0f deg): list them "
+                          "in reverse after segment 0; tilt not read",
+                          a.segment0SeenDeg);
+        else
+            std::snprintf(buf + used, size - used,
+                          "; segment 0 lights from %.0f deg: set segment0_deg %.0f; tilt not read", a.segment0SeenDeg,
+                          a.segment0SeenDeg);
     }
 }
 
@@ -210,7 +227,7 @@ void readingMessage(const Reading &m, char *buf, size_t size)
 void writeReading(const Reading *m, std::string_view message, std::string_view model, RecordSink &sink)
 {
     const bool value = m && m->hasValue();
-    char flags[512], words[768], advice[96];
+    char flags[512], words[768], advice[256];
     flags[0] = words[0] = advice[0] = 0;
     if (value) {
         flagList(m->flags, flags, sizeof flags);

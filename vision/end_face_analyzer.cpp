@@ -10,6 +10,7 @@
 #include "vision/edge_profile.h"
 #include "vision/radial_profile.h"
 #include "vision/ring_search.h"
+#include "vision/segment_bearing.h"
 #include "vision/specimen_locator.h"
 
 namespace icacam::vision {
@@ -34,6 +35,11 @@ constexpr double kTiltReachMinPx = 10, kTiltReachOfR0 = 0.1, kTiltBeyondPx = 10;
 // the single frame's contact edge, beyond how many it moves it.
 constexpr double kTiltKneeModelPx = 1.0, kTiltConfirmSigmas = 1.5, kTiltMoveSigmas = 3.0;
 constexpr double kTiltCleanMisfit = 0.02;
+// A segment 0 seen this far from where it is said to be: the tilt weighs every segment by
+// cos of the error, so 30° costs it an eighth of its step; further is a ring mounted turned
+// (the photographic bench's segment sets: segment 0 seen within 13° of where it was rendered
+// on 108 of 114 records, the other 6 too evenly lit to tell).
+constexpr double kSegmentBearingToleranceDeg = 30;
 } // namespace
 
 ErrorCode EndFaceAnalyzer::configure(int maxWidth, int maxHeight)
@@ -207,6 +213,19 @@ void EndFaceAnalyzer::contactEdgeFromTilt(const LitInTurn &lit, const LumaView &
 {
     for (int k = 0; k < lit.count; ++k)
         if (lit.segment[k].width != v.width || lit.segment[k].height != v.height || !lit.segment[k].valid()) return;
+    // The segments light from where they are said to (a ring mounted turned, or its lines
+    // listed the other way round, weighs the wrong frames: no tilt is read from them). Read
+    // over the barrel and the fixture beyond it, to 1.3 R_max (R_max about 1.1 R_o at 50 %).
+    const double reachPx = 1.3 * (m->rMaxPx > 0 ? m->rMaxPx : 1.1 * m->outer.rEqPx);
+    const SegmentBearings b = segmentBearings(lit, m->centreX, m->centreY, m->outer.rEqPx, reachPx);
+    if (b.found) {
+        m->segment0SeenDeg = b.segment0Deg;
+        m->segmentWay = b.way;
+        if (b.way < 0 || bearingOffsetDeg(b, lit.azimuth0Deg) > kSegmentBearingToleranceDeg) {
+            m->imageFlags |= kImageSegmentsMisplaced;
+            return;
+        }
+    }
     // The optics' blur: the original face's edge, a step in the finish alone, where measured.
     const double blurPx = m->innerEdgeWidthPx > 0 ? m->innerEdgeWidthPx : m->edgeWidthPx > 0 ? m->edgeWidthPx : 1.0;
     // From as far inside as the single frame's steepest fall lies beyond the flat face's end

@@ -73,6 +73,10 @@ enum ImageFlag : uint32_t {
     // explains: the single frame's contact edge stands, and neither is sure (reading:
     // tilt_disagrees).
     kImageTiltDisagrees = 1u << 8,
+    // The segment frames light the specimen from elsewhere than the azimuths given for them
+    // (segment_bearing.h: a ring mounted turned, its lines listed the other way round): no
+    // tilt is read from them; segment0SeenDeg and segmentWay say where the light came from.
+    kImageSegmentsMisplaced = 1u << 9,
 };
 
 // Where the pipeline looks: the specimen's initial diameter and the scale at the end face
@@ -126,6 +130,11 @@ struct EndFaceGeometry {
     // and the contact edge's standard uncertainty the tilt leaves. Segment frames that show
     // no tilt step (or do not fit the frame) leave the single frame's reading as it is.
     double tiltKneePx = 0, tiltSigmaPx = 0;
+    // Where the segment frames' light came from (segment_bearing.h): segment 0's azimuth in
+    // degrees and the way round (+1 as the azimuth runs, −1 against it); way 0: not measured
+    // (no segment frames, or their light too even to tell).
+    double segment0SeenDeg = 0;
+    int segmentWay = 0;
     double saturatedFraction = 0;
     // The silhouette's per-ray fit: coverage and the points' robust RMS about it (0 when only
     // the mean profile named it).

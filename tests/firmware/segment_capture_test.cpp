@@ -170,6 +170,11 @@ const char *const kRow = "id,image,n,k_mpa,mm_per_px,segment_images\n"
                          "a,images/straight-0021.png,0.2107,1201,0.0407012,"
                          "images/straight-0021-s0.png;images/straight-0021-s1.png;images/straight-0021-s2.png;"
                          "images/straight-0021-s3.png\n";
+// The same frames as a ring mounted a quarter turn on: its segment 0 is the rendered segment 1.
+const char *const kRowTurned = "id,image,n,k_mpa,mm_per_px,segment_images,segment0_deg\n"
+                               "a,images/straight-0021.png,0.2107,1201,0.0407012,"
+                               "images/straight-0021-s1.png;images/straight-0021-s2.png;images/straight-0021-s3.png;"
+                               "images/straight-0021-s0.png,90\n";
 const char *const kRowAlone = "id,image,n,k_mpa,mm_per_px\n"
                               "a,images/straight-0021.png,0.2107,1201,0.0407012\n";
 
@@ -229,10 +234,27 @@ TEST(SegmentCapture, SegmentZeroIsWhereTheConfigSaysItIs)
     ASSERT_TRUE(r.find("segment_frames")) << rig.serial.out;
     EXPECT_EQ(r.find("segment_frames")->number, 4);
     EXPECT_EQ(r.find("segment0_deg")->number, 90);
-    expectSameReading(r, hostResult(kRow, *rig.model));
+    expectSameReading(r, hostResult(kRowTurned, *rig.model));
+    EXPECT_EQ(r.find("mu")->text, hostResult(kRow, *rig.model).find("mu")->text);
 
-    Rig wrong(4, "", {1, 2, 3, 0}); // the same ring, the config not told
-    EXPECT_NE(wrong.measure().find("mu")->text, r.find("mu")->text);
+    // The same ring, the config not told: the frames say where segment 0 is, no tilt is read
+    // from them (the whole ring's frame's reading), and the record and serial say what to set.
+    Rig wrong(4, "", {1, 2, 3, 0});
+    const reading::FlatObject w = wrong.measure();
+    ASSERT_TRUE(w.find("segment_problem")) << wrong.serial.out;
+    EXPECT_NE(w.find("segment_problem")->text.find("segment 0 lights the specimen from 89 deg"), std::string::npos)
+        << w.find("segment_problem")->text;
+    EXPECT_NEAR(w.find("segment0_seen_deg")->number, 90, 5);
+    EXPECT_EQ(w.find("tilt_knee_px")->type, reading::JsonField::Type::Null);
+    EXPECT_EQ(w.find("mu")->text, hostResult(kRowAlone, *rig.model).find("mu")->text);
+    EXPECT_EQ(wrong.serial.last("error").find("code")->text, "segments");
+
+    // Its lines listed the other way round.
+    Rig reversed(4, "", {0, 3, 2, 1});
+    const reading::FlatObject v = reversed.measure();
+    ASSERT_TRUE(v.find("segment_problem")) << reversed.serial.out;
+    EXPECT_NE(v.find("segment_problem")->text.find("other way round"), std::string::npos);
+    EXPECT_EQ(v.find("segment_way")->number, -1);
 }
 
 // Segment 1's LED is dead: its frames are refused, the reading is the whole ring's frame's

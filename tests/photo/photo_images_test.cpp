@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "host_tools/image_file.h"
@@ -14,6 +15,7 @@
 #include "tests/host_tools/test_support.h"
 #include "vision/contact_tilt.h"
 #include "vision/end_face_analyzer.h"
+#include "vision/segment_bearing.h"
 
 using namespace icacam;
 
@@ -411,4 +413,103 @@ TEST(SegmentPhotos, TheTiltConfirmsAContactEdgeTheFrameLeftOpen)
     EXPECT_NE(p.lit.imageFlags & vision::kImageTiltConfirms, 0u);
     EXPECT_EQ(p.lit.outer.rEqPx, p.single.outer.rEqPx);
     EXPECT_NEAR(p.lit.outer.rEqPx, num(p.truth, "r_outer_px"), 1.0);
+}
+
+namespace {
+
+// The four segment frames of a committed record, listed in the order `order` gives.
+struct SegmentFrames {
+    host::LumaImage segment[4];
+    vision::LitInTurn lit;
+    vision::EndFaceGeometry g;
+};
+
+void loadSegmentFrames(const std::string &id, const int (&order)[4], SegmentFrames *f)
+{
+    const std::string dir = kDir + "segments/";
+    const auto manifest = test::readCsvById(dir + "manifest.csv");
+    const auto &m = manifest.at(id);
+    const std::vector<std::string> paths = host::splitList(m.at("segment_images"));
+    ASSERT_EQ(paths.size(), 4u);
+    for (int k = 0; k < 4; ++k) {
+        ASSERT_EQ(host::loadLuma(dir + paths[size_t(order[k])], &f->segment[k]), "");
+        const cv::Mat &s = f->segment[k].luma;
+        f->lit.segment[k] = {s.data, s.cols, s.rows, int(s.step[0]), 1};
+    }
+    f->lit.count = 4;
+    host::LumaImage frame;
+    ASSERT_EQ(host::loadLuma(dir + m.at("image"), &frame), "");
+    static vision::EndFaceAnalyzer analyzer;
+    ASSERT_EQ(analyzer.configure(640, 480), vision::ErrorCode::None);
+    const vision::LumaView v{frame.luma.data, frame.luma.cols, frame.luma.rows, int(frame.luma.step[0]), 1};
+    f->g = analyzer.measure(v, vision::FaceSearch{num(m, "d0_mm"), num(m, "mm_per_px"), 1});
+    ASSERT_TRUE(f->g.found());
+}
+
+vision::SegmentBearings bearingsOf(const SegmentFrames &f)
+{
+    const double from = f.g.outer.rEqPx, to = (f.g.rMaxPx > 0 ? f.g.rMaxPx : from) * 1.3;
+    return vision::segmentBearings(f.lit, f.g.centreX, f.g.centreY, from, to);
+}
+
+} // namespace
+
+// Where each segment lights from, read off the rendered frames (segment k rendered at image
+// azimuth k · 90°): within a few degrees, whichever order the frames are listed in, and the
+// pipeline reads no tilt from frames said to lie elsewhere than they light from.
+TEST(SegmentPhotos, TheFramesSayWhereEachSegmentIs)
+{
+    for (const char *id : {"straight-0016", "straight-0021"}) {
+        SCOPED_TRACE(id);
+        SegmentFrames f;
+        loadSegmentFrames(id, {0, 1, 2, 3}, &f);
+        const vision::SegmentBearings b = bearingsOf(f);
+        ASSERT_TRUE(b.found);
+        EXPECT_EQ(b.way, 1);
+        EXPECT_LT(vision::bearingOffsetDeg(b, 0), 5);
+        for (int k = 0; k < 4; ++k) EXPECT_GT(b.contrast[k], 0.1) << k;
+        EXPECT_LT(b.worstDeg, 5);
+
+        SegmentFrames turned; // segment 0 is the rendered segment 1
+        loadSegmentFrames(id, {1, 2, 3, 0}, &turned);
+        const vision::SegmentBearings t = bearingsOf(turned);
+        ASSERT_TRUE(t.found);
+        EXPECT_EQ(t.way, 1);
+        EXPECT_LT(vision::bearingOffsetDeg(t, 90), 5);
+
+        SegmentFrames reversed; // the lines listed the other way round
+        loadSegmentFrames(id, {0, 3, 2, 1}, &reversed);
+        const vision::SegmentBearings r = bearingsOf(reversed);
+        ASSERT_TRUE(r.found);
+        EXPECT_EQ(r.way, -1);
+
+        // Measured as the instrument does: said at 0°, the turned frames read no tilt and
+        // say where segment 0 lit from; said at 90°, they read the tilt as the frames in
+        // their own order do.
+        host::LumaImage frame;
+        const std::string dir = kDir + "segments/";
+        const auto manifest = test::readCsvById(dir + "manifest.csv");
+        const auto &m = manifest.at(id);
+        ASSERT_EQ(host::loadLuma(dir + m.at("image"), &frame), "");
+        const vision::LumaView v{frame.luma.data, frame.luma.cols, frame.luma.rows, int(frame.luma.step[0]), 1};
+        static vision::EndFaceAnalyzer analyzer;
+        ASSERT_EQ(analyzer.configure(640, 480), vision::ErrorCode::None);
+        vision::FaceSearch search{num(m, "d0_mm"), num(m, "mm_per_px"), 1};
+        search.litInTurn = &f.lit;
+        const vision::EndFaceGeometry right = analyzer.measure(v, search);
+        EXPECT_EQ(right.imageFlags & vision::kImageSegmentsMisplaced, 0u);
+        EXPECT_NE(right.imageFlags & (vision::kImageTiltConfirms | vision::kImageContactEdgeByTilt), 0u);
+        search.litInTurn = &turned.lit;
+        const vision::EndFaceGeometry unsaid = analyzer.measure(v, search);
+        EXPECT_NE(unsaid.imageFlags & vision::kImageSegmentsMisplaced, 0u);
+        EXPECT_EQ(unsaid.imageFlags & (vision::kImageTiltConfirms | vision::kImageContactEdgeByTilt), 0u);
+        EXPECT_NEAR(unsaid.segment0SeenDeg, 90, 5);
+        turned.lit.azimuth0Deg = 90;
+        const vision::EndFaceGeometry said = analyzer.measure(v, search);
+        EXPECT_EQ(said.imageFlags & vision::kImageSegmentsMisplaced, 0u);
+        EXPECT_EQ(said.outer.rEqPx, right.outer.rEqPx);
+        EXPECT_EQ(said.tiltKneePx, right.tiltKneePx);
+        search.litInTurn = &reversed.lit;
+        EXPECT_NE(analyzer.measure(v, search).imageFlags & vision::kImageSegmentsMisplaced, 0u);
+    }
 }
