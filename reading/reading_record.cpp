@@ -81,7 +81,8 @@ const FieldSpec kFields[] = {
     {"r_max_z", Field::Number, 2, [](const Reading &m) { return hasSilhouette(m) ? m.rMaxZ : nan(); }},
     {"tilt_knee_px", Field::Number, 3,
      [](const Reading &m) {
-         return m.geometry.imageFlags & (vision::kImageContactEdgeByTilt | vision::kImageTiltConfirms)
+         return m.geometry.imageFlags &
+                        (vision::kImageContactEdgeByTilt | vision::kImageTiltConfirms | vision::kImageTiltDisagrees)
                     ? m.geometry.tiltKneePx
                     : nan();
      }},
