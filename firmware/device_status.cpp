@@ -35,6 +35,8 @@ void Device::appendStatus(reading::JsonBuilder &j)
         .integer("free_bytes", free.ok() ? (long long)free.value : -1)
         .boolean("led", hal_.led.isOn())
         .str("model", instrument_.model().name());
+    // A segmented ring: how many segments the config asks for and the ring switches.
+    if (cfg_.ledSegments > 1) j.integer("led_segments", cfg_.ledSegments).integer("led_switches", hal_.led.segments());
     appendRecipe(j);
     appendCameraStatus(j);
     appendPartsStatus(j);

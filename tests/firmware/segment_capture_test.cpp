@@ -286,6 +286,12 @@ TEST(SegmentCapture, ARingWithoutTheSegmentsTheConfigNamesIsSaidSo)
     ASSERT_TRUE(r.find("segment_problem")) << rig.serial.out;
     EXPECT_NE(r.find("segment_problem")->text.find("switches 1 segment"), std::string::npos);
     expectSameReading(r, hostResult(kRowAlone, *rig.model));
+    rig.serial.in = "status\n";
+    rig.device->tick();
+    const reading::FlatObject st = rig.serial.last("status");
+    ASSERT_TRUE(st.find("led_segments")) << rig.serial.out;
+    EXPECT_EQ(st.find("led_segments")->number, 4);
+    EXPECT_EQ(st.find("led_switches")->number, 1);
 }
 
 TEST(SegmentCapture, TheConfigTiesSegmentsToLinesAndAFixedExposure)
