@@ -118,7 +118,10 @@ private:
     // frames until one is lit top to bottom (at most led.lit_attempts), LED off: the frame as
     // luma, or the problem in words. True when a frame was captured (problem may still say
     // why it is not measured: not lit, not convertible).
-    bool captureFrame(hal::CapturedFrame *frame, vision::LumaView *luma, std::string *problem);
+    // withSegments: a segmented ring's frames first (a measurement; a snapshot or a scale
+    // check needs the whole ring's frame only).
+    bool captureFrame(hal::CapturedFrame *frame, vision::LumaView *luma, std::string *problem,
+                      bool withSegments = false);
     bool takeDarkReference(hal::CapturedFrame *frame, std::string *problem);
     // device_segments.cpp. A segmented ring (led.segments 3-8): a frame per segment lit
     // alone at one fixed exposure, each proven lit and copied into litInTurn_; false with the

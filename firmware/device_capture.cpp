@@ -74,7 +74,7 @@ bool Device::takeDarkReference(hal::CapturedFrame *frame, std::string *problem)
     return true;
 }
 
-bool Device::captureFrame(hal::CapturedFrame *frame, vision::LumaView *luma, std::string *problem)
+bool Device::captureFrame(hal::CapturedFrame *frame, vision::LumaView *luma, std::string *problem, bool withSegments)
 {
     triggerMs_ = hal_.clock.monotonicMs();
     lastLit_ = {};
@@ -90,7 +90,7 @@ bool Device::captureFrame(hal::CapturedFrame *frame, vision::LumaView *luma, std
     if (!takeDarkReference(frame, problem)) return false;
     // The segments before the whole ring: the frame measured is the last one captured, so
     // the camera's buffer it lies in stays valid until it is measured and journaled.
-    if (cfg_.ledSegments >= vision::kMinTiltSegments) {
+    if (withSegments && cfg_.ledSegments >= vision::kMinTiltSegments) {
         state_ = State::LedOn;
         (void)captureSegments(frame, &segmentProblem_);
         state_ = State::Capture;

@@ -20,7 +20,7 @@ void Device::measure(const char *origin, const std::string &tag)
     std::string problem;
     hal::CapturedFrame frame;
     vision::LumaView luma;
-    const bool captured = captureFrame(&frame, &luma, &problem);
+    const bool captured = captureFrame(&frame, &luma, &problem, true);
     if (captured && problem.empty()) {
         if (std::string issue = instrument_.frameSizeIssue(luma.width, luma.height); !issue.empty())
             problem = "calibration '" + cal_.name + "': " + issue;
