@@ -22,6 +22,7 @@
 #include "reading/reading_record.h"
 #include "reading/record_line.h"
 #include "tests/support/recording_serial.h"
+#include "tests/support/same_reading.h"
 
 using namespace icacam;
 namespace fs = std::filesystem;
@@ -63,41 +64,10 @@ reading::FlatObject deviceResult(const std::string &image, const fw::Config &bas
 
 reading::FlatObject hostResult(const std::string &manifestText, const friction::FrictionModel &model)
 {
-    host::Manifest manifest;
-    std::string err;
-    EXPECT_TRUE(host::parseManifest(manifestText, &manifest, &err)) << err;
-    manifest.baseDir = kSample;
-    host::RecordMeasurer measurer(model, reading::SpecimenSpec{});
-    host::RecordReading reading;
-    measurer.measure(manifest.rows.at(0), manifest, &reading);
-    std::ostringstream out;
-    host::ResultWriter writer(out, host::ResultFormat::Jsonl);
-    host::ResultRow row;
-    row.id = "x";
-    row.model = model.name();
-    if (reading.measured)
-        row.m = &reading.reading;
-    else
-        row.message = reading.message;
-    writer.write(row);
-    std::string line = out.str();
-    line.pop_back();
-    reading::FlatObject o;
-    EXPECT_EQ(reading::parseFlatObject(line, &o), "");
-    return o;
+    return test::hostResult(manifestText, kSample, model);
 }
 
-void expectSameReading(const reading::FlatObject &device, const reading::FlatObject &host)
-{
-    for (int i = 0; i < reading::readingFieldCount(); ++i) {
-        const char *name = reading::readingFieldName(i);
-        const reading::JsonField *d = device.find(name), *h = host.find(name);
-        ASSERT_TRUE(d) << "device record lacks " << name;
-        ASSERT_TRUE(h) << "icacam measure record lacks " << name;
-        EXPECT_EQ(int(d->type), int(h->type)) << name;
-        EXPECT_EQ(d->text, h->text) << name;
-    }
-}
+using test::expectSameReading;
 
 } // namespace
 

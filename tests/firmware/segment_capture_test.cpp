@@ -21,14 +21,11 @@
 #include "hal/file/folder_storage.h"
 #include "hal/file/scripted_light.h"
 #include "host_tools/loop/journal_records.h"
-#include "host_tools/manifest.h"
-#include "host_tools/record_measurer.h"
-#include "host_tools/result_writer.h"
-#include "reading/reading_record.h"
-#include "reading/record_line.h"
 #include "tests/support/recording_serial.h"
+#include "tests/support/same_reading.h"
 
 using namespace icacam;
+using test::expectSameReading;
 namespace fs = std::filesystem;
 
 namespace {
@@ -125,45 +122,9 @@ struct Rig {
     }
 };
 
-// `icacam measure`'s reading of a manifest row, as a result line's fields.
-reading::FlatObject hostResult(const host::Manifest &manifest, const friction::FrictionModel &model)
-{
-    host::RecordMeasurer measurer(model, reading::SpecimenSpec{});
-    host::RecordReading reading;
-    measurer.measure(manifest.rows.at(0), manifest, &reading);
-    EXPECT_TRUE(reading.measured) << reading.message;
-    std::ostringstream out;
-    host::ResultWriter writer(out, host::ResultFormat::Jsonl);
-    host::ResultRow row;
-    row.id = "x";
-    row.model = model.name();
-    row.m = &reading.reading;
-    writer.write(row);
-    std::string line = out.str();
-    line.pop_back();
-    reading::FlatObject o;
-    EXPECT_EQ(reading::parseFlatObject(line, &o), "");
-    return o;
-}
-
 reading::FlatObject hostResult(const std::string &manifestText, const friction::FrictionModel &model)
 {
-    host::Manifest manifest;
-    std::string err;
-    EXPECT_TRUE(host::parseManifest(manifestText, &manifest, &err)) << err;
-    manifest.baseDir = kSegments;
-    return hostResult(manifest, model);
-}
-
-void expectSameReading(const reading::FlatObject &device, const reading::FlatObject &host)
-{
-    for (int i = 0; i < reading::readingFieldCount(); ++i) {
-        const char *name = reading::readingFieldName(i);
-        const reading::JsonField *d = device.find(name), *h = host.find(name);
-        ASSERT_TRUE(d) << "device record lacks " << name;
-        ASSERT_TRUE(h) << "icacam measure record lacks " << name;
-        EXPECT_EQ(d->text, h->text) << name;
-    }
+    return test::hostResult(manifestText, kSegments, model);
 }
 
 const char *const kRow = "id,image,n,k_mpa,mm_per_px,segment_images\n"
@@ -189,7 +150,7 @@ TEST(SegmentCapture, TheDeviceReadsTheTiltAsMeasureDoesFromTheSameFrames)
     EXPECT_EQ(r.find("segment_problem"), nullptr);
     ASSERT_TRUE(r.find("tilt_knee_px"));
     EXPECT_EQ(r.find("tilt_knee_px")->type, reading::JsonField::Type::Number) << "the tilt was read";
-    expectSameReading(r, hostResult(kRow, *rig.model));
+    test::expectSameReading(r, hostResult(kRow, *rig.model));
     // The tilt moved the contact edge: the whole ring's frame alone reads another μ.
     EXPECT_NE(r.find("mu")->text, hostResult(kRowAlone, *rig.model).find("mu")->text);
     EXPECT_EQ(rig.serial.out.find("\"segments\""), std::string::npos) << rig.serial.out;
@@ -221,7 +182,7 @@ TEST(SegmentCapture, TheDeviceReadsTheTiltAsMeasureDoesFromTheSameFrames)
                                                 &journal, &join, &error))
         << error;
     ASSERT_EQ(journal.rows.size(), 1u);
-    expectSameReading(r, hostResult(journal, *rig.model));
+    test::expectSameReading(r, test::hostResult(journal, *rig.model));
 }
 
 // The ring mounted turned: segment 0 where the rendered segment 1 lit from, the config saying
@@ -234,7 +195,7 @@ TEST(SegmentCapture, SegmentZeroIsWhereTheConfigSaysItIs)
     ASSERT_TRUE(r.find("segment_frames")) << rig.serial.out;
     EXPECT_EQ(r.find("segment_frames")->number, 4);
     EXPECT_EQ(r.find("segment0_deg")->number, 90);
-    expectSameReading(r, hostResult(kRowTurned, *rig.model));
+    test::expectSameReading(r, hostResult(kRowTurned, *rig.model));
     EXPECT_EQ(r.find("mu")->text, hostResult(kRow, *rig.model).find("mu")->text);
 
     // The same ring, the config not told: the frames say where segment 0 is, no tilt is read
@@ -269,7 +230,7 @@ TEST(SegmentCapture, ADeadSegmentLeavesTheWholeRingsFrameAlone)
     EXPECT_NE(r.find("segment_problem")->text.find("segment 1 not lit"), std::string::npos)
         << r.find("segment_problem")->text;
     EXPECT_EQ(r.find("segment_images"), nullptr);
-    expectSameReading(r, hostResult(kRowAlone, *rig.model));
+    test::expectSameReading(r, hostResult(kRowAlone, *rig.model));
     const reading::FlatObject e = rig.serial.last("error");
     ASSERT_TRUE(e.find("code")) << rig.serial.out;
     EXPECT_EQ(e.find("code")->text, "segments");
@@ -285,7 +246,7 @@ TEST(SegmentCapture, ARingWithoutTheSegmentsTheConfigNamesIsSaidSo)
     const reading::FlatObject r = rig.measure();
     ASSERT_TRUE(r.find("segment_problem")) << rig.serial.out;
     EXPECT_NE(r.find("segment_problem")->text.find("switches 1 segment"), std::string::npos);
-    expectSameReading(r, hostResult(kRowAlone, *rig.model));
+    test::expectSameReading(r, hostResult(kRowAlone, *rig.model));
     rig.serial.in = "status\n";
     rig.device->tick();
     const reading::FlatObject st = rig.serial.last("status");
