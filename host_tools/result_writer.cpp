@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 
 #include "reading/reading_record.h"
 
@@ -106,6 +107,14 @@ std::string ResultWriter::tableLine(const ResultRow &r)
         reading::adviceText(m->advice, words, sizeof words);
     else
         reading::readingMessage(*m, words, sizeof words);
+    // Segment frames said to lie elsewhere than they lit from: the advice says so on an ok
+    // reading; beside a warning's findings too.
+    if (m && m->status != reading::Status::Ok && m->advice.segmentWay != 0) {
+        const size_t used = std::strlen(words);
+        std::snprintf(words + used, sizeof words - used, "%s", used ? "; " : "");
+        const size_t now = std::strlen(words);
+        reading::segmentsAdvice(m->advice, words + now, sizeof words - now);
+    }
     const char *status = m ? reading::statusName(m->status) : "error";
     char line[1000];
     // 18 bytes wide: "±" takes two, in the header and in each value alike.

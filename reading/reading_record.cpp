@@ -155,16 +155,23 @@ void adviceText(const Advice &a, char *buf, size_t size)
     }
     if (a.segmentWay != 0) {
         const size_t used = std::strlen(buf);
-        if (a.segmentWay < 0)
-            std::snprintf(buf + used, size - used,
-                          "; the segment frames run the other way round (segment 0 lights from %.0f deg): list them "
-                          "in reverse after segment 0; tilt not read",
-                          a.segment0SeenDeg);
-        else
-            std::snprintf(buf + used, size - used,
-                          "; segment 0 lights from %.0f deg: set segment0_deg %.0f; tilt not read", a.segment0SeenDeg,
-                          a.segment0SeenDeg);
+        std::snprintf(buf + used, size - used, "; ");
+        segmentsAdvice(a, buf + used + 2, size - used - 2);
     }
+}
+
+void segmentsAdvice(const Advice &a, char *buf, size_t size)
+{
+    if (size == 0) return;
+    buf[0] = 0;
+    if (a.segmentWay < 0)
+        std::snprintf(buf, size,
+                      "the segment frames run the other way round (segment 0 lights from %.0f deg): list them in "
+                      "reverse after segment 0; tilt not read",
+                      a.segment0SeenDeg);
+    else if (a.segmentWay > 0)
+        std::snprintf(buf, size, "segment 0 lights from %.0f deg: set segment0_deg %.0f; tilt not read",
+                      a.segment0SeenDeg, a.segment0SeenDeg);
 }
 
 namespace {} // namespace

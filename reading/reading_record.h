@@ -40,5 +40,8 @@ void readingMessage(const Reading &m, char *buf, size_t size);
 // The advice in words: "h_final_mm: U 0.0160 → 0.0060", "n_tol 0.003: U …", or "none: U … is
 // mostly the model's own".
 void adviceText(const Advice &a, char *buf, size_t size);
+// Where segment frames lit from elsewhere than they were said to: what to set ("" when they
+// did not, or were not checked). Part of adviceText; said on its own beside a warning.
+void segmentsAdvice(const Advice &a, char *buf, size_t size);
 
 } // namespace icacam::reading

@@ -7,11 +7,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
+#include <regex>
+#include <sstream>
 #include <string>
 
+#include "friction/friction_models.h"
 #include "host_tools/image_file.h"
 #include "host_tools/manifest.h"
+#include "host_tools/record_measurer.h"
+#include "host_tools/result_writer.h"
 #include "tests/host_tools/test_support.h"
 #include "vision/contact_tilt.h"
 #include "vision/end_face_analyzer.h"
@@ -512,4 +516,34 @@ TEST(SegmentPhotos, TheFramesSayWhereEachSegmentIs)
         search.litInTurn = &reversed.lit;
         EXPECT_NE(analyzer.measure(v, search).imageFlags & vision::kImageSegmentsMisplaced, 0u);
     }
+}
+
+// The first run's table says where the segments lit from when they were said to lie
+// elsewhere, whatever the status (the frames of straight-0021 listed a quarter turn on).
+TEST(SegmentPhotos, TheTableSaysWhereTheSegmentsLitFrom)
+{
+    host::Manifest manifest;
+    std::string err;
+    ASSERT_TRUE(host::parseManifest("id,image,n,k_mpa,mm_per_px,segment_images\n"
+                                    "a,images/straight-0021.png,0.2107,1201,0.0407012,"
+                                    "images/straight-0021-s1.png;images/straight-0021-s2.png;"
+                                    "images/straight-0021-s3.png;images/straight-0021-s0.png\n",
+                                    &manifest, &err))
+        << err;
+    manifest.baseDir = kDir + "segments/";
+    const friction::FrictionModel *model = friction::frictionModel(friction::kDefaultModel);
+    host::RecordMeasurer measurer(*model, reading::SpecimenSpec{});
+    host::RecordReading reading;
+    measurer.measure(manifest.rows.at(0), manifest, &reading);
+    ASSERT_TRUE(reading.measured) << reading.message;
+    EXPECT_EQ(reading.reading.advice.segmentWay, 1);
+    std::ostringstream out;
+    host::ResultWriter writer(out, host::ResultFormat::Table);
+    host::ResultRow row;
+    row.id = "a";
+    row.model = model->name();
+    row.m = &reading.reading;
+    writer.write(row);
+    EXPECT_TRUE(std::regex_search(out.str(), std::regex("segment 0 lights from (8[5-9]|9[0-5]) deg: set segment0_deg")))
+        << out.str();
 }
