@@ -150,8 +150,9 @@ const KeyDef kKeys[] = {
     {"led.segments", nullptr, nullptr, &Config::ledSegments, nullptr, 1, 8, nullptr, false,
      "segments of the ring lit one at a time before the whole ring, for the contact edge from the surface's "
      "tilt (1: the ring is one line; 3-8: a line each, led.gpio_line lists them)"},
-    {"led.segment0_deg", nullptr, &Config::ledSegment0Deg, nullptr, nullptr, 0, 360, nullptr, false,
-     "segmented ring: segment 0's centre as seen in the image, degrees from the image's +x toward +y (rows down)"},
+    {"led.segment0_deg", "segment0_deg", &Config::ledSegment0Deg, nullptr, nullptr, 0, 360, nullptr, true,
+     "segmented ring: segment 0's centre as seen in the image, degrees from the image's +x toward +y (rows down); "
+     "a measurement that finds it elsewhere says where"},
     {"led.segment_exposure_us", nullptr, nullptr, &Config::ledSegmentExposureUs, nullptr, 0, 10000000, nullptr, false,
      "segmented ring: the segment frames' exposure (0: camera.exposure_us times led.segments)"},
     {"led.lit_attempts", nullptr, nullptr, &Config::litAttempts, nullptr, 1, 10, nullptr, false,

@@ -96,8 +96,9 @@ std::string Device::misplacedSegments(const vision::EndFaceGeometry &g) const
                       "after segment 0 (segment 0 lights from %.0f deg)",
                       g.segment0SeenDeg);
     else
-        std::snprintf(words, sizeof words, "segment 0 lights the specimen from %.0f deg, led.segment0_deg says %g",
-                      g.segment0SeenDeg, cfg_.ledSegment0Deg);
+        std::snprintf(words, sizeof words,
+                      "segment 0 lights the specimen from %.0f deg, led.segment0_deg says %g: set segment0_deg %.0f",
+                      g.segment0SeenDeg, cfg_.ledSegment0Deg, g.segment0SeenDeg);
     return words;
 }
 

@@ -209,6 +209,18 @@ TEST(SegmentCapture, SegmentZeroIsWhereTheConfigSaysItIs)
     EXPECT_EQ(w.find("tilt_knee_px")->type, reading::JsonField::Type::Null);
     EXPECT_EQ(w.find("mu")->text, hostResult(kRowAlone, *rig.model).find("mu")->text);
     EXPECT_EQ(wrong.serial.last("error").find("code")->text, "segments");
+    // Set over serial as the problem says, kept for the next start; the next press reads the tilt.
+    wrong.serial.in = "set segment0_deg 90\ntrigger\n";
+    wrong.device->tick();
+    wrong.device->tick();
+    const reading::FlatObject again = wrong.serial.last("result");
+    ASSERT_TRUE(again.find("segment_frames")) << wrong.serial.out;
+    EXPECT_EQ(again.find("segment_problem"), nullptr) << again.find("segment_problem")->text;
+    EXPECT_EQ(again.find("mu")->text, r.find("mu")->text);
+    std::ifstream saved(wrong.dir / "journal" / "settings.conf");
+    std::stringstream text;
+    text << saved.rdbuf();
+    EXPECT_NE(text.str().find("segment0_deg = 90"), std::string::npos) << text.str();
 
     // Its lines listed the other way round.
     Rig reversed(4, "", {0, 3, 2, 1});
