@@ -106,28 +106,30 @@ TEST(BadInput, SegmentFramesEachGetAnError)
     cv::imwrite((dir / "small.png").string(), cv::Mat(64, 64, CV_8UC1, cv::Scalar(90)));
     writeBytes(dir / "text.png", std::vector<uint8_t>{'h', 'i'});
     std::ofstream man(dir / "manifest.csv");
-    man << "id,image,n,mm_per_px,segment_images\n"
-           "two,good.png,0.25,0.0135,good.png;good.png\n"
+    man << "id,image,n,mm_per_px,segment_images,segment0_deg\n"
+           "two,good.png,0.25,0.0135,good.png;good.png,\n"
            "nine,good.png,0.25,0.0135,good.png;good.png;good.png;good.png;good.png;good.png;good.png;good.png;"
-           "good.png\n"
-           "no-path,good.png,0.25,0.0135,good.png;;good.png\n"
-           "missing,good.png,0.25,0.0135,good.png;good.png;nope.png\n"
-           "directory,good.png,0.25,0.0135,good.png;good.png;.\n"
-           "other-size,good.png,0.25,0.0135,good.png;good.png;small.png\n"
-           "text,good.png,0.25,0.0135,good.png;good.png;text.png\n"
-           "none,good.png,0.25,0.0135,\n";
+           "good.png,\n"
+           "no-path,good.png,0.25,0.0135,good.png;;good.png,\n"
+           "missing,good.png,0.25,0.0135,good.png;good.png;nope.png,\n"
+           "directory,good.png,0.25,0.0135,good.png;good.png;.,\n"
+           "other-size,good.png,0.25,0.0135,good.png;good.png;small.png,\n"
+           "text,good.png,0.25,0.0135,good.png;good.png;text.png,\n"
+           "angle,good.png,0.25,0.0135,good.png;good.png;good.png,ninety\n"
+           "none,good.png,0.25,0.0135,,\n";
     man.close();
     const std::string out = (dir / "out.csv").string();
     ASSERT_EQ(host::measureCommand({"--manifest", (dir / "manifest.csv").string(), "--out", out}), 0);
     auto rows = test::readCsvById(out);
-    ASSERT_EQ(rows.size(), 8u);
+    ASSERT_EQ(rows.size(), 9u);
     const std::pair<const char *, const char *> expected[] = {{"two", "3-8"},
                                                               {"nine", "3-8"},
                                                               {"no-path", "no path"},
                                                               {"missing", "not found"},
                                                               {"directory", "not a file"},
                                                               {"other-size", "64x64"},
-                                                              {"text", "segment 2"}};
+                                                              {"text", "segment 2"},
+                                                              {"angle", "segment0_deg"}};
     for (const auto &[id, words] : expected) {
         EXPECT_EQ(rows[id]["status"], "error") << id;
         EXPECT_NE(rows[id]["message"].find(words), std::string::npos) << id << ": " << rows[id]["message"];
