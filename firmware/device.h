@@ -224,7 +224,6 @@ private:
     vision::LitInTurn litInTurn_;
     std::unique_ptr<uint8_t[]> segmentPixels_;
     size_t segmentFrameBytes_ = 0;
-    int segmentSlots_ = 0;
     std::string segmentProblem_;
     net::DeviceListener *listeners_[kMaxListeners] = {};
     int listenerCount_ = 0;

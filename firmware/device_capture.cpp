@@ -10,15 +10,6 @@
 
 namespace icacam::fw {
 
-namespace {
-
-LumaPlane planeOf(const vision::LumaView &v)
-{
-    return {v.data, v.width, v.height, v.stride, v.pixelStep};
-}
-
-} // namespace
-
 LitFrameOptions Device::litOptions(int width, int height) const
 {
     LitFrameOptions o;
@@ -67,7 +58,7 @@ bool Device::takeDarkReference(hal::CapturedFrame *frame, std::string *problem)
     vision::LumaView dark;
     if (!captureLuma(ledOffMs_ + cfg_.ledSettleMs, frame, &dark, problem)) return false;
     litCheck_ = LitFrameCheck(litOptions(dark.width, dark.height));
-    if (!litCheck_.setDarkReference(planeOf(dark))) {
+    if (!litCheck_.setDarkReference(lumaPlane(dark))) {
         *problem = "frame too small for the lit check";
         return false;
     }
@@ -106,7 +97,7 @@ bool Device::captureFrame(hal::CapturedFrame *frame, vision::LumaView *luma, std
     for (int attempt = 0; problem->empty() && attempt < cfg_.litAttempts; ++attempt) {
         if (!captureLuma(litMs, frame, luma, problem)) break;
         captured = true;
-        lastLit_ = litCheck_.check(planeOf(*luma));
+        lastLit_ = litCheck_.check(lumaPlane(*luma));
         if (lastLit_.verdict == LitVerdict::Lit) break;
         ++unlitFrames_;
     }

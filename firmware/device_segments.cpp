@@ -15,15 +15,11 @@
 #include <cstring>
 
 #include "firmware/device.h"
+#include "firmware/frame_luma.h"
 
 namespace icacam::fw {
 
 namespace {
-
-LumaPlane planeOf(const vision::LumaView &v)
-{
-    return {v.data, v.width, v.height, v.stride, v.pixelStep};
-}
 
 // The frame's luma row by row into dst (width × height bytes).
 void copyLuma(const vision::LumaView &v, uint8_t *dst)
@@ -47,15 +43,16 @@ void Device::sizeSegmentFrames()
     if (cfg_.ledSegments < vision::kMinTiltSegments) return;
     segmentFrameBytes_ = size_t(cfg_.cameraMaxWidth) * size_t(cfg_.cameraMaxHeight);
     segmentPixels_ = std::make_unique<uint8_t[]>(segmentFrameBytes_ * size_t(cfg_.ledSegments));
-    segmentSlots_ = cfg_.ledSegments;
 }
 
 bool Device::captureSegments(hal::CapturedFrame *frame, std::string *why)
 {
     litInTurn_.count = 0;
     const int n = cfg_.ledSegments;
-    if (n > segmentSlots_ || !segmentPixels_) {
-        *why = "led.segments " + std::to_string(n) + " was not set at start: restart the device";
+    // led.segments is read at start only (no setting or recipe changes it): its frames are
+    // sized then.
+    if (!segmentPixels_) {
+        *why = "no segment frames sized at start";
         return false;
     }
     if (hal_.led.segments() != n) {
@@ -117,7 +114,7 @@ bool Device::litSegments(hal::CapturedFrame *frame, int exposureUs, std::string 
     const double share = cfg_.exposureUs > 0 ? double(exposureUs) / (double(cfg_.exposureUs) * n) : 1.0;
     o.minRiseLevels = std::max(1, int(std::lround(cfg_.litMinRise * std::min(1.0, share))));
     LitFrameCheck check(o);
-    if (!check.setDarkReference(planeOf(luma))) {
+    if (!check.setDarkReference(lumaPlane(luma))) {
         *why = "frame too small for the lit check";
         return false;
     }
@@ -137,7 +134,7 @@ bool Device::litSegments(hal::CapturedFrame *frame, int exposureUs, std::string 
                 *why = "segment " + std::to_string(k) + "'s frame is another size";
                 return false;
             }
-            verdict = check.check(planeOf(luma));
+            verdict = check.check(lumaPlane(luma));
             if (verdict.verdict == LitVerdict::Lit) break;
         }
         if (verdict.verdict != LitVerdict::Lit) {

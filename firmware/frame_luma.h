@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "firmware/lit_frame.h"
 #include "hal/frame.h"
 #include "vision/luma_view.h"
 
@@ -13,5 +14,11 @@ namespace icacam::fw {
 // scratch, which the caller sized once with vision::lumaScratchBytes. Allocates nothing.
 // Errors: as vision::lumaOf.
 vision::ErrorCode frameLuma(const hal::FrameView &frame, uint8_t *scratch, size_t scratchBytes, vision::LumaView *out);
+
+// The same luma as the lit-frame check reads it.
+inline LumaPlane lumaPlane(const vision::LumaView &v)
+{
+    return {v.data, v.width, v.height, v.stride, v.pixelStep};
+}
 
 } // namespace icacam::fw

@@ -153,8 +153,7 @@ void adviceText(const Advice &a, char *buf, size_t size)
         const size_t used = std::strlen(buf);
         std::snprintf(buf + used, size - used, "; oblique view: the declared scale is unchecked, calibrate the camera");
     }
-    if (a.segmentWay != 0) {
-        const size_t used = std::strlen(buf);
+    if (const size_t used = std::strlen(buf); a.segmentWay != 0 && used + 2 < size) {
         std::snprintf(buf + used, size - used, "; ");
         segmentsAdvice(a, buf + used + 2, size - used - 2);
     }
