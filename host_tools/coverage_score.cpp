@@ -42,7 +42,7 @@ struct Accumulator {
         ratios.push_back(sigma > 0 ? a / sigma : (a == 0 ? 0 : std::numeric_limits<double>::infinity()));
         if (a <= opt.k * sigma) ++s.withinK;
         if (a > std::fabs(s.worstDmu) || s.worstId.empty()) s.worstDmu = dmu, s.worstId = id, s.worstStatus = status;
-        const bool right = a <= std::max(opt.toleranceAbs, opt.toleranceRel * muTrue);
+        const bool right = isRight(dmu, muTrue, opt);
         if (right) ++s.right;
         if (status == "ok") {
             ++s.ok;

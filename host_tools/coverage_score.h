@@ -10,6 +10,8 @@
 // sigma_n, sigma_model), the combination without the model's own fit error when the truth is
 // the measuring model's own (a paper model measured against the paper's truth): sqrt(mu_sigma²
 // − sigma_model²); otherwise mu_sigma as reported.
+#include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -27,6 +29,12 @@ struct ScoreOptions {
     // of `icacam synth` and ../shared/data hold the paper's μ) and the column exists.
     ModelSigma modelSigma = ModelSigma::Auto;
 };
+
+// A measured reading is right when |Δμ| ≤ max(abs, rel · μ_true).
+inline bool isRight(double dmu, double muTrue, const ScoreOptions &opt)
+{
+    return std::fabs(dmu) <= std::max(opt.toleranceAbs, opt.toleranceRel * muTrue);
+}
 
 struct ConditionScore {
     std::string condition;

@@ -7,6 +7,7 @@
 #include "host_tools/coverage_score.h"
 #include "host_tools/manifest.h"
 #include "host_tools/number_text.h"
+#include "host_tools/score_comparison.h"
 
 namespace icacam::host {
 
@@ -15,7 +16,7 @@ std::string usage()
 {
     const ScoreOptions d;
     return "usage: icacam score --results FILE --truth FILE [--tolerance ABS[,REL]] [--k K]\n"
-           "                    [--model-sigma auto|keep|drop] [--markdown]\n"
+           "                    [--model-sigma auto|keep|drop] [--markdown] [--against FILE]\n"
            "Per condition (the truth's 'condition' column; one line without it): records measured,\n"
            "status ok, silent wrong answers (ok with |dmu| > max(ABS, REL * mu); default " +
            numberText("%g", d.toleranceAbs) + "," + numberText("%g", d.toleranceRel) +
@@ -23,13 +24,17 @@ std::string usage()
            "), the median |dmu|/sigma and |dmu|, the worst dmu.\n"
            "sigma: mu_sigma; with the budget columns and a paper model measured against the paper's\n"
            "truth, sqrt(mu_sigma^2 - sigma_model^2) (--model-sigma auto, the default; keep or drop to\n"
-           "force). --markdown: the table as Markdown. See docs/uncertainty.md.\n";
+           "force). --markdown: the table as Markdown.\n"
+           "--against FILE: an earlier run of the same records (another firmware, model, calibration\n"
+           "or pipeline): the readings whose status, mu or flags differ, each run's dmu and whether it\n"
+           "is right, and both runs' counts (measured, right, ok on right, silent wrong).\n"
+           "See docs/uncertainty.md.\n";
 }
 } // namespace
 
 int scoreCommand(const std::vector<std::string> &args)
 {
-    std::string resultsPath, truthPath;
+    std::string resultsPath, truthPath, againstPath;
     ScoreOptions opt;
     bool markdown = false;
     cli::OptionReader opts(args, usage());
@@ -41,6 +46,8 @@ int scoreCommand(const std::vector<std::string> &args)
             resultsPath = opts.value();
         else if (opts.is("--truth"))
             truthPath = opts.value();
+        else if (opts.is("--against"))
+            againstPath = opts.value();
         else if (opts.is("--markdown"))
             markdown = opts.flag();
         else if (opts.is("--k")) {
@@ -75,6 +82,13 @@ int scoreCommand(const std::vector<std::string> &args)
     if (!scoreResults(results, truth, opt, &report, &err)) throw std::runtime_error(err);
     std::cout << formatScore(report, opt, markdown);
     for (const std::string &n : report.notes) std::cerr << "icacam score: " << n << "\n";
+    if (!againstPath.empty()) {
+        Manifest before;
+        if (!readManifest(againstPath, &before, &err)) throw std::runtime_error("--against: " + err);
+        ComparisonReport cmp;
+        if (!compareResults(before, results, truth, opt, &cmp, &err)) throw std::runtime_error(err);
+        std::cout << "\nagainst " << againstPath << ": " << formatComparison(cmp);
+    }
     return 0;
 }
 

@@ -10,6 +10,7 @@
 
 #include <opencv2/imgcodecs.hpp>
 
+#include "host_tools/score_comparison.h"
 #include "tests/host_tools/coverage_support.h"
 
 using namespace icacam;
@@ -82,6 +83,49 @@ TEST(Score, CountsSilentWrongAnswersAndCoveragePerCondition)
     EXPECT_EQ(r.find("odd")->okRight, 0) << "b2 is no longer right";
     const std::string table = host::formatScore(r, tight, true);
     EXPECT_NE(table.find("| plain | 3 of 3 | 2 | 1 of 1 | 1 | 33 % |"), std::string::npos) << table;
+}
+
+// Two runs of the same records: the readings that differ in status, μ or flags are listed
+// with each run's Δμ, and both runs are counted as the score counts them.
+TEST(Score, ComparesTwoRunsReadingByReading)
+{
+    const host::Manifest truth = csv("id,mu\na,0.100\nb,0.200\nc,0.150\nd,0.120\n");
+    // a: the same in both; b: warn → ok, 0.015 off (silent wrong after); c: μ moves, right in
+    // both; d: an error before, ok and right after.
+    const host::Manifest before = csv("id,status,mu,flags\n"
+                                      "a,ok,0.101,\n"
+                                      "b,warn,0.215,no_silhouette\n"
+                                      "c,warn,0.152,contact_edge_ramp\n"
+                                      "d,error,,\n");
+    const host::Manifest after = csv("id,status,mu,flags\n"
+                                     "a,ok,0.101,\n"
+                                     "b,ok,0.215,\n"
+                                     "c,warn,0.149,contact_edge_ramp\n"
+                                     "d,ok,0.121,\n");
+    host::ComparisonReport r;
+    std::string err;
+    ASSERT_TRUE(host::compareResults(before, after, truth, {}, &r, &err)) << err;
+    EXPECT_EQ(r.records, 4);
+    ASSERT_EQ(r.changed.size(), 3u);
+    EXPECT_EQ(r.changed[0].id, "b");
+    EXPECT_EQ(r.changed[1].id, "c");
+    EXPECT_EQ(r.changed[2].id, "d");
+    EXPECT_NEAR(r.changed[0].after.dmu, 0.015, 1e-9);
+    EXPECT_FALSE(r.changed[0].after.right);
+    EXPECT_TRUE(r.changed[1].before.right && r.changed[1].after.right);
+    EXPECT_EQ(r.before.measured, 3);
+    EXPECT_EQ(r.after.measured, 4);
+    EXPECT_EQ(r.before.okRight, 1);
+    EXPECT_EQ(r.after.okRight, 2);
+    EXPECT_EQ(r.before.silentWrong, 0);
+    EXPECT_EQ(r.after.silentWrong, 1);
+    const std::string text = host::formatComparison(r);
+    EXPECT_NE(text.find("3 of 4 readings differ"), std::string::npos) << text;
+    EXPECT_NE(text.find("ok   +0.0150 silent wrong"), std::string::npos) << text;
+    // A run without a status column is refused with the file named.
+    const host::Manifest bare = csv("id,mu\na,0.1\n");
+    EXPECT_FALSE(host::compareResults(bare, after, truth, {}, &r, &err));
+    EXPECT_NE(err.find("before"), std::string::npos) << err;
 }
 
 // With the budget columns, σ drops the model's own fit error when the truth is the paper's
