@@ -31,8 +31,6 @@ constexpr double kMinRayArcPx = 5.0;
 // How far inside the named drop (pixels) the centring must have moved before the drop
 // itself is tried again as the contact edge: more than the coarse step's reach.
 constexpr double kInwardMovePx = 4.0;
-// A 3-grey-level step blurred to σ = 2 px gives a coarse derivative of about 1200.
-constexpr int32_t kMinCoarseStrength = 1000;
 // The contact edge's blur (Gaussian σ, pixels) taken where the profile shows none.
 constexpr double kUnknownBlurPx = 1.5;
 // Below this fraction of rays a boundary's fit counts as low coverage (the reading flags
@@ -82,23 +80,6 @@ void boxStep(const int32_t *t, int count, int w, bool allInside, int16_t *d)
         const int32_t diff = (prefix[j + w + 1] - prefix[j + 1]) - (prefix[j] - prefix[j - w]);
         d[j] = static_cast<int16_t>(diff / scale);
     }
-}
-
-// The noise of profileDerivative on a mean profile, from its second differences: a
-// photograph's profile slopes over long stretches (the fixture's shadow, vignetting, a lit
-// barrel), which the derivative's own spread would count as noise; the second difference
-// sees only what changes from sample to sample. σ(s[j+1] − 2 s[j] + s[j−1]) = √6 σ, and the
-// derivative's weights (1, 2, 2, 1) give √10 σ.
-double derivativeNoise(const uint16_t *s, int count)
-{
-    int32_t tmp[kMaxCoarse];
-    int n = 0;
-    for (int j = 1; j + 1 < count; ++j)
-        if (s[j - 1] != kOutsideFrame && s[j] != kOutsideFrame && s[j + 1] != kOutsideFrame)
-            tmp[n++] = std::abs(int32_t(s[j + 1]) - 2 * int32_t(s[j]) + int32_t(s[j - 1]));
-    if (n == 0) return 0;
-    std::nth_element(tmp, tmp + n / 2, tmp + n);
-    return 1.4826 * tmp[n / 2] * std::sqrt(10.0 / 6.0);
 }
 
 } // namespace
@@ -882,10 +863,14 @@ ErrorCode RingSearch::ringAbout(const MeanEdges &me, EndFaceGeometry *m, bool pr
     m->outer = outer;
     // The silhouette per coarse ray refines the mean profile's estimate (the mean profile
     // blurs a weak barrel/background step and can name a highlight's flank instead).
-    bool lopsided = false;
+    bool lopsided = false, faint = false;
     double outlineR[kCoarseRays];
-    const double perRay =
-        silhouetteFromRays(outerR, edgeWidth >= 0 ? edgeWidth : kUnknownBlurPx, m, &lopsided, outlineR);
+    double perRay =
+        silhouetteFromRays(outerR, edgeWidth >= 0 ? edgeWidth : kUnknownBlurPx, m, &lopsided, outlineR, &faint);
+    // Seen on under half the rays (which the reading takes for no silhouette), an outline the
+    // rays' own fit or the mean profile places is sought on the sectors' pooled rays about it.
+    if (const double about = perRay > 0 ? perRay : me.rMax; faint && about > 0 && !me.kneeOnRamp)
+        if (const double sectors = silhouetteFromSectors(about, m, outlineR); sectors > 0) perRay = sectors;
     // A barrel fading down its ramp into a dark fixture steps down fastest inside its outline:
     // where the rays show none, the drop at the ramp's foot is not taken for it.
     m->rMaxPx = perRay > 0 ? perRay : lopsided || me.kneeOnRamp ? 0 : me.rMax;

@@ -1,12 +1,14 @@
 #pragma once
 // What the ring search's parts share (ring_search.cpp, ring_search_outline.cpp,
 // ring_search_contact_edge.cpp, ring_search_original_face.cpp): the rays' and profiles' sizes,
-// two statistics of a derivative row, and the profile aligned on the contact edge. Private to
-// the search: nothing outside vision/ includes it.
+// the noise of a profile and two statistics of a derivative row, and the profile aligned on the contact edge. Private
+// to the search: nothing outside vision/ includes it.
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 
+#include "vision/radial_profile.h"
 #include "vision/ray_capacity.h"
 #include "vision/ring_search.h"
 
@@ -23,6 +25,12 @@ constexpr double kLocatorBlurSq = 0.92;
 // Seen obliquely, the contact edge's ramp is measured and its knee located on this many arcs
 // of the ring apiece (16 or 32 fine rays each).
 constexpr int kRampSectors = 8;
+// A 3-grey-level step blurred to σ = 2 px gives a coarse derivative of about 1200.
+constexpr int32_t kMinCoarseStrength = 1000;
+// A faint outline is located on this many sectors of the coarse rays, each pooling its middle
+// ray and the rays half a sector either side, and taken where this share of them shows it.
+constexpr int kOutlineSectors = 16;
+constexpr double kSectorOutlineCoverage = 0.5, kSectorOutlineSigmas = 3.0;
 
 // The robust σ (1.4826 × the median absolute value) of d[lo … hi].
 inline double robustSigma(const int32_t *d, int lo, int hi)
@@ -33,6 +41,23 @@ inline double robustSigma(const int32_t *d, int lo, int hi)
     if (n == 0) return 0;
     std::nth_element(tmp, tmp + n / 2, tmp + n);
     return 1.4826 * tmp[n / 2];
+}
+
+// The noise of profileDerivative on a mean profile, from its second differences: a
+// photograph's profile slopes over long stretches (the fixture's shadow, vignetting, a lit
+// barrel), which the derivative's own spread would count as noise; the second difference
+// sees only what changes from sample to sample. σ(s[j+1] − 2 s[j] + s[j−1]) = √6 σ, and the
+// derivative's weights (1, 2, 2, 1) give √10 σ.
+inline double derivativeNoise(const uint16_t *s, int count)
+{
+    int32_t tmp[kMaxCoarse];
+    int n = 0;
+    for (int j = 1; j + 1 < count; ++j)
+        if (s[j - 1] != kOutsideFrame && s[j] != kOutsideFrame && s[j + 1] != kOutsideFrame)
+            tmp[n++] = std::abs(int32_t(s[j + 1]) - 2 * int32_t(s[j]) + int32_t(s[j - 1]));
+    if (n == 0) return 0;
+    std::nth_element(tmp, tmp + n / 2, tmp + n);
+    return 1.4826 * tmp[n / 2] * std::sqrt(10.0 / 6.0);
 }
 
 // Whether d[i] is a peak of |d| that keeps its sign across its neighbours.

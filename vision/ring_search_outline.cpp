@@ -261,8 +261,9 @@ void RingSearch::outlineInsideRivals(OutlineRays *rays) const
 }
 
 double RingSearch::silhouetteFromRays(const double *outerR, double blurPx, EndFaceGeometry *m, bool *lopsided,
-                                      double *outlineR)
+                                      double *outlineR, bool *faint)
 {
+    *faint = false;
     m->silhouetteCoverage = 0;
     m->silhouetteScatterPx = 0;
     m->silhouetteCentreX = m->silhouetteCentreY = 0;
@@ -322,7 +323,74 @@ double RingSearch::silhouetteFromRays(const double *outerR, double blurPx, EndFa
     FitOptions opt;
     opt.maxHarmonics = 2;
     opt.minRejectPx = 2.0;
-    if (!fitBoundary(radius, valid, kCoarse, coarseCx_, coarseCy_, opt, &fit, outlineR) || fit.coverage < 0.4) return 0;
+    if (!fitBoundary(radius, valid, kCoarse, coarseCx_, coarseCy_, opt, &fit, outlineR) || fit.coverage < 0.4) {
+        *faint = true;
+        return 0;
+    }
+    *faint = fit.coverage < kSectorOutlineCoverage;
+    m->silhouetteCoverage = fit.coverage;
+    m->silhouetteScatterPx = fit.scatterPx;
+    m->silhouetteCentreX = fit.centreX;
+    m->silhouetteCentreY = fit.centreY;
+    return fit.rEqPx;
+}
+
+double RingSearch::silhouetteFromSectors(double rAboutPx, EndFaceGeometry *m, double *outlineR) const
+{
+    // A step of a few grey levels in a noisy frame (a dark barrel on a dark fixture) clears
+    // the step detector on some rays only. Pooled over a sector's rays, each about its middle
+    // ray so that the sectors keep the rays' even spacing, the step stands out of the pooled
+    // noise near where the rays that saw it (or the mean profile) place it. Searched over a
+    // few samples only, it needs three times the derivative's noise (the mean profile's free
+    // search, six); half the sectors must show it, round about the specimen (the fit's robust
+    // rejection): a shadow lobe or a highlight's flank does not.
+    constexpr int kPerSector = kCoarseRays / kOutlineSectors, kHalf = kPerSector / 2;
+    const double rA = kCoarseStart * r0, step = coarseStep(r0);
+    const int count = coarseCount(r0);
+    const int at = int((rAboutPx - rA) / step + 0.5);
+    const int reach = std::max(3, int(0.03 * r0 / step + 0.5));
+    if (at - reach < 3 || at + reach > count - 4) return 0;
+    // The outline's step's sign, as the mean profile shows it there.
+    const int32_t around = meanDeriv[at - 1] + meanDeriv[at] + meanDeriv[at + 1];
+    if (around == 0) return 0;
+    const int sign = around > 0 ? 1 : -1;
+    double radius[kOutlineSectors];
+    bool valid[kOutlineSectors];
+    for (int s = 0; s < kOutlineSectors; ++s) {
+        valid[s] = false;
+        uint32_t sum[kMaxCoarse] = {};
+        bool inside = true;
+        for (int k = -kHalf; k <= kHalf && inside; ++k) {
+            const uint16_t *row = coarse + size_t((s * kPerSector + k + kCoarseRays) % kCoarseRays) * kMaxCoarse;
+            inside = !anyOutsideFrame(row, count);
+            for (int j = 0; j < count && inside; ++j) sum[j] += row[j];
+        }
+        if (!inside) continue;
+        constexpr uint32_t n = 2 * kHalf + 1;
+        uint16_t pooled[kMaxCoarse];
+        for (int j = 0; j < count; ++j) pooled[j] = uint16_t((sum[j] + n / 2) / n);
+        int32_t d[kMaxCoarse];
+        profileDerivative(pooled, count, d);
+        const EdgePeak p = strongestEdge(d, count, at - reach, at + reach, sign, true);
+        if (!p.found || p.value < kSectorOutlineSigmas * derivativeNoise(pooled, count)) continue;
+        radius[s] = rA + p.position.toDouble() * step;
+        valid[s] = true;
+    }
+    BoundaryFit fit;
+    FitOptions opt;
+    opt.maxHarmonics = 1;
+    opt.minRejectPx = 2.0;
+    // The pooled peaks of a real outline lie on one circle to the coarse rays' own step; peaks
+    // that noise or a ragged edge placed near the mean profile's radius scatter beyond it.
+    if (!fitBoundary(radius, valid, kOutlineSectors, coarseCx_, coarseCy_, opt, &fit) ||
+        fit.coverage < kSectorOutlineCoverage || fit.scatterPx > step)
+        return 0;
+    double cosT[kCoarseRays], sinT[kCoarseRays];
+    for (int i = 0; i < kCoarseRays; ++i) {
+        const int fineIdx = i * (rays_ / kCoarseRays);
+        cosT[i] = rayCos_[fineIdx], sinT[i] = raySin_[fineIdx];
+    }
+    radiiAt(fit, cosT, sinT, kCoarseRays, outlineR);
     m->silhouetteCoverage = fit.coverage;
     m->silhouetteScatterPx = fit.scatterPx;
     m->silhouetteCentreX = fit.centreX;
