@@ -867,10 +867,9 @@ ErrorCode RingSearch::ringAbout(const MeanEdges &me, EndFaceGeometry *m, bool pr
     double outlineR[kCoarseRays];
     double perRay =
         silhouetteFromRays(outerR, edgeWidth >= 0 ? edgeWidth : kUnknownBlurPx, m, &lopsided, outlineR, &faint);
-    // Seen on under half the rays (which the reading takes for no silhouette), an outline the
-    // rays' own fit or the mean profile places is sought on the sectors' pooled rays about it.
-    if (const double about = perRay > 0 ? perRay : me.rMax; faint && about > 0 && !me.kneeOnRamp)
-        if (const double sectors = silhouetteFromSectors(about, m, outlineR); sectors > 0) perRay = sectors;
+    // An outline too faint for the rays' own fit, which the mean profile shows, is sought on
+    // the sectors' pooled rays about it.
+    if (faint && me.rMax > 0 && !me.kneeOnRamp) perRay = silhouetteFromSectors(me.rMax, m, outlineR);
     // A barrel fading down its ramp into a dark fixture steps down fastest inside its outline:
     // where the rays show none, the drop at the ramp's foot is not taken for it.
     m->rMaxPx = perRay > 0 ? perRay : lopsided || me.kneeOnRamp ? 0 : me.rMax;

@@ -187,15 +187,14 @@ struct RingSearch {
     // The per-ray fit's coverage, scatter and centre go to m.
     // outlineR: the fitted outline's radius at each coarse ray about the coarse centre
     // (kCoarseRays of them; written where the fit is returned).
-    // *faint: an outline on under half the rays, too few of them clearing the step detector's
-    // noise (not a lopsided band, not a step at the search's bound).
+    // *faint: no outline because too few rays cleared the step detector's noise for a fit
+    // (not a lopsided band, not a step at the search's bound).
     double silhouetteFromRays(const double *outerR, double blurPx, EndFaceGeometry *m, bool *lopsided, double *outlineR,
                               bool *faint);
-    // A faint outline placed at rAboutPx (by the rays' own fit on under half of them, or the
-    // mean profile), located on kOutlineSectors sectors' pooled rays about it; 0 unless half
-    // the sectors show it on one circle (coverage, scatter and centre to m, outlineR as
-    // silhouetteFromRays).
-    double silhouetteFromSectors(double rAboutPx, EndFaceGeometry *m, double *outlineR) const;
+    // A faint outline the mean profile shows at rMeanPx, located on kOutlineSectors sectors'
+    // pooled rays about it; 0 unless half the sectors show it on one circle (coverage, scatter
+    // and centre to m, outlineR as silhouetteFromRays).
+    double silhouetteFromSectors(double rMeanPx, EndFaceGeometry *m, double *outlineR) const;
     // One coarse ray's silhouette between samples lo and hi: the outermost clear step of a
     // detector w samples a side, located by one a quarter as wide (*atSample: its sample
     // position, sub-sample); false when no step stands out of the ray's noise. The detector's

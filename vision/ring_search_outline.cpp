@@ -327,7 +327,6 @@ double RingSearch::silhouetteFromRays(const double *outerR, double blurPx, EndFa
         *faint = true;
         return 0;
     }
-    *faint = fit.coverage < kSectorOutlineCoverage;
     m->silhouetteCoverage = fit.coverage;
     m->silhouetteScatterPx = fit.scatterPx;
     m->silhouetteCentreX = fit.centreX;
@@ -335,19 +334,19 @@ double RingSearch::silhouetteFromRays(const double *outerR, double blurPx, EndFa
     return fit.rEqPx;
 }
 
-double RingSearch::silhouetteFromSectors(double rAboutPx, EndFaceGeometry *m, double *outlineR) const
+double RingSearch::silhouetteFromSectors(double rMeanPx, EndFaceGeometry *m, double *outlineR) const
 {
     // A step of a few grey levels in a noisy frame (a dark barrel on a dark fixture) clears
-    // the step detector on some rays only. Pooled over a sector's rays, each about its middle
-    // ray so that the sectors keep the rays' even spacing, the step stands out of the pooled
-    // noise near where the rays that saw it (or the mean profile) place it. Searched over a
-    // few samples only, it needs three times the derivative's noise (the mean profile's free
-    // search, six); half the sectors must show it, round about the specimen (the fit's robust
-    // rejection): a shadow lobe or a highlight's flank does not.
+    // the step detector on a few rays only, while the mean profile shows it. Pooled over a
+    // sector's rays, each about its middle ray so that the sectors keep the rays' even
+    // spacing, the step stands out of the pooled noise near where the mean profile places it.
+    // Searched over a few samples only, it needs three times the derivative's noise (the mean
+    // profile's free search, six); half the sectors must show it, round about the specimen
+    // (the fit's robust rejection): a shadow lobe or a highlight's flank does not.
     constexpr int kPerSector = kCoarseRays / kOutlineSectors, kHalf = kPerSector / 2;
     const double rA = kCoarseStart * r0, step = coarseStep(r0);
     const int count = coarseCount(r0);
-    const int at = int((rAboutPx - rA) / step + 0.5);
+    const int at = int((rMeanPx - rA) / step + 0.5);
     const int reach = std::max(3, int(0.03 * r0 / step + 0.5));
     if (at - reach < 3 || at + reach > count - 4) return 0;
     // The outline's step's sign, as the mean profile shows it there.
