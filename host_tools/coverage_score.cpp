@@ -19,11 +19,6 @@ double median(std::vector<double> v)
     return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-bool hasColumn(const Manifest &m, const std::string &c)
-{
-    return std::find(m.columns.begin(), m.columns.end(), c) != m.columns.end();
-}
-
 double cell(const ManifestRow &r, const std::string &key)
 {
     double v;
@@ -73,16 +68,16 @@ bool scoreResults(const Manifest &results, const Manifest &truth, const ScoreOpt
 {
     *out = {};
     for (const char *c : {"id", "status", "mu", "mu_sigma"})
-        if (!hasColumn(results, c)) {
+        if (!results.hasColumn(c)) {
             *error = std::string("results: no '") + c + "' column";
             return false;
         }
     for (const char *c : {"id", "mu"})
-        if (!hasColumn(truth, c)) {
+        if (!truth.hasColumn(c)) {
             *error = std::string("truth: no '") + c + "' column";
             return false;
         }
-    const bool budget = hasColumn(results, "sigma_model");
+    const bool budget = results.hasColumn("sigma_model");
     std::map<std::string, const ManifestRow *> byId;
     for (const ManifestRow &r : results.rows) byId[r.get("id")] = &r;
 

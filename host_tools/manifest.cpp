@@ -1,5 +1,6 @@
 #include "host_tools/manifest.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -11,6 +12,11 @@ std::string ManifestRow::get(const std::string &key, const std::string &fallback
 {
     auto it = cells.find(key);
     return it == cells.end() || it->second.empty() ? fallback : it->second;
+}
+
+bool Manifest::hasColumn(const std::string &name) const
+{
+    return std::find(columns.begin(), columns.end(), name) != columns.end();
 }
 
 bool ManifestRow::has(const std::string &key) const

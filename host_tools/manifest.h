@@ -21,6 +21,8 @@ struct Manifest {
     std::vector<std::string> columns;
     std::vector<ManifestRow> rows;
     std::string baseDir; // paths in the manifest are relative to this
+
+    bool hasColumn(const std::string &name) const;
 };
 
 // Parses CSV text. Returns false (with `error`) only when there is no usable header.

@@ -86,7 +86,8 @@ int scoreCommand(const std::vector<std::string> &args)
         Manifest before;
         if (!readManifest(againstPath, &before, &err)) throw std::runtime_error("--against: " + err);
         ComparisonReport cmp;
-        if (!compareResults(before, results, truth, opt, &cmp, &err)) throw std::runtime_error(err);
+        if (!compareResults(before, results, truth, opt, &cmp, &err))
+            throw std::runtime_error("--against (before) and --results (after): " + err);
         std::cout << "\nagainst " << againstPath << ": " << formatComparison(cmp);
     }
     return 0;

@@ -9,11 +9,6 @@ namespace icacam::host {
 
 namespace {
 
-bool hasColumn(const Manifest &m, const std::string &c)
-{
-    return std::find(m.columns.begin(), m.columns.end(), c) != m.columns.end();
-}
-
 ReadingSide side(const ManifestRow *r, double muTrue, const ScoreOptions &opt, RunCounts *counts)
 {
     ReadingSide s;
@@ -52,12 +47,12 @@ bool compareResults(const Manifest &before, const Manifest &after, const Manifes
     *out = {};
     for (const auto &[name, m] : {std::pair<const char *, const Manifest *>{"before", &before}, {"after", &after}})
         for (const char *c : {"id", "status", "mu"})
-            if (!hasColumn(*m, c)) {
+            if (!m->hasColumn(c)) {
                 *error = std::string(name) + ": no '" + c + "' column";
                 return false;
             }
     for (const char *c : {"id", "mu"})
-        if (!hasColumn(truth, c)) {
+        if (!truth.hasColumn(c)) {
             *error = std::string("truth: no '") + c + "' column";
             return false;
         }

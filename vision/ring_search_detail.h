@@ -1,8 +1,8 @@
 #pragma once
 // What the ring search's parts share (ring_search.cpp, ring_search_outline.cpp,
 // ring_search_contact_edge.cpp, ring_search_original_face.cpp): the rays' and profiles' sizes,
-// the noise of a profile and two statistics of a derivative row, and the profile aligned on the contact edge. Private
-// to the search: nothing outside vision/ includes it.
+// a profile's noise, two statistics of a derivative row, and the profile aligned on the
+// contact edge. Private to the search: nothing outside vision/ includes it.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>

@@ -45,6 +45,16 @@ bool rivalBeyond(const int32_t *d, int count, int at, int end)
     return false;
 }
 
+// The silhouette's fit as the geometry reports it; its equivalent radius.
+double outlineTaken(const BoundaryFit &fit, EndFaceGeometry *m)
+{
+    m->silhouetteCoverage = fit.coverage;
+    m->silhouetteScatterPx = fit.scatterPx;
+    m->silhouetteCentreX = fit.centreX;
+    m->silhouetteCentreY = fit.centreY;
+    return fit.rEqPx;
+}
+
 } // namespace
 
 bool RingSearch::outlineRivalled(double rMaxPx) const
@@ -327,11 +337,7 @@ double RingSearch::silhouetteFromRays(const double *outerR, double blurPx, EndFa
         *faint = true;
         return 0;
     }
-    m->silhouetteCoverage = fit.coverage;
-    m->silhouetteScatterPx = fit.scatterPx;
-    m->silhouetteCentreX = fit.centreX;
-    m->silhouetteCentreY = fit.centreY;
-    return fit.rEqPx;
+    return outlineTaken(fit, m);
 }
 
 double RingSearch::silhouetteFromSectors(double rMeanPx, EndFaceGeometry *m, double *outlineR) const
@@ -357,7 +363,8 @@ double RingSearch::silhouetteFromSectors(double rMeanPx, EndFaceGeometry *m, dou
     bool valid[kOutlineSectors];
     for (int s = 0; s < kOutlineSectors; ++s) {
         valid[s] = false;
-        uint32_t sum[kMaxCoarse] = {};
+        uint32_t sum[kMaxCoarse];
+        std::fill_n(sum, count, 0u);
         bool inside = true;
         for (int k = -kHalf; k <= kHalf && inside; ++k) {
             const uint16_t *row = coarse + size_t((s * kPerSector + k + kCoarseRays) % kCoarseRays) * kMaxCoarse;
@@ -390,11 +397,7 @@ double RingSearch::silhouetteFromSectors(double rMeanPx, EndFaceGeometry *m, dou
         cosT[i] = rayCos_[fineIdx], sinT[i] = raySin_[fineIdx];
     }
     radiiAt(fit, cosT, sinT, kCoarseRays, outlineR);
-    m->silhouetteCoverage = fit.coverage;
-    m->silhouetteScatterPx = fit.scatterPx;
-    m->silhouetteCentreX = fit.centreX;
-    m->silhouetteCentreY = fit.centreY;
-    return fit.rEqPx;
+    return outlineTaken(fit, m);
 }
 
 } // namespace icacam::vision

@@ -165,10 +165,7 @@ bool readJournalManifest(const std::string &journalDir, const std::string &refer
     *info = {};
     Manifest ref;
     if (!readManifest(referenceCsv, &ref, error)) return false;
-    auto hasColumn = [&](const char *c) {
-        return std::find(ref.columns.begin(), ref.columns.end(), c) != ref.columns.end();
-    };
-    const std::string idColumn = hasColumn("id") ? "id" : hasColumn("record_id") ? "record_id" : "";
+    const std::string idColumn = ref.hasColumn("id") ? "id" : ref.hasColumn("record_id") ? "record_id" : "";
     if (idColumn.empty()) {
         *error = "reference CSV '" + referenceCsv + "' has no id (or record_id) column";
         return false;
@@ -176,7 +173,7 @@ bool readJournalManifest(const std::string &journalDir, const std::string &refer
     const std::map<std::string, const ManifestRow *> byId = referenceById(ref, idColumn, info);
     Geometry geometry;
     geometry.settings = readSettings(journalDir);
-    geometry.fromReference = hasColumn("d0_mm") && hasColumn("h0_mm");
+    geometry.fromReference = ref.hasColumn("d0_mm") && ref.hasColumn("h0_mm");
     geometry.fromSettings = geometry.settings.count("d0_mm") && geometry.settings.count("h0_mm");
     const fs::path journal = fs::path(journalDir) / "journal.jsonl";
     std::ifstream in(journal);
