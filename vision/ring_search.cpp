@@ -870,9 +870,29 @@ ErrorCode RingSearch::ringAbout(const MeanEdges &me, EndFaceGeometry *m, bool pr
     // An outline too faint for the rays' own fit, which the mean profile shows, is sought on
     // the sectors' pooled rays about it.
     if (faint && me.rMax > 0 && !me.kneeOnRamp) perRay = silhouetteFromSectors(me.rMax, m, outlineR);
-    // A barrel fading down its ramp into a dark fixture steps down fastest inside its outline:
-    // where the rays show none, the drop at the ramp's foot is not taken for it.
-    m->rMaxPx = perRay > 0 ? perRay : lopsided || me.kneeOnRamp ? 0 : me.rMax;
+    // A step read on a highlight line's outer flank is the line's, not the barrel's: the
+    // outline is the step beyond it, or none (outlineBeyondHighlight).
+    const double blurPx = edgeWidth >= 0 ? edgeWidth : kUnknownBlurPx;
+    if (perRay > 0) {
+        const HighlightOutline h = outlineBeyondHighlight(outerR, outlineR, blurPx);
+        if (h.isLine && h.found) {
+            perRay += h.shiftPx;
+            for (double &r : outlineR) r += h.shiftPx;
+        } else if (h.isLine) {
+            perRay = 0;
+            m->silhouetteCoverage = m->silhouetteScatterPx = 0;
+            m->silhouetteCentreX = m->silhouetteCentreY = 0;
+        }
+        m->rMaxPx = perRay;
+    } else if (!lopsided && !me.kneeOnRamp && me.rMax > 0) {
+        // A barrel fading down its ramp into a dark fixture steps down fastest inside its
+        // outline: where the rays show none, the drop at the ramp's foot is not taken for it.
+        std::fill_n(outlineR, kCoarseRays, me.rMax);
+        const HighlightOutline h = outlineBeyondHighlight(outerR, outlineR, blurPx);
+        m->rMaxPx = !h.isLine ? me.rMax : h.found ? me.rMax + h.shiftPx : 0;
+    } else {
+        m->rMaxPx = 0;
+    }
     if (lopsided) m->imageFlags |= kImageBarrelOblique;
     if (m->rMaxPx > 0 && outlineRivalled(m->rMaxPx)) {
         m->imageFlags |= kImageOutlineAmbiguous;

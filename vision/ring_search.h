@@ -220,6 +220,13 @@ struct RingSearch {
     // band: the level inside it rose from farther in by at least half the step (a highlight
     // line on the barrel, its outer flank a step like the outline's).
     bool highlightsOuterFlank(double rPx, int w) const;
+    // The outline found on a highlight line's outer flank (isLine), and the barrel's own
+    // outline beyond it: found, shiftPx outwards from the fitted one.
+    struct HighlightOutline {
+        bool isLine, found;
+        double shiftPx;
+    };
+    HighlightOutline outlineBeyondHighlight(const double *outerR, const double *outlineR, double blurPx) const;
     // Whether the mean profile shows a second step of the outline's sign, as strong, just
     // outside it (the fixture's shadow edge): then the outline cannot be told from it.
     bool outlineRivalled(double rMaxPx) const;

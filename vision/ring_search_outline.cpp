@@ -45,6 +45,26 @@ bool rivalBeyond(const int32_t *d, int count, int at, int end)
     return false;
 }
 
+// Whether a ray's step at sample `at` (its detector w samples a side) is a bright line's outer
+// flank: the w samples inside it rise above both the barrel band from barrelFrom to 2w inside
+// it (its median) and the w samples beyond, by kMinLineRise and by twice the band's own step
+// to beyond.
+bool stepOnHighlight(const uint16_t *row, int barrelFrom, int at, int w)
+{
+    const int to = at - 2 * w;
+    if (to - barrelFrom < w) return false;
+    uint16_t band[kMaxCoarse];
+    int nb = 0;
+    for (int j = barrelFrom; j <= to; ++j) band[nb++] = row[j];
+    std::nth_element(band, band + nb / 2, band + nb);
+    double nearSum = 0, outSum = 0;
+    for (int j = at - w; j < at; ++j) nearSum += row[j];
+    for (int j = at + 1; j <= at + w; ++j) outSum += row[j];
+    const double level = band[nb / 2], near = nearSum / w, out = outSum / w;
+    const double rise = near - std::max(level, out);
+    return rise >= kMinLineRise && rise >= 2 * std::fabs(level - out);
+}
+
 // The silhouette's fit as the geometry reports it; its equivalent radius.
 double outlineTaken(const BoundaryFit &fit, EndFaceGeometry *m)
 {
@@ -307,6 +327,23 @@ double RingSearch::silhouetteFromRays(const double *outerR, double blurPx, EndFa
             valid[i] = true;
         }
     }
+    // Rays whose step is a highlight line's flank did not see the outline beyond it; where
+    // fewer than half do, the others did (a faint outline, clear on some rays only), and the
+    // line's rays are left out. Where most do, the line is what the fit finds, and
+    // outlineBeyondHighlight reads the outline beyond it.
+    {
+        bool onLine[kCoarse];
+        int found = 0, lines = 0;
+        for (int i = 0; i < kCoarse; ++i) {
+            onLine[i] = false;
+            if (!valid[i]) continue;
+            ++found;
+            const uint16_t *row = coarse + size_t(i) * kMaxCoarse;
+            lines += onLine[i] = stepOnHighlight(row, rays.barrelFrom[i], int((radius[i] - rA) / step + 0.5), w);
+        }
+        if (2 * lines < found)
+            for (int i = 0; i < kCoarse; ++i) valid[i] = valid[i] && !onLine[i];
+    }
     outlineInsideRivals(&rays);
     // Seen straight on, the barrel shows as a band of even width outside the contact edge.
     // Seen obliquely (a tilted camera, or one close enough that the rays fan out by tens of
@@ -398,6 +435,86 @@ double RingSearch::silhouetteFromSectors(double rMeanPx, EndFaceGeometry *m, dou
     }
     radiiAt(fit, cosT, sinT, kCoarseRays, outlineR);
     return outlineTaken(fit, m);
+}
+
+RingSearch::HighlightOutline RingSearch::outlineBeyondHighlight(const double *outerR, const double *outlineR,
+                                                                double blurPx) const
+{
+    // Lit along the line of sight, a barrel is darkest at its limb, where its surface turns
+    // edge-on to the camera and the ring light; a bright line on it is a highlight where the
+    // surface faces the lens, inside the outline. A step found at such a line's outer flank
+    // (the coarse rays aligned on it: a peak above both the barrel band inside it and the
+    // level beyond) is the highlight's edge, not the barrel's. The outline is then the step
+    // from the band's level to the level beyond, outside the line, where the two differ; where
+    // they do not, the barrel meets a background of its own shade and shows no outline.
+    constexpr int kCoarse = kCoarseRays;
+    const double rA = kCoarseStart * r0, step = coarseStep(r0);
+    const int count = coarseCount(r0);
+    const int w = std::max(4, int(0.035 * r0 / step));
+    const int kOut = w + std::max(4, int(0.06 * r0 / step + 0.5)); // how far beyond the line the outline is sought
+    const double barrelFrom = std::max(2.0, 3 * blurPx);
+    // How far inside the outline the band reaches on most rays (past the contact edge's blur).
+    double span[kCoarse];
+    int ns = 0;
+    for (int i = 0; i < kCoarse; ++i) {
+        const int fineIdx = i * (rays_ / kCoarse);
+        const double ro = outerR[fineIdx] + (cx - coarseCx_) * rayCos_[fineIdx] + (cy - coarseCy_) * raySin_[fineIdx];
+        span[ns++] = (outlineR[i] - ro - barrelFrom) / step;
+    }
+    std::nth_element(span, span + ns / 2, span + ns);
+    const int kIn = std::min(kMaxCoarse / 2, int(span[ns / 2]));
+    HighlightOutline none{};
+    if (kIn < 3 * w) return none; // too narrow a band to tell a line inside it
+    // The rays' mean aligned on the outline, sample k − kIn at offset k − kIn coarse steps.
+    const int n = kIn + kOut + 1;
+    double mean[kMaxCoarse];
+    for (int k = 0; k < n; ++k) {
+        double sum = 0;
+        int used = 0;
+        for (int i = 0; i < kCoarse; ++i) {
+            const double at = (outlineR[i] - rA) / step + (k - kIn);
+            const int j = int(std::floor(at));
+            const uint16_t *row = coarse + size_t(i) * kMaxCoarse;
+            if (j < 0 || j + 1 >= count || row[j] == kOutsideFrame || row[j + 1] == kOutsideFrame) continue;
+            sum += row[j] + (at - j) * (row[j + 1] - row[j]);
+            ++used;
+        }
+        if (4 * used < kCoarse) return none;
+        mean[k] = sum / used;
+    }
+    auto median = [&](int a, int b) {
+        double tmp[kMaxCoarse];
+        int m = 0;
+        for (int k = a; k <= b; ++k) tmp[m++] = mean[k];
+        std::nth_element(tmp, tmp + m / 2, tmp + m);
+        return tmp[m / 2];
+    };
+    const double band = median(0, kIn - 2 * w), beyond = median(n - 1 - w, n - 1);
+    int top = kIn - w;
+    for (int k = kIn - w; k <= kIn; ++k)
+        if (mean[k] > mean[top]) top = k;
+    const double rise = mean[top] - std::max(band, beyond), stepSize = std::fabs(band - beyond);
+    if (!(rise >= kMinLineRise && rise >= 2 * stepSize)) return none;
+    HighlightOutline h{};
+    h.isLine = true;
+    if (stepSize < kMinOutlineStep) return h; // the barrel's shade beyond the line is the background's
+    // The outline: beyond the line, where the profile crosses half way from the band's level
+    // to the level beyond (falling to a darker background; rising to a lighter one after the
+    // barrel's dark limb).
+    const double half = 0.5 * (band + beyond);
+    const bool falls = beyond < band;
+    int k = top + 1;
+    if (!falls)
+        while (k < n - w && mean[k] >= half) ++k;
+    for (; k < n - w; ++k) {
+        if ((mean[k] < half) == falls) {
+            const double f = (mean[k - 1] - half) / (mean[k - 1] - mean[k]);
+            h.shiftPx = (k - 1 + f - kIn) * step;
+            h.found = true;
+            return h;
+        }
+    }
+    return h;
 }
 
 } // namespace icacam::vision

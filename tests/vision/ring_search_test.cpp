@@ -277,6 +277,37 @@ TEST(RingSearch, AFaintOutlineIsFoundOnTheSectorsPooledRays)
     }
 }
 
+// Lit along the line of sight, a barrel's limb is its darkest part; a bright line on it is a
+// highlight where its surface faces the lens, inside the outline (the development set draws
+// it 40 % of the band's width inside, 6 grey levels above a background just darker than the
+// barrel). Every ray's outermost clear step is the line's outer flank: read there, the
+// silhouette is 1–2 % short and the reading takes it for another height. The outline is the
+// band's step to the background beyond the line; where the barrel is the background's shade
+// there is none, and no silhouette is made of the line.
+TEST(RingSearch, AHighlightLineIsNotTheOutline)
+{
+    test::SyntheticEndFace face;
+    face.face = 150, face.ica = 170, face.barrel = 47, face.background = 41;
+    face.highlight = 32, face.highlightGap = 0.4 * (face.rMax - face.rOuter), face.highlightSigma = 3;
+    face.blurSigma = 1.2;
+    auto px = face.draw();
+    addNoise(&px, 7);
+    Search s;
+    ASSERT_EQ(s.run(face.view(px), face.r0, face.cx, face.cy), ErrorCode::None);
+    EXPECT_NEAR(s.m.rMaxPx, face.rMax, 1.0) << "the line's flank lies " << face.highlightGap << " px inside";
+    face.background = face.barrel;
+    px = face.draw();
+    addNoise(&px, 7);
+    ASSERT_EQ(s.run(face.view(px), face.r0, face.cx, face.cy), ErrorCode::None);
+    EXPECT_EQ(s.m.rMaxPx, 0) << "an outline on the line's flank, " << face.rMax - s.m.rMaxPx << " px inside";
+    EXPECT_EQ(s.m.silhouetteCoverage, 0);
+    face.barrel = 41, face.background = 47;
+    px = face.draw();
+    addNoise(&px, 7);
+    ASSERT_EQ(s.run(face.view(px), face.r0, face.cx, face.cy), ErrorCode::None);
+    EXPECT_NEAR(s.m.rMaxPx, face.rMax, 1.0) << "a lighter background";
+}
+
 TEST(RingSearch, AnOffCentreStartIsAbsorbedByTheFit)
 {
     // The centre refinement can leave the search a few pixels off the axis: the boundaries
