@@ -93,11 +93,11 @@ void readFace(const FaceInputs &in, uint32_t f, Reading *out)
 
     const MuReading read = readMu(F, model, spec, uF, rF, assumed.declared);
     out->mu = read.estimate.mu;
-    if ((f & kFlagNarrowRing) &&
+    if ((f & kFlagNarrowRing) && !edges.ringUnresolved &&
         narrowRingCorroborated(F, spec, uF, rF, out->mu, edges.narrowWidenMm * uF / u, silhouette))
         f &= ~kFlagNarrowRing;
     double uSigmaEdgesMm = edges.uSigmaEdgesMm;
-    if ((f & kFlagNarrowRing) && edges.ringFromProfile)
+    if ((f & kFlagNarrowRing) && (edges.ringFromProfile || edges.ringUnresolved))
         uSigmaEdgesMm = std::hypot(uSigmaEdgesMm, unseenRingSigmaMm(F, spec, uF, rF, out->mu));
     out->budget = budgetOf(F, model, spec, uF, rF, sr, uSigmaEdgesMm, read.bias);
     out->muSigma = combinedSigma(out->budget);

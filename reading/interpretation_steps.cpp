@@ -118,6 +118,8 @@ constexpr double kInnerEdgeModelMm = 0.005, kOuterEdgeModelMm = 0.001;
 // 0.9 px wide (drawn 640 × 480 rings of 2.6–2.9 px read 3.1–3.4 px, with Δμ up to 0.012):
 // a ring read under 3.5 px may be one of those, a finding whichever path measured it.
 constexpr double kNarrowRingFindingPx = 3.5, kNarrowRingWidenPx = 0.9;
+// A ring is resolved where its two edges lie at least this many blur σ apart.
+constexpr double kResolvedRingBlurs = 2.0;
 // An edge blurred beyond σ 2.6 px: the two-step fit of a ring under 6 px loses its edges.
 constexpr double kBlurredPx = 2.6;
 // A photograph's narrow-ring fit may instead read two steps of a wide ring's surroundings (a
@@ -333,6 +335,17 @@ PlaneMapping mapFace(const EndFaceGeometry &g, const SpecimenSpec &spec, const P
     return p;
 }
 
+namespace {
+// The optics blur both edges alike, so the narrower one's width is theirs where the rays
+// located both: the contact edge's takes in the barrel's ramp beyond it (contact_edge_ramp)
+// and, across a ring of a few pixels, the other edge's flank; a drawn original face's ragged
+// texture boundary widens its own.
+double opticsBlurPx(const EndFaceGeometry &g)
+{
+    return g.innerEdgeWidthPx > 0 ? std::min(g.innerEdgeWidthPx, g.edgeWidthPx) : g.edgeWidthPx;
+}
+} // namespace
+
 EdgeSigma edgeSigma(const EndFaceGeometry &g, const PlaneMapping &p, bool calibrated)
 {
     // The fits' scatter and a 0.1 px location floor per boundary, and the edge model's error
@@ -347,6 +360,12 @@ EdgeSigma edgeSigma(const EndFaceGeometry &g, const PlaneMapping &p, bool calibr
     e.uSigmaEdgesMm = std::hypot(e.uSigmaMm, std::hypot(kInnerEdgeModelMm, kOuterEdgeModelMm));
     e.narrowWidenMm = kNarrowRingWidenPx * p.mmPerPx;
     e.ringFromProfile = (g.imageFlags & vision::kImageNarrowRingFit) != 0;
+    // Two steps blurred by σ and closer than 2σ show one derivative peak, not two: such a ring
+    // is not resolved, and what the fit splits into two edges may as well be one edge falling
+    // into the barrel's ramp (rendered photographs whose face and ring are one shade: the
+    // contact edge read as R_i and the ramp's knee as R_o, 4.2–4.5 px apart at σ 2.1–2.3 px,
+    // μ 0.06–0.2 low, the outline read 2 % short agreeing with the μ read).
+    e.ringUnresolved = g.outer.rEqPx - g.inner.rEqPx < kResolvedRingBlurs * opticsBlurPx(g);
     if (contactEdgeOnRamp(g)) e.uSigmaEdgesMm = std::hypot(e.uSigmaEdgesMm, g.contactRampPx * p.mmPerPx);
     if (g.imageFlags & (vision::kImageContactEdgeByTilt | vision::kImageTiltConfirms))
         e.uSigmaEdgesMm = std::hypot(e.uSigmaEdgesMm, g.tiltSigmaPx * p.mmPerPx);
@@ -378,12 +397,8 @@ uint32_t imageChecks(const EndFaceGeometry &g, const PlaneMapping &p, const Edge
     if (*centreOffsetPx > std::max(3.0, 0.012 * r0Px)) f |= kFlagCentreOffset;
     if (e.sharedEllipse && std::min(p.inner.ellipticity, p.outer.ellipticity) > kTiltEllipticityMax)
         f |= kFlagElliptical;
-    if (g.outer.rEqPx - g.inner.rEqPx < kNarrowRingFindingPx) f |= kFlagNarrowRing;
-    // The optics blur both edges alike, so the narrower one's width is theirs where the rays
-    // located both: the contact edge's takes in the barrel's ramp beyond it (contact_edge_ramp)
-    // and, across a ring of a few pixels, the other edge's flank; a drawn original face's
-    // ragged texture boundary widens its own.
-    const double blurPx = g.innerEdgeWidthPx > 0 ? std::min(g.innerEdgeWidthPx, g.edgeWidthPx) : g.edgeWidthPx;
+    if (g.outer.rEqPx - g.inner.rEqPx < kNarrowRingFindingPx || e.ringUnresolved) f |= kFlagNarrowRing;
+    const double blurPx = opticsBlurPx(g);
     if (blurPx > kBlurredPx) f |= kFlagBlurred;
     if (contactEdgeOnRamp(g)) f |= kFlagContactEdgeRamp;
     if (g.saturatedFraction > 0.02) f |= kFlagSaturated;

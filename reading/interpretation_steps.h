@@ -47,6 +47,9 @@ struct EdgeSigma {
     double narrowWidenMm = 0;   // how much wider a ring read narrow may read than it is
     // No ray saw the original face's edge: the profile alone read the ring (narrow_ring).
     bool ringFromProfile = false;
+    // The ring's two edges lie closer than twice their blur: not resolved (narrow_ring), and
+    // neither the outline nor a small widening vouches for the width read.
+    bool ringUnresolved = false;
 };
 EdgeSigma edgeSigma(const vision::EndFaceGeometry &g, const PlaneMapping &p, bool calibrated);
 

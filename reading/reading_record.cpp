@@ -112,7 +112,8 @@ const char *findingWords(int bit)
         "the end face looks elliptical: square the camera to the fixture or calibrate it",
         "the boundaries are not concentric: square the camera or check the specimen",
         "the silhouette says the scale is off: check mm_per_px on the end-face plane or declare h_final_mm",
-        "the ICA reads only a few pixels wide: a finer scale is needed; where the original face shows no edge "
+        "the ICA reads only a few pixels wide, or narrower than twice its edges' blur: a finer scale or a sharper "
+        "focus is needed; where the original face shows no edge "
         "of its own, the ring read may be the contact edge and the barrel's shoulder beyond it (mu low): light the "
         "face and the ring apart",
         "no barrel silhouette: the scale and the final height are unchecked; declare h_final_mm",

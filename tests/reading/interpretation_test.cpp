@@ -340,6 +340,27 @@ TEST(Interpretation, ARingTheRaysDidNotSeeMayBeWiderThanRead)
     EXPECT_GT(unseen.budget.edges, unseen.budget.reduction);
 }
 
+// Two edges closer than twice their blur show one derivative peak: a ring read so is not
+// resolved, and the two steps the fit found may be the contact edge's fall and the barrel's
+// knee beside a face as bright as the ring. Neither the outline nor a small widening vouches
+// for it (a warning, U reaching a ring as wide as the search looks); the same width between
+// sharp edges is a ring like any other.
+TEST(Interpretation, ARingNarrowerThanTwiceItsBlurIsNotResolved)
+{
+    EndFaceGeometry g = face(1.0, false);
+    g.inner.rEqPx = g.outer.rEqPx - 4.4;
+    g.edgeWidthPx = 1.0;
+    const Reading sharp = interpret(g);
+    EXPECT_FALSE(sharp.flags & kFlagNarrowRing) << sharp.flags;
+    g.edgeWidthPx = 2.3;
+    const Reading blurred = interpret(g);
+    EXPECT_EQ(blurred.status, Status::Warn);
+    EXPECT_TRUE(blurred.flags & kFlagNarrowRing) << blurred.flags;
+    EXPECT_DOUBLE_EQ(blurred.mu, sharp.mu);
+    EXPECT_LT(blurred.mu, kMu - 0.05) << "read low";
+    EXPECT_GT(2 * blurred.muSigma, kMu - blurred.mu) << "U covers a ring the fit did not resolve";
+}
+
 // An outline on fewer than half the rays was not found: the view is one without a silhouette
 // (no_silhouette), not one whose silhouette contradicts the barrel (silhouette_unreliable).
 TEST(Interpretation, AnOutlineOnFewRaysIsNoSilhouette)
