@@ -34,6 +34,8 @@ constexpr double kSectorOutlineCoverage = 0.5, kSectorOutlineSigmas = 3.0;
 // A highlight line on the barrel rises this far (Q8 grey levels) above the levels either side;
 // the barrel's outline beyond it is a step of at least this much.
 constexpr double kMinLineRise = 4 * 256, kMinOutlineStep = 3 * 256;
+// The original face's edge steps by at least this many times the face texture's σ.
+constexpr double kTextureSigmas = 3.0;
 
 // The robust σ (1.4826 × the median absolute value) of d[lo … hi].
 inline double robustSigma(const int32_t *d, int lo, int hi)

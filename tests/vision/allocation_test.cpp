@@ -76,7 +76,12 @@ TEST(Allocation, NoneReadingAnyUnitPhotograph)
             const long before = icacam::test::allocationCount();
             const reading::Reading r = instrument.read(v, spec);
             const long after = icacam::test::allocationCount();
-            EXPECT_TRUE(r.hasValue()) << id << ": " << vision::errorMessage(r.error);
+            // lowres-s3-0015's face and ring are one shade: its original face shows no edge
+            // (tests/data/photo/README.md), and that error's path allocates nothing either.
+            if (id == "lowres-s3-0015")
+                EXPECT_EQ(r.error, vision::ErrorCode::InnerEdgeNotFound) << id;
+            else
+                EXPECT_TRUE(r.hasValue()) << id << ": " << vision::errorMessage(r.error);
             EXPECT_EQ(after - before, 0) << id << " (tone_gamma " << gamma << "): heap allocations during read()";
         }
     }
