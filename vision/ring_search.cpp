@@ -863,36 +863,21 @@ ErrorCode RingSearch::ringAbout(const MeanEdges &me, EndFaceGeometry *m, bool pr
     m->outer = outer;
     // The silhouette per coarse ray refines the mean profile's estimate (the mean profile
     // blurs a weak barrel/background step and can name a highlight's flank instead).
-    bool lopsided = false, faint = false;
+    bool lopsided = false, faint = false, linesSeen = false;
     double outlineR[kCoarseRays];
-    double perRay =
-        silhouetteFromRays(outerR, edgeWidth >= 0 ? edgeWidth : kUnknownBlurPx, m, &lopsided, outlineR, &faint);
+    double perRay = silhouetteFromRays(outerR, edgeWidth >= 0 ? edgeWidth : kUnknownBlurPx, m, &lopsided, outlineR,
+                                       &faint, &linesSeen);
     // An outline too faint for the rays' own fit, which the mean profile shows, is sought on
     // the sectors' pooled rays about it.
-    if (faint && me.rMax > 0 && !me.kneeOnRamp) perRay = silhouetteFromSectors(me.rMax, m, outlineR);
-    // A step read on a highlight line's outer flank is the line's, not the barrel's: the
-    // outline is the step beyond it, or none (outlineBeyondHighlight).
-    const double blurPx = edgeWidth >= 0 ? edgeWidth : kUnknownBlurPx;
-    if (perRay > 0) {
-        const HighlightOutline h = outlineBeyondHighlight(outerR, outlineR, blurPx);
-        if (h.isLine && h.found) {
-            perRay += h.shiftPx;
-            for (double &r : outlineR) r += h.shiftPx;
-        } else if (h.isLine) {
-            perRay = 0;
-            m->silhouetteCoverage = m->silhouetteScatterPx = 0;
-            m->silhouetteCentreX = m->silhouetteCentreY = 0;
-        }
-        m->rMaxPx = perRay;
-    } else if (!lopsided && !me.kneeOnRamp && me.rMax > 0) {
-        // A barrel fading down its ramp into a dark fixture steps down fastest inside its
-        // outline: where the rays show none, the drop at the ramp's foot is not taken for it.
-        std::fill_n(outlineR, kCoarseRays, me.rMax);
-        const HighlightOutline h = outlineBeyondHighlight(outerR, outlineR, blurPx);
-        m->rMaxPx = !h.isLine ? me.rMax : h.found ? me.rMax + h.shiftPx : 0;
-    } else {
-        m->rMaxPx = 0;
+    bool fromSectors = false;
+    if (faint && me.rMax > 0 && !me.kneeOnRamp) {
+        perRay = silhouetteFromSectors(me.rMax, m, outlineR);
+        fromSectors = true;
     }
+    // Where some rays stepped on a bright line, the fit is held against one on their aligned
+    // mean: the outline lies beyond a highlight line, or is not seen (settleOutline).
+    perRay = settleOutline(me, outerR, edgeWidth >= 0 ? edgeWidth : kUnknownBlurPx, lopsided,
+                           perRay > 0 && (linesSeen || fromSectors), perRay, outlineR, m);
     if (lopsided) m->imageFlags |= kImageBarrelOblique;
     if (m->rMaxPx > 0 && outlineRivalled(m->rMaxPx)) {
         m->imageFlags |= kImageOutlineAmbiguous;

@@ -188,9 +188,10 @@ struct RingSearch {
     // outlineR: the fitted outline's radius at each coarse ray about the coarse centre
     // (kCoarseRays of them; written where the fit is returned).
     // *faint: no outline because too few rays cleared the step detector's noise for a fit
-    // (not a lopsided band, not a step at the search's bound).
+    // (not a lopsided band, not a step at the search's bound). *linesSeen: some rays' step is
+    // a bright line's outer flank (left out of the fit where they are under half the rays).
     double silhouetteFromRays(const double *outerR, double blurPx, EndFaceGeometry *m, bool *lopsided, double *outlineR,
-                              bool *faint);
+                              bool *faint, bool *linesSeen);
     // A faint outline the mean profile shows at rMeanPx, located on kOutlineSectors sectors'
     // pooled rays about it; 0 unless half the sectors show it on one circle (coverage, scatter
     // and centre to m, outlineR as silhouetteFromRays).
@@ -227,6 +228,12 @@ struct RingSearch {
         double shiftPx;
     };
     HighlightOutline outlineBeyondHighlight(const double *outerR, const double *outlineR, double blurPx) const;
+    // The silhouette taken: the rays' (or the sectors') fit perRay, read beyond a highlight
+    // line where onLineSuspected, else the mean profile's (me.rMax) unless the band is
+    // lopsided or the drop is a ramp's foot. Sets m->rMaxPx; returns perRay as settled (0
+    // where the fit was a line's with nothing beyond it).
+    double settleOutline(const MeanEdges &me, const double *outerR, double blurPx, bool lopsided, bool onLineSuspected,
+                         double perRay, double *outlineR, EndFaceGeometry *m) const;
     // Whether the mean profile shows a second step of the outline's sign, as strong, just
     // outside it (the fixture's shadow edge): then the outline cannot be told from it.
     bool outlineRivalled(double rMaxPx) const;

@@ -53,14 +53,16 @@ bool stepOnHighlight(const uint16_t *row, int barrelFrom, int at, int w)
 {
     const int to = at - 2 * w;
     if (to - barrelFrom < w) return false;
+    double nearSum = 0, outSum = 0;
+    for (int j = at - w; j < at; ++j) nearSum += row[j];
+    for (int j = at + 1; j <= at + w; ++j) outSum += row[j];
+    const double near = nearSum / w, out = outSum / w;
+    if (near - out < kMinLineRise) return false; // no brighter than beyond it: no line
     uint16_t band[kMaxCoarse];
     int nb = 0;
     for (int j = barrelFrom; j <= to; ++j) band[nb++] = row[j];
     std::nth_element(band, band + nb / 2, band + nb);
-    double nearSum = 0, outSum = 0;
-    for (int j = at - w; j < at; ++j) nearSum += row[j];
-    for (int j = at + 1; j <= at + w; ++j) outSum += row[j];
-    const double level = band[nb / 2], near = nearSum / w, out = outSum / w;
+    const double level = band[nb / 2];
     const double rise = near - std::max(level, out);
     return rise >= kMinLineRise && rise >= 2 * std::fabs(level - out);
 }
@@ -162,39 +164,45 @@ bool RingSearch::silhouetteOnRay(const uint16_t *row, int lo, int hi, int search
     const double noise = 1.4826 * tmp[nt / 2];
     const double threshold = std::max(3.0 * noise, 4.0 * 256 * w);
     const double narrowThreshold = std::max(3.0 * noise * std::sqrt(double(wn) / w), 4.0 * 256 * wn);
-    for (int j = std::min(hi, searchHi); j >= lo; --j) {
-        if (std::abs(stepAt(j)) < threshold) continue;
-        // The outermost clear step lies within w samples inside where the wide detector
-        // first sees it. A highlight band on the barrel just inside its outline is a
-        // stronger step of the same sign, and the wide detector's peak would slide onto
-        // its flank (1–2 % short): the edge is the narrow detector's strongest peak over
-        // those w samples. Only where the narrow one sees nothing clear there does the
-        // wide one's own peak stand.
-        const int sign = stepAt(j) > 0 ? 1 : -1;
-        int best = -1;
-        int32_t bestA = 0;
-        for (int k = std::min(hi - 1, j + 1); k >= std::max(lo + 1, j - w); --k) {
-            const int32_t a = sign * narrowAt(k);
-            if (a > bestA && a >= sign * narrowAt(k - 1) && a >= sign * narrowAt(k + 1)) {
-                best = k;
-                bestA = a;
-            }
-        }
-        if (bestA < narrowThreshold) best = -1;
-        double offset = 0;
-        if (best >= 0) {
-            offset =
-                parabolaVertex(sign * narrowAt(best - 1), sign * narrowAt(best), sign * narrowAt(best + 1)).toDouble();
-        } else {
-            best = j;
-            while (best - 1 >= lo && std::abs(stepAt(best - 1)) >= std::abs(stepAt(best))) --best;
-        }
-        // The detectors are centred on sample k (samples k + 1 … against … k − 1).
-        *atSample = best + offset;
-        *onBound = best == lo;
-        return true;
+    // From the top down to where the detector's inside first reaches barrelFrom it is never
+    // clipped: there the step is the plain difference of two sums (the search's inner loop).
+    const int top = std::min(hi, searchHi), unclipped = std::max(lo, barrelFrom + w);
+    auto plainStep = [&](int j) { return (prefix[j + 1 + w] - prefix[j + 1]) - (prefix[j] - prefix[j - w]); };
+    int j = top;
+    while (j >= unclipped && std::abs(plainStep(j)) < threshold) --j;
+    if (j < unclipped) {
+        j = std::min(top, unclipped - 1);
+        while (j >= lo && std::abs(stepAt(j)) < threshold) --j;
     }
-    return false;
+    if (j < lo) return false;
+    // The outermost clear step lies within w samples inside where the wide detector
+    // first sees it. A highlight band on the barrel just inside its outline is a
+    // stronger step of the same sign, and the wide detector's peak would slide onto
+    // its flank (1–2 % short): the edge is the narrow detector's strongest peak over
+    // those w samples. Only where the narrow one sees nothing clear there does the
+    // wide one's own peak stand.
+    const int sign = stepAt(j) > 0 ? 1 : -1;
+    int best = -1;
+    int32_t bestA = 0;
+    for (int k = std::min(hi - 1, j + 1); k >= std::max(lo + 1, j - w); --k) {
+        const int32_t a = sign * narrowAt(k);
+        if (a > bestA && a >= sign * narrowAt(k - 1) && a >= sign * narrowAt(k + 1)) {
+            best = k;
+            bestA = a;
+        }
+    }
+    if (bestA < narrowThreshold) best = -1;
+    double offset = 0;
+    if (best >= 0) {
+        offset = parabolaVertex(sign * narrowAt(best - 1), sign * narrowAt(best), sign * narrowAt(best + 1)).toDouble();
+    } else {
+        best = j;
+        while (best - 1 >= lo && std::abs(stepAt(best - 1)) >= std::abs(stepAt(best))) --best;
+    }
+    // The detectors are centred on sample k (samples k + 1 … against … k − 1).
+    *atSample = best + offset;
+    *onBound = best == lo;
+    return true;
 }
 
 bool RingSearch::barrelBandLopsided(const double *radius, const bool *valid, const double *outerR) const
@@ -291,9 +299,10 @@ void RingSearch::outlineInsideRivals(OutlineRays *rays) const
 }
 
 double RingSearch::silhouetteFromRays(const double *outerR, double blurPx, EndFaceGeometry *m, bool *lopsided,
-                                      double *outlineR, bool *faint)
+                                      double *outlineR, bool *faint, bool *linesSeen)
 {
     *faint = false;
+    *linesSeen = false;
     m->silhouetteCoverage = 0;
     m->silhouetteScatterPx = 0;
     m->silhouetteCentreX = m->silhouetteCentreY = 0;
@@ -308,8 +317,14 @@ double RingSearch::silhouetteFromRays(const double *outerR, double blurPx, EndFa
     const int w = rays.w, hi = rays.hi;
     double *radius = rays.radius;
     bool *valid = rays.valid;
+    // Rays whose step is a highlight line's flank did not see the outline beyond it; where
+    // fewer than half do, the others did (a faint outline, clear on some rays only), and the
+    // line's rays are left out. Where most do, the line is what the fit finds, and
+    // outlineBeyondHighlight reads the outline beyond it.
+    bool onLine[kCoarse];
+    int seen = 0, lines = 0;
     for (int i = 0; i < kCoarse; ++i) {
-        valid[i] = false;
+        valid[i] = onLine[i] = false;
         const uint16_t *row = coarse + size_t(i) * kMaxCoarse;
         if (anyOutsideFrame(row, count)) continue; // a ray leaving the frame is not used
         // The contact edge's radius seen from the coarse rays' centre (to first order in
@@ -325,25 +340,13 @@ double RingSearch::silhouetteFromRays(const double *outerR, double blurPx, EndFa
         if (silhouetteOnRay(row, lo, hi, hi, w, rays.barrelFrom[i], &at, &rays.onBound[i])) {
             radius[i] = rA + at * step;
             valid[i] = true;
+            ++seen;
+            lines += onLine[i] = stepOnHighlight(row, rays.barrelFrom[i], int(at + 0.5), w);
         }
     }
-    // Rays whose step is a highlight line's flank did not see the outline beyond it; where
-    // fewer than half do, the others did (a faint outline, clear on some rays only), and the
-    // line's rays are left out. Where most do, the line is what the fit finds, and
-    // outlineBeyondHighlight reads the outline beyond it.
-    {
-        bool onLine[kCoarse];
-        int found = 0, lines = 0;
-        for (int i = 0; i < kCoarse; ++i) {
-            onLine[i] = false;
-            if (!valid[i]) continue;
-            ++found;
-            const uint16_t *row = coarse + size_t(i) * kMaxCoarse;
-            lines += onLine[i] = stepOnHighlight(row, rays.barrelFrom[i], int((radius[i] - rA) / step + 0.5), w);
-        }
-        if (2 * lines < found)
-            for (int i = 0; i < kCoarse; ++i) valid[i] = valid[i] && !onLine[i];
-    }
+    *linesSeen = lines > 0;
+    if (lines > 0 && 2 * lines < seen)
+        for (int i = 0; i < kCoarse; ++i) valid[i] = valid[i] && !onLine[i];
     outlineInsideRivals(&rays);
     // Seen straight on, the barrel shows as a band of even width outside the contact edge.
     // Seen obliquely (a tilted camera, or one close enough that the rays fan out by tens of
@@ -515,6 +518,38 @@ RingSearch::HighlightOutline RingSearch::outlineBeyondHighlight(const double *ou
         }
     }
     return h;
+}
+
+double RingSearch::settleOutline(const MeanEdges &me, const double *outerR, double blurPx, bool lopsided,
+                                 bool onLineSuspected, double perRay, double *outlineR, EndFaceGeometry *m) const
+{
+    // A step read on a highlight line's outer flank is the line's, not the barrel's: the
+    // outline is the step beyond it, or none (outlineBeyondHighlight).
+    if (perRay > 0) {
+        if (onLineSuspected) {
+            const HighlightOutline h = outlineBeyondHighlight(outerR, outlineR, blurPx);
+            if (h.isLine && h.found) {
+                perRay += h.shiftPx;
+                for (int i = 0; i < kCoarseRays; ++i) outlineR[i] += h.shiftPx;
+            } else if (h.isLine) {
+                perRay = 0;
+                m->silhouetteCoverage = m->silhouetteScatterPx = 0;
+                m->silhouetteCentreX = m->silhouetteCentreY = 0;
+            }
+        }
+        m->rMaxPx = perRay;
+        return perRay;
+    }
+    // A barrel fading down its ramp into a dark fixture steps down fastest inside its outline:
+    // where the rays show none, the drop at the ramp's foot is not taken for it.
+    if (lopsided || me.kneeOnRamp || !(me.rMax > 0)) {
+        m->rMaxPx = 0;
+        return 0;
+    }
+    std::fill_n(outlineR, kCoarseRays, me.rMax);
+    const HighlightOutline h = outlineBeyondHighlight(outerR, outlineR, blurPx);
+    m->rMaxPx = !h.isLine ? me.rMax : h.found ? me.rMax + h.shiftPx : 0;
+    return 0;
 }
 
 } // namespace icacam::vision
