@@ -240,6 +240,10 @@ struct RingSearch {
     // The same on the coarse rays aligned on the fitted outline (outlineR: its radius at each
     // coarse ray about the coarse centre).
     bool outlineRivalledAlong(const double *outlineR) const;
+    // The coarse rays' mean with each ray aligned on outlineR (its radius at each coarse ray
+    // about the coarse centre): mean[k] at from + k coarse steps from it, interpolated; −1
+    // where under a quarter of the rays hold both samples.
+    void outlineAlignedMean(const double *outlineR, int from, int n, double *mean) const;
     // Whether the barrel band outside the contact edge (radius − the contact edge, per coarse
     // ray) swings by more than half its mean width around the ring: an oblique view.
     bool barrelBandLopsided(const double *radius, const bool *valid, const double *outerR) const;

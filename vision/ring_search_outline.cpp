@@ -90,30 +90,38 @@ bool RingSearch::outlineRivalled(double rMaxPx) const
     return rivalBeyond(meanDeriv, count, int((rMaxPx - rA) / step + 0.5), int((rMaxPx + r0 / 3 - rA) / step));
 }
 
+void RingSearch::outlineAlignedMean(const double *outlineR, int from, int n, double *mean) const
+{
+    const double rA = kCoarseStart * r0, step = coarseStep(r0);
+    const int count = coarseCount(r0);
+    for (int k = 0; k < n; ++k) {
+        double sum = 0;
+        int used = 0;
+        for (int i = 0; i < kCoarseRays; ++i) {
+            const double at = (outlineR[i] - rA) / step + (k + from);
+            const int j = int(std::floor(at));
+            const uint16_t *row = coarse + size_t(i) * kMaxCoarse;
+            if (j < 0 || j + 1 >= count || row[j] == kOutsideFrame || row[j + 1] == kOutsideFrame) continue;
+            sum += row[j] + (at - j) * (row[j + 1] - row[j]);
+            ++used;
+        }
+        mean[k] = 4 * used >= kCoarseRays ? sum / used : -1;
+    }
+}
+
 bool RingSearch::outlineRivalledAlong(const double *outlineR) const
 {
     // The same on the coarse rays' mean with each ray aligned on the fitted outline
     // (outlineR: its radius at each coarse ray about the coarse centre), so that an outline
     // whose centre the view drew aside shows as the one step it is.
-    constexpr int kCoarse = kCoarseRays, kInside = 6;
-    const double rA = kCoarseStart * r0, step = coarseStep(r0);
-    const int count = coarseCount(r0);
+    constexpr int kInside = 6;
+    const double step = coarseStep(r0);
     const int span = std::min(kMaxCoarse, kInside + int(r0 / 3 / step) + 4);
+    double aligned[kMaxCoarse];
+    outlineAlignedMean(outlineR, -kInside, span, aligned);
     uint16_t mean[kMaxCoarse];
     int32_t d[kMaxCoarse];
-    for (int k = 0; k < span; ++k) {
-        double sum = 0;
-        int n = 0;
-        for (int i = 0; i < kCoarse; ++i) {
-            const double at = (outlineR[i] - rA) / step + (k - kInside);
-            const int j = int(std::floor(at));
-            const uint16_t *row = coarse + size_t(i) * kMaxCoarse;
-            if (j < 0 || j + 1 >= count || row[j] == kOutsideFrame || row[j + 1] == kOutsideFrame) continue;
-            sum += row[j] + (at - j) * (row[j + 1] - row[j]);
-            ++n;
-        }
-        mean[k] = 4 * n >= kCoarse ? uint16_t(sum / n + 0.5) : kOutsideFrame;
-    }
+    for (int k = 0; k < span; ++k) mean[k] = aligned[k] >= 0 ? uint16_t(aligned[k] + 0.5) : kOutsideFrame;
     profileDerivative(mean, span, d);
     return rivalBeyond(d, span, kInside, span - 3);
 }
@@ -451,8 +459,7 @@ RingSearch::HighlightOutline RingSearch::outlineBeyondHighlight(const double *ou
     // from the band's level to the level beyond, outside the line, where the two differ; where
     // they do not, the barrel meets a background of its own shade and shows no outline.
     constexpr int kCoarse = kCoarseRays;
-    const double rA = kCoarseStart * r0, step = coarseStep(r0);
-    const int count = coarseCount(r0);
+    const double step = coarseStep(r0);
     const int w = std::max(4, int(0.035 * r0 / step));
     const int kOut = w + std::max(4, int(0.06 * r0 / step + 0.5)); // how far beyond the line the outline is sought
     const double barrelFrom = std::max(2.0, 3 * blurPx);
@@ -471,20 +478,9 @@ RingSearch::HighlightOutline RingSearch::outlineBeyondHighlight(const double *ou
     // The rays' mean aligned on the outline, sample k − kIn at offset k − kIn coarse steps.
     const int n = kIn + kOut + 1;
     double mean[kMaxCoarse];
-    for (int k = 0; k < n; ++k) {
-        double sum = 0;
-        int used = 0;
-        for (int i = 0; i < kCoarse; ++i) {
-            const double at = (outlineR[i] - rA) / step + (k - kIn);
-            const int j = int(std::floor(at));
-            const uint16_t *row = coarse + size_t(i) * kMaxCoarse;
-            if (j < 0 || j + 1 >= count || row[j] == kOutsideFrame || row[j + 1] == kOutsideFrame) continue;
-            sum += row[j] + (at - j) * (row[j + 1] - row[j]);
-            ++used;
-        }
-        if (4 * used < kCoarse) return none;
-        mean[k] = sum / used;
-    }
+    outlineAlignedMean(outlineR, -kIn, n, mean);
+    for (int k = 0; k < n; ++k)
+        if (mean[k] < 0) return none;
     auto median = [&](int a, int b) {
         double tmp[kMaxCoarse];
         int m = 0;
