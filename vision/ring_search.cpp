@@ -734,17 +734,6 @@ ErrorCode RingSearch::run(EndFaceGeometry *m)
         if (!me.namedByZones && me.rNext > 0 && stepsBackBeyond(me) && again(next) == ErrorCode::None &&
             std::fabs(m->inner.rEqPx - me.rOuter) <= kBackAgreesPx)
             return ErrorCode::None;
-        // The same where the step back is the profile's last step, taken for the outline (a
-        // ring of a few coarse samples, its lit shoulder and the outline beyond it one rise).
-        if (!me.namedByZones && !(me.rNext > 0) && me.rOutline > 0 && me.signOutline != me.signOuter) {
-            MeanEdges viaOutline = me;
-            viaOutline.rNext = me.rOutline, viaOutline.signNext = me.signOutline;
-            viaOutline.strengthNext = me.strengthOutline;
-            if (stepsBackBeyond(viaOutline) &&
-                again(nextStep(me.rOutline, me.signOutline, me.strengthOutline)) == ErrorCode::None &&
-                std::fabs(m->inner.rEqPx - me.rOuter) <= kBackAgreesPx)
-                return ErrorCode::None;
-        }
         // No ray found an original face's edge inside a drop that is the outline at a ramp's
         // foot (above).
         if (dropOutermost && !movedInward && levelEndInsideDrop(me, &onRamp) && readOnRamp(me.rOuter))

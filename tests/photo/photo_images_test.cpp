@@ -106,16 +106,6 @@ TEST_P(NarrowRingPhotos, NamesTheOriginalFaceAndTheContactEdge)
     expectNamed(measure(GetParam()));
 }
 
-// A dark ring of 6 px whose rise onto the lit shoulder is the mean profile's last step, taken
-// for the outline (the outline's own rise merges with it at the coarse step): the step back
-// beyond the largest drop is the contact edge there too.
-class LastStepBackPhotos : public PhotoImages {};
-
-TEST_P(LastStepBackPhotos, NamesTheOriginalFaceAndTheContactEdge)
-{
-    expectNamed(measure(GetParam()));
-}
-
 // The outline a straight view shows is the specimen's, not the fixture's shadow beyond it:
 // within 1 % of the projected outline (a tilted view has none to fit: the barrel shows on
 // one side only).
@@ -384,8 +374,6 @@ INSTANTIATE_TEST_SUITE_P(Rendered, LitShoulderPhotos, ::testing::Values("straigh
 
 INSTANTIATE_TEST_SUITE_P(Rendered, NarrowRingPhotos,
                          ::testing::Values("straight-s1-0008", "straight-s2-0004", "straight-s3-0019"), recordName);
-
-INSTANTIATE_TEST_SUITE_P(Rendered, LastStepBackPhotos, ::testing::Values("straight-s4-0008"), recordName);
 
 INSTANTIATE_TEST_SUITE_P(Rendered, ToneCurvePhotos,
                          ::testing::Values("straight-0011", "straight-0016", "straight-0003", "straight-s1-0008",
