@@ -17,12 +17,10 @@ namespace {
 // The robust σ of the face's level changes over 4 px, level[0 … to] (0 if too few).
 double faceTexture(const int32_t *level, int to)
 {
-    int32_t tmp[RingSearch::AlignedProfile::kSpan];
+    int32_t change[RingSearch::AlignedProfile::kSpan];
     int n = 0;
-    for (int j = 4; j <= to; ++j) tmp[n++] = std::abs(level[j] - level[j - 4]);
-    if (n < 8) return 0;
-    std::nth_element(tmp, tmp + n / 2, tmp + n);
-    return 1.4826 * tmp[n / 2];
+    for (int j = 4; j <= to; ++j) change[n++] = level[j] - level[j - 4];
+    return n < 8 ? 0 : robustSigma(change, 0, n - 1);
 }
 
 } // namespace
