@@ -20,7 +20,9 @@ namespace {
 // fine rays locate it).
 constexpr int kAlignRays = kFineRays / 8;
 // How far beyond the derivative's peak the knee's fit reads the profile (pixels): the fall up
-// to its steepest point and a little past it, where a straight fall still holds.
+// to its steepest point and a little past it, where a straight fall still holds (over the
+// bench's ten 640 × 480 sets, 156 right readings at 3 px; 153 at 2 px, 142 at 5 px, where
+// the fall bends towards the barrel's own shading).
 constexpr int kKneeOutsidePx = 3;
 // Beside a lit shoulder (a contact edge rising onto a band that falls again) the fit reads
 // the profile this far inside the derivative's peak (pixels, at most half the ring) and
