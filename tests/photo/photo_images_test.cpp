@@ -106,6 +106,19 @@ TEST_P(NarrowRingPhotos, NamesTheOriginalFaceAndTheContactEdge)
     expectNamed(measure(GetParam()));
 }
 
+// A dark ring of 6 px whose rise onto the lit shoulder is the mean profile's last step, taken
+// for the outline (the outline's own rise merges with it at the coarse step): the step back
+// beyond the largest drop is the contact edge there too. That last step may as well be the
+// outline beyond a face with no ring, so the geometry says the contact edge is undecided.
+class LastStepBackPhotos : public PhotoImages {};
+
+TEST_P(LastStepBackPhotos, NamesTheOriginalFaceAndTheContactEdgeUndecided)
+{
+    const Photo p = measure(GetParam());
+    expectNamed(p);
+    EXPECT_TRUE(p.g.imageFlags & vision::kImageContactEdgeUndecided);
+}
+
 // The outline a straight view shows is the specimen's, not the fixture's shadow beyond it:
 // within 1 % of the projected outline (a tilted view has none to fit: the barrel shows on
 // one side only).
@@ -374,6 +387,8 @@ INSTANTIATE_TEST_SUITE_P(Rendered, LitShoulderPhotos, ::testing::Values("straigh
 
 INSTANTIATE_TEST_SUITE_P(Rendered, NarrowRingPhotos,
                          ::testing::Values("straight-s1-0008", "straight-s2-0004", "straight-s3-0019"), recordName);
+
+INSTANTIATE_TEST_SUITE_P(Rendered, LastStepBackPhotos, ::testing::Values("straight-s4-0008"), recordName);
 
 INSTANTIATE_TEST_SUITE_P(Rendered, ToneCurvePhotos,
                          ::testing::Values("straight-0011", "straight-0016", "straight-0003", "straight-s1-0008",

@@ -80,8 +80,9 @@ TEST(PhotoStatus, StraightCameraDeclaredScale)
 
 // A tilted camera, the mean scale declared: an undeclared condition, so no silent wrong
 // reading, 90 % within 2 σ and ok on at least half of the right ones are the lines.
-// Measured: 10 of 12, 90 % within 2 σ, none silent; ok on 2 of the 7 right readings.
+// Measured: 11 of 12, 100 % within 2 σ, none silent; 2 ok, on 2 of the 7 right readings (the
+// eleventh, a 5 px dark ring read on the profile's last step, warns: contact_edge_undecided).
 TEST(PhotoStatus, TiltedCamera)
 {
-    expectLines(host::photo::PhotoCondition::Tilted, "tilted", 12, 21, {0.8, 0.9, 0.2, 0.28, 0});
+    expectLines(host::photo::PhotoCondition::Tilted, "tilted", 12, 21, {0.9, 0.9, 0.18, 0.28, 0});
 }
