@@ -20,6 +20,8 @@ namespace {
 // Ring width (px) below which the per-ray search's edges are biased by each other's blur
 // (0.4–2 px wide on rendered 2–5 px rings, tests/vision/synth_accuracy_test.cpp).
 constexpr double kNarrowRingPx = 6.0;
+// The widest ring a step back beyond the drop is read as, its contact edge undecided (pixels).
+constexpr double kUndecidedBackPx = 1.5 * kNarrowRingPx;
 // Grey levels between the two sides of the original face's edge below which the rays' edge
 // is not taken (low_contrast warns below 5; no rendered or photographed face shows under 6).
 constexpr double kMinInnerContrast = 2.0;
@@ -281,13 +283,26 @@ bool RingSearch::stepBack(const MeanEdges &me, MeanEdges *back)
     while (i + 1 < n - 2 && s * d[i + 1] > 0) ++i;
     const int flankEnd = i;
     // The step back: the other sign's strongest sample before the profile turns the edge's
-    // way again as strongly; that turn must come (the outline or the shoulder's fall).
-    int top = -1;
-    for (++i; i < n - 2 && mean[i] != kOutsideFrame; ++i) {
-        if (-s * d[i] > 0 && (top < 0 || -s * d[i] > -s * d[top])) top = i;
-        if (top >= 0 && s * d[i] >= -s * d[top]) break;
+    // way again as strongly; that turn must come (the outline or the shoulder's fall). A
+    // shoulder that falls off more gently than the ring's far edge rose (a turn half as steep)
+    // may as well be the barrel's shading beyond the outline: read so, the contact edge is
+    // undecided.
+    auto turn = [&](int from, int steeper, int *at) {
+        int t = -1, k = from;
+        for (; k < n - 2 && mean[k] != kOutsideFrame; ++k) {
+            if (-s * d[k] > 0 && (t < 0 || -s * d[k] > -s * d[t])) t = k;
+            if (t >= 0 && steeper * s * d[k] >= -s * d[t]) break;
+        }
+        *at = k;
+        return t >= 2 && k < n - 2 && mean[k] != kOutsideFrame ? t : -1;
+    };
+    bool undecided = false;
+    int top = turn(i + 1, 1, &i);
+    if (top < 0) {
+        top = turn(flankEnd + 1, 2, &i);
+        undecided = true;
     }
-    if (top < 2 || i >= n - 2 || mean[i] == kOutsideFrame) return false;
+    if (top < 0) return false;
     const int32_t strength = -s * d[top];
     // The level across it: from the ring's extreme inside to the shoulder's beyond.
     int32_t ring = mean[flankEnd], shoulder = mean[top];
@@ -303,8 +318,11 @@ bool RingSearch::stepBack(const MeanEdges &me, MeanEdges *back)
     const Q16_16 off = parabolaVertex(std::abs(d[top - 1]), std::abs(d[top]), std::abs(d[top + 1]));
     const double rBack = fromPx + (top + off.toDouble()) * stepPx;
     // Only a ring too narrow for its two edges' blurs to part is missed so; a wider band
-    // beyond the edge taken is the barrel's, and its far side a highlight's.
-    if (!(rBack - me.rOuter < kNarrowRingPx)) return false;
+    // beyond the edge taken is the barrel's, and its far side a highlight's, or a ring the
+    // zones took the drop into for the contact edge (a dark ring of 6–7 px beside a lit
+    // shoulder): up to half as wide again, the contact edge is undecided.
+    if (!(rBack - me.rOuter < kNarrowRingPx)) undecided = true;
+    if (!(rBack - me.rOuter < kUndecidedBackPx)) return false;
     *back = me;
     back->rOuter = rBack;
     back->signOuter = -s;
@@ -314,7 +332,7 @@ bool RingSearch::stepBack(const MeanEdges &me, MeanEdges *back)
     // either way would pass for the ring's edge.
     back->reachOutPx = me.rMax > back->rOuter ? 0.5 * (me.rMax - back->rOuter) : 0;
     back->namedByZones = true; // the centring must not go back to the drop
-    back->undecided = false;
+    back->undecided = undecided;
     back->rNext = back->rOutline = 0;
     return true;
 }

@@ -119,6 +119,18 @@ TEST_P(LastStepBackPhotos, NamesTheOriginalFaceAndTheContactEdgeUndecided)
     EXPECT_TRUE(p.g.imageFlags & vision::kImageContactEdgeUndecided);
 }
 
+// A dark ring of 7 px whose drop the zones named the contact edge, its lit shoulder falling
+// off more gently than the ring's far edge rises: read about the step back beyond the drop,
+// the contact edge undecided (the shoulder's fall may as well be the barrel's shading).
+class GentleShoulderPhotos : public PhotoImages {};
+
+TEST_P(GentleShoulderPhotos, NamesTheOriginalFaceAndTheContactEdgeUndecided)
+{
+    const Photo p = measure(GetParam());
+    expectNamed(p);
+    EXPECT_TRUE(p.g.imageFlags & vision::kImageContactEdgeUndecided);
+}
+
 // The outline a straight view shows is the specimen's, not the fixture's shadow beyond it:
 // within 1 % of the projected outline (a tilted view has none to fit: the barrel shows on
 // one side only).
@@ -389,6 +401,8 @@ INSTANTIATE_TEST_SUITE_P(Rendered, NarrowRingPhotos,
                          ::testing::Values("straight-s1-0008", "straight-s2-0004", "straight-s3-0019"), recordName);
 
 INSTANTIATE_TEST_SUITE_P(Rendered, LastStepBackPhotos, ::testing::Values("straight-s4-0008"), recordName);
+
+INSTANTIATE_TEST_SUITE_P(Rendered, GentleShoulderPhotos, ::testing::Values("straight-s4-0003"), recordName);
 
 INSTANTIATE_TEST_SUITE_P(Rendered, ToneCurvePhotos,
                          ::testing::Values("straight-0011", "straight-0016", "straight-0003", "straight-s1-0008",
