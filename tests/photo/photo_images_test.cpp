@@ -227,6 +227,18 @@ TEST_P(LitShoulderPhotos, ALitShoulderDoesNotPullTheEdgeInside)
     EXPECT_NEAR(p.g.outer.rEqPx, num(p.truth, "r_outer_px"), 0.3);
 }
 
+// A lit shoulder that falls off by only a quarter of the step within 3 px of its peak (seeds 5
+// and 7): the derivative's peak lies 0.7–0.75 px inside the contact edge, μ 0.012–0.014 low
+// and ok; the step and the fall fitted together read it 0.38–0.43 px inside.
+class GentleFallShoulderPhotos : public PhotoImages {};
+
+TEST_P(GentleFallShoulderPhotos, AGentleShouldersFallDoesNotPullTheEdgeInside)
+{
+    const Photo p = measure(GetParam());
+    ASSERT_EQ(p.g.error, vision::ErrorCode::None);
+    EXPECT_NEAR(p.g.outer.rEqPx, num(p.truth, "r_outer_px"), 0.6);
+}
+
 // A faint original face's edge (5 grey levels) 12 px inside a contact edge whose barrel falls
 // away from 6 px inside the derivative's peak: the box detector that locates the named edge
 // ends before that fall (it reached into it, took the fall for the step, searched 5–11 px
@@ -395,6 +407,9 @@ INSTANTIATE_TEST_SUITE_P(Rendered, ContactEdgePhotos,
                          recordName);
 
 INSTANTIATE_TEST_SUITE_P(Rendered, LitShoulderPhotos, ::testing::Values("straight-0003", "straight-s1-0008"),
+                         recordName);
+
+INSTANTIATE_TEST_SUITE_P(Rendered, GentleFallShoulderPhotos, ::testing::Values("straight-s5-0008", "straight-s7-0023"),
                          recordName);
 
 INSTANTIATE_TEST_SUITE_P(Rendered, NarrowRingPhotos,
