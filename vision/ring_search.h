@@ -92,7 +92,8 @@ struct RingSearch {
     // contact edge `me` names, steps straight back the other way and then again the named
     // edge's way (a ring a few pixels wide darker, or lighter, than both the face and the
     // barrel's shoulder, the outline beyond): that step back, as the contact edge to search
-    // about (false: none).
+    // about (false: none). Undecided (back->undecided) where the turn beyond it is only half
+    // as steep or the ring 6–9 px wide.
     bool stepBack(const MeanEdges &me, MeanEdges *back);
     // Whether the mean profile's next step beyond the drop `me` names steps back from the
     // level between them by more than a ripple's share of the drop: a ring between the
