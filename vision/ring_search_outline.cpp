@@ -77,6 +77,13 @@ double outlineTaken(const BoundaryFit &fit, EndFaceGeometry *m)
     return fit.rEqPx;
 }
 
+// No silhouette: the geometry reports none of a fit.
+void noOutlineTaken(EndFaceGeometry *m)
+{
+    m->silhouetteCoverage = m->silhouetteScatterPx = 0;
+    m->silhouetteCentreX = m->silhouetteCentreY = 0;
+}
+
 } // namespace
 
 bool RingSearch::outlineRivalled(double rMaxPx) const
@@ -311,9 +318,7 @@ double RingSearch::silhouetteFromRays(const double *outerR, double blurPx, EndFa
 {
     *faint = false;
     *linesSeen = false;
-    m->silhouetteCoverage = 0;
-    m->silhouetteScatterPx = 0;
-    m->silhouetteCentreX = m->silhouetteCentreY = 0;
+    noOutlineTaken(m);
     *lopsided = false;
     constexpr int kCoarse = kCoarseRays;
     const double rA = kCoarseStart * r0;
@@ -529,8 +534,7 @@ double RingSearch::settleOutline(const MeanEdges &me, const double *outerR, doub
                 for (int i = 0; i < kCoarseRays; ++i) outlineR[i] += h.shiftPx;
             } else if (h.isLine) {
                 perRay = 0;
-                m->silhouetteCoverage = m->silhouetteScatterPx = 0;
-                m->silhouetteCentreX = m->silhouetteCentreY = 0;
+                noOutlineTaken(m);
             }
         }
         m->rMaxPx = perRay;
