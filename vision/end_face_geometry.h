@@ -51,8 +51,9 @@ enum ImageFlag : uint32_t {
     // The mean profile does not decide which edge ends the flat face: the contact edge
     // taken opens a band that may as well lie on the barrel beyond an unseen original face
     // (profile_zones.h), or it is the outer of two drops with no level told between them
-    // and the barrel (a ring of the face's grey inside a drawn barrel band looks alike).
-    // R_i and R_o may both be one edge out.
+    // and the barrel (a ring of the face's grey inside a drawn barrel band looks alike), or
+    // the contact edge rises onto lighter ground with no step beyond it on any ray (it may be
+    // the outline). R_i and R_o may both be one edge out.
     kImageContactEdgeUndecided = 1u << 3,
     // The barrel band is wide on one side and hidden behind the end face on the other: the
     // camera sees the specimen obliquely (tilted, or close and off-axis), and no circle is the

@@ -896,22 +896,29 @@ ErrorCode RingSearch::ringAbout(const MeanEdges &me, EndFaceGeometry *m, bool pr
     m->outer = outer;
     // The silhouette per coarse ray refines the mean profile's estimate (the mean profile
     // blurs a weak barrel/background step and can name a highlight's flank instead).
-    bool lopsided = false, faint = false, linesSeen = false;
+    OutlineRaysSeen seen;
     double outlineR[kCoarseRays];
-    double perRay = silhouetteFromRays(outerR, edgeWidth >= 0 ? edgeWidth : kUnknownBlurPx, m, &lopsided, outlineR,
-                                       &faint, &linesSeen);
+    double perRay = silhouetteFromRays(outerR, edgeWidth >= 0 ? edgeWidth : kUnknownBlurPx, m, outlineR, &seen);
     // An outline too faint for the rays' own fit, which the mean profile shows, is sought on
     // the sectors' pooled rays about it.
     bool fromSectors = false;
-    if (faint && me.rMax > 0 && !me.kneeOnRamp) {
+    if (seen.faint && me.rMax > 0 && !me.kneeOnRamp) {
         perRay = silhouetteFromSectors(me.rMax, m, outlineR);
         fromSectors = true;
     }
     // Where some rays stepped on a bright line, the fit is held against one on their aligned
     // mean: the outline lies beyond a highlight line, or is not seen (settleOutline).
-    perRay = settleOutline(me, outerR, edgeWidth >= 0 ? edgeWidth : kUnknownBlurPx, lopsided,
-                           perRay > 0 && (linesSeen || fromSectors), perRay, outlineR, m);
-    if (lopsided) m->imageFlags |= kImageBarrelOblique;
+    perRay = settleOutline(me, outerR, edgeWidth >= 0 ? edgeWidth : kUnknownBlurPx, seen.lopsided,
+                           perRay > 0 && (seen.linesSeen || fromSectors), perRay, outlineR, m);
+    if (seen.lopsided) m->imageFlags |= kImageBarrelOblique;
+    // A contact edge rising onto lighter ground with no step anywhere beyond it, on any ray
+    // searched there, may be the barrel's outline against the fixture: the ring read is then
+    // the barrel's dark band and the original face's edge the contact edge (the bench's
+    // tilted-s4 0020: a face and ring 13 grey levels apart read as one face, μ 0.095 low). A
+    // ring darker than a lit barrel whose outline the fixture hides looks alike; the image
+    // cannot tell them apart, and the reading says so.
+    if (!(m->rMaxPx > 0) && contrastOuter > 0 && seen.stepped == 0 && 2 * seen.searched >= kCoarseRays)
+        m->imageFlags |= kImageContactEdgeUndecided;
     if (m->rMaxPx > 0 && outlineRivalled(m->rMaxPx)) {
         m->imageFlags |= kImageOutlineAmbiguous;
         // Only an outline the rays agree on to a coarse step is one smeared outline; a

@@ -183,16 +183,26 @@ struct RingSearch {
     // Samples every fine ray from start[i] (pixels) and fills the smoothed derivative rows.
     // boxHalf > 0: the rows hold a box step detector of that half-width instead.
     void sampleWindow(const double *start, double step, int count, int boxHalf, EndFaceGeometry *m);
-    // Silhouette R_max from the coarse rays, outside the fitted contact edge; 0 if unclear
-    // (lopsided: the barrel is seen obliquely, so no silhouette is a circle about the axis).
+    // What the coarse rays' outline search saw besides the fit it returns.
+    struct OutlineRaysSeen {
+        // The barrel is seen obliquely, so no silhouette is a circle about the axis.
+        bool lopsided = false;
+        // No outline because too few rays cleared the step detector's noise for a fit (not a
+        // lopsided band, not a step at the search's bound).
+        bool faint = false;
+        // Some rays' step is a bright line's outer flank (left out of the fit where they are
+        // under half the rays).
+        bool linesSeen = false;
+        // Rays searched beyond the contact edge (inside the frame, room for the detector), and
+        // those of them that showed a step.
+        int searched = 0, stepped = 0;
+    };
+    // Silhouette R_max from the coarse rays, outside the fitted contact edge; 0 if unclear.
     // The per-ray fit's coverage, scatter and centre go to m.
     // outlineR: the fitted outline's radius at each coarse ray about the coarse centre
     // (kCoarseRays of them; written where the fit is returned).
-    // *faint: no outline because too few rays cleared the step detector's noise for a fit
-    // (not a lopsided band, not a step at the search's bound). *linesSeen: some rays' step is
-    // a bright line's outer flank (left out of the fit where they are under half the rays).
-    double silhouetteFromRays(const double *outerR, double blurPx, EndFaceGeometry *m, bool *lopsided, double *outlineR,
-                              bool *faint, bool *linesSeen);
+    double silhouetteFromRays(const double *outerR, double blurPx, EndFaceGeometry *m, double *outlineR,
+                              OutlineRaysSeen *seen);
     // A faint outline the mean profile shows at rMeanPx, located on kOutlineSectors sectors'
     // pooled rays about it; 0 unless half the sectors show it on one circle (coverage, scatter
     // and centre to m, outlineR as silhouetteFromRays).

@@ -313,13 +313,11 @@ void RingSearch::outlineInsideRivals(OutlineRays *rays) const
     }
 }
 
-double RingSearch::silhouetteFromRays(const double *outerR, double blurPx, EndFaceGeometry *m, bool *lopsided,
-                                      double *outlineR, bool *faint, bool *linesSeen)
+double RingSearch::silhouetteFromRays(const double *outerR, double blurPx, EndFaceGeometry *m, double *outlineR,
+                                      OutlineRaysSeen *seenBy)
 {
-    *faint = false;
-    *linesSeen = false;
+    *seenBy = OutlineRaysSeen{};
     noOutlineTaken(m);
-    *lopsided = false;
     constexpr int kCoarse = kCoarseRays;
     const double rA = kCoarseStart * r0;
     const double step = coarseStep(r0);
@@ -348,6 +346,7 @@ double RingSearch::silhouetteFromRays(const double *outerR, double blurPx, EndFa
         const int barrelFrom = std::max(0, int(std::ceil((ro + std::max(2.0, 3 * blurPx) - rA) / step)));
         const int lo = std::max({w, int((ro + 0.04 * r0 - rA) / step), barrelFrom + 1});
         if (hi - lo < 2 * w) continue;
+        ++seenBy->searched;
         rays.lo[i] = lo, rays.barrelFrom[i] = std::max(barrelFrom, lo - w);
         double at = 0;
         if (silhouetteOnRay(row, lo, hi, hi, w, rays.barrelFrom[i], &at, &rays.onBound[i])) {
@@ -357,7 +356,8 @@ double RingSearch::silhouetteFromRays(const double *outerR, double blurPx, EndFa
             lines += onLine[i] = stepOnHighlight(row, rays.barrelFrom[i], int(at + 0.5), w);
         }
     }
-    *linesSeen = lines > 0;
+    seenBy->linesSeen = lines > 0;
+    seenBy->stepped = seen;
     if (lines > 0 && 2 * lines < seen)
         for (int i = 0; i < kCoarse; ++i) valid[i] = valid[i] && !onLine[i];
     outlineInsideRivals(&rays);
@@ -368,7 +368,7 @@ double RingSearch::silhouetteFromRays(const double *outerR, double blurPx, EndFa
     // through it is the barrel's widest one. A band whose width swings by more than half its
     // mean around the ring is not taken.
     if (barrelBandLopsided(radius, valid, outerR)) {
-        *lopsided = true;
+        seenBy->lopsided = true;
         return 0;
     }
     // A step still rising where the search ends, just outside the contact edge, is an outline
@@ -387,7 +387,7 @@ double RingSearch::silhouetteFromRays(const double *outerR, double blurPx, EndFa
     opt.maxHarmonics = 2;
     opt.minRejectPx = 2.0;
     if (!fitBoundary(radius, valid, kCoarse, coarseCx_, coarseCy_, opt, &fit, outlineR) || fit.coverage < 0.4) {
-        *faint = true;
+        seenBy->faint = true;
         return 0;
     }
     return outlineTaken(fit, m);
