@@ -53,7 +53,8 @@ enum ImageFlag : uint32_t {
     // (profile_zones.h), or it is the outer of two drops with no level told between them
     // and the barrel (a ring of the face's grey inside a drawn barrel band looks alike), or
     // the contact edge rises onto lighter ground with no step beyond it on any ray (it may be
-    // the outline). R_i and R_o may both be one edge out.
+    // the outline), or the face read holds an edge of its own (it may hold the ring). R_i and
+    // R_o may both be one edge out.
     kImageContactEdgeUndecided = 1u << 3,
     // The barrel band is wide on one side and hidden behind the end face on the other: the
     // camera sees the specimen obliquely (tilted, or close and off-axis), and no circle is the

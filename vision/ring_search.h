@@ -175,6 +175,14 @@ struct RingSearch {
     // (inner, its curve innerR at every fine ray, its contrast); false where it is not found.
     bool originalFaceOnRays(OriginalFaceName name, const AlignedProfile &p, const double *outerR, EndFaceGeometry *m,
                             BoundaryFit *inner, double *innerR, double *contrast);
+    // Whether the coarse mean profile steps across the original face read (inside rInnerPx,
+    // clear of its edge's blur innerBlurPx) by a share of that edge's own contrast
+    // (contrastInner, grey levels): the face holds an edge of its own.
+    bool faceHoldsEdge(double rInnerPx, double contrastInner, double innerBlurPx) const;
+    // Whether the profile across the ring (aligned on the contact edge) steps inside the
+    // original face read, at sample innerAt, clear of its edge's blur innerBlurPx, by a share
+    // of that edge's own contrast (contrastInner, grey levels): the face holds an edge.
+    static bool faceHoldsEdge(const AlignedProfile &p, double innerAt, double contrastInner, double innerBlurPx);
     // A ring too narrow for the per-ray search: both edges from the aligned profile's
     // two-step fit (narrow_ring.h), the original face's edge following the contact edge's
     // shape at the fitted width. startWidthPx: the rays' width to start from (0: none).
