@@ -59,12 +59,12 @@ bool RingSearch::faceHoldsEdge(const AlignedProfile &p, double innerAt, double c
         if (onFrame) step[count++] = after - before;
     }
     if (count < kFaceMinSteps) return false;
-    // A share of the edge's contrast, and out of the face's own texture.
-    const double limit =
-        std::max(kFaceStepShare * std::fabs(contrastInner) * 256 * n, kFaceStepNoise * robustSigma(step, 0, count - 1));
-    for (int k = 0; k < count; ++k)
-        if (std::abs(step[k]) >= limit) return true;
-    return false;
+    // A share of the edge's contrast, and out of the face's own texture (its σ, the costlier
+    // part, only where the share is reached).
+    int32_t largest = 0;
+    for (int k = 0; k < count; ++k) largest = std::max(largest, std::abs(step[k]));
+    return largest >= kFaceStepShare * std::fabs(contrastInner) * 256 * n &&
+           largest >= kFaceStepNoise * robustSigma(step, 0, count - 1);
 }
 
 RingSearch::OriginalFaceName RingSearch::nameOriginalFace(const AlignedProfile &p) const
