@@ -30,6 +30,14 @@ double radiiReductionMax()
     return t::kR[t::kRCount - 1] + snapStep();
 }
 
+double feRMaxOverSpecimen(double n, double mu)
+{
+    // data/fe/rmax_offset.py's fit over the development set (docs/uncertainty.md, "The silhouette").
+    constexpr double c0 = -0.0019522, cLnN = -0.0069575, cMu = 0.0069456, cLnNMu = 0.0169174;
+    const double ln = std::log(std::clamp(n, 0.075, 0.475)), m = std::clamp(mu, 0.065, 0.275);
+    return c0 + cLnN * ln + cMu * m + cLnNMu * ln * m;
+}
+
 bool feRMaxAt(double n, double mu, double reduction, double *rMaxMm)
 {
     return feRadiusAt(FeRadius::Max, n, mu, reduction, rMaxMm);

@@ -623,8 +623,8 @@ SilhouetteObservation observeSilhouette(const FaceInMm &face, double coverage, d
     }
     const double n = spec.n;
     o.view = outlineView(n, mu0, r.r, camera);
-    // The silhouette on the FE's terms (friction::kFeRMaxOverSpecimen).
-    const double rMaxAsFe = face.rMaxMm * (1 + friction::kFeRMaxOverSpecimen);
+    // The silhouette on the FE's terms (friction::feRMaxOverSpecimen).
+    const double rMaxAsFe = face.rMaxMm * (1 + friction::feRMaxOverSpecimen(n, mu0));
     o.measuredRelSigma = friction::measuredRMaxRelSigma(coverage > 0 ? scatterPx / rMaxPx : 0);
     // z and the reduction it implies are R_max's: the outline the view sees, scaled back. Of
     // two views, the one the image itself favours (the telecentric one where it cannot tell):

@@ -18,7 +18,7 @@ namespace {
 constexpr double kN = 0.25, kMu = 0.15, kMmPerPx = 0.02;
 
 // A face at 50 % reduction as the pipeline would hand it over, the silhouette a specimen's
-// (kFeRMaxOverSpecimen inside the FE's) scaled by rMaxFactor; an oblique view gives both
+// (feRMaxOverSpecimen inside the FE's) scaled by rMaxFactor; an oblique view gives both
 // boundaries the same ellipse.
 EndFaceGeometry face(double rMaxFactor, bool oblique, double n = kN, double mu = kMu)
 {
@@ -38,7 +38,7 @@ EndFaceGeometry face(double rMaxFactor, bool oblique, double n = kN, double mu =
     }
     m.inner.rEqPx = ri / kMmPerPx;
     m.outer.rEqPx = ro / kMmPerPx;
-    m.rMaxPx = rm / (1 + kFeRMaxOverSpecimen) * rMaxFactor / kMmPerPx;
+    m.rMaxPx = rm / (1 + feRMaxOverSpecimen(n, mu)) * rMaxFactor / kMmPerPx;
     m.silhouetteCoverage = 1;
     m.edgeWidthPx = 1;
     return m;
