@@ -104,6 +104,7 @@ void readFace(const FaceInputs &in, uint32_t f, Reading *out)
     out->advice = adviseInput(F, model, spec, uF, rF, sr, uSigmaEdgesMm, read.bias, assumed.declared, calibrated,
                               scaleRelSigma, distanceAdvice ? &withDistance : nullptr);
     out->advice.reductionUnchecked = !assumed.declared && !explained;
+    out->advice.heightDeclared = assumed.declared;
     const ModelEstimate asDeclared = model.estimate({u, n, spec.kMpa, spec.d0Mm, spec.h0Mm, spec.hFinalMm});
     out->declared = {asDeclared.mu, asDeclared.dMuDu};
     out->nominalMu = F.at(u, kNominalReduction, n);

@@ -74,6 +74,9 @@ struct Advice {
     // No final height, and nothing in the image checks it (no silhouette, or a calibrated
     // view): U covers the undeclared reduction's whole range, 45–55 %.
     bool reductionUnchecked = false;
+    // The final height was declared: a finding about the silhouette then concerns the declared
+    // scale alone, and its words do not ask for the height.
+    bool heightDeclared = false;
     // An uncalibrated oblique view without a silhouette: the declared scale is unchecked too
     // (a scale measured on the fixture would pass; a calibration checks it).
     bool scaleUnchecked = false;

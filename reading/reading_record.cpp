@@ -136,6 +136,11 @@ const char *findingWords(int bit)
     return bit >= 0 && bit < kFlagCount && kWords[bit] ? kWords[bit] : "check";
 }
 
+// no_silhouette where the final height was declared: the height is known, the scale is not.
+constexpr const char *kNoSilhouetteHeightDeclared =
+    "no barrel silhouette: the declared scale is unchecked (a scale taken on the fixture plane would pass): check "
+    "mm_per_px on the end-face plane or calibrate the camera";
+
 } // namespace
 
 void adviceText(const Advice &a, char *buf, size_t size)
@@ -213,7 +218,9 @@ void readingMessage(const Reading &m, char *buf, size_t size)
     for (int bit = 0; bit < kFlagCount; ++bit) {
         if (!(m.flags & (1u << bit))) continue;
         int w = 0;
-        if ((1u << bit) != kFlagReductionNotNominal) {
+        if ((1u << bit) == kFlagNoSilhouette && m.advice.heightDeclared) {
+            w = std::snprintf(buf + n, size - n, "%s%s", n ? "; " : "", kNoSilhouetteHeightDeclared);
+        } else if ((1u << bit) != kFlagReductionNotNominal) {
             w = std::snprintf(buf + n, size - n, "%s%s", n ? "; " : "", findingWords(bit));
         } else if (std::fabs(m.scaleFactor - 1) < 0.0005) {
             w = std::snprintf(buf + n, size - n, "%s%s (%.1f %%; mu %.4f at 50 %%)", n ? "; " : "", findingWords(bit),

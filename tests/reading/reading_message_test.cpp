@@ -54,6 +54,19 @@ TEST(ReadingMessage, FindingsAreJoinedAndLeftOutWhole)
     EXPECT_EQ(first, all.substr(0, all.find("; no barrel")));
 }
 
+// Without a silhouette and with a declared final height only the scale went unchecked: the
+// words ask for the scale, not for the height the manifest already gave.
+TEST(ReadingMessage, NoSilhouetteWithADeclaredHeightAsksForTheScaleOnly)
+{
+    Reading m = warned(kFlagNoSilhouette);
+    EXPECT_NE(message(m).find("declare h_final_mm"), std::string::npos) << message(m);
+    m.advice.heightDeclared = true;
+    const std::string scale = message(m);
+    EXPECT_EQ(scale.find("h_final_mm"), std::string::npos) << scale;
+    EXPECT_NE(scale.find("the declared scale is unchecked"), std::string::npos) << scale;
+    EXPECT_NE(scale.find("mm_per_px on the end-face plane"), std::string::npos) << scale;
+}
+
 TEST(ReadingMessage, OkSaysNothingAndTheAdviceSaysWhatToDeclare)
 {
     Reading m = warned(0);
