@@ -705,10 +705,10 @@ uint32_t nominalCheck(const MuFunction &F, const SpecimenSpec &spec, double u, d
     // says that height: μ there beyond the tolerance of μ at half height is a finding, also
     // where the nominal explanation keeps enough weight to hold the reading's μ within it.
     // Where the image left a telecentric and a close view open, another height says so in each
-    // view that gives it weight, or it is the view, not the image, that says it: the share
-    // below then finds that the camera's distance decides (a far camera's outline, 1 % inside
-    // R_max, reads as a height 1.3 % short under a telecentric view and as the nominal one
-    // under its own).
+    // view that gives it weight, or it is the view, not the image, that says it: the camera's
+    // distance decides (a far camera's outline, 1 % inside R_max, reads as a height 1.3 % short
+    // under a telecentric view and as the nominal one under its own; a drawn specimen pressed
+    // to 47 % reads the same way round).
     bool heightInEveryView = true;
     for (int c = 0; c < why->viewCount; ++c) {
         const double w = why->partWeight[c][E::OtherHeight];
@@ -717,8 +717,9 @@ uint32_t nominalCheck(const MuFunction &F, const SpecimenSpec &spec, double u, d
         if (!(std::fabs(F.at(u * std::exp(-p.dk), kNominalReduction + p.dr, n) - *nominalMu) > tol))
             heightInEveryView = false;
     }
-    const bool moved = std::fabs(*nominalMu - mu) > tol ||
-                       (lead == E::OtherHeight && heightInEveryView && std::fabs(otherMu - *nominalMu) > tol);
+    const bool otherHeight = lead == E::OtherHeight && std::fabs(otherMu - *nominalMu) > tol;
+    if (otherHeight && !heightInEveryView && !(std::fabs(*nominalMu - mu) > tol)) return kFlagWorkingDistanceDecides;
+    const bool moved = std::fabs(*nominalMu - mu) > tol || otherHeight;
     const uint32_t named = lead == E::ScaleOff ? uint32_t(kFlagScaleSuspect) : uint32_t(kFlagReductionNotNominal);
     if (moved || (weighRisk ? risk : uncheckedRisk) > kWrongRisk) return named;
     if (weighRisk) return 0;
