@@ -141,6 +141,21 @@ constexpr const char *kNoSilhouetteHeightDeclared =
     "no barrel silhouette: the declared scale is unchecked (a scale taken on the fixture plane would pass): check "
     "mm_per_px on the end-face plane or calibrate the camera";
 
+// contact_edge_undecided where the image showed why (vision's cause bits); nullptr: the
+// profile's band, which the flag's own words describe.
+const char *undecidedCauseWords(uint32_t imageFlags)
+{
+    if (imageFlags & vision::kImageUndecidedFaceHoldsEdge)
+        return "the face read shows an edge of its own inside it: the ring may begin there, and the ring read be a "
+               "band on the barrel beyond it (mu low); check the image (the ring light lit in segments, "
+               "segment_images, tells it)";
+    if (imageFlags & vision::kImageUndecidedNoStepBeyond)
+        return "the contact edge rises onto lighter ground with no outline beyond it: the ring read may be the "
+               "barrel's dark band and the original face's edge the contact edge; check the image (a fixture darker "
+               "than the barrel shows its outline; the ring light lit in segments, segment_images, tells it)";
+    return nullptr;
+}
+
 } // namespace
 
 void adviceText(const Advice &a, char *buf, size_t size)
@@ -218,7 +233,9 @@ void readingMessage(const Reading &m, char *buf, size_t size)
     for (int bit = 0; bit < kFlagCount; ++bit) {
         if (!(m.flags & (1u << bit))) continue;
         int w = 0;
-        if ((1u << bit) == kFlagNoSilhouette && m.advice.heightDeclared) {
+        if ((1u << bit) == kFlagContactEdgeUndecided && undecidedCauseWords(m.geometry.imageFlags)) {
+            w = std::snprintf(buf + n, size - n, "%s%s", n ? "; " : "", undecidedCauseWords(m.geometry.imageFlags));
+        } else if ((1u << bit) == kFlagNoSilhouette && m.advice.heightDeclared) {
             w = std::snprintf(buf + n, size - n, "%s%s", n ? "; " : "", kNoSilhouetteHeightDeclared);
         } else if ((1u << bit) != kFlagReductionNotNominal) {
             w = std::snprintf(buf + n, size - n, "%s%s", n ? "; " : "", findingWords(bit));

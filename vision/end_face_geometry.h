@@ -79,6 +79,13 @@ enum ImageFlag : uint32_t {
     // (segment_bearing.h: a ring mounted turned, its lines listed the other way round): no
     // tilt is read from them; segment0SeenDeg and segmentWay say where the light came from.
     kImageSegmentsMisplaced = 1u << 9,
+    // Which of kImageContactEdgeUndecided's causes the image showed, beside it (the band or
+    // the two drops of the profile need no bit of their own): the contact edge rises onto
+    // lighter ground with no step beyond it on any ray (the ring read may be the barrel's dark
+    // band), or the face read holds an edge of its own (the ring may begin there, the ring
+    // read a band on the barrel beyond it).
+    kImageUndecidedNoStepBeyond = 1u << 10,
+    kImageUndecidedFaceHoldsEdge = 1u << 11,
 };
 
 // Where the pipeline looks: the specimen's initial diameter and the scale at the end face

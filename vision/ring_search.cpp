@@ -919,14 +919,14 @@ ErrorCode RingSearch::ringAbout(const MeanEdges &me, EndFaceGeometry *m, bool pr
     // ring darker than a lit barrel whose outline the fixture hides looks alike; the image
     // cannot tell them apart, and the reading says so.
     if (!(m->rMaxPx > 0) && contrastOuter > 0 && seen.stepped == 0 && 2 * seen.searched >= kCoarseRays)
-        m->imageFlags |= kImageContactEdgeUndecided;
+        m->imageFlags |= kImageContactEdgeUndecided | kImageUndecidedNoStepBeyond;
     // The original face is one finish: a face read with an edge of its own inside it is the
     // specimen's face and ring together, the ring read a band beyond them (the bench's full-size
     // tilted seed 11 record 8: a dark ring of 49 px read as face, a lit shoulder of 6 px as
     // the ring, μ 0.19 low).
     if (faceHoldsEdge(profile, profile.K - (alignedOnPx - inner.rEqPx) / kFineStepPx, contrastInner,
                       m->innerEdgeWidthPx))
-        m->imageFlags |= kImageContactEdgeUndecided;
+        m->imageFlags |= kImageContactEdgeUndecided | kImageUndecidedFaceHoldsEdge;
     if (m->rMaxPx > 0 && outlineRivalled(m->rMaxPx)) {
         m->imageFlags |= kImageOutlineAmbiguous;
         // Only an outline the rays agree on to a coarse step is one smeared outline; a

@@ -67,6 +67,23 @@ TEST(ReadingMessage, NoSilhouetteWithADeclaredHeightAsksForTheScaleOnly)
     EXPECT_NE(scale.find("mm_per_px on the end-face plane"), std::string::npos) << scale;
 }
 
+// An undecided contact edge says what the image showed: the profile's band (the flag's own
+// words), a face holding an edge of its own, or a contact edge with no outline beyond it.
+TEST(ReadingMessage, AnUndecidedContactEdgeSaysWhatTheImageShowed)
+{
+    Reading m = warned(kFlagContactEdgeUndecided);
+    m.geometry.imageFlags = vision::kImageContactEdgeUndecided;
+    EXPECT_NE(message(m).find("does not tell which edge ends the flat face"), std::string::npos) << message(m);
+    m.geometry.imageFlags |= vision::kImageUndecidedNoStepBeyond;
+    const std::string noStep = message(m);
+    EXPECT_NE(noStep.find("no outline beyond it"), std::string::npos) << noStep;
+    EXPECT_EQ(noStep.find("does not tell"), std::string::npos) << noStep;
+    m.geometry.imageFlags |= vision::kImageUndecidedFaceHoldsEdge;
+    const std::string face = message(m);
+    EXPECT_NE(face.find("the face read shows an edge of its own"), std::string::npos) << face;
+    EXPECT_EQ(face.find("no outline beyond it"), std::string::npos) << face;
+}
+
 TEST(ReadingMessage, OkSaysNothingAndTheAdviceSaysWhatToDeclare)
 {
     Reading m = warned(0);
