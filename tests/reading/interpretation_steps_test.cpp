@@ -112,6 +112,11 @@ TEST(ImageChecks, EachConditionRaisesItsFlag)
     EXPECT_EQ(flagsOf(g), uint32_t(kFlagLowCoverage));
     g = circularFace(250, 300), g.inner.contrast = -3;
     EXPECT_EQ(flagsOf(g), uint32_t(kFlagLowContrast));
+    // Located but not told from a turning mark's step of as much (6.2 grey levels read so).
+    g.inner.contrast = 7;
+    EXPECT_EQ(flagsOf(g), uint32_t(kFlagLowContrast));
+    g.inner.contrast = -9;
+    EXPECT_EQ(flagsOf(g), 0u);
     g = circularFace(250, 300), g.edgeWidthPx = 3;
     EXPECT_EQ(flagsOf(g), uint32_t(kFlagBlurred));
     // A sharp original face's edge beside a wide contact edge: the optics are sharp, the width
