@@ -75,9 +75,13 @@ WebServer::~WebServer()
 
 void WebServer::stop()
 {
-    logins_.reset(); // every suspended login resumed first: a daemon stops with none suspended
+    // Every suspended login resumed first (a daemon stops with none suspended), and any login
+    // posted from now on refused; the queue itself outlives the daemon's thread, which may be
+    // posting to it until MHD_stop_daemon returns.
+    if (logins_) logins_->stop();
     if (daemon_) MHD_stop_daemon(daemon_);
     daemon_ = nullptr;
+    logins_.reset();
 }
 
 int WebServer::onRequest(void *connection, const char *url, const char *method, const char *upload, size_t *uploadSize,
