@@ -14,6 +14,8 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
+#include "tests/photo/frame_variants.h"
+
 int main(int argc, char **argv)
 {
     if (argc < 4) {
@@ -28,14 +30,8 @@ int main(int argc, char **argv)
     const std::string mode = argv[3];
     cv::Mat out;
     if (mode == "noise" && argc >= 5) {
-        cv::RNG rng(std::strtoull(argv[4], nullptr, 10));
-        const double sigma = argc >= 6 ? std::atof(argv[5]) : 1.0;
-        cv::Mat noise(frame.size(), CV_32FC(frame.channels()));
-        rng.fill(noise, cv::RNG::NORMAL, 0.0, sigma);
-        cv::Mat levels;
-        frame.convertTo(levels, CV_32F);
-        levels += noise;
-        levels.convertTo(out, frame.type()); // rounded and saturated to the frame's depth
+        out = icacam::test::withSensorNoise(frame, std::strtoull(argv[4], nullptr, 10),
+                                            argc >= 6 ? std::atof(argv[5]) : 1.0);
     } else if (mode == "mirror") {
         cv::flip(frame, out, 1);
     } else if (mode == "quarter") {

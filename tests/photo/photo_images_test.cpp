@@ -20,6 +20,7 @@
 #include "host_tools/record_measurer.h"
 #include "host_tools/result_writer.h"
 #include "tests/host_tools/test_support.h"
+#include "tests/photo/frame_variants.h"
 #include "tests/support/temp_dir.h"
 #include "vision/contact_tilt.h"
 #include "vision/end_face_analyzer.h"
@@ -437,12 +438,7 @@ TEST(GroovedFacePhotos, AFreshNoiseDrawDoesNotMakeAGrooveAnOkReading)
 {
     cv::Mat frame = cv::imread(kDir + "images/lowres-s3-0015.png", cv::IMREAD_UNCHANGED);
     ASSERT_FALSE(frame.empty());
-    cv::RNG rng(4066961372ULL);
-    cv::Mat noise(frame.size(), CV_32FC(frame.channels())), levels, noisy;
-    rng.fill(noise, cv::RNG::NORMAL, 0.0, 1.0);
-    frame.convertTo(levels, CV_32F);
-    levels += noise;
-    levels.convertTo(noisy, frame.type());
+    const cv::Mat noisy = test::withSensorNoise(frame, 4066961372ULL, 1.0);
     const test::TempDir dir;
     ASSERT_TRUE(cv::imwrite(dir.path + "/draw.png", noisy));
     host::Manifest manifest;
