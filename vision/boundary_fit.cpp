@@ -80,6 +80,14 @@ bool fitBoundary(const double *radiusPx, const bool *valid, int n, double centre
     // Gross outliers (a stain edge, the other boundary) first: far from the median radius.
     const double med = medianOf(work, nValid);
     for (int i = 0; i < n; ++i) keep[i] = valid[i] && std::fabs(radiusPx[i] - med) < 0.08 * med;
+    if (opt.medianRejectSigma > 0) {
+        int m = 0;
+        for (int i = 0; i < n; ++i)
+            if (keep[i]) work[m++] = std::fabs(radiusPx[i] - med);
+        if (m < 8) return false;
+        const double limit = std::max(opt.minRejectPx, opt.medianRejectSigma * 1.4826 * medianOf(work, m));
+        for (int i = 0; i < n; ++i) keep[i] = keep[i] && std::fabs(radiusPx[i] - med) <= limit;
+    }
 
     BoundaryFit f;
     f.a0 = med;

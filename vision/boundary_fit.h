@@ -9,6 +9,14 @@ struct FitOptions {
     int maxHarmonics = 4;
     double rejectSigma = 3.0;  // residuals beyond this many robust σ are dropped
     double minRejectPx = 0.75; // never reject closer than this (sub-pixel noise)
+    // > 0: before the first fit, also drop radii farther from the median than this many
+    // robust σ of their spread about it (1.4826 × the median absolute deviation, minRejectPx
+    // at least). A least-squares first fit through a quarter of rays that took a step well
+    // beyond the boundary is pulled towards them by several pixels, and the residuals'
+    // median with it: the later passes' limit then keeps them. A circle off the rays' centre,
+    // or an ellipse, spreads the radii sinusoidally: its MAD is 0.7 of the swing, so this
+    // drops none of its points at 3.
+    double medianRejectSigma = 0;
 };
 
 // Fits the valid radii (n rays, evenly spaced from angle 0; n must divide

@@ -1,18 +1,19 @@
 #!/usr/bin/env bash
-# Repeatability of the reading on the committed photographs (tests/data/photo): each frame
+# Repeatability of the reading on the committed photographs (tests/data/photo, or the folder
+# DIR with its manifest.csv and truth.csv, such as a reference set): each frame
 # measured as committed, then again with DRAWS fresh draws of sensor noise (1 grey level,
 # seeded), mirrored and turned a quarter. The scene is the same in all of them: what moves is
 # the pixels. Per record: the statuses (o ok, w warn, e error: the frame, then the draws, then
 # mirror and quarter), which of them are right (R) or wrong (W) against truth.csv, the spread of
 # μ over the draws against the edges' own σ (sigma_edges), and the range of μ; then a summary.
 # A study, not a test: docs/photographs.md quotes it.
-# usage: [KEEP=1] tests/photo/repeatability_study.sh BUILD_DIR [DRAWS]
+# usage: [KEEP=1] tests/photo/repeatability_study.sh BUILD_DIR [DRAWS] [DIR]
 set -euo pipefail
 build=$1
 draws=${2:-8}
 icacam=$build/host_tools/icacam
 variants=$build/tests/photo/photo_frame_variants
-src=$(cd "$(dirname "$0")/../data/photo" && pwd)
+src=$(cd "${3:-$(dirname "$0")/../data/photo}" && pwd)
 tmp=$(mktemp -d)
 # KEEP=1 keeps the variants and their records (the folder is printed).
 if [ -n "${KEEP:-}" ]; then echo "variants in $tmp" >&2; else trap 'rm -rf "$tmp"' EXIT; fi
