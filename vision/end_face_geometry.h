@@ -112,9 +112,11 @@ inline constexpr double kWidestRingOfR0 = 0.32;
 // The contact edge's ramp (√(w_o² − w_i²), pixels) beyond which the barrel's shading ramps away
 // from the flat face rather than stepping: rendered barrels ramping away measure 1.5–3.5 px;
 // drawn steps under 1.0, the development set's and the reference photographs' contact edges
-// under 1.6 (data/photobench/README.md). Beyond it the reading warns (contact_edge_ramp) with
-// the ramp in u's error; the pipeline takes R_o where the ring's level ends from a ramp of
-// 0.5 px on (kKneeRampPx, vision/ring_search_contact_edge.cpp).
+// under 1.6 (data/photobench/README.md). Beyond it the knee is searched twice as deep and an
+// arc of an oblique view is followed to where its level ends; the pipeline takes R_o where the
+// ring's level ends from a ramp of 0.5 px on (kKneeRampPx, vision/ring_search_contact_edge.cpp).
+// The reading's finding (contact_edge_ramp, the ramp in u's error) begins a little above, by
+// the width's own repeatability (reading/interpretation_steps.cpp).
 inline constexpr double kContactRampPx = 1.6;
 
 // The end face as the image shows it, in pixels: the specimen's centre, the two boundaries'

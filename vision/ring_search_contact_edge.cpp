@@ -47,7 +47,8 @@ constexpr double kBilinearBlurSq = 0.17;
 // width is taken within half the ring (straight-s3 0001: a 9 px ring, a fall over 8 px,
 // 0.7 px, the peak 2.5 px outside). A drawn step measures 0–0.97 px: at the knee the few
 // over this (9 of 240 frames of seeds 101 and 102) read within 0.0013 of μ at the peak.
-// (The reading's finding and the ramp's share of u's error begin at kContactRampPx.)
+// (The reading's finding and the ramp's share of u's error begin a little above
+// kContactRampPx, reading/interpretation_steps.cpp.)
 constexpr double kKneeRampPx = 0.5;
 } // namespace
 
