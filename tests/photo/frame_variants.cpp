@@ -1,25 +1,31 @@
 // A photograph as the camera could have given it otherwise, for the repeatability study
-// (repeatability_study.sh): the same frame with a fresh draw of sensor noise, mirrored, or
-// turned a quarter. The scene is unchanged, so a reading that moves beyond its U, or changes
-// its status, moved on the pixels alone.
+// (repeatability_study.sh): the same frame with a fresh draw of sensor noise, mirrored,
+// turned a quarter, taken by a sensor of fewer pixels, or compressed. The scene is unchanged,
+// so a reading that moves beyond its U, or changes its status, moved on the pixels alone.
 //
 // usage: photo_frame_variants IN OUT.png noise SEED [SIGMA]   Gaussian noise, SIGMA grey levels (default 1)
 //        photo_frame_variants IN OUT.png mirror              left for right
 //        photo_frame_variants IN OUT.png quarter             turned 90° clockwise
+//        photo_frame_variants IN OUT.png area S              S times the pixels a side (0 < S < 1),
+//                                                            each the mean of the ones it covers
+//        photo_frame_variants IN OUT.png jpeg Q              through JPEG at quality Q (1–100)
 // OUT is written losslessly (PNG), so that nothing but the variant differs.
 #include <cstdio>
 #include <cstdlib>
 #include <string>
 
+#include <vector>
+
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include "tests/photo/frame_variants.h"
 
 int main(int argc, char **argv)
 {
     if (argc < 4) {
-        std::fprintf(stderr, "usage: %s IN OUT.png noise SEED [SIGMA] | mirror | quarter\n", argv[0]);
+        std::fprintf(stderr, "usage: %s IN OUT.png noise SEED [SIGMA] | mirror | quarter | area S | jpeg Q\n", argv[0]);
         return 2;
     }
     cv::Mat frame = cv::imread(argv[1], cv::IMREAD_UNCHANGED);
@@ -36,6 +42,16 @@ int main(int argc, char **argv)
         cv::flip(frame, out, 1);
     } else if (mode == "quarter") {
         cv::rotate(frame, out, cv::ROTATE_90_CLOCKWISE);
+    } else if (mode == "area" && argc >= 5 && std::atof(argv[4]) > 0 && std::atof(argv[4]) < 1) {
+        const double s = std::atof(argv[4]);
+        cv::resize(frame, out, cv::Size(), s, s, cv::INTER_AREA);
+    } else if (mode == "jpeg" && argc >= 5 && std::atoi(argv[4]) >= 1 && std::atoi(argv[4]) <= 100) {
+        std::vector<uchar> bytes;
+        if (!cv::imencode(".jpg", frame, bytes, {cv::IMWRITE_JPEG_QUALITY, std::atoi(argv[4])})) {
+            std::fprintf(stderr, "%s: cannot encode %s as JPEG\n", argv[0], argv[1]);
+            return 1;
+        }
+        out = cv::imdecode(bytes, cv::IMREAD_UNCHANGED);
     } else {
         std::fprintf(stderr, "%s: unknown variant %s\n", argv[0], mode.c_str());
         return 2;

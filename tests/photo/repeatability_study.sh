@@ -2,9 +2,11 @@
 # Repeatability of the reading on the committed photographs (tests/data/photo, or the folder
 # DIR with its manifest.csv and truth.csv, such as a reference set): each frame
 # measured as committed, then again with DRAWS fresh draws of sensor noise (1 grey level,
-# seeded), mirrored and turned a quarter. The scene is the same in all of them: what moves is
-# the pixels. Per record: the statuses (o ok, w warn, e error: the frame, then the draws, then
-# mirror and quarter), which of them are right (R) or wrong (W) against truth.csv, the spread of
+# seeded), mirrored, turned a quarter, at 0.7 and 0.5 times the pixels a side (each the mean of
+# those it covers, the scale with them) and through JPEG at quality 80. The scene is the same
+# in all of them: what moves is the pixels. Per record: the statuses (o ok, w warn, e error:
+# the frame, then the draws, then mirror, quarter, 0.7, 0.5 and JPEG), which of them are right
+# (R) or wrong (W) against truth.csv, the spread of
 # μ over the draws against the edges' own σ (sigma_edges), and the range of μ; then a summary.
 # A study, not a test: docs/photographs.md quotes it.
 # usage: [KEEP=1] tests/photo/repeatability_study.sh BUILD_DIR [DRAWS] [DIR]
@@ -19,7 +21,11 @@ tmp=$(mktemp -d)
 if [ -n "${KEEP:-}" ]; then echo "variants in $tmp" >&2; else trap 'rm -rf "$tmp"' EXIT; fi
 
 header=$(head -1 "$src/manifest.csv")
-sets="frame mirror quarter"
+# The scale travels with the pixels: a frame of S times the pixels a side has 1/S the mm per px.
+scaleCol=$(echo "$header" | tr -d '\r' | tr ',' '\n' | grep -nx mm_per_px | cut -d: -f1 || true)
+resized=""
+[ -n "$scaleCol" ] && resized="area70 area50"
+sets="frame mirror quarter $resized jpeg80"
 for k in $(seq 1 "$draws"); do sets="$sets noise$k"; done
 for s in $sets; do
     mkdir -p "$tmp/$s/images"
@@ -32,6 +38,15 @@ tail -n +2 "$src/manifest.csv" | while IFS=, read -r id image rest; do
         "$variants" "$src/$image" "$tmp/$s/images/$id.png" "$s"
         echo "$id,images/$id.png,$rest" >> "$tmp/$s/manifest.csv"
     done
+    for s in $resized; do
+        f=0.${s#area}
+        "$variants" "$src/$image" "$tmp/$s/images/$id.png" area "$f"
+        echo "$id,images/$id.png,$rest" |
+            awk -F, -v c="$scaleCol" -v f="$f" 'BEGIN { OFS = "," } { $c = sprintf("%.7g", $c / f); print }' \
+                >> "$tmp/$s/manifest.csv"
+    done
+    "$variants" "$src/$image" "$tmp/jpeg80/images/$id.png" jpeg 80
+    echo "$id,images/$id.png,$rest" >> "$tmp/jpeg80/manifest.csv"
     seed=$(printf "%s" "$id" | cksum | cut -d' ' -f1)
     for k in $(seq 1 "$draws"); do
         "$variants" "$src/$image" "$tmp/noise$k/images/$id.png" noise $((seed + 7919 * k))
@@ -43,10 +58,11 @@ for s in $sets; do
 done
 
 python3 - "$tmp" "$src/truth.csv" "$draws" <<'EOF'
-import csv, statistics, sys
+import csv, os, statistics, sys
 tmp, truth_path, draws = sys.argv[1], sys.argv[2], int(sys.argv[3])
 truth = {r['id']: r for r in csv.DictReader(open(truth_path))}
 sets = ['frame'] + ['noise%d' % k for k in range(1, draws + 1)] + ['mirror', 'quarter']
+sets += [s for s in ('area70', 'area50', 'jpeg80') if os.path.exists('%s/%s/r.csv' % (tmp, s))]
 res = {s: {r['id']: r for r in csv.DictReader(open('%s/%s/r.csv' % (tmp, s)))} for s in sets}
 flips = moved = silent_frame = silent_any = 0
 ratios = []
