@@ -60,11 +60,22 @@ bool RingSearch::faceHoldsEdge(const AlignedProfile &p, double innerAt, double c
     }
     if (count < kFaceMinSteps) return false;
     // A share of the edge's contrast, and out of the face's own texture (its σ, the costlier
-    // part, only where the share is reached).
+    // part, only where the share is reached). The texture is read on the steps whose windows
+    // do not reach across the largest one: an edge 4 px wide moves a third of a 27-sample
+    // face's steps, and their median σ with them (a dark ring read with the face on a
+    // JPEG-compressed bench photograph: the step 4.6 σ of a texture it had inflated to
+    // 37 grey levels).
     int32_t largest = 0;
-    for (int k = 0; k < count; ++k) largest = std::max(largest, std::abs(step[k]));
-    return largest >= kFaceStepShare * std::fabs(contrastInner) * 256 * n &&
-           largest >= kFaceStepNoise * robustSigma(step, 0, count - 1);
+    int at = 0;
+    for (int k = 0; k < count; ++k)
+        if (std::abs(step[k]) > largest) largest = std::abs(step[k]), at = k;
+    if (!(largest >= kFaceStepShare * std::fabs(contrastInner) * 256 * n)) return false;
+    int32_t texture[AlignedProfile::kSpan];
+    int m = 0;
+    for (int k = 0; k < count; ++k)
+        if (std::abs(k - at) > n + gap) texture[m++] = step[k];
+    return largest >=
+           kFaceStepNoise * (m >= kFaceMinSteps / 2 ? robustSigma(texture, 0, m - 1) : robustSigma(step, 0, count - 1));
 }
 
 RingSearch::OriginalFaceName RingSearch::nameOriginalFace(const AlignedProfile &p) const

@@ -14,8 +14,6 @@
 #include <cstdlib>
 #include <string>
 
-#include <vector>
-
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -46,12 +44,11 @@ int main(int argc, char **argv)
         const double s = std::atof(argv[4]);
         cv::resize(frame, out, cv::Size(), s, s, cv::INTER_AREA);
     } else if (mode == "jpeg" && argc >= 5 && std::atoi(argv[4]) >= 1 && std::atoi(argv[4]) <= 100) {
-        std::vector<uchar> bytes;
-        if (!cv::imencode(".jpg", frame, bytes, {cv::IMWRITE_JPEG_QUALITY, std::atoi(argv[4])})) {
+        out = icacam::test::throughJpeg(frame, std::atoi(argv[4]));
+        if (out.empty()) {
             std::fprintf(stderr, "%s: cannot encode %s as JPEG\n", argv[0], argv[1]);
             return 1;
         }
-        out = cv::imdecode(bytes, cv::IMREAD_UNCHANGED);
     } else {
         std::fprintf(stderr, "%s: unknown variant %s\n", argv[0], mode.c_str());
         return 2;
