@@ -56,6 +56,7 @@ struct PhotoBenchOptions {
     uint32_t seed = 1;
     int first = 1;                          // the first record's number (a record is the same at any count)
     bool small = false;                     // 640 × 480 (the CI size)
+    bool large = false;                     // 2028 × 1520 (the reference photographs' larger frame)
     std::string profilesCsv;                // the FE barrel profiles (barrel_profile.h)
     double barrelFlatness = 1;              // the side's shape flattened about its widest section (photo_record.h)
     std::string povray = "povray";          // the renderer's binary

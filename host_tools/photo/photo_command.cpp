@@ -18,7 +18,7 @@ std::string usage()
 {
     const PhotoBenchOptions d;
     return "usage: icacam synth --renderer povray --out DIR [--condition LIST|all] [--count N] [--seed S]\n"
-           "                    [--first K] [--profile LIST|all] [--small] [--quality 'POV-Ray options']\n"
+           "                    [--first K] [--profile LIST|all] [--small|--large] [--quality 'POV-Ray options']\n"
            "                    [--profiles CSV] [--flat-barrel Q] [--povray PATH] [--keep-render] [--labels]\n"
            "                    [--encoding sensor|png|jpeg] [--segments N] [--quiet]\n"
            "       icacam synth --renderer povray --make-profiles CSV --fe-work DIR [--ccx PATH]\n"
@@ -34,7 +34,8 @@ std::string usage()
            "  --count N     records per condition (default " +
            std::to_string(d.countPerCondition) +
            "); --first K numbers them from K (a record is the same at any count)\n"
-           "  --small       640 x 480 (the CI size); else 1456 x 1088 (lowres: 640 x 480 or 1280 x 720)\n"
+           "  --small       640 x 480 (the CI size); --large 2028 x 1520; else 1456 x 1088 (lowres: 640 x 480\n"
+           "                or 1280 x 720)\n"
            "  --quality     POV-Ray's anti-aliasing options (default '" +
            d.quality +
            "')\n"
@@ -91,9 +92,10 @@ int photoSynthCommand(const std::vector<std::string> &args)
             opt.seed = uint32_t(opts.wholeNumber(0, 4294967295L));
         else if (opts.is("--first"))
             opt.first = int(opts.wholeNumber(1, 1000000));
-        else if (opts.is("--small"))
-            opt.small = opts.flag();
-        else if (opts.is("--quality"))
+        else if (opts.is("--small") || opts.is("--large")) {
+            (opts.is("--small") ? opt.small : opt.large) = opts.flag();
+            if (opt.small && opt.large) opts.fail("one frame size: --small or --large");
+        } else if (opts.is("--quality"))
             opt.quality = opts.value();
         else if (opts.is("--profiles"))
             opt.profilesCsv = opts.value();

@@ -80,6 +80,27 @@ TEST(PhotoBench, AFlatterBarrelShowsItsOutlineNearerRMax)
     }
 }
 
+// The reference photographs' larger frame (--large): the same specimen, finish and light
+// drawn, on 2028 × 1520 pixels at about 1.4 times the 1456 × 1088 frame's pixels per mm.
+TEST(PhotoBench, TheLargeFrameDrawsTheSameSpecimenOnMorePixels)
+{
+    const auto table = host::photo::readBarrelProfiles(kProfiles);
+    for (uint32_t seed : {3u, 11u}) {
+        std::mt19937 a(seed), b(seed);
+        const auto full = host::photo::drawRecord(host::photo::PhotoCondition::Straight,
+                                                  host::photo::FaceProfile::DarkRing, a, table, false);
+        const auto large = host::photo::drawRecord(host::photo::PhotoCondition::Straight,
+                                                   host::photo::FaceProfile::DarkRing, b, table, false, 1, true);
+        EXPECT_EQ(full.scene.camera.width, 1456);
+        EXPECT_EQ(large.scene.camera.width, 2028);
+        EXPECT_EQ(large.scene.camera.height, 1520);
+        EXPECT_EQ(full.scene.rOuterMm, large.scene.rOuterMm);
+        EXPECT_EQ(full.mu50, large.mu50);
+        EXPECT_EQ(full.material, large.material);
+        EXPECT_NEAR(full.trueMmPerPx / large.trueMmPerPx, 1520.0 / 1088, 0.02);
+    }
+}
+
 TEST(PhotoCamera, ProjectsItsTargetOntoTheImageCentreAndKeepsTheScale)
 {
     for (double tilt : {0.0, 12.0}) {
