@@ -209,7 +209,7 @@ std::string writePhotoSet(const std::string &dir, const PhotoBenchOptions &opt)
             std::seed_seq seq{opt.seed, uint32_t(cond), uint32_t(i)};
             std::mt19937 rng(seq);
             const FaceProfile profile = profiles[size_t(i - 1) % profiles.size()];
-            PhotoRecord rec = drawRecord(cond, profile, rng, table, opt.small, opt.barrelFlatness, opt.large);
+            PhotoRecord rec = drawRecord(cond, profile, rng, table, opt.frame, opt.barrelFlatness);
             if (opt.encoding == PhotoBenchOptions::Encoding::Png) rec.sensor.jpegQuality = 0;
             if (opt.encoding == PhotoBenchOptions::Encoding::Jpeg && rec.sensor.jpegQuality == 0)
                 rec.sensor.jpegQuality = 92;

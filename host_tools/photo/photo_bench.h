@@ -31,6 +31,10 @@ enum class PhotoCondition {
     LowRes,       // 640 × 480 or 1280 × 720 at 19–42 px/mm
 };
 
+// The frame: 1456 × 1088 (the reference photographs' size), 640 × 480 (the CI size) or
+// 2028 × 1520 (the reference photographs' larger frame). The lowres condition draws its own.
+enum class PhotoFrame { Full, Small, Large };
+
 // How bright the zones are against each other: the order of face, ring, barrel and
 // background (the last three physical: the finishes are drawn so that the render has it).
 enum class FaceProfile {
@@ -54,9 +58,8 @@ struct PhotoBenchOptions {
     std::vector<FaceProfile> profiles; // empty: every profile in turn
     int countPerCondition = 8;
     uint32_t seed = 1;
-    int first = 1;                          // the first record's number (a record is the same at any count)
-    bool small = false;                     // 640 × 480 (the CI size)
-    bool large = false;                     // 2028 × 1520 (the reference photographs' larger frame)
+    int first = 1; // the first record's number (a record is the same at any count)
+    PhotoFrame frame = PhotoFrame::Full;
     std::string profilesCsv;                // the FE barrel profiles (barrel_profile.h)
     double barrelFlatness = 1;              // the side's shape flattened about its widest section (photo_record.h)
     std::string povray = "povray";          // the renderer's binary

@@ -93,8 +93,10 @@ int photoSynthCommand(const std::vector<std::string> &args)
         else if (opts.is("--first"))
             opt.first = int(opts.wholeNumber(1, 1000000));
         else if (opts.is("--small") || opts.is("--large")) {
-            (opts.is("--small") ? opt.small : opt.large) = opts.flag();
-            if (opt.small && opt.large) opts.fail("one frame size: --small or --large");
+            const PhotoFrame frame = opts.is("--small") ? PhotoFrame::Small : PhotoFrame::Large;
+            opts.flag();
+            if (opt.frame != PhotoFrame::Full && opt.frame != frame) opts.fail("one frame size: --small or --large");
+            opt.frame = frame;
         } else if (opts.is("--quality"))
             opt.quality = opts.value();
         else if (opts.is("--profiles"))

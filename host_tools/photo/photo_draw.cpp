@@ -175,7 +175,7 @@ bool fitsFrame(const PhotoScene &s, double marginMm)
 } // namespace
 
 PhotoRecord drawRecord(PhotoCondition cond, FaceProfile profile, std::mt19937 &rng,
-                       const std::vector<BarrelProfile> &profiles, bool small, double flatness, bool large)
+                       const std::vector<BarrelProfile> &profiles, PhotoFrame frame, double flatness)
 {
     PhotoRecord rec;
     rec.condition = cond, rec.profile = profile;
@@ -211,10 +211,10 @@ PhotoRecord drawRecord(PhotoCondition cond, FaceProfile profile, std::mt19937 &r
 
     // The camera: a pinhole 45–95 mm above the end face, at a scale that keeps the specimen
     // and its shadow in the frame.
-    int width = 1456, height = 1088;
+    const bool small = frame == PhotoFrame::Small;
+    int width = small ? 640 : frame == PhotoFrame::Large ? 2028 : 1456;
+    int height = small ? 480 : frame == PhotoFrame::Large ? 1520 : 1088;
     double pxMmLo = 0.75, pxMmHi = 1.0;
-    if (small) width = 640, height = 480;
-    if (large) width = 2028, height = 1520;
     if (cond == PhotoCondition::LowRes) {
         const bool vga = small || uniform(rng, 0, 1) < 0.5;
         width = vga ? 640 : 1280, height = vga ? 480 : 720;

@@ -47,10 +47,9 @@ constexpr int kTruthBins = 720;
 // mid-plane instead of ζ: the same radii, the side nearer R_max over more of its height and
 // folding more sharply onto the platen (3–4: R_max reached within 1–2 mm of the end face, as
 // a parametric barrel or another FE's friction law has it; the outline a close camera sees
-// then lies 1–3 % inside R_max rather than the FE's 3–6 %). small: 640 × 480; large:
-// 2028 × 1520; else 1456 × 1088 (lowres draws its own). The draws are the same at any size.
+// then lies 1–3 % inside R_max rather than the FE's 3–6 %). The draws are the same in any frame.
 PhotoRecord drawRecord(PhotoCondition cond, FaceProfile profile, std::mt19937 &rng,
-                       const std::vector<BarrelProfile> &profiles, bool small, double flatness = 1, bool large = false);
+                       const std::vector<BarrelProfile> &profiles, PhotoFrame frame, double flatness = 1);
 
 PhotoTruth projectTruth(const PhotoScene &s);
 

@@ -62,10 +62,12 @@ TEST(PhotoBench, AFlatterBarrelShowsItsOutlineNearerRMax)
     const auto table = host::photo::readBarrelProfiles(kProfiles);
     for (uint32_t seed : {3u, 11u, 29u}) {
         std::mt19937 a(seed), b(seed);
-        const auto fe = host::photo::drawRecord(host::photo::PhotoCondition::Straight,
-                                                host::photo::FaceProfile::Staircase, a, table, true);
-        const auto flat = host::photo::drawRecord(host::photo::PhotoCondition::Straight,
-                                                  host::photo::FaceProfile::Staircase, b, table, true, 4);
+        const auto fe =
+            host::photo::drawRecord(host::photo::PhotoCondition::Straight, host::photo::FaceProfile::Staircase, a,
+                                    table, host::photo::PhotoFrame::Small);
+        const auto flat =
+            host::photo::drawRecord(host::photo::PhotoCondition::Straight, host::photo::FaceProfile::Staircase, b,
+                                    table, host::photo::PhotoFrame::Small, 4);
         ASSERT_EQ(fe.scene.rMaxMm, flat.scene.rMaxMm);
         ASSERT_EQ(fe.scene.rOuterMm, flat.scene.rOuterMm);
         ASSERT_EQ(fe.workingDistanceMm, flat.workingDistanceMm);
@@ -87,10 +89,12 @@ TEST(PhotoBench, TheLargeFrameDrawsTheSameSpecimenOnMorePixels)
     const auto table = host::photo::readBarrelProfiles(kProfiles);
     for (uint32_t seed : {3u, 11u}) {
         std::mt19937 a(seed), b(seed);
-        const auto full = host::photo::drawRecord(host::photo::PhotoCondition::Straight,
-                                                  host::photo::FaceProfile::DarkRing, a, table, false);
-        const auto large = host::photo::drawRecord(host::photo::PhotoCondition::Straight,
-                                                   host::photo::FaceProfile::DarkRing, b, table, false, 1, true);
+        const auto full =
+            host::photo::drawRecord(host::photo::PhotoCondition::Straight, host::photo::FaceProfile::DarkRing, a, table,
+                                    host::photo::PhotoFrame::Full);
+        const auto large =
+            host::photo::drawRecord(host::photo::PhotoCondition::Straight, host::photo::FaceProfile::DarkRing, b, table,
+                                    host::photo::PhotoFrame::Large);
         EXPECT_EQ(full.scene.camera.width, 1456);
         EXPECT_EQ(large.scene.camera.width, 2028);
         EXPECT_EQ(large.scene.camera.height, 1520);
@@ -127,7 +131,7 @@ TEST(PhotoBench, RendersASmallSetWhoseTruthMatchesTheRenderedGeometry)
     opt.conditions = {host::photo::PhotoCondition::Straight, host::photo::PhotoCondition::Tilted};
     opt.countPerCondition = 2;
     opt.seed = 5;
-    opt.small = true;
+    opt.frame = host::photo::PhotoFrame::Small;
     opt.labels = true;
     opt.quiet = true;
     // No anti-aliasing in the photographs (the label images keep theirs): CI time, not realism.
@@ -196,7 +200,7 @@ TEST(PhotoBench, SegmentFramesLightTheirOwnSide)
     opt.conditions = {host::photo::PhotoCondition::Straight};
     opt.countPerCondition = 1;
     opt.seed = 5;
-    opt.small = true;
+    opt.frame = host::photo::PhotoFrame::Small;
     opt.quiet = true;
     opt.quality = "-A";
     opt.profilesCsv = kProfiles;

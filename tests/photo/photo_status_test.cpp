@@ -50,7 +50,7 @@ void expectLines(host::photo::PhotoCondition condition, const std::string &name,
     opt.conditions = {condition};
     opt.countPerCondition = count;
     opt.seed = seed;
-    opt.small = true;
+    opt.frame = host::photo::PhotoFrame::Small;
     opt.quiet = true;
     opt.profilesCsv = std::string(ICACAM_SOURCE_DIR) + "/data/photobench/fe_profiles.csv";
     const std::string manifest = host::photo::writePhotoSet(dir.string(), opt);
