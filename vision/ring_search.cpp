@@ -234,6 +234,14 @@ RingSearch::MeanEdges RingSearch::meanProfileEdges()
             break;
         }
     if (!e.namedByZones)
+        for (int k = 0; k + 1 < edges.count && e.backs < MeanEdges::kMaxBacks; ++k) {
+            const ProfileEdge &o = edges.edge[k];
+            const double r = radiusOf(o.index);
+            if (o.flankLo <= at || r < e.rOuter + 1.5 * step || o.sign == e.signOuter) continue;
+            e.rBack[e.backs] = r;
+            e.strengthBack[e.backs++] = o.strength / 16;
+        }
+    if (!e.namedByZones)
         for (int k = 0; k < edges.count; ++k) {
             const ProfileEdge &o = edges.edge[k];
             const double r = radiusOf(o.index);
@@ -256,6 +264,9 @@ namespace {
 // How near the step back the contact edge found about it must lie (pixels): the mean
 // profile's peak against the rays' fit, a pixel's sampling apart.
 constexpr double kBackAgreesPx = 1.0;
+// Two edges closer than this many blur σ show one derivative peak: a ring no wider is not
+// resolved (reading: kResolvedRingBlurs).
+constexpr double kUnresolvedBlurs = 2.0;
 } // namespace
 
 bool RingSearch::stepBack(const MeanEdges &me, MeanEdges *back)
@@ -668,7 +679,7 @@ ErrorCode RingSearch::run(EndFaceGeometry *m)
     // edge itself (below): the profile's two-step fit, the search's costliest part, waits
     // until the ring about the next step has been tried.
     bool deferred = false;
-    const ErrorCode e = ringAbout(me, m, !staircase, &deferred);
+    ErrorCode e = ringAbout(me, m, !staircase, &deferred);
     auto again = [&](const MeanEdges &about) {
         cx = cx0, cy = cy0;
         samplesInside_ = samplesSaturated_ = 0;
@@ -726,6 +737,29 @@ ErrorCode RingSearch::run(EndFaceGeometry *m)
     if (e == ErrorCode::None && dropOutermost && !(m->rMaxPx > 0) && !(m->imageFlags & kImageBarrelOblique) &&
         levelEndInsideDrop(me, &onRamp))
         return readOnRamp(m->outer.rEqPx - onRamp.reachOutPx) ? ErrorCode::None : again(me);
+    // The profile's steps back beyond the drop, nearest first (a turned ring's grooves step both
+    // ways before the step back onto a shoulder): the first whose ring the rays read with its
+    // original face's edge on the drop, where the step back's own check allows (below).
+    auto readAboutStepBack = [&] {
+        for (int b = 0; b < me.backs; ++b) {
+            MeanEdges via = me;
+            via.rNext = me.rBack[b], via.signNext = -me.signOuter, via.strengthNext = me.strengthBack[b];
+            if (stepsBackBeyond(via) && again(nextStep(via.rNext, via.signNext, via.strengthNext)) == ErrorCode::None &&
+                !(m->imageFlags & kImageNarrowRingFit) && std::fabs(m->inner.rEqPx - me.rOuter) <= kBackAgreesPx)
+                return true;
+        }
+        return false;
+    };
+    // A ring the profile's fit about the drop reads narrower than two blurs is no ring resolved
+    // (the reading says so): where the profile steps back beyond the drop, the ring about the
+    // step back is read instead, and the fit stands where none is (a dark ring's grooves at
+    // 2028 × 1520, 10 px apart and 17 grey levels deep: the fit read the first of them as the
+    // contact edge, 1.9 px out, μ 0.23 low; the step back beyond them, 74 px out, is the edge).
+    if (e == ErrorCode::None && (m->imageFlags & kImageNarrowRingFit) && !staircase && me.backs > 0 &&
+        m->outer.rEqPx - m->inner.rEqPx < kUnresolvedBlurs * std::max(m->edgeWidthPx, 0.5)) {
+        if (readAboutStepBack()) return ErrorCode::None;
+        return again(me);
+    }
     if (deferred) {
         // No ray saw an original face's edge inside the largest drop: on a staircase the drop
         // is as likely the original face's edge itself, two steps of one face edge not round
@@ -749,9 +783,7 @@ ErrorCode RingSearch::run(EndFaceGeometry *m)
         // stands where its original face's edge is the drop, to the sampling that the step
         // back's own check allows, and where the step back is more than a highlight line's
         // ripple on a drawn barrel band.
-        if (!me.namedByZones && me.rNext > 0 && stepsBackBeyond(me) && again(next) == ErrorCode::None &&
-            std::fabs(m->inner.rEqPx - me.rOuter) <= kBackAgreesPx)
-            return ErrorCode::None;
+        if (!me.namedByZones && readAboutStepBack()) return ErrorCode::None;
         // The same where the step back is the profile's last step, taken for the outline (a
         // ring of a few coarse samples, its lit shoulder and the outline beyond it one rise).
         // That step may as well be the outline itself beyond a face with no ring of its own:

@@ -66,6 +66,13 @@ struct RingSearch {
         double rNext = 0;
         int signNext = 0;
         int32_t strengthNext = 0;
+        // Where the largest drop named it: the profile's edges of the other sign beyond it,
+        // inside the outline, nearest first (the step back onto a shoulder or fold may lie
+        // beyond a turned ring's grooves, which step both ways).
+        static constexpr int kMaxBacks = 8;
+        double rBack[kMaxBacks] = {};
+        int32_t strengthBack[kMaxBacks] = {};
+        int backs = 0;
         // The same for the profile's outermost edge beyond it, taken for the outline (0: none).
         double rOutline = 0;
         int signOutline = 0;

@@ -91,6 +91,19 @@ protected:
 
 vision::EndFaceAnalyzer FullSizePhotos::analyzer_;
 
+// And at the reference photographs' larger frame, 2028 × 1520 (tests/data/photo/large).
+class LargeFramePhotos : public ::testing::TestWithParam<std::string> {
+protected:
+    static void SetUpTestSuite() { ASSERT_EQ(analyzer_.configure(2028, 1520), vision::ErrorCode::None); }
+
+    Photo measure(const std::string &id) { return measurePhoto(&analyzer_, kDir + "large/", id, 1, &image_); }
+
+    static vision::EndFaceAnalyzer analyzer_;
+    host::LumaImage image_;
+};
+
+vision::EndFaceAnalyzer LargeFramePhotos::analyzer_;
+
 } // namespace
 
 // Both boundaries found and each named for what it is: R_i within a pixel of the original
@@ -502,6 +515,23 @@ TEST(ContactEdgeRampPhotos, ARampNarrowerThanWhereTheLevelEndsStaysAFinding)
     expectOkOnlyIfRight("straight-s12-0019", frame, reading::kFlagContactEdgeRamp, dir);
 }
 
+// A steel specimen's dark ring whose turning grooves show in the mean profile (13 grey levels
+// deep, 9 px apart at 1456 × 1088; 17 deep, 10 px apart at 2028 × 1520) between the drop from
+// the face and the step back onto the barrel's lit shoulder, 53 and 74 px farther out
+// (straight-s21-0008): the step back is the contact edge, not the first groove's flank, which
+// the search had taken for it (inner edge not found at 1456 × 1088; at 2028 × 1520 the profile's
+// fit read a ring of 1.9 px at the drop, μ 0.05 for 0.28).
+class GroovedDarkRingPhotos : public FullSizePhotos {};
+TEST_P(GroovedDarkRingPhotos, TheStepBackBeyondTheGroovesIsTheContactEdge)
+{
+    expectNamed(measure(GetParam()));
+}
+class GroovedDarkRingLargePhotos : public LargeFramePhotos {};
+TEST_P(GroovedDarkRingLargePhotos, TheStepBackBeyondTheGroovesIsTheContactEdge)
+{
+    expectNamed(measure(GetParam()));
+}
+
 // A face and ring of one shade (248 / 247) beside a contact edge that falls into the barrel's
 // ramp: the rays take the contact edge for the original face's edge and the ramp's knee,
 // 4.5 px beyond, for the contact edge, at a blur σ of 2.3 px. Two edges that close are not
@@ -557,6 +587,8 @@ INSTANTIATE_TEST_SUITE_P(Rendered, ToneCurvePhotos,
                          recordName);
 
 INSTANTIATE_TEST_SUITE_P(Rendered, FullSizePhotos, ::testing::Values("tilted-s11-0008"), recordName);
+INSTANTIATE_TEST_SUITE_P(Rendered, GroovedDarkRingPhotos, ::testing::Values("straight-s21-0008"), recordName);
+INSTANTIATE_TEST_SUITE_P(Rendered, GroovedDarkRingLargePhotos, ::testing::Values("straight-s21-0008"), recordName);
 
 INSTANTIATE_TEST_SUITE_P(Rendered, NothingBeyondPhotos, ::testing::Values("tilted-s4-0020"), recordName);
 
