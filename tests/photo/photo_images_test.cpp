@@ -78,31 +78,33 @@ protected:
 
 vision::EndFaceAnalyzer PhotoImages::analyzer_;
 
-// The same at the reference photographs' size, 1456 × 1088 (tests/data/photo/full).
-class FullSizePhotos : public ::testing::TestWithParam<std::string> {
+// The same at the reference photographs' frames, each folder's records measured by an analyzer
+// configured for its size.
+struct FullFrame {
+    static constexpr int kWidth = 1456, kHeight = 1088;
+    static constexpr const char *kFolder = "full/";
+};
+struct LargeFrame {
+    static constexpr int kWidth = 2028, kHeight = 1520;
+    static constexpr const char *kFolder = "large/";
+};
+
+template <typename Frame> class FramePhotos : public ::testing::TestWithParam<std::string> {
 protected:
-    static void SetUpTestSuite() { ASSERT_EQ(analyzer_.configure(1456, 1088), vision::ErrorCode::None); }
+    static void SetUpTestSuite()
+    {
+        ASSERT_EQ(analyzer_.configure(Frame::kWidth, Frame::kHeight), vision::ErrorCode::None);
+    }
 
-    Photo measure(const std::string &id) { return measurePhoto(&analyzer_, kDir + "full/", id, 1, &image_); }
+    Photo measure(const std::string &id) { return measurePhoto(&analyzer_, kDir + Frame::kFolder, id, 1, &image_); }
 
-    static vision::EndFaceAnalyzer analyzer_;
+    static inline vision::EndFaceAnalyzer analyzer_;
     host::LumaImage image_;
 };
 
-vision::EndFaceAnalyzer FullSizePhotos::analyzer_;
-
-// And at the reference photographs' larger frame, 2028 × 1520 (tests/data/photo/large).
-class LargeFramePhotos : public ::testing::TestWithParam<std::string> {
-protected:
-    static void SetUpTestSuite() { ASSERT_EQ(analyzer_.configure(2028, 1520), vision::ErrorCode::None); }
-
-    Photo measure(const std::string &id) { return measurePhoto(&analyzer_, kDir + "large/", id, 1, &image_); }
-
-    static vision::EndFaceAnalyzer analyzer_;
-    host::LumaImage image_;
-};
-
-vision::EndFaceAnalyzer LargeFramePhotos::analyzer_;
+// 1456 × 1088 (tests/data/photo/full) and 2028 × 1520 (tests/data/photo/large).
+using FullSizePhotos = FramePhotos<FullFrame>;
+using LargeFramePhotos = FramePhotos<LargeFrame>;
 
 } // namespace
 
