@@ -233,29 +233,30 @@ RingSearch::MeanEdges RingSearch::meanProfileEdges()
             e.rMax = radiusOf(i);
             break;
         }
-    if (!e.namedByZones)
-        for (int k = 0; k + 1 < edges.count && e.backs < MeanEdges::kMaxBacks; ++k) {
-            const ProfileEdge &o = edges.edge[k];
-            const double r = radiusOf(o.index);
-            if (o.flankLo <= at || r < e.rOuter + 1.5 * step || o.sign == e.signOuter) continue;
-            e.rBack[e.backs] = r;
-            e.strengthBack[e.backs++] = o.strength / 16;
-        }
+    // Beyond the edge named: the next edge (or, if that is the outermost, the outline) and the
+    // edges of the other sign inside the outline, the steps back.
     if (!e.namedByZones)
         for (int k = 0; k < edges.count; ++k) {
             const ProfileEdge &o = edges.edge[k];
             const double r = radiusOf(o.index);
             if (o.flankLo <= at || r < e.rOuter + 1.5 * step) continue;
             if (k == edges.count - 1) { // the outermost step: the outline (but see run())
-                e.rOutline = r;
-                e.signOutline = o.sign;
-                e.strengthOutline = o.strength / 16;
+                if (!(e.rNext > 0)) {
+                    e.rOutline = r;
+                    e.signOutline = o.sign;
+                    e.strengthOutline = o.strength / 16;
+                }
                 break;
             }
-            e.rNext = r;
-            e.signNext = o.sign;
-            e.strengthNext = o.strength / 16;
-            break;
+            if (!(e.rNext > 0)) {
+                e.rNext = r;
+                e.signNext = o.sign;
+                e.strengthNext = o.strength / 16;
+            }
+            if (o.sign != e.signOuter && e.backs < MeanEdges::kMaxBacks) {
+                e.rBack[e.backs] = r;
+                e.strengthBack[e.backs++] = o.strength / 16;
+            }
         }
     return e;
 }
